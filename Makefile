@@ -1,0 +1,89 @@
+# dexmill: plain GNU Make, out-of-tree objects under build/.
+#
+#   make              build build/dexmill
+#   make run          build and run the built-in demo (writes out/)
+#   make test         build and run every test (SAN=1: under ASan+UBSan)
+#   make CXX=clang++  the same with clang
+#
+# core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
+# core/integer_only.h forced in, which poisons float and double (DESIGN.md
+# invariant 1). `make test` also proves that the poison works and that every
+# header of core/ and display/ compiles on its own under those rules.
+
+CXX      ?= g++
+SAN      ?=
+OPT      ?= -O2
+BUILD    ?= build$(if $(SAN),/san)
+
+WARN     := -Wall -Wextra -Werror -Wshadow -Wvla -Wundef
+BASEFLAGS := -std=c++17 $(OPT) -g $(WARN) -I. -MMD -MP
+ifneq ($(SAN),)
+BASEFLAGS += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+LDSAN    := -fsanitize=address,undefined
+endif
+# Rules of core/ and display/: integer only, no exceptions, no RTTI.
+INTFLAGS := -fno-exceptions -fno-rtti -include core/integer_only.h
+HOSTFLAGS :=
+LDFLAGS  += $(LDSAN)
+LDLIBS   ?=
+
+CORE_SRC     := $(sort $(wildcard core/*.cpp))
+DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))
+PLATFORM_SRC := $(sort $(wildcard platform/*.cpp))
+TOOLS_SRC    := $(sort $(filter-out tools/main.cpp,$(wildcard tools/*.cpp)))
+TEST_SRC     := $(sort $(wildcard tests/*.cpp))
+INT_HEADERS  := $(sort $(wildcard core/*.h display/*.h))
+
+obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
+INT_OBJ  := $(call obj,$(CORE_SRC) $(DISPLAY_SRC))
+HOST_OBJ := $(call obj,$(PLATFORM_SRC) $(TOOLS_SRC))
+MAIN_OBJ := $(call obj,tools/main.cpp)
+TEST_OBJ := $(call obj,$(TEST_SRC))
+HDR_STAMPS := $(patsubst %.h,$(BUILD)/hdr/%.ok,$(INT_HEADERS))
+
+BIN      := $(BUILD)/dexmill
+TEST_BIN := $(BUILD)/dexmill_tests
+
+# Rebuild everything when the compiler or the flags change.
+FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(LDFLAGS) $(LDLIBS)
+FLAGS_STAMP := $(BUILD)/.flags
+$(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
+
+.PHONY: all run test test-unit check-headers check-poison clean
+all: $(BIN)
+
+$(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
+$(BUILD)/obj/%.o: %.cpp $(FLAGS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS),$(HOSTFLAGS)) -c $< -o $@
+
+$(BIN): $(MAIN_OBJ) $(HOST_OBJ) $(INT_OBJ)
+	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+
+$(TEST_BIN): $(TEST_OBJ) $(HOST_OBJ) $(INT_OBJ)
+	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+
+# Every core/display header compiles alone under the integer-only rules.
+$(BUILD)/hdr/%.ok: %.h $(FLAGS_STAMP)
+	@mkdir -p $(dir $@)
+	@$(CXX) $(BASEFLAGS) $(INTFLAGS) -include $< -MF $(@:.ok=.d) -MT $@ -x c++ -fsyntax-only /dev/null && touch $@
+check-headers: $(HDR_STAMPS)
+
+# The poison must reject floating point: this compile has to fail.
+check-poison:
+	@if $(CXX) -std=c++17 -I. $(INTFLAGS) -fsyntax-only -x c++ tests/negative/float_in_core.cc 2>/dev/null; then \
+	  echo "FAIL: tests/negative/float_in_core.cc compiled; float/double are not poisoned"; exit 1; \
+	else echo "ok: float/double are rejected in core/ and display/"; fi
+
+test-unit: $(TEST_BIN) $(BIN)
+	DEXMILL=$(abspath $(BIN)) $(TEST_BIN)
+
+test: check-headers check-poison test-unit
+
+run: $(BIN)
+	$(BIN) run
+
+clean:
+	rm -rf build
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,26 @@
+// Compile-time options of dexmill, in one place (STYLE.md habit 12).
+#ifndef DEXMILL_CORE_CONFIG_H
+#define DEXMILL_CORE_CONFIG_H
+
+#include <stdint.h>
+
+// m, the number of bits of a dexel height (paper §2.1): 8, 16 or 32.
+// The grid and cutting code are templates over the height type, so tests
+// exercise all three; this picks the one the program uses.
+#ifndef DEXMILL_HEIGHT_BITS
+#define DEXMILL_HEIGHT_BITS 16
+#endif
+
+namespace dexmill {
+
+template <int Bits> struct HeightOfBits;
+template <> struct HeightOfBits<8> { using type = uint8_t; };
+template <> struct HeightOfBits<16> { using type = uint16_t; };
+template <> struct HeightOfBits<32> { using type = uint32_t; };
+
+// The program's dexel height type.
+using height_t = typename HeightOfBits<DEXMILL_HEIGHT_BITS>::type;
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,148 @@
+// Integer division, wide multiply-divide and square roots (see fixed.h for
+// the rounding contract of each).
+#include "core/fixed.h"
+
+namespace dexmill {
+
+int64_t div_floor(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  int64_t q = n / d, r = n % d;
+  return (r != 0 && ((r < 0) != (d < 0))) ? q - 1 : q;
+}
+
+int64_t div_ceil(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  int64_t q = n / d, r = n % d;
+  return (r != 0 && ((r < 0) == (d < 0))) ? q + 1 : q;
+}
+
+int64_t div_round(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  int64_t q = n / d, r = n % d;
+  // |2r| >= |d| rounds away from zero; compare in unsigned to avoid overflow.
+  uint64_t ar = abs_u64(r), ad = abs_u64(d);
+  if (ar >= ad - ar) q += ((n < 0) != (d < 0)) ? -1 : 1;
+  return q;
+}
+
+U128 mul_wide_u64(uint64_t a, uint64_t b) {
+  uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
+  uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+  uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+  U128 r;
+  r.lo = (mid << 32) | (p00 & 0xffffffffu);
+  r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+  return r;
+}
+
+U128 sub_u128(U128 a, U128 b) {
+  U128 r;
+  r.lo = a.lo - b.lo;
+  r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
+  return r;
+}
+
+U128 shl_u128(U128 a, int s) {
+  if (s == 0) return a;
+  U128 r;
+  r.hi = (a.hi << s) | (a.lo >> (64 - s));
+  r.lo = a.lo << s;
+  return r;
+}
+
+uint64_t isqrt_u128(U128 v) {
+  // Digit-by-digit, two bits of v per step; rem fits in 66 bits, tracked as
+  // a U128 to stay exact.
+  U128 rem{0, 0};
+  uint64_t root = 0;
+  for (int i = 0; i < 64; ++i) {
+    rem = shl_u128(rem, 2);
+    rem.lo |= v.hi >> 62;
+    v = shl_u128(v, 2);
+    U128 trial{root >> 62, (root << 2) | 1u};  // 4*root + 1, then compare
+    root <<= 1;
+    if (rem.hi > trial.hi || (rem.hi == trial.hi && rem.lo >= trial.lo)) {
+      rem = sub_u128(rem, trial);
+      root |= 1u;
+    }
+  }
+  return root;
+}
+
+namespace {
+
+// (q, rem) of n / d for a 128-bit n and 64-bit d != 0; q saturates at 2^64-1
+// (the callers saturate further to int64 anyway).
+void divmod_u128(U128 n, uint64_t d, uint64_t* q, uint64_t* rem) {
+  if (n.hi >= d) {  // quotient does not fit 64 bits
+    *q = UINT64_MAX;
+    *rem = 0;
+    return;
+  }
+  uint64_t r = n.hi, quo = 0;
+  for (int i = 63; i >= 0; --i) {
+    uint64_t top = r >> 63;
+    r = (r << 1) | ((n.lo >> i) & 1u);
+    quo <<= 1;
+    if (top || r >= d) {
+      r -= d;
+      quo |= 1u;
+    }
+  }
+  *q = quo;
+  *rem = r;
+}
+
+int64_t muldiv(int64_t a, int64_t b, int64_t c, bool round_nearest) {
+  bool neg = (a < 0) != (b < 0);
+  if (c < 0) neg = !neg;
+  uint64_t ua = abs_u64(a), ub = abs_u64(b), uc = abs_u64(c);
+  uint64_t q, rem;
+  divmod_u128(mul_wide_u64(ua, ub), uc, &q, &rem);
+  if (round_nearest) {
+    if (rem >= uc - rem && q != UINT64_MAX) ++q;  // ties away from zero
+  } else if (neg && rem != 0 && q != UINT64_MAX) {
+    ++q;  // floor of a negative quotient moves away from zero
+  }
+  if (neg) {
+    if (q > static_cast<uint64_t>(INT64_MAX) + 1u) return INT64_MIN;
+    return q == static_cast<uint64_t>(INT64_MAX) + 1u ? INT64_MIN : -static_cast<int64_t>(q);
+  }
+  return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MAX : static_cast<int64_t>(q);
+}
+
+}  // namespace
+
+int64_t muldiv_round(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, true); }
+int64_t muldiv_floor(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, false); }
+
+uint32_t isqrt_u64(uint64_t v) {
+  // Bitwise digit-by-digit root: exact, no division, 32 iterations.
+  uint64_t rem = 0, root = 0;
+  for (int i = 0; i < 32; ++i) {
+    rem = (rem << 2) | (v >> 62);
+    v <<= 2;
+    root <<= 1;
+    uint64_t trial = (root << 1) | 1u;
+    if (rem >= trial) {
+      rem -= trial;
+      root |= 1u;
+    }
+  }
+  return static_cast<uint32_t>(root);
+}
+
+uint32_t isqrt_round_u64(uint64_t v) {
+  uint64_t r = isqrt_u64(v);
+  // sqrt(v) >= r + 0.5  <=>  v >= r^2 + r + 0.25  <=>  v > r^2 + r (integers).
+  // r + 1 = 2^32 does not fit: that single case saturates (error < 1).
+  if (v > r * r + r) return r == UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(r + 1);
+  return static_cast<uint32_t>(r);
+}
+
+uint32_t hypot_round(int64_t a, int64_t b) {
+  uint64_t ua = abs_u64(a), ub = abs_u64(b);
+  return isqrt_round_u64(ua * ua + ub * ub);
+}
+
+}  // namespace dexmill

@@ -1,0 +1,70 @@
+// Subcommand dispatch, --help and --version.
+#include "tools/cli.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+struct Command {
+  const char* name;
+  int (*fn)(int, char**);
+  const char* summary;
+};
+
+const Command kCommands[] = {
+    {"run", cmd_run, "simulate a program; with no FILE, the built-in demo"},
+    {"path", cmd_path, "print the interpreted motion as a polyline"},
+    {"check", cmd_check, "read and interpret a program, report errors only"},
+    {"bench", cmd_bench, "run benchmarks, one result line each"},
+};
+
+void usage(FILE* f) {
+  std::fprintf(f,
+               "usage: dexmill COMMAND [ARGS]\n\n"
+               "  dexmill run [FILE|-] [options]     simulate a program; with no FILE, the built-in demo\n"
+               "  dexmill path FILE [--chord MM]     print the interpreted motion as a polyline\n"
+               "  dexmill check FILE                 read and interpret a program, report errors only\n"
+               "  dexmill bench [NAME...]            run benchmarks, one result line each\n"
+               "  dexmill --help | --version         (also `dexmill COMMAND --help`)\n\n"
+               "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error.\n");
+}
+
+}  // namespace
+
+int fail(int code, const char* fmt, ...) {
+  std::fprintf(stderr, "dexmill: error: ");
+  va_list ap;
+  va_start(ap, fmt);
+  std::vfprintf(stderr, fmt, ap);
+  va_end(ap);
+  std::fputc('\n', stderr);
+  return code;
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    usage(stderr);
+    return kExitUsage;
+  }
+  const char* sub = argv[1];
+  if (!std::strcmp(sub, "--help") || !std::strcmp(sub, "-h") || !std::strcmp(sub, "help")) {
+    usage(stdout);
+    return kExitOk;
+  }
+  if (!std::strcmp(sub, "--version")) {
+    std::printf("dexmill 0.1\n");
+    return kExitOk;
+  }
+  for (const Command& c : kCommands) {
+    if (!std::strcmp(sub, c.name)) return c.fn(argc - 1, argv + 1);
+  }
+  fail(kExitUsage, "unknown command '%s' (try 'dexmill --help')", sub);
+  return kExitUsage;
+}
+
+}  // namespace cli
+}  // namespace dexmill

@@ -1,0 +1,25 @@
+// The dexmill command line (../shared/CLI.md): subcommands and exit codes.
+#ifndef DEXMILL_TOOLS_CLI_H
+#define DEXMILL_TOOLS_CLI_H
+
+namespace dexmill {
+namespace cli {
+
+// Exit status, CLI.md: 0 success, 1 input errors, 2 usage, 3 I/O.
+enum Exit : int { kExitOk = 0, kExitInput = 1, kExitUsage = 2, kExitIo = 3 };
+
+int main(int argc, char** argv);
+
+// Subcommands: argv[0] is the subcommand's name.
+int cmd_run(int argc, char** argv);
+int cmd_path(int argc, char** argv);
+int cmd_check(int argc, char** argv);
+int cmd_bench(int argc, char** argv);
+
+// `dexmill: error: MESSAGE` on stderr (printf-style); returns `code`.
+int fail(int code, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
