@@ -1,0 +1,50 @@
+// `dexmill bench`: benchmarks register themselves (BENCH below), one result
+// line each in the key=value format of ../shared/CLI.md.
+#ifndef DEXMILL_TOOLS_BENCH_H
+#define DEXMILL_TOOLS_BENCH_H
+
+namespace dexmill {
+namespace bench {
+
+struct Case {
+  const char* name;   // e.g. "paper-w3"; `dexmill bench NAME...` selects by prefix
+  void (*run)(const char* name);
+  Case* next;
+};
+
+struct Registrar {
+  explicit Registrar(Case* c);
+};
+
+// Monotonic wall clock in seconds.
+double now_s();
+
+// Prints one result line: "name=NAME " followed by the formatted pairs.
+void result(const char* name, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+// Runs `fn` repeatedly until at least `min_s` seconds have passed (at least
+// once) and returns the fastest single run in seconds: the figure least
+// disturbed by other load on a shared machine.
+template <class F>
+double best_time_s(F fn, double min_s = 0.2, int max_runs = 50) {
+  double best = 1e300, start = now_s();
+  for (int run = 0; run < max_runs; ++run) {
+    double t0 = now_s();
+    fn();
+    double dt = now_s() - t0;
+    if (dt < best) best = dt;
+    if (now_s() - start >= min_s) break;
+  }
+  return best;
+}
+
+Case* first();
+
+}  // namespace bench
+}  // namespace dexmill
+
+#define BENCH(ident, name_str, fn)                                                   \
+  static ::dexmill::bench::Case ident##_bench_case_{name_str, fn, nullptr};         \
+  static ::dexmill::bench::Registrar ident##_bench_reg_(&ident##_bench_case_)
+
+#endif
