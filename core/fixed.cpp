@@ -113,6 +113,35 @@ int64_t muldiv(int64_t a, int64_t b, int64_t c, bool round_nearest) {
 
 }  // namespace
 
+int64_t mul_shift_portable(int64_t a, int64_t b, int s) {
+  const bool neg = (a < 0) != (b < 0) && a != 0 && b != 0;
+  U128 m = mul_wide_u64(abs_u64(a), abs_u64(b));
+  // Magnitude shifted right, remembering whether bits were dropped (floor of
+  // a negative value rounds away from zero).
+  uint64_t lo = s ? ((m.lo >> s) | (m.hi << (64 - s))) : m.lo;
+  uint64_t hi = s ? (m.hi >> s) : m.hi;
+  const bool dropped = s ? (m.lo & ((static_cast<uint64_t>(1) << s) - 1u)) != 0 : false;
+  if (neg) {
+    if (dropped && ++lo == 0) ++hi;
+    if (hi != 0 || lo >= static_cast<uint64_t>(INT64_MAX) + 1u) return INT64_MIN;
+    return -static_cast<int64_t>(lo);
+  }
+  if (hi != 0 || lo > static_cast<uint64_t>(INT64_MAX)) return INT64_MAX;
+  return static_cast<int64_t>(lo);
+}
+
+int64_t mul_shift(int64_t a, int64_t b, int s) {
+#ifdef __SIZEOF_INT128__
+  const __int128 p = static_cast<__int128>(a) * b;
+  const __int128 q = p >> s;  // arithmetic shift: floor for negative products
+  if (q > INT64_MAX) return INT64_MAX;
+  if (q < INT64_MIN) return INT64_MIN;
+  return static_cast<int64_t>(q);
+#else
+  return mul_shift_portable(a, b, s);
+#endif
+}
+
 int64_t muldiv_round(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, true); }
 int64_t muldiv_floor(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, false); }
 

@@ -102,6 +102,13 @@ U128 shl_u128(U128 a, int s);
 // floor(sqrt(v)): exact; the root of a 128-bit value fits 64 bits.
 uint64_t isqrt_u128(U128 v);
 
+// floor(a * b / 2^s) for 0 <= s < 64, saturating to the int64 range. Exact:
+// uses the compiler's 128-bit integers where the target has them and the
+// portable U128 path elsewhere; both give the same bits.
+int64_t mul_shift(int64_t a, int64_t b, int s);
+// The portable path of mul_shift, always built (tests compare the two).
+int64_t mul_shift_portable(int64_t a, int64_t b, int s);
+
 // ---- integer square roots ---------------------------------------------------
 
 // floor(sqrt(v)): exact for every v (error 0, result <= 2^32 - 1).

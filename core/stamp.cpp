@@ -82,6 +82,7 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
     H* wb = g->bottom + wbase;
     const int32_t* cb = c.bottom_lsb + cbase;
     st->dexel_updates += static_cast<uint64_t>(hi - lo + 1);
+    if (st->log) st->log->add(cj32 + dj, ci32 - k + lo, ci32 - k + hi);
     bool row_changed = false;
     if (shaft_above) {
       for (int32_t x = lo; x <= hi; ++x) {

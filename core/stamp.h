@@ -6,17 +6,12 @@
 
 #include <stdint.h>
 
+#include "core/cut_stats.h"
 #include "core/cutter.h"
 #include "core/grid.h"
 #include "core/point.h"
 
 namespace dexmill {
-
-// Counters a cutting run accumulates (for reports and benchmarks).
-struct CutStats {
-  uint64_t instances = 0;      // cutter placements (stamp) or sweep pieces
-  uint64_t dexel_updates = 0;  // workpiece dexels visited by the cutting loop
-};
 
 // What one cutter dexel c does to one workpiece dexel w (figure 2).
 enum class CutCase : uint8_t {

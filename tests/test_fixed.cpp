@@ -145,3 +145,21 @@ TEST(fixed_family_conversions) {
     if (!CHECK_NEAR(static_cast<double>(sat_mul(x, y).raw), exact, 0.5)) break;
   }
 }
+
+TEST(fixed_mul_shift_paths_agree) {
+  std::mt19937_64 rng(21);
+  for (int it = 0; it < 100000; ++it) {
+    int64_t a = static_cast<int64_t>(rng()) >> (rng() % 63), b = static_cast<int64_t>(rng()) >> (rng() % 63);
+    int s = static_cast<int>(rng() % 64);
+    if (!CHECK_EQ(mul_shift(a, b, s), mul_shift_portable(a, b, s))) break;
+#ifdef __SIZEOF_INT128__
+    __int128 q = (static_cast<__int128>(a) * b) >> s;
+    int64_t want = q > INT64_MAX ? INT64_MAX : (q < INT64_MIN ? INT64_MIN : static_cast<int64_t>(q));
+    if (!CHECK_EQ(mul_shift_portable(a, b, s), want)) break;
+#endif
+  }
+  CHECK_EQ(mul_shift(-1, 1, 1), -1);  // floor, not truncation
+  CHECK_EQ(mul_shift_portable(-1, 1, 1), -1);
+  CHECK_EQ(mul_shift_portable(INT64_MIN, 1, 0), INT64_MIN);
+  CHECK_EQ(mul_shift_portable(INT64_MIN, -1, 0), INT64_MAX);
+}

@@ -1,0 +1,66 @@
+// Exact swept-envelope cutting: past the paper's instances of motion (§2.3).
+//
+// For every dexel column within reach of a move, the lowest point of the
+// tool anywhere along the move is found in closed form and applied once, with
+// the figure-2 cases (core/stamp.h). No scallops between instances, and each
+// dexel is touched once per move (or per piece of a long move or an arc).
+//
+// Working units: horizontal lengths in U = 1/4 nm (so tool radii up to 2^28
+// nm square within int64), heights in V = lsb / 256 of the grid. A column's
+// height is rounded to the nearest LSB at the end.
+//
+// Error bound (tests/test_sweep.cpp checks it against a dense double-precision
+// oracle): the height written is within 1 LSB of the exact lowest point of the
+// tool over the move for a column displaced by at most 1 nm horizontally (a
+// backward bound: where the tool's side is vertical, at r = R, the height is
+// infinitely sensitive to position, and no finite forward bound exists).
+#ifndef DEXMILL_CORE_SWEEP_H
+#define DEXMILL_CORE_SWEEP_H
+
+#include <stdint.h>
+
+#include "core/canon.h"
+#include "core/cut_stats.h"
+#include "core/grid.h"
+#include "core/point.h"
+#include "core/status.h"
+#include "core/tool.h"
+
+namespace dexmill {
+
+constexpr int64_t kSweepUnitsPerNm = 4;  // U per nm
+constexpr int kSweepVBits = 8;           // V = LSB / 2^8
+
+// A tool prepared for sweeping on grids with a given LSB.
+struct SweepTool {
+  ToolKind kind;
+  int64_t r_u, r2_u;       // R in U, R^2 in U^2
+  int64_t a_u, rc_u;       // bull nose: flat radius a = R - rc, corner radius rc
+  int64_t rc2_u;           // rc^2
+  int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
+  int64_t len_v;           // shaft top above the tip, V
+  int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
+  int64_t lsb_nm;          // the LSB this was prepared for
+};
+
+// Fails with kBadArgument when R exceeds 2^28 nm (268 mm) or lsb < 1.
+Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out);
+
+// Height of the tool's lower surface above its tip at r^2 (U^2, r <= R), V.
+int64_t sweep_profile_v(const SweepTool& t, int64_t r2_u2);
+
+// A straight move of the tool tip from a to b (any direction: lines, ramps,
+// plunges). Moves longer than 2^27 nm are cut as consecutive pieces.
+template <class H>
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st);
+
+#define DEXMILL_SWEEP_EXTERN(H) \
+  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*);
+DEXMILL_SWEEP_EXTERN(uint8_t)
+DEXMILL_SWEEP_EXTERN(uint16_t)
+DEXMILL_SWEEP_EXTERN(uint32_t)
+#undef DEXMILL_SWEEP_EXTERN
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,265 @@
+// Swept envelope of a straight move (core/sweep.h).
+//
+// Geometry. Let the move go from A to B, horizontal length l, unit direction
+// e, and let a column P sit at along-track u and cross-track v from A. With
+// the tool at along-track s in [0, l], the column meets the tool's lower
+// surface at height z(s) + f(sqrt((u - s)^2 + v^2)), z(s) = zA + m*s. With
+// w = u - s this is zA + m*u + [F(w) - m*w], F(w) = f(sqrt(w^2 + v^2)), which
+// is convex in w for every cutter here (f convex and increasing in r). So the
+// lowest point is at w = clamp(w*(v), u - l, u), where w*(v) minimises
+// F(w) - m*w without the clamp, and it depends on v only:
+//   flat:   m = 0: 0; else sign(m) * rho, rho = sqrt(R^2 - v^2) (the rim)
+//   ball:   rho * m / sqrt(1 + m^2) (where the sphere's slope equals m)
+//   V-bit:  m*|v| / sqrt(k^2 - m^2) while inside the cone, else the rim
+//   bull:   no closed form: a ternary search of the convex F(w) - m*w
+// An error in w* changes the height only to second order (w* is a minimum),
+// while the height itself is always evaluated exactly at the clamped w.
+#include "core/fixed.h"
+#include "core/stamp.h"
+#include "core/sweep.h"
+
+namespace dexmill {
+namespace {
+
+constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
+// Pieces of at most 2^27 nm keep every product below 2^63 (see sweep.h).
+constexpr int64_t kMaxPieceNm = static_cast<int64_t>(1) << 27;
+
+struct LinePiece {
+  int64_t len_u;             // l
+  int64_t ex_q30, ey_q30;    // unit direction e
+  int64_t za_v, zb_v;        // tip heights above the grid's z0, V
+  int64_t slope_v_q32;       // dz/ds in V per U, q32
+  int64_t m_geo_q30;         // dz/ds, dimensionless, q30
+  int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
+  int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
+  bool vbit_inside;          // V-bit: |m| < k
+  bool level;                // dz == 0
+  bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+};
+
+int64_t sign_of(int64_t v) { return v < 0 ? -1 : 1; }
+
+// F(w) - m*w in V for the cross-track distance v (v2 = v^2), w^2 + v^2 <= R^2.
+int64_t flank_cost_v(const SweepTool& t, const LinePiece& lp, int64_t w, int64_t v2) {
+  return sweep_profile_v(t, w * w + v2) - mul_shift(w, lp.slope_v_q32, 32);
+}
+
+// w*(v): the unclamped minimiser of F(w) - m*w (see the file comment).
+int64_t best_w(const SweepTool& t, const LinePiece& lp, int64_t v, int64_t v2) {
+  if (lp.level) return 0;
+  const int64_t rho = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(t.r2_u - v2)));
+  const int64_t rim = sign_of(lp.m_geo_q30) * rho;
+  switch (t.kind) {
+    case ToolKind::kFlat:
+      return rim;
+    case ToolKind::kBall:
+      return mul_shift(rho, lp.ball_sin_q30, 30);
+    case ToolKind::kVBit: {
+      if (!lp.vbit_inside) return rim;
+      const int64_t w = mul_shift(v < 0 ? -v : v, lp.vbit_c1_q30, 30);
+      return w * w + v2 <= t.r2_u ? w : rim;
+    }
+    case ToolKind::kBullNose: {
+      int64_t lo = -rho, hi = rho;
+      while (hi - lo > 2) {
+        const int64_t third = (hi - lo) / 3;
+        const int64_t m1 = lo + third, m2 = hi - third;
+        if (flank_cost_v(t, lp, m1, v2) <= flank_cost_v(t, lp, m2, v2)) hi = m2; else lo = m1;
+      }
+      int64_t best = lo, best_cost = flank_cost_v(t, lp, lo, v2);
+      for (int64_t w = lo + 1; w <= hi; ++w) {
+        const int64_t c = flank_cost_v(t, lp, w, v2);
+        if (c < best_cost) { best = w; best_cost = c; }
+      }
+      return best;
+    }
+  }
+  return 0;
+}
+
+bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
+                 LinePiece* lp) {
+  lp->za_v = za_v;
+  lp->zb_v = zb_v;
+  lp->level = za_v == zb_v;
+  const uint64_t l2 = static_cast<uint64_t>(dx_u * dx_u) + static_cast<uint64_t>(dy_u * dy_u);
+  lp->len_u = static_cast<int64_t>(isqrt_round_u64(l2));
+  const int64_t dz_u = dz_nm * kSweepUnitsPerNm;
+  // Steeper than 2^24:1 is cut as a plunge at the lower end: the horizontal
+  // error is below |dz| / 2^24 (60 nm per metre of descent).
+  lp->plunge = lp->len_u == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(lp->len_u) << 24);
+  if (lp->plunge) return true;
+  lp->ex_q30 = muldiv_round(dx_u, kQ30, lp->len_u);
+  lp->ey_q30 = muldiv_round(dy_u, kQ30, lp->len_u);
+  lp->slope_v_q32 = muldiv_round(zb_v - za_v, static_cast<int64_t>(1) << 32, lp->len_u);
+  lp->m_geo_q30 = muldiv_round(dz_u, kQ30, lp->len_u);
+  if (lp->level) return true;
+  // sqrt(dz^2 + l^2) with a 128-bit sum.
+  U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
+  U128 l2w{0, l2};
+  U128 sum{dz2.hi + (dz2.lo + l2w.lo < dz2.lo ? 1u : 0u), dz2.lo + l2w.lo};
+  const int64_t hyp = static_cast<int64_t>(isqrt_u128(sum));
+  lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp > 0 ? hyp : 1);
+  if (t.kind == ToolKind::kVBit) {
+    // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
+    const int64_t k20 = t.cot_q30 >> 10, m20 = lp->m_geo_q30 / 1024;
+    lp->vbit_inside = (m20 < 0 ? -m20 : m20) < k20;
+    if (lp->vbit_inside) {
+      const int64_t den = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(k20 * k20 - m20 * m20)));
+      lp->vbit_inside = den > 0;
+      if (den > 0) lp->vbit_c1_q30 = muldiv_round(m20, kQ30, den);
+    }
+  }
+  return true;
+}
+
+// Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
+// shaft top. Returns true when the dexel changed.
+template <class H>
+inline bool cut_dexel(H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_above) {
+  const int64_t cb = (h_v + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
+  if (shaft_above) {
+    if (cb >= static_cast<int64_t>(*wt)) return false;
+    if (cb > static_cast<int64_t>(*wb)) {
+      *wt = static_cast<H>(cb);  // case b
+    } else {
+      *wt = 0;  // case e
+      *wb = 0;
+    }
+    return true;
+  }
+  return apply_cut<H, int64_t>(wt, wb, cb, ct_lsb);
+}
+
+// Narrows [*i_lo, *i_hi] to the i with lo <= alpha + (i - i0) * beta <= hi.
+void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int64_t* i_lo, int64_t* i_hi) {
+  if (beta == 0) {
+    if (alpha < lo || alpha > hi) *i_hi = *i_lo - 1;
+    return;
+  }
+  int64_t a = div_ceil(lo - alpha, beta), b = div_floor(hi - alpha, beta);
+  if (beta < 0) {
+    a = div_ceil(hi - alpha, beta);
+    b = div_floor(lo - alpha, beta);
+  }
+  *i_lo = max_of(*i_lo, i0 + a);
+  *i_hi = min_of(*i_hi, i0 + b);
+}
+
+template <class H>
+void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st) {
+  const int64_t za_v = muldiv_round(a.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t zb_v = muldiv_round(b.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t zlow_v = min_of(za_v, zb_v);
+  const int64_t hmax = height_max<H>();
+  // Entirely above every top, or the shaft top below the grid's floor.
+  if (zlow_v >= (hmax << kSweepVBits) || zlow_v + t.len_v <= 0) return;
+  const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
+  const bool shaft_above = ct_lsb >= hmax;
+
+  LinePiece lp;
+  const int64_t dx_u = (b.x_nm - a.x_nm) * kSweepUnitsPerNm, dy_u = (b.y_nm - a.y_nm) * kSweepUnitsPerNm;
+  setup_piece(t, za_v, zb_v, dx_u, dy_u, b.z_nm - a.z_nm, &lp);
+  // A plunge is the tool at its lower end (the shaft covers the rest).
+  PointNm o = a;
+  if (lp.plunge && zb_v < za_v) o = b;
+  const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
+  const int64_t xmin = min_of(a.x_nm, b.x_nm) - r_nm, xmax = max_of(a.x_nm, b.x_nm) + r_nm;
+  const int64_t ymin = min_of(a.y_nm, b.y_nm) - r_nm, ymax = max_of(a.y_nm, b.y_nm) + r_nm;
+  const int64_t i_first = max_of<int64_t>(0, div_ceil(xmin - g->x0_nm, p));
+  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(xmax - g->x0_nm, p));
+  const int64_t j_first = max_of<int64_t>(0, div_ceil(ymin - g->y0_nm, p));
+  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(ymax - g->y0_nm, p));
+  if (i_first > i_last || j_first > j_last) return;
+  st->instances++;
+
+  const int64_t p_u = p * kSweepUnitsPerNm;
+  // Columns within 2 U (0.5 nm) outside the rim count as on it: the rounding
+  // of u and v must not drop a column that an exact test keeps (r <= R).
+  const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
+  const int64_t dx0_u = (g->x0_nm + i_first * p - o.x_nm) * kSweepUnitsPerNm;  // column i_first - origin
+  bool changed = false;
+  int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
+  for (int64_t j = j_first; j <= j_last; ++j) {
+    const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
+    int64_t lo = i_first, hi = i_last;
+    int64_t u_acc = 0, v_acc = 0, du = 0, dv = 0;
+    if (!lp.plunge) {
+      // u = (P - A) . e and v = (P - A) x e, in U * 2^30, exact increments.
+      u_acc = dx0_u * lp.ex_q30 + dy_row_u * lp.ey_q30;
+      v_acc = dy_row_u * lp.ex_q30 - dx0_u * lp.ey_q30;
+      du = p_u * lp.ex_q30;
+      dv = -p_u * lp.ey_q30;
+      const int64_t r_q30 = (t.r_u + 1) * kQ30;
+      narrow(v_acc, dv, -r_q30, r_q30, i_first, &lo, &hi);
+      narrow(u_acc, du, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &lo, &hi);
+    }
+    if (lo > hi) continue;
+    st->dexel_updates += static_cast<uint64_t>(hi - lo + 1);
+    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    u_acc += (lo - i_first) * du;
+    v_acc += (lo - i_first) * dv;
+    H* wt = g->top + g->index(0, static_cast<int32_t>(j));
+    H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
+    bool row_changed = false;
+    int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
+    for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv, dx_u_col += p_u) {
+      int64_t h_v;
+      if (lp.plunge) {
+        const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
+        if (r2 > reach2) continue;
+        h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
+      } else {
+        const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
+        const int64_t v2 = min_of(v * v, t.r2_u);
+        if (v * v > reach2) continue;
+        const int64_t w = clamp(best_w(t, lp, v, v2), u - lp.len_u, u);
+        const int64_t r2 = w * w + v2;
+        if (r2 > reach2) continue;
+        h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+      }
+      row_changed |= cut_dexel<H>(&wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+    }
+    if (row_changed) {
+      changed = true;
+      ch_i0 = min_of(ch_i0, lo);
+      ch_i1 = max_of(ch_i1, hi);
+      ch_j0 = min_of(ch_j0, j);
+      ch_j1 = max_of(ch_j1, j);
+    }
+  }
+  if (changed)
+    g->dirty.include(GridRect{static_cast<int32_t>(ch_i0), static_cast<int32_t>(ch_j0),
+                              static_cast<int32_t>(ch_i1 + 1), static_cast<int32_t>(ch_j1 + 1)});
+}
+
+}  // namespace
+
+template <class H>
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st) {
+  a = clamp_point(a);
+  b = clamp_point(b);
+  // Split so that no piece is longer than kMaxPieceNm horizontally.
+  const uint64_t span = max_of(abs_u64(b.x_nm - a.x_nm), abs_u64(b.y_nm - a.y_nm));
+  const int64_t pieces = static_cast<int64_t>(span / static_cast<uint64_t>(kMaxPieceNm)) + 1;
+  PointNm from = a;
+  for (int64_t k = 1; k <= pieces; ++k) {
+    PointNm to = b;
+    if (k < pieces) {
+      to.x_nm = a.x_nm + muldiv_floor(b.x_nm - a.x_nm, k, pieces);
+      to.y_nm = a.y_nm + muldiv_floor(b.y_nm - a.y_nm, k, pieces);
+      to.z_nm = a.z_nm + muldiv_floor(b.z_nm - a.z_nm, k, pieces);
+    }
+    sweep_piece(g, t, from, to, st);
+    from = to;
+  }
+}
+
+#define DEXMILL_SWEEP_INSTANTIATE(H) \
+  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*);
+DEXMILL_SWEEP_INSTANTIATE(uint8_t)
+DEXMILL_SWEEP_INSTANTIATE(uint16_t)
+DEXMILL_SWEEP_INSTANTIATE(uint32_t)
+
+}  // namespace dexmill
