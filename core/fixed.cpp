@@ -94,6 +94,23 @@ void divmod_u128(U128 n, uint64_t d, uint64_t* q, uint64_t* rem) {
 }
 
 int64_t muldiv(int64_t a, int64_t b, int64_t c, bool round_nearest) {
+  // Fast paths with the same results: the product fits 64 bits, or the
+  // compiler has 128-bit integers.
+  int64_t p64;
+  if (!__builtin_mul_overflow(a, b, &p64)) return round_nearest ? div_round(p64, c) : div_floor(p64, c);
+#ifdef __SIZEOF_INT128__
+  {
+    const __int128 p = static_cast<__int128>(a) * b;
+    __int128 q = p / c, r = p % c;
+    if (round_nearest) {
+      const __int128 ar = r < 0 ? -r : r, ac = c < 0 ? -static_cast<__int128>(c) : c;
+      if (2 * ar >= ac) q += ((p < 0) != (c < 0)) ? -1 : 1;
+    } else if (r != 0 && ((r < 0) != (c < 0))) {
+      q -= 1;
+    }
+    return q > INT64_MAX ? INT64_MAX : (q < INT64_MIN ? INT64_MIN : static_cast<int64_t>(q));
+  }
+#endif
   bool neg = (a < 0) != (b < 0);
   if (c < 0) neg = !neg;
   uint64_t ua = abs_u64(a), ub = abs_u64(b), uc = abs_u64(c);
@@ -128,18 +145,6 @@ int64_t mul_shift_portable(int64_t a, int64_t b, int s) {
   }
   if (hi != 0 || lo > static_cast<uint64_t>(INT64_MAX)) return INT64_MAX;
   return static_cast<int64_t>(lo);
-}
-
-int64_t mul_shift(int64_t a, int64_t b, int s) {
-#ifdef __SIZEOF_INT128__
-  const __int128 p = static_cast<__int128>(a) * b;
-  const __int128 q = p >> s;  // arithmetic shift: floor for negative products
-  if (q > INT64_MAX) return INT64_MAX;
-  if (q < INT64_MIN) return INT64_MIN;
-  return static_cast<int64_t>(q);
-#else
-  return mul_shift_portable(a, b, s);
-#endif
 }
 
 int64_t muldiv_round(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, true); }

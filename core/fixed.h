@@ -105,9 +105,19 @@ uint64_t isqrt_u128(U128 v);
 // floor(a * b / 2^s) for 0 <= s < 64, saturating to the int64 range. Exact:
 // uses the compiler's 128-bit integers where the target has them and the
 // portable U128 path elsewhere; both give the same bits.
-int64_t mul_shift(int64_t a, int64_t b, int s);
 // The portable path of mul_shift, always built (tests compare the two).
 int64_t mul_shift_portable(int64_t a, int64_t b, int s);
+inline int64_t mul_shift(int64_t a, int64_t b, int s) {
+#ifdef __SIZEOF_INT128__
+  const __int128 p = static_cast<__int128>(a) * b;
+  const __int128 q = p >> s;  // arithmetic shift: floor for negative products
+  if (q > INT64_MAX) return INT64_MAX;
+  if (q < INT64_MIN) return INT64_MIN;
+  return static_cast<int64_t>(q);
+#else
+  return mul_shift_portable(a, b, s);
+#endif
+}
 
 // ---- integer square roots ---------------------------------------------------
 
@@ -116,6 +126,48 @@ uint32_t isqrt_u64(uint64_t v);
 // sqrt(v) rounded to nearest: |result - sqrt(v)| <= 0.5 (for v > (2^32-0.5)^2
 // the result saturates at 2^32 - 1, error < 1).
 uint32_t isqrt_round_u64(uint64_t v);
+// floor(sqrt(v)), exact like isqrt_u64, for inner loops: a table seed and
+// two multiply-only Newton steps on 1/sqrt (no division), then an exact
+// correction of the last bit or two. Same bits as isqrt_u64 (tested).
+namespace detail {
+constexpr uint64_t isqrt_constexpr(uint64_t v) {  // bisection, v < 2^62
+  uint64_t lo = 0, hi = static_cast<uint64_t>(1) << 31;
+  while (hi - lo > 1) {
+    const uint64_t mid = (lo + hi) / 2;
+    if (mid * mid <= v) lo = mid; else hi = mid;
+  }
+  return lo;
+}
+// 1/sqrt(m) for m = (t + 0.5) / 64 in [1, 4), t = 64..255, as q30, from
+// sqrt(2^37 / (2t + 1)) * 2^15 (about 15 good bits; Newton doubles them).
+struct RsqrtSeed {
+  uint32_t q30[192];
+  constexpr RsqrtSeed() : q30() {
+    for (int t = 64; t < 256; ++t)
+      q30[t - 64] = static_cast<uint32_t>(isqrt_constexpr((static_cast<uint64_t>(1) << 37) / (2u * t + 1u)) << 15);
+  }
+};
+inline constexpr RsqrtSeed kRsqrtSeed{};
+}  // namespace detail
+
+inline uint32_t isqrt_fast_u64(uint64_t x) {
+  if (x < 4) return x ? 1u : 0u;
+  const int e = (63 - __builtin_clzll(x)) >> 1;  // sqrt(x) in [2^e, 2^(e+1))
+  // m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)).
+  const uint64_t m = 2 * e >= 30 ? x >> (2 * e - 30) : x << (30 - 2 * e);
+  uint64_t y = detail::kRsqrtSeed.q30[(m >> 24) - 64];
+  for (int it = 0; it < 2; ++it) {  // y <- y (3 - m y^2) / 2
+    const uint64_t my = (m * y) >> 30;
+    const uint64_t my2 = (my * y) >> 30;
+    y = (y * ((static_cast<uint64_t>(3) << 30) - my2)) >> 31;
+  }
+  const uint64_t s = (m * y) >> 30;  // sqrt(m), q30
+  uint64_t r = e <= 30 ? s >> (30 - e) : s << (e - 30);
+  if (r > 0xffffffffu) r = 0xffffffffu;
+  while (r * r > x) --r;
+  while (r < 0xffffffffu && (r + 1) * (r + 1) <= x) ++r;
+  return static_cast<uint32_t>(r);
+}
 // sqrt(a^2 + b^2) rounded to nearest for |a|, |b| < 2^31 (error <= 0.5).
 uint32_t hypot_round(int64_t a, int64_t b);
 

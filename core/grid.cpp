@@ -31,6 +31,7 @@ Status grid_init(DexelGrid<H>* g, const GridGeometry& geo, H* top, H* bottom, si
   g->z0_nm = geo.z0_nm;
   g->lsb_nm = geo.lsb_nm;
   g->dirty = GridRect::none();
+  g->bottoms_zero = false;
   return Status::kOk;
 }
 
@@ -48,6 +49,7 @@ void grid_block_stock(DexelGrid<H>* g, int64_t height_lsb) {
     }
   }
   g->dirty = g->bounds();
+  g->bottoms_zero = true;
 }
 
 template <class H>

@@ -52,6 +52,9 @@ struct DexelGrid {
   int64_t z0_nm = 0;           // machine z of height 0
   int64_t lsb_nm = 0;          // z of one height step
   GridRect dirty = GridRect::none();  // dexels changed since the consumer last cleared it
+  // True while every bottom is 0 (set by grid_block_stock, cleared by a
+  // case-c cut): lets the cutting loops reduce the figure-2 cases to a min().
+  bool bottoms_zero = false;
 
   size_t index(int32_t i, int32_t j) const { return static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i); }
   bool contains(int32_t i, int32_t j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }

@@ -99,7 +99,11 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
       }
     } else {
       const int32_t* ct = c.top_lsb + cbase;
-      for (int32_t x = lo; x <= hi; ++x) row_changed |= apply_cut<H, W>(&wt[x], &wb[x], tip + cb[x], tip + ct[x]);
+      for (int32_t x = lo; x <= hi; ++x) {
+        const CutCase cc = apply_cut<H, W>(&wt[x], &wb[x], tip + cb[x], tip + ct[x]);
+        row_changed |= cut_changed(cc);
+        if (cc == CutCase::kC) g->bottoms_zero = false;
+      }
     }
     if (row_changed) {
       changed = true;
@@ -111,7 +115,7 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
 }
 
 template <class H>
-void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, CutStats* st) {
+void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, CutStats* st, bool include_start) {
   a = clamp_point(a);
   b = clamp_point(b);
   const int64_t dx = b.x_nm - a.x_nm, dy = b.y_nm - a.y_nm, dz = b.z_nm - a.z_nm;
@@ -122,13 +126,14 @@ void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, Cu
   const int64_t steps = still ? 0 : max_of<int64_t>(1, max_of(div_ceil(dx < 0 ? -dx : dx, p), div_ceil(dy < 0 ? -dy : dy, p)));
   // Only instances whose footprint can touch the grid.
   const int64_t reach = static_cast<int64_t>(c.reach_dex + 1) * p;
-  int64_t k_lo = 0, k_hi = steps;
+  int64_t k_lo = include_start ? 0 : 1, k_hi = steps;
   clip_steps(a.x_nm, dx, steps, g->x0_nm - reach, g->x0_nm + (g->nx - 1) * p + reach, &k_lo, &k_hi);
   clip_steps(a.y_nm, dy, steps, g->y0_nm - reach, g->y0_nm + (g->ny - 1) * p + reach, &k_lo, &k_hi);
-  k_lo = max_of<int64_t>(k_lo, 0);
+  k_lo = max_of<int64_t>(k_lo, include_start ? 0 : 1);
   k_hi = min_of(k_hi, steps);
   if (k_lo > k_hi) return;
   if (still) {
+    if (!include_start) return;
     stamp_instance(g, c, grid_i_of_x(*g, a.x_nm), grid_j_of_y(*g, a.y_nm), grid_height_of_z(*g, a.z_nm), st);
     return;
   }
@@ -147,7 +152,7 @@ void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, Cu
 
 #define DEXMILL_STAMP_INSTANTIATE(H)                                                                       \
   template void stamp_instance<H>(DexelGrid<H>*, const CutterDexels&, int64_t, int64_t, int64_t, CutStats*); \
-  template void stamp_line<H>(DexelGrid<H>*, const CutterDexels&, PointNm, PointNm, CutStats*);
+  template void stamp_line<H>(DexelGrid<H>*, const CutterDexels&, PointNm, PointNm, CutStats*, bool);
 DEXMILL_STAMP_INSTANTIATE(uint8_t)
 DEXMILL_STAMP_INSTANTIATE(uint16_t)
 DEXMILL_STAMP_INSTANTIATE(uint32_t)

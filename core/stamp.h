@@ -34,18 +34,21 @@ inline CutCase classify_cut(W wt, W wb, W cb, W ct) {
   return ct >= wt ? CutCase::kB : CutCase::kD;
 }
 
-// Applies one case to w. Returns true when w changed. cb and ct may lie
-// outside [0, 2^m - 1]: the comparisons then still pick the right case and
-// only in-range values are ever stored.
+// Applies one case to w and returns it (w changed for b, c and e). cb and
+// ct may lie outside [0, 2^m - 1]: the comparisons then still pick the right
+// case and only in-range values are ever stored.
 template <class H, class W>
-inline bool apply_cut(H* wt, H* wb, W cb, W ct) {
-  switch (classify_cut<W>(*wt, *wb, cb, ct)) {
-    case CutCase::kB: *wt = static_cast<H>(cb); return true;
-    case CutCase::kC: *wb = static_cast<H>(ct); return true;
-    case CutCase::kE: *wt = 0; *wb = 0; return true;
-    default: return false;
+inline CutCase apply_cut(H* wt, H* wb, W cb, W ct) {
+  const CutCase c = classify_cut<W>(*wt, *wb, cb, ct);
+  switch (c) {
+    case CutCase::kB: *wt = static_cast<H>(cb); break;
+    case CutCase::kC: *wb = static_cast<H>(ct); break;
+    case CutCase::kE: *wt = 0; *wb = 0; break;
+    default: break;
   }
+  return c;
 }
+inline bool cut_changed(CutCase c) { return c == CutCase::kB || c == CutCase::kC || c == CutCase::kE; }
 
 // One instance of motion: the cutter's axis on workpiece dexel (ci, cj)
 // (may be outside the grid), its tip at height tip_lsb (any int64). Only
@@ -60,14 +63,16 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
 // pitch apart in x and y and no dexel is skipped (a plunge gives its two
 // ends; a move of zero length one instance). Instances whose cutter
 // cannot reach the grid are not computed (nor counted), so a move far
-// outside the grid costs O(1).
+// outside the grid costs O(1). With include_start = false the instance at
+// k = 0 is left out: a move that continues from the previous one's end does
+// not stamp that point twice.
 template <class H>
-void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, CutStats* st);
+void stamp_line(DexelGrid<H>* g, const CutterDexels& c, PointNm a, PointNm b, CutStats* st, bool include_start = true);
 
 #define DEXMILL_STAMP_EXTERN(H)                                                                          \
   extern template void stamp_instance<H>(DexelGrid<H>*, const CutterDexels&, int64_t, int64_t, int64_t, \
                                          CutStats*);                                                     \
-  extern template void stamp_line<H>(DexelGrid<H>*, const CutterDexels&, PointNm, PointNm, CutStats*);
+  extern template void stamp_line<H>(DexelGrid<H>*, const CutterDexels&, PointNm, PointNm, CutStats*, bool);
 DEXMILL_STAMP_EXTERN(uint8_t)
 DEXMILL_STAMP_EXTERN(uint16_t)
 DEXMILL_STAMP_EXTERN(uint32_t)

@@ -51,11 +51,18 @@ int64_t sweep_profile_v(const SweepTool& t, int64_t r2_u2);
 
 // A straight move of the tool tip from a to b (any direction: lines, ramps,
 // plunges). Moves longer than 2^27 nm are cut as consecutive pieces.
+//
+// start_cap = false leaves out the columns where the lowest point is the
+// tool standing at a (behind the move's start). Pass it when the previous
+// move, cut with the same tool, ended at a: its sweep holds the whole tool
+// at a already (every column of it is either in that move's sweep at the
+// tool's own height or lower), so the union is unchanged and the work at
+// polyline joints is done once.
 template <class H>
-void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st);
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
 #define DEXMILL_SWEEP_EXTERN(H) \
-  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*);
+  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);
 DEXMILL_SWEEP_EXTERN(uint8_t)
 DEXMILL_SWEEP_EXTERN(uint16_t)
 DEXMILL_SWEEP_EXTERN(uint32_t)

@@ -48,7 +48,7 @@ int64_t flank_cost_v(const SweepTool& t, const LinePiece& lp, int64_t w, int64_t
 // w*(v): the unclamped minimiser of F(w) - m*w (see the file comment).
 int64_t best_w(const SweepTool& t, const LinePiece& lp, int64_t v, int64_t v2) {
   if (lp.level) return 0;
-  const int64_t rho = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(t.r2_u - v2)));
+  const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - v2)));
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
   switch (t.kind) {
     case ToolKind::kFlat:
@@ -99,7 +99,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
   U128 l2w{0, l2};
   U128 sum{dz2.hi + (dz2.lo + l2w.lo < dz2.lo ? 1u : 0u), dz2.lo + l2w.lo};
-  const int64_t hyp = static_cast<int64_t>(isqrt_u128(sum));
+  const int64_t hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
   lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp > 0 ? hyp : 1);
   if (t.kind == ToolKind::kVBit) {
     // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
@@ -117,7 +117,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top. Returns true when the dexel changed.
 template <class H>
-inline bool cut_dexel(H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_above) {
+inline bool cut_dexel(DexelGrid<H>* g, H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_above) {
   const int64_t cb = (h_v + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
   if (shaft_above) {
     if (cb >= static_cast<int64_t>(*wt)) return false;
@@ -129,7 +129,9 @@ inline bool cut_dexel(H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_abov
     }
     return true;
   }
-  return apply_cut<H, int64_t>(wt, wb, cb, ct_lsb);
+  const CutCase c = apply_cut<H, int64_t>(wt, wb, cb, ct_lsb);
+  if (c == CutCase::kC) g->bottoms_zero = false;
+  return cut_changed(c);
 }
 
 // Narrows [*i_lo, *i_hi] to the i with lo <= alpha + (i - i0) * beta <= hi.
@@ -148,7 +150,7 @@ void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int
 }
 
 template <class H>
-void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st) {
+void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
   const int64_t za_v = muldiv_round(a.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
   const int64_t zb_v = muldiv_round(b.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
   const int64_t zlow_v = min_of(za_v, zb_v);
@@ -181,6 +183,12 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   const int64_t dx0_u = (g->x0_nm + i_first * p - o.x_nm) * kSweepUnitsPerNm;  // column i_first - origin
   bool changed = false;
   int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
+  const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  // Along x, the along-track range of columns is the same on every row:
+  // narrow it once (the divisions in `narrow` cost more than a short row).
+  const bool along_x = !lp.plunge && lp.ey_q30 == 0;
+  int64_t x_lo = i_first, x_hi = i_last;
+  if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &x_lo, &x_hi);
   for (int64_t j = j_first; j <= j_last; ++j) {
     const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
     int64_t lo = i_first, hi = i_last;
@@ -191,9 +199,14 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
       v_acc = dy_row_u * lp.ex_q30 - dx0_u * lp.ey_q30;
       du = p_u * lp.ex_q30;
       dv = -p_u * lp.ey_q30;
-      const int64_t r_q30 = (t.r_u + 1) * kQ30;
-      narrow(v_acc, dv, -r_q30, r_q30, i_first, &lo, &hi);
-      narrow(u_acc, du, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &lo, &hi);
+      if (along_x) {
+        if (v_acc < -r_q30 || v_acc > r_q30) continue;
+        lo = x_lo;
+        hi = x_hi;
+      } else {
+        narrow(v_acc, dv, -r_q30, r_q30, i_first, &lo, &hi);
+        narrow(u_acc, du, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &lo, &hi);
+      }
     }
     if (lo > hi) continue;
     st->dexel_updates += static_cast<uint64_t>(hi - lo + 1);
@@ -203,23 +216,86 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
     bool row_changed = false;
-    int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
-    for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv, dx_u_col += p_u) {
-      int64_t h_v;
-      if (lp.plunge) {
+    if (lp.plunge) {
+      int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
+      for (int64_t i = lo; i <= hi; ++i, dx_u_col += p_u) {
         const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
         if (r2 > reach2) continue;
-        h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
-      } else {
-        const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
+        const int64_t h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+      }
+    } else if (dv == 0) {
+      // The move runs along the row (x-parallel): v, w*(v) and the flank's
+      // height F(w*) - m*w* are constants of the row; only the ends of the
+      // row need the profile per column.
+      const int64_t v = (v_acc + kQ30 / 2) >> 30;
+      if (v * v <= reach2) {
         const int64_t v2 = min_of(v * v, t.r2_u);
+        const int64_t ws = best_w(t, lp, v, v2);
+        const int64_t ws2 = ws * ws + v2;
+        const int64_t flank_v = lp.za_v - mul_shift(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
+        const bool flank_reaches = ws2 <= reach2;
+        // u(i) = u_lo + (i - lo) * step exactly (e = (+-1, 0)). Split the row
+        // into the flank, where the lowest point is w = w*, and the two ends.
+        const int64_t step = du / kQ30, u_lo = u_acc / kQ30;
+        int64_t f_lo, f_hi;  // flank columns: ws <= u <= ws + l
+        if (step > 0) {
+          f_lo = lo + div_ceil(ws - u_lo, step);
+          f_hi = lo + div_floor(ws + lp.len_u - u_lo, step);
+        } else {
+          f_lo = lo + div_ceil(ws + lp.len_u - u_lo, step);
+          f_hi = lo + div_floor(ws - u_lo, step);
+        }
+        f_lo = clamp(f_lo, lo, hi + 1);
+        f_hi = clamp(f_hi, f_lo - 1, hi);
+        auto side = [&](int64_t i) {
+          const int64_t u = u_lo + (i - lo) * step;
+          if (u < ws && !start_cap) return;
+          const int64_t w = u < ws ? u : u - lp.len_u;
+          const int64_t r2 = w * w + v2;
+          if (r2 > reach2) return;
+          const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+          row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+        };
+        for (int64_t i = lo; i < f_lo; ++i) side(i);
+        if (flank_reaches && f_lo <= f_hi) {
+          // Linear heights: a q16 DDA (drift below 2^-16 V a column).
+          const int64_t u0 = u_lo + (f_lo - lo) * step;
+          int64_t h_q16 = (flank_v + mul_shift(u0, lp.slope_v_q32, 32)) * 65536;
+          const int64_t dh_q16 = mul_shift(step, lp.slope_v_q32, 16);
+          const int64_t round = static_cast<int64_t>(1) << (16 + kSweepVBits - 1);
+          const int64_t cb_first = (h_q16 + round) >> (16 + kSweepVBits);
+          const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
+          if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
+            // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
+            bool any = false;
+            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) {
+              const int64_t cb = (h_q16 + round) >> (16 + kSweepVBits);
+              const bool lower = cb < static_cast<int64_t>(wt[i]);
+              any |= lower;
+              wt[i] = lower ? static_cast<H>(cb) : wt[i];
+            }
+            row_changed |= any;
+          } else {
+            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
+              row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
+          }
+        }
+        for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
+      }
+    } else {
+      for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
+        const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
         if (v * v > reach2) continue;
-        const int64_t w = clamp(best_w(t, lp, v, v2), u - lp.len_u, u);
+        const int64_t v2 = min_of(v * v, t.r2_u);
+        const int64_t ws = best_w(t, lp, v, v2);
+        if (u < ws && !start_cap) continue;
+        const int64_t w = clamp(ws, u - lp.len_u, u);
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
-        h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+        const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
       }
-      row_changed |= cut_dexel<H>(&wt[i], &wb[i], h_v, ct_lsb, shaft_above);
     }
     if (row_changed) {
       changed = true;
@@ -237,7 +313,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
 }  // namespace
 
 template <class H>
-void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st) {
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
   a = clamp_point(a);
   b = clamp_point(b);
   // Split so that no piece is longer than kMaxPieceNm horizontally.
@@ -251,13 +327,13 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
       to.y_nm = a.y_nm + muldiv_floor(b.y_nm - a.y_nm, k, pieces);
       to.z_nm = a.z_nm + muldiv_floor(b.z_nm - a.z_nm, k, pieces);
     }
-    sweep_piece(g, t, from, to, st);
+    sweep_piece(g, t, from, to, st, k == 1 && start_cap);
     from = to;
   }
 }
 
 #define DEXMILL_SWEEP_INSTANTIATE(H) \
-  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*);
+  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);
 DEXMILL_SWEEP_INSTANTIATE(uint8_t)
 DEXMILL_SWEEP_INSTANTIATE(uint16_t)
 DEXMILL_SWEEP_INSTANTIATE(uint32_t)

@@ -163,3 +163,20 @@ TEST(fixed_mul_shift_paths_agree) {
   CHECK_EQ(mul_shift_portable(INT64_MIN, 1, 0), INT64_MIN);
   CHECK_EQ(mul_shift_portable(INT64_MIN, -1, 0), INT64_MAX);
 }
+
+TEST(fixed_isqrt_fast_matches_exact) {
+  std::mt19937_64 rng(31);
+  for (int it = 0; it < 300000; ++it) {
+    uint64_t v = rng() >> (rng() % 64);
+    if (!CHECK_EQ(isqrt_fast_u64(v), isqrt_u64(v))) break;
+  }
+  for (uint64_t v = 0; v < 70000; ++v)
+    if (!CHECK_EQ(isqrt_fast_u64(v), isqrt_u64(v))) break;
+  const uint64_t edges[] = {UINT64_MAX, UINT64_MAX - 1, (uint64_t(1) << 62), (uint64_t(1) << 62) - 1,
+                            0xfffffffe00000001ull, 0xfffffffe00000000ull, (uint64_t(1) << 32), (uint64_t(1) << 32) - 1};
+  for (uint64_t v : edges) CHECK_EQ(isqrt_fast_u64(v), isqrt_u64(v));
+  for (uint64_t r = 1; r < (uint64_t(1) << 32); r = r * 3 + 1) {
+    CHECK_EQ(isqrt_fast_u64(r * r), isqrt_u64(r * r));
+    CHECK_EQ(isqrt_fast_u64(r * r - 1), isqrt_u64(r * r - 1));
+  }
+}

@@ -23,15 +23,14 @@ double now_s();
 void result(const char* name, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
 
 // Runs `fn` repeatedly until at least `min_s` seconds have passed (at least
-// once) and returns the fastest single run in seconds: the figure least
-// disturbed by other load on a shared machine.
+// once) and returns the fastest single run: the figure least disturbed by
+// other load on a shared machine. `fn` returns the seconds it measured
+// itself, so that set-up work in it (resetting a grid) is not counted.
 template <class F>
 double best_time_s(F fn, double min_s = 0.2, int max_runs = 50) {
   double best = 1e300, start = now_s();
   for (int run = 0; run < max_runs; ++run) {
-    double t0 = now_s();
-    fn();
-    double dt = now_s() - t0;
+    double dt = fn();
     if (dt < best) best = dt;
     if (now_s() - start >= min_s) break;
   }

@@ -1,0 +1,124 @@
+// Cutting benchmarks: the paper's Table 2 jobs and the scale-up jobs, in
+// both modes, with the lower bound of the same dexel visits.
+//
+// bound_ratio = seconds of the real cut / seconds of a pass that applies only
+// min() of a precomputed constant to the same dexels in the same order (the
+// spans the real cut logged), both timed in this run.
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "core/config.h"
+#include "core/cutter.h"
+#include "core/grid.h"
+#include "core/stamp.h"
+#include "core/sweep.h"
+#include "tools/bench.h"
+#include "tools/workloads.h"
+
+namespace dexmill {
+namespace {
+
+// Table 2, "cutting only", seconds on the paper's 200 MHz Pentium Pro.
+double paper_cut_seconds(const char* name) {
+  if (!std::strcmp(name, "paper-w1")) return 3 * 60 + 30;
+  if (!std::strcmp(name, "paper-w2")) return 9 * 60 + 42;
+  if (!std::strcmp(name, "paper-w3")) return 34 * 60 + 16;
+  return 0;
+}
+
+struct Job {
+  Workload w;
+  std::vector<height_t> stock, top, bottom;
+  DexelGrid<height_t> g;
+  std::vector<int32_t> cutter_words;
+  CutterDexels cutter;
+  SweepTool sweep_tool;
+};
+
+bool setup(const char* name, Job* j) {
+  if (!make_workload(name, &j->w)) return false;
+  const size_t n = static_cast<size_t>(j->w.geo.nx) * j->w.geo.ny;
+  j->top.assign(n, 0);
+  j->bottom.assign(n, 0);
+  if (!ok(grid_init(&j->g, j->w.geo, j->top.data(), j->bottom.data(), n))) return false;
+  grid_block_stock(&j->g, grid_height_of_z(j->g, j->w.stock_top_nm));
+  j->stock = j->top;
+  ToolProfile p = tool_profile(j->w.tool);
+  j->cutter_words.resize(cutter_storage_words(cutter_reach_dex(p, j->g.pitch_nm)));
+  if (!ok(cutter_build(p, j->g.pitch_nm, j->g.lsb_nm, j->cutter_words.data(), j->cutter_words.size(), &j->cutter)))
+    return false;
+  return ok(sweep_tool_prepare(p, j->g.lsb_nm, &j->sweep_tool));
+}
+
+void reset(Job* j) {
+  j->top = j->stock;
+  std::fill(j->bottom.begin(), j->bottom.end(), 0);
+  j->g.dirty = GridRect::none();
+}
+
+void cut(Job* j, bool sweep, CutStats* st) {
+  const std::vector<PointNm>& path = j->w.path;
+  for (size_t k = 1; k < path.size(); ++k) {
+    if (sweep) sweep_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, /*start_cap=*/false);
+    else stamp_line(&j->g, j->cutter, path[k - 1], path[k], st, /*include_start=*/false);
+  }
+}
+
+void run(const char* name) {
+  Job j;
+  if (!setup(name, &j)) {
+    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
+    return;
+  }
+  const bool big = j.w.geo.nx > 2000;
+  for (int mode = 0; mode < 2; ++mode) {
+    const bool sweep = mode == 1;
+    // One logged run: counts and the spans for the lower bound.
+    std::vector<DexelSpan> spans(big ? 1 : 1 << 22);
+    SpanLog log;
+    log.spans = spans.data();
+    log.capacity = spans.size();
+    CutStats counted;
+    counted.log = &log;
+    reset(&j);
+    cut(&j, sweep, &counted);
+    const double min_s = big ? 0.0 : 0.3;
+    double cut_s = bench::best_time_s([&] { reset(&j); CutStats st; double t0 = bench::now_s(); cut(&j, sweep, &st); return bench::now_s() - t0; }, min_s);
+    double bound_s = 0;
+    if (!log.dropped) {
+      const height_t c = static_cast<height_t>(grid_height_of_z(j.g, j.w.stock_top_nm - kNmPerMm));
+      bound_s = bench::best_time_s([&] {
+        reset(&j);
+        double t0 = bench::now_s();
+        for (size_t k = 0; k < log.count; ++k) {
+          const DexelSpan& sp = spans[k];
+          height_t* row = j.top.data() + j.g.index(0, sp.j);
+          for (int32_t i = sp.i0; i <= sp.i1; ++i) row[i] = row[i] < c ? row[i] : c;
+        }
+        return bench::now_s() - t0;
+      }, min_s);
+    }
+    char bound[96] = "bound_ratio=n/a";
+    if (bound_s > 0) std::snprintf(bound, sizeof bound, "bound_seconds=%.6f bound_ratio=%.2f", bound_s, cut_s / bound_s);
+    char paper[96] = "";
+    if (j.w.paper_instances)
+      std::snprintf(paper, sizeof paper, " paper_instances=%lld paper_seconds=%.0f speedup_vs_paper=%.0f",
+                    static_cast<long long>(j.w.paper_instances), paper_cut_seconds(name), paper_cut_seconds(name) / cut_s);
+    bench::result(name, "mode=%s grid=%dx%d tool=ball:%g moves=%zu instances=%llu dexel_updates=%llu seconds=%.6f "
+                  "ns_per_update=%.3f %s%s",
+                  sweep ? "sweep" : "stamp", j.w.geo.nx, j.w.geo.ny, j.w.tool.diameter_nm / 1e6, j.w.path.size() - 1,
+                  static_cast<unsigned long long>(counted.instances),
+                  static_cast<unsigned long long>(counted.dexel_updates), cut_s,
+                  1e9 * cut_s / static_cast<double>(counted.dexel_updates ? counted.dexel_updates : 1), bound, paper);
+  }
+}
+
+}  // namespace
+}  // namespace dexmill
+
+BENCH(paper_w1, "paper-w1", dexmill::run);
+BENCH(paper_w2, "paper-w2", dexmill::run);
+BENCH(paper_w3, "paper-w3", dexmill::run);
+BENCH(scale_1k, "scale-1k", dexmill::run);
+BENCH(scale_4k, "scale-4k", dexmill::run);
