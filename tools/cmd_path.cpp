@@ -1,8 +1,142 @@
-// `dexmill path` (issue 4): not yet built.
+// `dexmill path FILE [--chord MM] [--units mm|inch]`: the interpreted motion
+// as a polyline (../shared/CLI.md): rapid/feed end points of the tool tip in
+// machine coordinates, mm with 5 decimals, arcs split into chords.
+#include <cstdio>
+#include <cstring>
+
+#include "core/arc_chords.h"
+#include "core/decimal.h"
+#include "core/fixed.h"
+#include "core/interp.h"
+#include "platform/gcode_file.h"
 #include "tools/cli.h"
 
 namespace dexmill {
 namespace cli {
-int cmd_path(int, char**) { return fail(kExitUsage, "'path' is not built yet"); }
+namespace {
+
+// nm as mm with 5 decimals (rounded to nearest 10 nm, ties away from zero).
+char* put_mm5(char* p, int64_t nm) {
+  int64_t v = div_round(nm, 10);
+  uint64_t a = abs_u64(v);
+  if (v < 0) *p++ = '-';
+  char tmp[24];
+  int k = 0;
+  uint64_t ip = a / 100000, fp = a % 100000;
+  do { tmp[k++] = static_cast<char>('0' + ip % 10); ip /= 10; } while (ip);
+  while (k) *p++ = tmp[--k];
+  *p++ = '.';
+  for (uint64_t d = 10000; d; d /= 10) *p++ = static_cast<char>('0' + (fp / d) % 10);
+  return p;
+}
+
+void print_point(std::FILE* out, const char* kind, const PointNm& pt) {
+  char line[128];
+  char* p = line;
+  for (const char* k = kind; *k;) *p++ = *k++;
+  *p++ = ' ';
+  p = put_mm5(p, pt.x_nm);
+  *p++ = ' ';
+  p = put_mm5(p, pt.y_nm);
+  *p++ = ' ';
+  p = put_mm5(p, pt.z_nm);
+  *p++ = '\n';
+  std::fwrite(line, 1, static_cast<std::size_t>(p - line), out);
+}
+
+class PathPrinter final : public CanonSink {
+ public:
+  PathPrinter(std::FILE* out, int64_t chord_nm) : out_(out), chord_nm_(chord_nm) {}
+  void emit(const CanonRecord& r) override {
+    switch (r.kind) {
+      case CanonKind::kTraverse: print_point(out_, "rapid", r.end); break;
+      case CanonKind::kFeed: print_point(out_, "feed", r.end); break;
+      case CanonKind::kArc: {
+        ArcChords ch;
+        ch.init(r, chord_nm_);
+        PointNm p;
+        while (ch.next(&p)) print_point(out_, "feed", p);
+        break;
+      }
+      default: break;
+    }
+  }
+
+ private:
+  std::FILE* out_;
+  int64_t chord_nm_;
+};
+
+void usage(std::FILE* f) {
+  std::fprintf(f,
+               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch]\n\n"
+               "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
+               "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
+               "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
+               "<= --chord mm (default 0.001). --units: units before any G20/G21 (mm).\n"
+               "Stops at the first error (exit 1).\n");
+}
+
+}  // namespace
+
+int cmd_path(int argc, char** argv) {
+  const char* file = nullptr;
+  int64_t chord_nm = 1000;
+  bool inch = false;
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
+      usage(stdout);
+      return kExitOk;
+    }
+    if (!std::strcmp(a, "--chord") || !std::strcmp(a, "--units")) {
+      if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
+      const char* v = argv[++i];
+      if (!std::strcmp(a, "--units")) {
+        if (!std::strcmp(v, "mm")) inch = false;
+        else if (!std::strcmp(v, "inch")) inch = true;
+        else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+        continue;
+      }
+      Decimal d;
+      std::size_t pos = 0, n = std::strlen(v);
+      if (decimal_parse(v, n, &pos, &d) != DecimalParse::kOk || pos != n)
+        return fail(kExitUsage, "--chord needs a number of mm, not '%s'", v);
+      chord_nm = decimal_to_nm(d, false);
+      if (chord_nm < 1 || chord_nm > 1000 * kNmPerMm)
+        return fail(kExitUsage, "--chord must be between 0.000001 and 1000 mm, not '%s'", v);
+      continue;
+    }
+    if (a[0] == '-' && a[1]) return fail(kExitUsage, "unknown option '%s' (try 'dexmill path --help')", a);
+    if (file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", file, a);
+    file = a;
+  }
+  if (!file) {
+    usage(stderr);
+    return kExitUsage;
+  }
+  GcodeFile in;
+  if (!in.open(file)) return fail(kExitIo, "%s", in.error());
+  static char outbuf[1 << 16];
+  std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
+  GcodeStderrMessages msgs(in.name());
+  InterpOptions opt;
+  opt.inch = inch;
+  opt.warnings = &msgs;
+  PathPrinter printer(stdout, chord_nm);
+  Interp interp(&printer, opt);
+  char tol[32];
+  *put_mm5(tol, chord_nm) = 0;
+  // Trim the tolerance to the digits it needs ("0.00100" -> "0.001").
+  for (std::size_t k = std::strlen(tol); k > 0 && tol[k - 1] == '0' && tol[k - 2] != '.'; --k) tol[k - 1] = 0;
+  std::printf("# dexmill-path v1 units=mm frame=machine tol=%s\n", tol);
+  print_point(stdout, "# start", interp.position());
+  GcodeRunner runner(&in, &interp, &msgs, true);
+  runner.run_all();
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) return fail(kExitIo, "cannot write the path to standard output");
+  if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+  return msgs.errors() ? kExitInput : kExitOk;
+}
+
 }  // namespace cli
 }  // namespace dexmill

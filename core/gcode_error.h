@@ -1,0 +1,124 @@
+// G-code input errors and warnings (STYLE.md habit 4): one enum class with
+// stable numbers and one message table, returned and never thrown.
+//
+// A diagnostic carries the 1-based line and column of the offending word, the
+// word's text (for messages such as "G41 ... is not supported") and up to two
+// lengths in nanometres (for messages that quote radii). gcode_format_message()
+// turns it into text without any I/O, so a controller can show it on its panel;
+// the hosted reader (platform/gcode_file.h) prefixes `FILE:LINE:COL: error: `.
+#ifndef DEXMILL_CORE_GCODE_ERROR_H
+#define DEXMILL_CORE_GCODE_ERROR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace dexmill {
+
+// Numbers are stable: tests and users may quote them. Add at the end of a range.
+enum class GcodeError : uint8_t {
+  kOk = 0,
+  // -- reading the line (1..39)
+  kLineTooLong = 1,
+  kBadCharacter = 2,
+  kUnknownWord = 3,
+  kMissingNumber = 4,
+  kBadNumber = 5,
+  kNumberTooLarge = 6,
+  kUnterminatedComment = 7,
+  kNestedComment = 8,
+  kNotInteger = 9,
+  kNegativeValue = 10,
+  kCodeNotInTenths = 11,
+  kUnknownGcode = 12,
+  kUnknownMcode = 13,
+  kModalGroupConflict = 14,
+  kDuplicateWord = 15,
+  kLineNumberNotFirst = 16,
+  kTooManyMcodes = 17,
+  kStrayCloseParen = 18,
+  // -- checking the block (40..99)
+  kFeedZero = 40,
+  kInverseTimeNoF = 41,
+  kArcNoCentre = 42,
+  kArcRadiusMismatch = 43,
+  kArcZeroRadius = 44,
+  kArcRSameEnds = 45,
+  kArcRTooSmall = 46,
+  kArcWordWrongPlane = 47,
+  kArcRAndIjk = 48,
+  kAxisWordsWithG80 = 49,
+  kAxisWordsUnused = 50,
+  kTwoAxisUsers = 51,
+  kG53BadMotion = 52,
+  kCycleNoR = 53,
+  kCycleNoZ = 54,
+  kCycleRBelowZ = 55,
+  kCycleNoP = 56,
+  kCycleNoQ = 57,
+  kCycleQNotPositive = 58,
+  kCycleZeroRepeats = 59,
+  kCycleInverseTime = 60,
+  kG10NoL = 61,
+  kG10BadL = 62,
+  kG10BadP = 63,
+  kG92NoAxis = 64,
+  kDwellNoP = 65,
+  kWordUnused = 66,
+  kPositionOutOfRange = 67,
+  kTurnsNotPositive = 68,
+  kG43NoTool = 69,
+  kToolUnknown = 70,
+  kG10PNeeded = 71,
+  kLineNumberTooLarge = 72,
+  kG53Incremental = 73,
+  // -- recognised but not supported (100..139)
+  kUnsupportedOword = 100,
+  kUnsupportedParameter = 101,
+  kUnsupportedExpression = 102,
+  kUnsupportedAxis = 103,
+  kUnsupportedGcode = 104,
+  kUnsupportedMcode = 105,
+  kUnsupportedCutterComp = 106,
+  kUnsupportedPolar = 107,
+  kUnsupportedRotation = 108,
+  // -- warnings (140..): the line was skipped or a word ignored, safely
+  kWarnMcodeIgnored = 140,
+  kWarnGrblCommand = 141,
+  kWarnG10ToolTable = 142,
+  kWarnAfterEnd = 143,
+};
+
+// Stable number of an error, for messages and tests.
+inline int gcode_error_number(GcodeError e) { return static_cast<int>(e); }
+// True for the warning range (the line still ran, or was skipped safely).
+inline bool gcode_is_warning(GcodeError e) { return static_cast<int>(e) >= 140; }
+
+struct GcodeDiag {
+  GcodeError code;
+  uint32_t line;   // 1-based
+  uint16_t col;    // 1-based byte column of the offending word (1 if none)
+  char word[16];   // text of the word as written (upper case), NUL-terminated
+  int64_t a_nm;    // lengths quoted by the message ({a}, {b}), nm
+  int64_t b_nm;
+};
+
+// The template of a message: `{w}` stands for diag.word, `{a}`/`{b}` for
+// a_nm/b_nm printed in mm with 4 decimals. Never null.
+const char* gcode_error_template(GcodeError e);
+
+// Writes the message of `d` (without file, line or column) into buf, NUL
+// terminated, truncating to n - 1 bytes. Returns the length written.
+size_t gcode_format_message(const GcodeDiag& d, char* buf, size_t n);
+
+// Receives warnings as they happen (errors are returned instead).
+class GcodeDiagSink {
+ public:
+  virtual void warning(const GcodeDiag& d) = 0;
+
+ protected:
+  ~GcodeDiagSink() = default;
+};
+
+}  // namespace dexmill
+
+#endif

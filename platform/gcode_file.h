@@ -1,0 +1,131 @@
+// The hosted G-code reader: reads a file (or stdin, "-") line by line into a
+// fixed buffer, feeds the interpreter (core/interp.h), and reports errors as
+// `FILE:LINE:COL: error: MESSAGE` and warnings as `FILE:LINE:COL: warning:
+// MESSAGE` (../shared/CLI.md). Memory is fixed: a 64 KiB read buffer and one
+// line of kGcodeMaxLine bytes, whatever the length of the file.
+//
+// Driving it (what `dexmill path`, `check` and `run` do):
+//
+//   GcodeFile file;
+//   if (!file.open(path)) -> exit 3 with file.error()
+//   GcodeStderrMessages msgs(file.name());        // or your own GcodeMessages
+//   InterpOptions opt; opt.warnings = &msgs;      // opt.tools = your tool table
+//   Interp interp(&my_canon_sink, opt);
+//   GcodeRunner runner(&file, &interp, &msgs, /*stop_at_first_error=*/true);
+//   while (runner.step()) show_progress(file.bytes_read(), file.total_bytes());
+//   exit code: runner.io_error() ? 3 : msgs.errors() ? 1 : 0
+#ifndef DEXMILL_PLATFORM_GCODE_FILE_H
+#define DEXMILL_PLATFORM_GCODE_FILE_H
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+
+#include "core/gcode_block.h"
+#include "core/gcode_error.h"
+#include "core/interp.h"
+
+namespace dexmill {
+
+class GcodeFile {
+ public:
+  GcodeFile() = default;
+  GcodeFile(const GcodeFile&) = delete;
+  GcodeFile& operator=(const GcodeFile&) = delete;
+  ~GcodeFile();
+
+  // Opens `path`, or standard input for "-". False on failure (see error()).
+  bool open(const char* path);
+
+  enum class Read : uint8_t {
+    kLine,     // *text/*len hold the line, without '\n' or "\r\n"
+    kTooLong,  // the line exceeded kGcodeMaxLine bytes; it was skipped whole
+    kEof,
+    kIoError,  // see error()
+  };
+  // The next line; *line_no is its 1-based number.
+  Read next(const char** text, std::size_t* len, uint32_t* line_no);
+
+  // Progress: bytes consumed so far, and the file size (-1 when unknown,
+  // e.g. a pipe).
+  uint64_t bytes_read() const { return consumed_; }
+  int64_t total_bytes() const { return total_; }
+  // Name for messages: the path, or "<stdin>".
+  const char* name() const { return name_; }
+  const char* error() const { return error_; }
+
+ private:
+  bool fill();
+
+  std::FILE* f_ = nullptr;
+  bool owned_ = false;
+  char name_[512] = {0};
+  char error_[640] = {0};
+  char buf_[65536];
+  std::size_t pos_ = 0, end_ = 0;
+  bool eof_ = false;
+  char line_[kGcodeMaxLine + 1];
+  uint32_t line_no_ = 0;
+  uint64_t consumed_ = 0;
+  int64_t total_ = -1;
+};
+
+// Where diagnostics go; counts them.
+class GcodeMessages : public GcodeDiagSink {
+ public:
+  virtual void error(const GcodeDiag& d) = 0;
+  uint32_t errors() const { return errors_; }
+  uint32_t warnings() const { return warnings_; }
+
+ protected:
+  ~GcodeMessages() = default;
+  uint32_t errors_ = 0;
+  uint32_t warnings_ = 0;
+};
+
+// `FILE:LINE:COL: error: MESSAGE` into buf (NUL-terminated, truncated to n).
+std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n);
+
+// Prints diagnostics to a stdio stream (stderr by default).
+class GcodeStderrMessages final : public GcodeMessages {
+ public:
+  explicit GcodeStderrMessages(const char* file_name, std::FILE* out = stderr) : file_(file_name), out_(out) {}
+  void error(const GcodeDiag& d) override;
+  void warning(const GcodeDiag& d) override;
+
+ private:
+  const char* file_;
+  std::FILE* out_;
+};
+
+// Feeds a file to an interpreter one line per step().
+class GcodeRunner {
+ public:
+  GcodeRunner(GcodeFile* file, Interp* interp, GcodeMessages* messages, bool stop_at_first_error)
+      : file_(file), interp_(interp), messages_(messages), stop_at_first_error_(stop_at_first_error) {}
+
+  // Reads and interprets one line. False when there is nothing more to do:
+  // end of file, end of program (M2, M30, closing %), an I/O error, or the
+  // first error when stopping at it.
+  bool step();
+  // Runs step() until it returns false.
+  void run_all() {
+    while (step()) {
+    }
+  }
+  bool io_error() const { return io_error_; }
+  uint32_t lines() const { return lines_; }
+
+ private:
+  GcodeFile* file_;
+  Interp* interp_;
+  GcodeMessages* messages_;
+  bool stop_at_first_error_;
+  bool done_ = false;
+  bool io_error_ = false;
+  uint32_t lines_ = 0;
+};
+
+}  // namespace dexmill
+
+#endif
