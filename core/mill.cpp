@@ -1,0 +1,79 @@
+// The cutting stage: canonical records to stamp or sweep calls.
+#include "core/mill.h"
+
+#include "core/arc_chords.h"
+#include "core/stamp.h"
+
+namespace dexmill {
+
+template <class H>
+Mill<H>::Mill(DexelGrid<H>* grid, CutMode mode, const ToolLibrary* tools, int32_t* words, size_t nwords)
+    : grid_(grid), mode_(mode), tools_(tools), words_(words), nwords_(nwords) {}
+
+template <class H>
+Status Mill<H>::set_tool(const Tool& t) {
+  Status s = tool_check(t);
+  if (!ok(s)) return s;
+  const ToolProfile p = tool_profile(t);
+  if (mode_ == CutMode::kStamp) {
+    s = cutter_build(p, grid_->pitch_nm, grid_->lsb_nm, words_, nwords_, &cutter_);
+  } else {
+    s = sweep_tool_prepare(p, grid_->lsb_nm, &sweep_);
+  }
+  if (!ok(s)) return s;
+  tool_ = t;
+  have_tool_ = true;
+  chained_ = false;  // a joint cut by another tool does not cover this one
+  return Status::kOk;
+}
+
+template <class H>
+void Mill<H>::cut_line(PointNm a, PointNm b) {
+  // A move that continues from the last one's end need not redo the tool
+  // standing at that joint (stamp: the instance; sweep: the start cap).
+  const bool first = !(chained_ && a == last_);
+  if (have_tool_) {
+    if (mode_ == CutMode::kStamp) stamp_line(grid_, cutter_, a, b, &stats_, first);
+    else sweep_line(grid_, sweep_, a, b, &stats_, first);
+  }
+  last_ = b;
+  chained_ = true;
+}
+
+template <class H>
+void Mill<H>::emit(const CanonRecord& r) {
+  switch (r.kind) {
+    case CanonKind::kTraverse:
+    case CanonKind::kFeed:
+      cut_line(r.start, r.end);
+      break;
+    case CanonKind::kArc: {
+      ArcChords chords;
+      chords.init(r, kArcSagittaNm);
+      PointNm from = r.start, to;
+      while (chords.next(&to)) {
+        cut_line(from, to);
+        from = to;
+      }
+      break;
+    }
+    case CanonKind::kToolChange: {
+      Tool t;
+      if (!tools_ || !tools_->tool(r.tool, &t)) {
+        if (ok(status_)) { status_ = Status::kBadArgument; failed_tool_ = r.tool; }
+        break;
+      }
+      const Status s = set_tool(t);
+      if (!ok(s) && ok(status_)) { status_ = s; failed_tool_ = r.tool; }
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+template class Mill<uint8_t>;
+template class Mill<uint16_t>;
+template class Mill<uint32_t>;
+
+}  // namespace dexmill
