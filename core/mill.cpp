@@ -48,8 +48,14 @@ void Mill<H>::emit(const CanonRecord& r) {
       cut_line(r.start, r.end);
       break;
     case CanonKind::kArc: {
+      if (mode_ == CutMode::kSweep) {
+        if (have_tool_) sweep_arc(grid_, sweep_, r, &stats_, !(chained_ && r.start == last_));
+        last_ = r.end;
+        chained_ = true;
+        break;
+      }
       ArcChords chords;
-      chords.init(r, kArcSagittaNm);
+      chords.init(r, kArcChordSagittaNm);
       PointNm from = r.start, to;
       while (chords.next(&to)) {
         cut_line(from, to);

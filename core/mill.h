@@ -6,8 +6,10 @@
 // dexel set lives in caller memory.
 //
 // Rapid traverses cut too: a simulator must show a crash through the stock,
-// not hide it. Arcs: cut as chords of sagitta <= kArcSagittaNm (1 um), so the
-// path stays within 1 um + 7 nm of the exact arc (core/arc_chords.h).
+// not hide it. Arcs: sweep mode cuts them with sweep_arc (exact for level XY
+// arcs with ball and flat ends, else 1 um chords); stamp mode places
+// instances along chords of sagitta <= kArcChordSagittaNm (1 um), so the path
+// stays within 1 um + 7 nm of the exact arc (core/arc_chords.h).
 #ifndef DEXMILL_CORE_MILL_H
 #define DEXMILL_CORE_MILL_H
 
@@ -25,8 +27,6 @@
 namespace dexmill {
 
 enum class CutMode : uint8_t { kSweep = 0, kStamp = 1 };
-
-constexpr int64_t kArcSagittaNm = 1000;
 
 // Maps tool numbers (T words) to shapes.
 class ToolLibrary {

@@ -76,16 +76,19 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
     const int32_t lo = max_of(c.row_lo[row], k - ci32);
     const int32_t hi = min_of(c.row_hi[row], g->nx - 1 - ci32 + k);
     if (lo > hi) continue;
-    const size_t wbase = g->index(ci32 - k, cj32 + dj);
-    const size_t cbase = static_cast<size_t>(row) * static_cast<size_t>(c.side);
+    // Pointers start at the first visited column: forming one before the
+    // row (a cutter overhanging the left edge) would be undefined.
+    const size_t wbase = g->index(ci32 - k + lo, cj32 + dj);
+    const size_t cbase = static_cast<size_t>(row) * static_cast<size_t>(c.side) + static_cast<size_t>(lo);
     H* wt = g->top + wbase;
     H* wb = g->bottom + wbase;
     const int32_t* cb = c.bottom_lsb + cbase;
+    const int32_t n = hi - lo;
     st->dexel_updates += static_cast<uint64_t>(hi - lo + 1);
     if (st->log) st->log->add(cj32 + dj, ci32 - k + lo, ci32 - k + hi);
     bool row_changed = false;
     if (shaft_above) {
-      for (int32_t x = lo; x <= hi; ++x) {
+      for (int32_t x = 0; x <= n; ++x) {
         const W b = tip + cb[x];
         if (b < static_cast<W>(wt[x])) {
           if (b > static_cast<W>(wb[x])) {
@@ -99,7 +102,7 @@ void stamp_instance(DexelGrid<H>* g, const CutterDexels& c, int64_t ci, int64_t 
       }
     } else {
       const int32_t* ct = c.top_lsb + cbase;
-      for (int32_t x = lo; x <= hi; ++x) {
+      for (int32_t x = 0; x <= n; ++x) {
         const CutCase cc = apply_cut<H, W>(&wt[x], &wb[x], tip + cb[x], tip + ct[x]);
         row_changed |= cut_changed(cc);
         if (cc == CutCase::kC) g->bottoms_zero = false;

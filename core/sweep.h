@@ -61,8 +61,19 @@ int64_t sweep_profile_v(const SweepTool& t, int64_t r2_u2);
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
-#define DEXMILL_SWEEP_EXTERN(H) \
-  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);
+// Chords for the arcs not cut exactly: sagitta <= 1 um.
+constexpr int64_t kArcChordSagittaNm = 1000;
+
+// An arc or helix (a kArc record). Exact per column for level XY arcs with a
+// ball or flat end and radius <= 2^27 nm; otherwise chords of sagitta <=
+// kArcChordSagittaNm, each swept exactly (see core/sweep_arc.cpp).
+// start_cap as for sweep_line.
+template <class H>
+void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap = true);
+
+#define DEXMILL_SWEEP_EXTERN(H)                                                                             \
+  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool); \
+  extern template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);
 DEXMILL_SWEEP_EXTERN(uint8_t)
 DEXMILL_SWEEP_EXTERN(uint16_t)
 DEXMILL_SWEEP_EXTERN(uint32_t)

@@ -84,16 +84,20 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->zb_v = zb_v;
   lp->level = za_v == zb_v;
   const uint64_t l2 = static_cast<uint64_t>(dx_u * dx_u) + static_cast<uint64_t>(dy_u * dy_u);
-  lp->len_u = static_cast<int64_t>(isqrt_round_u64(l2));
+  // The length with 30 fraction bits: the direction must be a unit vector
+  // to 2^-30 even for a move a few U long (a 1 nm segment far from a column).
+  const int64_t len_q30 = static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
+  lp->len_u = (len_q30 + (kQ30 >> 1)) >> 30;
   const int64_t dz_u = dz_nm * kSweepUnitsPerNm;
   // Steeper than 2^24:1 is cut as a plunge at the lower end: the horizontal
   // error is below |dz| / 2^24 (60 nm per metre of descent).
-  lp->plunge = lp->len_u == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(lp->len_u) << 24);
+  lp->plunge = len_q30 == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(len_q30) >> 6);
   if (lp->plunge) return true;
-  lp->ex_q30 = muldiv_round(dx_u, kQ30, lp->len_u);
-  lp->ey_q30 = muldiv_round(dy_u, kQ30, lp->len_u);
-  lp->slope_v_q32 = muldiv_round(zb_v - za_v, static_cast<int64_t>(1) << 32, lp->len_u);
-  lp->m_geo_q30 = muldiv_round(dz_u, kQ30, lp->len_u);
+  constexpr int64_t kQ60 = static_cast<int64_t>(1) << 60;
+  lp->ex_q30 = muldiv_round(dx_u, kQ60, len_q30);
+  lp->ey_q30 = muldiv_round(dy_u, kQ60, len_q30);
+  lp->slope_v_q32 = muldiv_round(zb_v - za_v, static_cast<int64_t>(1) << 62, len_q30);
+  lp->m_geo_q30 = muldiv_round(dz_u, kQ60, len_q30);
   if (lp->level) return true;
   // sqrt(dz^2 + l^2) with a 128-bit sum.
   U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));

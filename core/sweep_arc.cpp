@@ -1,0 +1,137 @@
+// Swept envelope of arcs (core/sweep.h).
+//
+// A level arc in the XY plane with a ball or flat end is cut exactly per
+// column: the lowest point of the tool over the arc is the tool at the point
+// of the arc nearest the column (the profile rises with distance), and that
+// distance is closed form: |rho - Ra| when the column's direction from the
+// centre lies in the arc's sector, else the distance to the nearer end
+// point. Arcs are taken a quarter turn at a time (core/arc_chords.h places
+// the pieces), which keeps the sector test to two cross products.
+//
+// Everything else (helices, G18/G19 planes, bull nose and V-bit, radii over
+// 2^27 nm) is cut as chords of sagitta <= kArcChordSagittaNm, each swept
+// exactly: the tool path is then within 1 um + 7 nm of the arc.
+#include "core/arc_chords.h"
+#include "core/fixed.h"
+#include "core/stamp.h"
+#include "core/sweep.h"
+
+namespace dexmill {
+namespace {
+
+constexpr int64_t kMaxExactRadiusNm = static_cast<int64_t>(1) << 27;
+
+int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by - ay * bx; }
+
+// A level quarter-turn (at most) piece from A to B about C, radius ra, all in
+// U relative to C; dir = +1 counterclockwise.
+template <class H>
+void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
+                 int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
+  const int64_t z_v = muldiv_round(z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t hmax = height_max<H>();
+  if (z_v >= (hmax << kSweepVBits) || z_v + t.len_v <= 0) return;
+  const int64_t ct_lsb = (z_v + t.len_v) >> kSweepVBits;
+  const bool shaft_above = ct_lsb >= hmax;
+  const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
+
+  // Bounding box: the end points and any axis extreme inside the sector.
+  int64_t x0 = min_of(ax, bx), x1 = max_of(ax, bx), y0 = min_of(ay, by), y1 = max_of(ay, by);
+  const int64_t ext[4][2] = {{ra, 0}, {0, ra}, {-ra, 0}, {0, -ra}};
+  for (const auto& e : ext) {
+    if (cross(ax, ay, e[0], e[1]) * dir >= 0 && cross(e[0], e[1], bx, by) * dir >= 0) {
+      x0 = min_of(x0, e[0]); x1 = max_of(x1, e[0]);
+      y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
+    }
+  }
+  const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
+  const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm + x0 / kSweepUnitsPerNm - r_nm - g->x0_nm, p));
+  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + x1 / kSweepUnitsPerNm + r_nm - g->x0_nm, p));
+  const int64_t j_first = max_of<int64_t>(0, div_ceil(cy_nm + y0 / kSweepUnitsPerNm - r_nm - g->y0_nm, p));
+  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(cy_nm + y1 / kSweepUnitsPerNm + r_nm - g->y0_nm, p));
+  if (i_first > i_last || j_first > j_last) return;
+  st->instances++;
+  const int64_t p_u = p * kSweepUnitsPerNm;
+  for (int64_t j = j_first; j <= j_last; ++j) {
+    const int64_t qy = (g->y0_nm + j * p - cy_nm) * kSweepUnitsPerNm;
+    st->dexel_updates += static_cast<uint64_t>(i_last - i_first + 1);
+    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(i_first), static_cast<int32_t>(i_last));
+    H* wt = g->top + g->index(0, static_cast<int32_t>(j));
+    H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
+    int64_t qx = (g->x0_nm + i_first * p - cx_nm) * kSweepUnitsPerNm;
+    for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
+      const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
+      int64_t d2;
+      if (after_a && before_b) {
+        const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(qx * qx + qy * qy)));
+        d2 = (rho - ra) * (rho - ra);
+      } else {
+        const int64_t da2 = (qx - ax) * (qx - ax) + (qy - ay) * (qy - ay);
+        const int64_t db2 = (qx - bx) * (qx - bx) + (qy - by) * (qy - by);
+        // Behind the start, where the tool standing at A is lowest: already
+        // cut by the move that ended there.
+        if (!start_cap && da2 < db2) continue;
+        d2 = min_of(da2, db2);
+      }
+      if (d2 > reach2) continue;
+      const int64_t cb = (z_v + sweep_profile_v(t, min_of(d2, t.r2_u)) + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >>
+                         kSweepVBits;
+      CutCase c;
+      if (shaft_above) {
+        if (cb >= static_cast<int64_t>(wt[i])) continue;
+        if (cb > static_cast<int64_t>(wb[i])) { wt[i] = static_cast<H>(cb); c = CutCase::kB; }
+        else { wt[i] = 0; wb[i] = 0; c = CutCase::kE; }
+      } else {
+        c = apply_cut<H, int64_t>(&wt[i], &wb[i], cb, ct_lsb);
+        if (c == CutCase::kC) g->bottoms_zero = false;
+      }
+      if (cut_changed(c)) {
+        g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
+                                  static_cast<int32_t>(j + 1)});
+      }
+    }
+  }
+}
+
+}  // namespace
+
+template <class H>
+void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap) {
+  const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
+  const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
+  const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
+  const bool exact = exact_shape && arc.arc.plane == Plane::kXY && arc.start.z_nm == arc.end.z_nm &&
+                     ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
+  ArcChords pieces;
+  // Exact: quarter-turn pieces (a sagitta as large as the radius); else
+  // chords of the stated sagitta.
+  pieces.init(arc, exact ? ra_nm : kArcChordSagittaNm);
+  PointNm from = arc.start, to;
+  bool cap = start_cap;
+  while (pieces.next(&to)) {
+    if (!exact) {
+      sweep_line(g, t, from, to, st, cap);
+    } else {
+      // The piece on the circle of the start's radius; the end's radius may
+      // differ by the interpreter's tolerance: that gap is a straight sweep.
+      const int64_t ax = (from.x_nm - cx) * kSweepUnitsPerNm, ay = (from.y_nm - cy) * kSweepUnitsPerNm;
+      const int64_t ex = to.x_nm - cx, ey = to.y_nm - cy;
+      const int64_t re = hypot_round(ex, ey);
+      const int64_t bx_nm = re ? muldiv_round(ex, ra_nm, re) : 0, by_nm = re ? muldiv_round(ey, ra_nm, re) : 0;
+      level_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
+                  ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, st, cap);
+      const PointNm on_circle{cx + bx_nm, cy + by_nm, to.z_nm};
+      if (!(on_circle == to)) sweep_line(g, t, on_circle, to, st, false);
+    }
+    from = to;
+    cap = false;
+  }
+}
+
+#define DEXMILL_SWEEP_ARC_INSTANTIATE(H) \
+  template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);
+DEXMILL_SWEEP_ARC_INSTANTIATE(uint8_t)
+DEXMILL_SWEEP_ARC_INSTANTIATE(uint16_t)
+DEXMILL_SWEEP_ARC_INSTANTIATE(uint32_t)
+
+}  // namespace dexmill

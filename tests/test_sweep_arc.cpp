@@ -1,0 +1,224 @@
+// core/sweep_arc.cpp and core/mill.h: arcs against a double oracle, and the
+// golden grid hashes of a G-code program of lines, ramps, arcs and helices
+// cut through the interpreter and the Mill in both modes.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "core/grid.h"
+#include "core/interp.h"
+#include "core/mill.h"
+#include "core/sweep.h"
+#include "core/tool.h"
+#include "tests/alloc_count.h"
+#include "tests/runner.h"
+#include "tests/sweep_oracle.h"
+
+using namespace dexmill;
+
+namespace {
+
+constexpr int64_t mm(int64_t v) { return v * kNmPerMm; }
+const double kPi = 3.14159265358979323846;
+
+Tool tool_of(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) {
+  Tool t;
+  t.kind = k;
+  t.diameter_nm = d;
+  t.corner_radius_nm = rc;
+  t.tip_angle_mdeg = mdeg;
+  t.flute_length_nm = mm(20);
+  t.length_nm = mm(60);
+  return t;
+}
+
+// Lowest tool point over a (helical) arc by dense sampling plus ternary
+// refinement around the best sample, nm; HUGE_VAL if out of reach.
+double oracle_arc(const Tool& t, double cx, double cy, double ra, double a0, double sweep, double z0, double z1,
+                  double px, double py) {
+  const double R = double(t.diameter_nm / 2);
+  auto g = [&](double s) {
+    const double a = a0 + s * sweep;
+    const double r = std::hypot(px - (cx + ra * std::cos(a)), py - (cy + ra * std::sin(a)));
+    if (r > R) return HUGE_VAL;
+    return z0 + s * (z1 - z0) + oracle::profile_nm(t, r);
+  };
+  const int n = 4000;
+  int best = -1;
+  double bv = HUGE_VAL;
+  for (int k = 0; k <= n; ++k) {
+    double v = g(double(k) / n);
+    if (v < bv) { bv = v; best = k; }
+  }
+  if (best < 0) return HUGE_VAL;
+  double lo = std::max(0.0, (best - 1.0) / n), hi = std::min(1.0, (best + 1.0) / n);
+  for (int it = 0; it < 100; ++it) {
+    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    if (g(m1) <= g(m2)) hi = m2; else lo = m1;
+  }
+  return std::min(bv, g((lo + hi) / 2));
+}
+
+struct ArcGrid {
+  std::vector<uint16_t> top, bottom;
+  DexelGrid<uint16_t> g;
+  ArcGrid() : top(64 * 64), bottom(64 * 64) {
+    GridGeometry geo{64, 64, 0, 0, 250000, 0, 500};
+    grid_init(&g, geo, top.data(), bottom.data(), top.size());
+    for (auto& v : top) v = 60000;  // 30 mm of material
+  }
+};
+
+// Backward bound of sweep.h, widened to the chord bound (1 um) when the arc
+// is cut as chords.
+int check_arc(const Tool& tool, const char* name, double cx, double cy, double ra, double a0, double sweep, double z0,
+              double z1, double slack_nm) {
+  ArcGrid ag;
+  SweepTool swt;
+  sweep_tool_prepare(tool_profile(tool), 500, &swt);
+  CanonRecord r{};
+  r.kind = CanonKind::kArc;
+  r.start = PointNm{llround(cx + ra * std::cos(a0)), llround(cy + ra * std::sin(a0)), llround(z0)};
+  r.end = PointNm{llround(cx + ra * std::cos(a0 + sweep)), llround(cy + ra * std::sin(a0 + sweep)), llround(z1)};
+  r.arc.plane = Plane::kXY;
+  r.arc.centre = PointNm{llround(cx), llround(cy), llround(z0)};
+  r.arc.turns = sweep > 0 ? 1 : -1;
+  CutStats st;
+  sweep_arc(&ag.g, swt, r, &st);
+  int bad = 0;
+  for (int32_t j = 0; j < 64; ++j) {
+    for (int32_t i = 0; i < 64; ++i) {
+      const double px = i * 250000.0, py = j * 250000.0;
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+      for (auto& o : off) {
+        double h = oracle_arc(tool, cx, cy, ra, a0, sweep, z0, z1, px + o[0] * slack_nm, py + o[1] * slack_nm);
+        double l = h == HUGE_VAL ? 60000.0 : std::min(60000.0, h / 500.0);
+        lo = std::min(lo, l);
+        hi = std::max(hi, l);
+      }
+      const double got = ag.top[ag.g.index(i, j)];
+      if ((got < lo - 1.0 || got > hi + 1.0) && ++bad <= 3)
+        std::printf("  arc %s: dexel (%d,%d) top %.0f oracle [%.3f, %.3f] (ra %.0f a0 %.3f sweep %.3f z %.0f)\n", name, i,
+                    j, got, lo, hi, ra, a0, sweep, z0);
+    }
+  }
+  return bad;
+}
+
+}  // namespace
+
+TEST(sweep_arc_level_exact_against_oracle) {
+  std::mt19937_64 rng(77);
+  const Tool tools[] = {tool_of(ToolKind::kBall, mm(6)), tool_of(ToolKind::kFlat, mm(4)),
+                        tool_of(ToolKind::kBall, 3175000)};
+  const char* names[] = {"ball6", "flat4", "ball3.175"};
+  int bad = 0;
+  for (int t = 0; t < 3; ++t) {
+    for (int it = 0; it < 6; ++it) {
+      const double ra = 1e6 + double(rng() % 5000000), a0 = double(rng() % 6283) / 1000.0;
+      const double sweep = (it % 2 ? -1.0 : 1.0) * (0.3 + double(rng() % 5000) / 1000.0);
+      const double z = 5e6 + double(rng() % 10000000);
+      bad += check_arc(tools[t], names[t], 8e6, 8e6, ra, a0, sweep, z, z, 1.0);
+    }
+  }
+  CHECK_EQ(bad, 0);
+}
+
+TEST(sweep_arc_chorded_cases_within_bound) {
+  // Helices, bull nose and V-bit arcs go through 1 um chords: within 1 LSB
+  // for a column displaced by up to 1 um.
+  const Tool tools[] = {tool_of(ToolKind::kBall, mm(6)), tool_of(ToolKind::kBullNose, mm(6), mm(1)),
+                        tool_of(ToolKind::kVBit, mm(6), 0, 90000), tool_of(ToolKind::kFlat, mm(4))};
+  const char* names[] = {"ball6-helix", "bull-helix", "vbit-arc", "flat-helix"};
+  int bad = 0;
+  // The oracle's offsets are along x and y; 1.5 um covers 1 um radially.
+  bad += check_arc(tools[0], names[0], 8e6, 8e6, 4e6, 0.2, 4.0, 12e6, 9e6, 1500.0);
+  bad += check_arc(tools[1], names[1], 8e6, 8e6, 3e6, 1.0, -3.0, 11e6, 8e6, 1500.0);
+  bad += check_arc(tools[2], names[2], 8e6, 8e6, 5e6, 2.0, 2.5, 12e6, 12e6, 1500.0);
+  bad += check_arc(tools[3], names[3], 8e6, 8e6, 2e6, 0.0, 2 * kPi - 0.01, 12e6, 10e6, 1500.0);
+  CHECK_EQ(bad, 0);
+}
+
+namespace {
+
+const char kGoldenProgram[] =
+    "G21 G90 G17 G94\n"
+    "G0 Z25\n"
+    "G0 X5 Y5\n"
+    "G1 Z14 F300\n"                    // plunge
+    "G1 X35 Y5 F800\n"                 // level line
+    "G1 X35 Y25 Z12\n"                 // ramp
+    "G2 X25 Y15 I-10 J0\n"             // level arc, IJK
+    "G3 X15 Y25 R10\n"                 // level arc, R
+    "G2 X15 Y25 I0 J-5 Z9\n"           // full helical turn
+    "G1 X5 Y5 Z13\n"                   // diagonal ramp
+    "G2 X5 Y5 I3 J3 Z11 P2\n"          // two-turn helix
+    "G0 Z25\n"
+    "G0 X30 Y10\n"
+    "G1 Z-1 F200\n"                    // through the stock: a hole
+    "G0 Z25\n"
+    "M2\n";
+
+class OneTool : public ToolLibrary {
+ public:
+  explicit OneTool(const Tool& t) : t_(t) {}
+  bool tool(int32_t, Tool* out) const override { *out = t_; return true; }
+ private:
+  Tool t_;
+};
+
+template <class H>
+uint64_t run_golden(CutMode mode, const Tool& tool, CutStats* st, uint64_t* news) {
+  const int64_t lsb = lsb_for_range(mm(25), int(sizeof(H) * 8));
+  std::vector<H> top(82 * 62), bottom(82 * 62);
+  DexelGrid<H> g;
+  GridGeometry geo{82, 62, 0, 0, 500000, 0, lsb};
+  grid_init(&g, geo, top.data(), bottom.data(), top.size());
+  std::vector<int32_t> words(cutter_storage_words(64));
+  OneTool lib(tool);
+  const uint64_t before = t::heap_allocations();
+  grid_block_stock(&g, grid_height_of_z(g, mm(20)));
+  Mill<H> mill(&g, mode, &lib, words.data(), words.size());
+  mill.set_tool(tool);
+  InterpOptions opt;
+  Interp interp(&mill, opt);
+  const char* p = kGoldenProgram;
+  uint32_t line = 1;
+  while (*p) {
+    const char* e = std::strchr(p, '\n');
+    GcodeDiag d;
+    GcodeError err = interp.execute_line(p, static_cast<size_t>(e - p), line++, &d);
+    CHECK_EQ(static_cast<int>(err), 0);
+    p = e + 1;
+  }
+  *news = t::heap_allocations() - before;
+  *st = mill.stats();
+  return grid_hash(g);
+}
+
+}  // namespace
+
+TEST(mill_golden_program_hashes) {
+  // Pinned: change only with a commit that says why the new grid is right.
+  struct Want { CutMode mode; int bits; uint64_t hash; };
+  const Want want[] = {
+      {CutMode::kSweep, 8, 0x94fb242f0af9af61ull}, {CutMode::kSweep, 16, 0xcd6a5eb4ddad331full},
+      {CutMode::kSweep, 32, 0xbcc55194fde59b34ull}, {CutMode::kStamp, 8, 0xf6b8ce51882b9244ull},
+      {CutMode::kStamp, 16, 0xee365c0fe1b9edf0ull}, {CutMode::kStamp, 32, 0x930b7f018542b70cull},
+  };
+  const Tool ball = tool_of(ToolKind::kBall, mm(6));
+  for (const Want& w : want) {
+    CutStats st;
+    uint64_t news = 1, h = 0;
+    if (w.bits == 8) h = run_golden<uint8_t>(w.mode, ball, &st, &news);
+    if (w.bits == 16) h = run_golden<uint16_t>(w.mode, ball, &st, &news);
+    if (w.bits == 32) h = run_golden<uint32_t>(w.mode, ball, &st, &news);
+    std::printf("golden mill: %s m=%d %016llx updates %llu\n", w.mode == CutMode::kSweep ? "sweep" : "stamp", w.bits,
+                static_cast<unsigned long long>(h), static_cast<unsigned long long>(st.dexel_updates));
+    CHECK_EQ(h, w.hash);
+    CHECK_EQ(news, 0u);  // no heap while cutting, interpreter included
+  }
+}
