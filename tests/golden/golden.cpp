@@ -1,0 +1,99 @@
+// The section list, output formatting and scratch memory of the golden
+// program (see golden.h).
+#include "tests/golden/golden.h"
+
+namespace golden {
+
+// ---- the sections, in output order: add a line to add output --------------
+const Section kSections[] = {
+    {"math", golden_math},
+    {"tool", golden_tool},
+    {"stamp", golden_stamp},
+};
+const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
+
+namespace {
+// Bump the format version when the shape of the output (not its values)
+// changes, so an old golden.out is obviously stale.
+constexpr int kFormatVersion = 1;
+int g_failures = 0;
+
+// Enough for every section: the largest user is the m=32 stamp program
+// (2 x 82 x 62 x 4 bytes of grid plus cutters), under 100 KiB.
+constexpr size_t kArenaBytes = 160 * 1024;
+alignas(8) unsigned char g_arena_bytes[kArenaBytes];
+Arena g_arena;
+}  // namespace
+
+void Out::put(char c) {
+  if (n_ < sizeof buf_) buf_[n_++] = c;
+}
+
+Out& Out::str(const char* s) {
+  while (*s) put(*s++);
+  return *this;
+}
+
+Out& Out::udec(uint64_t v) {
+  char d[20];
+  int n = 0;
+  do {
+    d[n++] = static_cast<char>('0' + v % 10u);
+    v /= 10u;
+  } while (v != 0);
+  while (n > 0) put(d[--n]);
+  return *this;
+}
+
+Out& Out::dec(int64_t v) {
+  if (v < 0) {
+    put('-');
+    return udec(static_cast<uint64_t>(0) - static_cast<uint64_t>(v));
+  }
+  return udec(static_cast<uint64_t>(v));
+}
+
+Out& Out::hex(uint64_t v, int digits) {
+  for (int i = digits - 1; i >= 0; --i) put("0123456789abcdef"[(v >> (4 * i)) & 15u]);
+  return *this;
+}
+
+void Out::end() {
+  put('\n');
+  if (n_ == sizeof buf_) buf_[n_ - 1] = '\n';  // an over-long line is cut, never merged
+  write_(buf_, n_);
+  n_ = 0;
+  ++lines_;
+}
+
+size_t Arena::capacity() const { return kArenaBytes; }
+
+void* Arena::take_bytes(size_t bytes, size_t align) {
+  size_t at = (used_ + align - 1) / align * align;
+  if (at > kArenaBytes || bytes > kArenaBytes - at) return nullptr;
+  used_ = at + bytes;
+  return g_arena_bytes + at;
+}
+
+Arena& arena() { return g_arena; }
+
+void fail(Out& out, const char* what) {
+  ++g_failures;
+  out.str("FAIL ").str(what).end();
+}
+
+int run_all(Out::WriteFn write) {
+  Out out(write);
+  out.str("dexmill golden output").kv("format", kFormatVersion).kv("sections", static_cast<int64_t>(kSectionCount)).end();
+  for (size_t i = 0; i < kSectionCount; ++i) {
+    out.str("[").str(kSections[i].name).str("]").end();
+    arena().reset();
+    kSections[i].run(out);
+  }
+  // The line count is part of the output: a target that silently dropped
+  // lines cannot match.
+  out.str("end").kv("lines", out.lines() + 1).kv("failures", g_failures).end();
+  return g_failures ? 1 : 0;
+}
+
+}  // namespace golden
