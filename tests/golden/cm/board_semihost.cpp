@@ -64,13 +64,16 @@ void known_loop(uint32_t n) {
       "   bne 1b\n"
       : "+l"(n)
       :
-      : "cc");
+      : "cc", "memory");  // "memory": keep it between the two SysTick reads
 }
 
 void clock_start() {
   reg(kSystRvr) = kSysTickReload;
   reg(kSystCvr) = 0;
   reg(kSystCsr) = 7u;  // enable, interrupt on wrap, processor clock
+  // The counter starts at 0 and reloads on the first tick, which is not a
+  // wrap; count from after the reload.
+  while (reg(kSystCvr) == 0) {}
   g_clock_started = true;
   constexpr uint32_t kTurns = 1000000;
   const uint64_t t0 = systick_ticks();
@@ -96,6 +99,10 @@ extern "C" __attribute__((noreturn)) void board_fault() {
   semihost(kSysWrite0, "*** Cortex-M fault (HardFault/MemManage/BusFault/UsageFault, or an FPU instruction) ***\n");
   board_exit(99);
 }
+
+// A pure virtual call is a bug; the library version would drag in
+// std::terminate and the C library's abort machinery.
+extern "C" void __cxa_pure_virtual() { board_fault(); }
 
 namespace golden {
 
