@@ -9,6 +9,7 @@ const Section kSections[] = {
     {"math", golden_math},
     {"tool", golden_tool},
     {"stamp", golden_stamp},
+    {"regress", golden_regress},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
 

@@ -22,6 +22,8 @@
 # Targets (Debian 12 packages come from install-deps.sh cross):
 #   gcc-O0 gcc-O2 gcc-O3-native clang-O0 clang-O2 clang-O3-native   x86-64
 #   ubsan        g++ -O1, AddressSanitizer + UndefinedBehaviorSanitizer; any report fails
+#   ubsan-clang  the same with clang++, whose UBSan also checks pointer arithmetic
+#                (pointer-overflow: a pointer formed outside its array)
 #   i386-O2      g++ -m32 (g++-12-multilib; never g++-multilib, which removes the cross compilers)
 #   armhf-O2 aarch64-O2                          static, under qemu-arm / qemu-aarch64
 #   ppc-be-O2 s390x-be-O2 mips-be-O2             big-endian CPUs, static, under qemu-user
@@ -41,7 +43,7 @@ set -u
 cd "$(dirname "$0")/../.."
 ROOT=$(pwd)
 
-ALL_TARGETS="gcc-O0 gcc-O2 gcc-O3-native clang-O0 clang-O2 clang-O3-native ubsan i386-O2 armhf-O2 aarch64-O2
+ALL_TARGETS="gcc-O0 gcc-O2 gcc-O3-native clang-O0 clang-O2 clang-O3-native ubsan ubsan-clang i386-O2 armhf-O2 aarch64-O2
 ppc-be-O2 s390x-be-O2 mips-be-O2 cm4-qemu cm7-qemu cm0-qemu"
 WARN=${DEXMILL_WARN:--Wall -Wextra -Werror -Wshadow -Wvla -Wundef}
 INTFLAGS=${DEXMILL_INTFLAGS:--fno-exceptions -fno-rtti -include core/integer_only.h}
@@ -80,6 +82,8 @@ define() {
     clang-O2) CXX=clang++; FLAGS="-O2";;
     clang-O3-native) CXX=clang++; FLAGS="-O3 -march=native";;
     ubsan) CXX=g++; FLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+      LDFLAGS="-fsanitize=address,undefined"; RUN="env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1";;
+    ubsan-clang) CXX=clang++; FLAGS="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
       LDFLAGS="-fsanitize=address,undefined"; RUN="env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1";;
     i386-O2) CXX=g++; FLAGS="-m32 -O2"; LDFLAGS="-m32"; NEED="test -d /usr/lib/gcc/x86_64-linux-gnu/12/32";;
     armhf-O2) CXX=arm-linux-gnueabihf-g++; FLAGS="-O2"; LDFLAGS="-static"; RUN=qemu-arm;;
@@ -189,7 +193,7 @@ run_target() {
   echo "$(secs "$t0" "$t1") $(secs "$t1" "$t2")" > "$d/times"; echo "$rc" > "$d/rc"
   if [ $rc = 124 ] || [ $rc = 137 ]; then echo TIMEOUT > "$d/status"
   elif [ $rc != 0 ]; then echo RUN-FAIL > "$d/status"
-  elif [ "$t" = ubsan ] && [ -s "$d/stderr" ]; then echo RUN-FAIL > "$d/status"   # a sanitizer report
+  elif [ "${t#ubsan}" != "$t" ] && [ -s "$d/stderr" ]; then echo RUN-FAIL > "$d/status"   # a sanitizer report
   else echo RAN > "$d/status"; fi
 }
 
