@@ -89,7 +89,7 @@ clean:
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
 # ---- embedded checks (tools/scripts/; the scripts install their toolchains) --
-#   make xcheck    golden output byte-identical on 16 compilers, opt levels and
+#   make xcheck    golden output byte-identical on 17 compilers, opt levels and
 #                  CPUs incl. big-endian and Cortex-M (XCHECK_ARGS=--bless re-pins
 #                  tests/golden/golden.out; XCHECK_ARGS="-t gcc-O2,cm0-qemu" subsets)
 #   make cortexm   core/ + display/ freestanding for Cortex-M4/M7/M0+: flash/RAM,
