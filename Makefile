@@ -87,3 +87,19 @@ clean:
 	rm -rf build
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# ---- embedded checks (tools/scripts/; the scripts install their toolchains) --
+#   make xcheck    golden output byte-identical on 17 compilers, opt levels and
+#                  CPUs incl. big-endian and Cortex-M (XCHECK_ARGS=--bless re-pins
+#                  tests/golden/golden.out; XCHECK_ARGS="-t gcc-O2,cm0-qemu" subsets)
+#   make cortexm   core/ + display/ freestanding for Cortex-M4/M7/M0+: flash/RAM,
+#                  and no heap, exceptions, RTTI or floating point
+#   make panel     the Cortex-M4 panel demo under qemu; its hash against the host's
+EMBEDDED_ENV := DEXMILL_WARN='$(WARN)' DEXMILL_INTFLAGS='$(INTFLAGS)'
+.PHONY: xcheck cortexm panel
+xcheck:
+	$(EMBEDDED_ENV) tools/scripts/xcheck.sh $(XCHECK_ARGS)
+cortexm:
+	$(EMBEDDED_ENV) tools/scripts/cortexm.sh $(CORTEXM_ARGS)
+panel:
+	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)

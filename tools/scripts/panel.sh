@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# panel.sh - the Cortex-M panel demo (`make panel`): builds
+# tests/golden/panel_main.cpp with core/*.cpp and display/*.cpp (globs) for
+# the host and, freestanding, for a Cortex-M4F on qemu's MPS2 AN386 board
+# (semihosting for output only), runs both, and requires every output line
+# that does not start with "info" (instruction counts exist only on the
+# board) to be identical. The board run uses -icount shift=0, so SysTick
+# counts retired instructions (see tests/golden/cm/board_semihost.cpp).
+#
+# Usage: tools/scripts/panel.sh [--no-install] [-w DIR (default build/panel)] [-T SEC (default 300)]
+# Flags from the Makefile when run by make: $DEXMILL_WARN, $DEXMILL_INTFLAGS.
+# Exit: 0 equal; 1 different output or a run failed; 2 a build failed or usage.
+set -u
+cd "$(dirname "$0")/../.."
+ROOT=$(pwd)
+WORK=build/panel; TMO=300; INSTALL=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    -w) WORK=$2; shift 2;; -T) TMO=$2; shift 2;; --no-install) INSTALL=0; shift;;
+    *) sed -n '2,/^set -u/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 2;;
+  esac
+done
+WARN=${DEXMILL_WARN:--Wall -Wextra -Werror -Wshadow -Wvla -Wundef}
+INTFLAGS=${DEXMILL_INTFLAGS:--fno-exceptions -fno-rtti -include core/integer_only.h}
+[ $INSTALL = 1 ] && { tools/scripts/install-deps.sh cross || echo "panel: installing the toolchain failed" >&2; }
+for c in g++ arm-none-eabi-g++ qemu-system-arm; do command -v $c >/dev/null || { echo "panel: $c missing (tools/scripts/install-deps.sh cross)" >&2; exit 2; }; done
+INT_SRC="$(ls core/*.cpp display/*.cpp 2>/dev/null | sort) tests/golden/panel_main.cpp tests/golden/golden_out.cpp"
+rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
+
+# build KIND CXX FLAGS BOARD_SOURCES... -> $WORK/KIND/obj list in $objs
+build() {
+  local kind=$1 cxx=$2 fl=$3 s o; shift 3; objs=()
+  for s in $INT_SRC; do
+    o="$WORK/$kind/$(echo "${s%.*}" | tr / _).o"
+    $cxx -std=c++17 $fl $WARN -I. $INTFLAGS -c "$s" -o "$o" || return 1; objs+=("$o")
+  done
+  for s in "$@"; do
+    o="$WORK/$kind/$(basename "${s%.*}").o"
+    case $s in
+      *.c) arm-none-eabi-gcc $fl -Wall -Wextra -Werror -c "$s" -o "$o" || return 1;;
+      *) $cxx -std=c++17 $fl $WARN -I. -fno-exceptions -fno-rtti -c "$s" -o "$o" || return 1;;
+    esac
+    objs+=("$o")
+  done
+}
+CM4="-mthumb -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -ffunction-sections -fdata-sections"
+build host g++ "-O2" tests/golden/board_host.cpp && g++ "${objs[@]}" -o "$WORK/host/panel" ||
+  { echo "panel: host build failed"; exit 2; }
+build cm4 arm-none-eabi-g++ "$CM4" tests/golden/cm/board_semihost.cpp tests/golden/cm/startup.c &&
+  arm-none-eabi-g++ $CM4 "${objs[@]}" -nostartfiles --specs=nano.specs -T tests/golden/cm/mps2.ld \
+    -Wl,--gc-sections -Wl,--no-warn-rwx-segments -Wl,-Map="$WORK/cm4/panel.map" -o "$WORK/cm4/panel.elf" ||
+  { echo "panel: Cortex-M4 build failed"; exit 2; }
+
+read -r tx dt bs _ < <(arm-none-eabi-size "$WORK/cm4/panel.elf" | tail -1)
+echo "panel: Cortex-M4 image: FLASH $((tx + dt)) B (text+rodata $tx, data $dt), RAM $((dt + bs)) B static (grid, cutters, stack not included)"
+addr=$(arm-none-eabi-nm -C "$WORK/cm4/panel.elf" | awk '$NF == "kDemo" || $NF ~ /::kDemo$/ { print $1; exit }')
+if [ -n "$addr" ]; then
+  [ $((16#$addr)) -lt $((16#20000000)) ] && where=flash || where=RAM
+  echo "panel: demo program kDemo at 0x$addr ($where)"
+fi
+
+fail=0
+t0=$(date +%s.%N)
+"$WORK/host/panel" > "$WORK/host/stdout" 2> "$WORK/host/stderr" || { echo "panel: host run failed (rc $?)"; fail=1; }
+t1=$(date +%s.%N)
+timeout -k 5 "$TMO" qemu-system-arm -M mps2-an386 -icount shift=0 -nographic -monitor none -serial none \
+  -chardev stdio,id=semi0 -semihosting-config enable=on,target=native,chardev=semi0 \
+  -kernel "$WORK/cm4/panel.elf" < /dev/null > "$WORK/cm4/stdout" 2> "$WORK/cm4/stderr" || { echo "panel: qemu run failed (rc $?)"; fail=1; }
+t2=$(date +%s.%N)
+echo "panel: host run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }') s, qemu run $(awk -v a="$t1" -v b="$t2" 'BEGIN { printf "%.2f", b - a }') s"
+echo "--- Cortex-M4 (qemu mps2-an386) output"
+cat "$WORK/cm4/stdout"
+if [ $fail = 0 ] && diff <(grep -v '^info' "$WORK/host/stdout") <(grep -v '^info' "$WORK/cm4/stdout") > "$WORK/diff.txt"; then
+  echo "RESULT: PASS (Cortex-M4 output equals the host build's, $(grep -vc '^info' "$WORK/host/stdout") lines)"
+  exit 0
+fi
+echo "--- host vs Cortex-M4 (non-info lines)"; head -20 "$WORK/diff.txt"
+echo "RESULT: FAIL"
+exit 1
