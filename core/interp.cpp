@@ -90,11 +90,11 @@ struct BlockRunner {
     return fail(e, col, w);
   }
 
-  // A length word in the block's units, range-checked.
-  GcodeError length(char letter, int64_t* nm) {
+  // A length word in the block's units, range-checked against `limit`.
+  GcodeError length(char letter, int64_t* nm, int64_t limit = kGcodeMaxCoordNm) {
     const Decimal& v = b.val(letter);
     *nm = decimal_to_nm(v, nx.inch);
-    if (abs64(*nm) > kGcodeMaxCoordNm) return fail_letter(GcodeError::kNumberTooLarge, letter);
+    if (abs64(*nm) > limit) return fail_letter(GcodeError::kNumberTooLarge, letter);
     return GcodeError::kOk;
   }
   GcodeError integer(char letter, int64_t lo, int64_t hi, int64_t* out) {
@@ -198,8 +198,9 @@ GcodeError BlockRunner::run_modes() {
   // Units first: every length of the block is in the units the block sets.
   if (b.g[kGUnits] >= 0) nx.inch = b.g[kGUnits] == 200;
   if (b.g[kGFeedMode] >= 0) {
+    // LinuxCNC sets F to 0 on every G93 or G94 (the block's own F comes after).
     nx.inverse_time = b.g[kGFeedMode] == 930;
-    if (nx.inverse_time != cur.inverse_time) nx.feed_nm_per_min = 0;  // LinuxCNC clears F on a mode change
+    nx.feed_nm_per_min = 0;
   }
   if (b.has_word('F')) {
     const Decimal& f = b.val('F');
@@ -469,16 +470,16 @@ GcodeError BlockRunner::run_arc(int motion) {
   int64_t ca, cb;
   if (has_r) {
     int64_t r;
-    if ((e = length('R', &r)) != GcodeError::kOk) return e;
+    if ((e = length('R', &r, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     e = arc_centre_from_radius(p, r, motion == 20, &ca, &cb, &d->a_nm, &d->b_nm);
     if (e != GcodeError::kOk) return fail(e, b.g[kGMotion] >= 0 ? col : b.col_of('R'), w);
   } else {
     int64_t oa = 0, ob = 0;
-    if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa)) != GcodeError::kOk) return e;
-    if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob)) != GcodeError::kOk) return e;
+    if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
+    if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     ca = nx.arc_absolute ? oa + offset(ia) : p.sa + oa;
     cb = nx.arc_absolute ? ob + offset(ib) : p.sb + ob;
-    if (abs64(ca) > kGcodeMaxCoordNm || abs64(cb) > kGcodeMaxCoordNm) {
+    if (abs64(ca) > kGcodeMaxArcNm || abs64(cb) > kGcodeMaxArcNm) {
       d->a_nm = abs64(ca) > abs64(cb) ? ca : cb;
       return fail(GcodeError::kPositionOutOfRange, col, w);
     }

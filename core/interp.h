@@ -15,7 +15,8 @@
 //
 // Limits (checked where numbers come in; "number too large" or "position
 // beyond the +-10 m range", never wrap-around):
-//   every length word and every resulting position: |v| <= 10 m (1e10 nm);
+//   every length word and every resulting position: |v| <= 10 m (1e10 nm),
+//   except arc centres (I, J, K, absolute or not) and R: <= 100 m;
 //   F <= 1e6 units/min; S <= 1e6 rpm; G4 P <= 1e6 s; L <= 1e6 repeats;
 //   arc P (turns) <= 10000; T, H <= 1e9 (integers >= 0).
 #ifndef DEXMILL_CORE_INTERP_H
@@ -33,6 +34,9 @@
 namespace dexmill {
 
 constexpr int64_t kGcodeMaxCoordNm = 10000000000;  // 10 m
+// Arc centres (I, J, K) and radii (R) may lie further out: CAM programs
+// write nearly straight arcs with centres tens of metres away.
+constexpr int64_t kGcodeMaxArcNm = 100000000000;   // 100 m
 
 // Tool lengths for G43 H (the consumer's tool table; none: every length 0).
 class ToolTable {
