@@ -274,6 +274,14 @@ GcodeError BlockRunner::run_modes() {
     if (b.has_word('Z') && (e = length('Z', &z)) != GcodeError::kOk) return e;
     nx.tlo_nm = z;
   }
+  if (nx.tlo_nm != cur.tlo_nm) {
+    // The spindle stays where it is, so the controlled point (the tool tip,
+    // machine position minus the offset) moves by the change, as in LinuxCNC.
+    nx.pos.z_nm = cur.pos.z_nm - (nx.tlo_nm - cur.tlo_nm);
+    char w[16];
+    gcode_code_text('G', b.g[kGToolLength], w);
+    if ((e = check_pos(nx.pos, b.g_col[kGToolLength], w)) != GcodeError::kOk) return e;
+  }
   if (b.g[kGCoordSystem] >= 0) {
     const int g = b.g[kGCoordSystem];
     nx.coord_system = static_cast<uint8_t>(g <= 590 ? (g - 540) / 10 : 6 + (g - 591));

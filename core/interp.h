@@ -9,7 +9,10 @@
 // Frames: positions in records are the controlled point in machine
 // coordinates with work offsets (G54..G59.3, G10) and G92 applied, and the
 // tool length offset NOT applied (it is carried in every record instead).
-// This is LinuxCNC's canonical position plus its G5x and G92 offsets. The
+// This is LinuxCNC's canonical position plus its G5x and G92 offsets: the
+// tool tip when the tool is as long as its offset says, i.e. the machine
+// (spindle) position minus the offset. So G53 Z0 puts the tip at Z = -TLO,
+// and a change of offset (G43, G49) moves the point without a move. The
 // program starts at the machine origin (0, 0, 0), in mm (G21) unless
 // InterpOptions says inch, G17, G90, G91.1, G94, G54, G40, G49, G80, G98.
 //
