@@ -406,8 +406,10 @@ GcodeError BlockRunner::run_motion(int motion) {
     if (!is_cycle(motion)) nx.cycle_level_set = false;
   }
   if (motion == 800) return GcodeError::kOk;
-  // Modal G0/G1 with no axis word (e.g. a line with only G1 F100) does not move.
-  if (!b.has_axis() && (motion == 0 || motion == 10)) return GcodeError::kOk;
+  // G0/G1 written with no axis word make a move of length zero (LinuxCNC
+  // emits it, and checks the feed of G1); a modal one on a line of other
+  // words (F100 alone) makes none.
+  if (!b.has_axis() && (motion == 0 || motion == 10) && b.g[kGMotion] < 0) return GcodeError::kOk;
   if (motion == 0 || motion == 10) return run_straight(motion, b.g[kGNonModal] == 530);
   if (motion == 20 || motion == 30) return run_arc(motion);
   if (!b.has_axis() && b.g[kGMotion] < 0) return GcodeError::kOk;
