@@ -70,6 +70,9 @@ int64_t decimal_scale(Decimal d, int64_t scale_num, int scale_den_pow10) {
     d.mant /= 10;
     --den;
   }
+  // Fast path: the product fits 64 bits (every coordinate does).
+  int64_t prod;
+  if (!__builtin_mul_overflow(d.mant, scale_num, &prod)) return den == 0 ? prod : div_round(prod, pow10_i64(den));
   return muldiv_round(d.mant, scale_num, pow10_i64(den));
 }
 

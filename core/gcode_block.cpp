@@ -237,7 +237,12 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
         if (!g) return fail(d, GcodeError::kUnknownGcode, w.col, code_text);
         if (g->support == Support::kUnsupported) return fail(d, GcodeError::kUnsupportedGcode, w.col, code_text);
         if (g->support == Support::kCutterComp) return fail(d, GcodeError::kUnsupportedCutterComp, w.col, code_text);
-        if (b->g[g->group] >= 0) return fail(d, GcodeError::kModalGroupConflict, w.col, code_text);
+        // LinuxCNC drops G80 when another motion code shares its block.
+        if (g->group == kGMotion && b->g[kGMotion] >= 0 && (tenths == 800 || b->g[kGMotion] == 800)) {
+          if (tenths == 800) continue;
+        } else if (b->g[g->group] >= 0) {
+          return fail(d, GcodeError::kModalGroupConflict, w.col, code_text);
+        }
         b->g[g->group] = static_cast<int16_t>(tenths);
         b->g_col[g->group] = w.col;
       } else {

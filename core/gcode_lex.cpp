@@ -109,6 +109,12 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
     // "X" followed by nothing numeric is a missing number; "X-" or "X." a bad one.
     size_t i = start + 1;
     while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
+    if (i < n_ && (s_[i] == '[' || s_[i] == '#')) {
+      GcodeError err = s_[i] == '[' ? GcodeError::kUnsupportedExpression : GcodeError::kUnsupportedParameter;
+      set_diag(d, err, i);
+      gcode_set_word(d, s_ + i, 1);
+      return err;
+    }
     bool started = i < n_ && (s_[i] == '-' || s_[i] == '+' || s_[i] == '.');
     GcodeError err = r == DecimalParse::kTooLarge ? GcodeError::kNumberTooLarge
                      : started                    ? GcodeError::kBadNumber

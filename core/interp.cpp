@@ -90,11 +90,11 @@ struct BlockRunner {
     return fail(e, col, w);
   }
 
-  // A length word in the block's units, range-checked.
-  GcodeError length(char letter, int64_t* nm) {
+  // A length word in the block's units, range-checked against `limit`.
+  GcodeError length(char letter, int64_t* nm, int64_t limit = kGcodeMaxCoordNm) {
     const Decimal& v = b.val(letter);
     *nm = decimal_to_nm(v, nx.inch);
-    if (abs64(*nm) > kGcodeMaxCoordNm) return fail_letter(GcodeError::kNumberTooLarge, letter);
+    if (abs64(*nm) > limit) return fail_letter(GcodeError::kNumberTooLarge, letter);
     return GcodeError::kOk;
   }
   GcodeError integer(char letter, int64_t lo, int64_t hi, int64_t* out) {
@@ -198,8 +198,9 @@ GcodeError BlockRunner::run_modes() {
   // Units first: every length of the block is in the units the block sets.
   if (b.g[kGUnits] >= 0) nx.inch = b.g[kGUnits] == 200;
   if (b.g[kGFeedMode] >= 0) {
+    // LinuxCNC sets F to 0 on every G93 or G94 (the block's own F comes after).
     nx.inverse_time = b.g[kGFeedMode] == 930;
-    if (nx.inverse_time != cur.inverse_time) nx.feed_nm_per_min = 0;  // LinuxCNC clears F on a mode change
+    nx.feed_nm_per_min = 0;
   }
   if (b.has_word('F')) {
     const Decimal& f = b.val('F');
@@ -272,6 +273,14 @@ GcodeError BlockRunner::run_modes() {
     if (b.has_word('Y')) return fail_letter(GcodeError::kUnsupportedAxis, 'Y');
     if (b.has_word('Z') && (e = length('Z', &z)) != GcodeError::kOk) return e;
     nx.tlo_nm = z;
+  }
+  if (nx.tlo_nm != cur.tlo_nm) {
+    // The spindle stays where it is, so the controlled point (the tool tip,
+    // machine position minus the offset) moves by the change, as in LinuxCNC.
+    nx.pos.z_nm = cur.pos.z_nm - (nx.tlo_nm - cur.tlo_nm);
+    char w[16];
+    gcode_code_text('G', b.g[kGToolLength], w);
+    if ((e = check_pos(nx.pos, b.g_col[kGToolLength], w)) != GcodeError::kOk) return e;
   }
   if (b.g[kGCoordSystem] >= 0) {
     const int g = b.g[kGCoordSystem];
@@ -397,8 +406,10 @@ GcodeError BlockRunner::run_motion(int motion) {
     if (!is_cycle(motion)) nx.cycle_level_set = false;
   }
   if (motion == 800) return GcodeError::kOk;
-  // Modal G0/G1 with no axis word (e.g. a line with only G1 F100) does not move.
-  if (!b.has_axis() && (motion == 0 || motion == 10)) return GcodeError::kOk;
+  // G0/G1 written with no axis word make a move of length zero (LinuxCNC
+  // emits it, and checks the feed of G1); a modal one on a line of other
+  // words (F100 alone) makes none.
+  if (!b.has_axis() && (motion == 0 || motion == 10) && b.g[kGMotion] < 0) return GcodeError::kOk;
   if (motion == 0 || motion == 10) return run_straight(motion, b.g[kGNonModal] == 530);
   if (motion == 20 || motion == 30) return run_arc(motion);
   if (!b.has_axis() && b.g[kGMotion] < 0) return GcodeError::kOk;
@@ -469,16 +480,16 @@ GcodeError BlockRunner::run_arc(int motion) {
   int64_t ca, cb;
   if (has_r) {
     int64_t r;
-    if ((e = length('R', &r)) != GcodeError::kOk) return e;
+    if ((e = length('R', &r, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     e = arc_centre_from_radius(p, r, motion == 20, &ca, &cb, &d->a_nm, &d->b_nm);
     if (e != GcodeError::kOk) return fail(e, b.g[kGMotion] >= 0 ? col : b.col_of('R'), w);
   } else {
     int64_t oa = 0, ob = 0;
-    if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa)) != GcodeError::kOk) return e;
-    if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob)) != GcodeError::kOk) return e;
+    if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
+    if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     ca = nx.arc_absolute ? oa + offset(ia) : p.sa + oa;
     cb = nx.arc_absolute ? ob + offset(ib) : p.sb + ob;
-    if (abs64(ca) > kGcodeMaxCoordNm || abs64(cb) > kGcodeMaxCoordNm) {
+    if (abs64(ca) > kGcodeMaxArcNm || abs64(cb) > kGcodeMaxArcNm) {
       d->a_nm = abs64(ca) > abs64(cb) ? ca : cb;
       return fail(GcodeError::kPositionOutOfRange, col, w);
     }

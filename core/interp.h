@@ -9,13 +9,17 @@
 // Frames: positions in records are the controlled point in machine
 // coordinates with work offsets (G54..G59.3, G10) and G92 applied, and the
 // tool length offset NOT applied (it is carried in every record instead).
-// This is LinuxCNC's canonical position plus its G5x and G92 offsets. The
+// This is LinuxCNC's canonical position plus its G5x and G92 offsets: the
+// tool tip when the tool is as long as its offset says, i.e. the machine
+// (spindle) position minus the offset. So G53 Z0 puts the tip at Z = -TLO,
+// and a change of offset (G43, G49) moves the point without a move. The
 // program starts at the machine origin (0, 0, 0), in mm (G21) unless
 // InterpOptions says inch, G17, G90, G91.1, G94, G54, G40, G49, G80, G98.
 //
 // Limits (checked where numbers come in; "number too large" or "position
 // beyond the +-10 m range", never wrap-around):
-//   every length word and every resulting position: |v| <= 10 m (1e10 nm);
+//   every length word and every resulting position: |v| <= 10 m (1e10 nm),
+//   except arc centres (I, J, K, absolute or not) and R: <= 100 m;
 //   F <= 1e6 units/min; S <= 1e6 rpm; G4 P <= 1e6 s; L <= 1e6 repeats;
 //   arc P (turns) <= 10000; T, H <= 1e9 (integers >= 0).
 #ifndef DEXMILL_CORE_INTERP_H
@@ -33,6 +37,9 @@
 namespace dexmill {
 
 constexpr int64_t kGcodeMaxCoordNm = 10000000000;  // 10 m
+// Arc centres (I, J, K) and radii (R) may lie further out: CAM programs
+// write nearly straight arcs with centres tens of metres away.
+constexpr int64_t kGcodeMaxArcNm = 100000000000;   // 100 m
 
 // Tool lengths for G43 H (the consumer's tool table; none: every length 0).
 class ToolTable {

@@ -1,0 +1,93 @@
+// `dexmill path` and `dexmill check` as users run them: exit codes (CLI.md:
+// 0 ok, 1 input errors, 2 usage, 3 I/O) and the FILE:LINE:COL messages.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+#include "tests/runner.h"
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out;  // stdout and stderr together
+};
+
+Result sh(const std::string& args, const char* input = nullptr) {
+  Result r;
+  const char* bin = t::dexmill_binary();
+  if (!bin) return r;
+  std::string cmd;
+  if (input) {
+    std::FILE* f = std::fopen("/tmp/dexmill_cli_input.ngc", "wb");
+    std::fputs(input, f);
+    std::fclose(f);
+  }
+  cmd = std::string("'") + bin + "' " + args + " 2>&1";
+  if (std::FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
+    int st = pclose(p);
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  }
+  return r;
+}
+
+bool has(const std::string& s, const char* sub) { return s.find(sub) != std::string::npos; }
+
+const char* kIn = "/tmp/dexmill_cli_input.ngc";
+
+}  // namespace
+
+TEST(cli_path_ok) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  Result r = sh(std::string("path ") + kIn, "G21\nG0 X1 Y2 Z3\nG1 X-0.000005 F100\nM2\n");
+  CHECK_EQ(r.code, 0);
+  CHECK_EQ(r.out, std::string("# dexmill-path v1 units=mm frame=machine tol=0.001\n"
+                              "# start 0.00000 0.00000 0.00000\n"
+                              "rapid 1.00000 2.00000 3.00000\n"
+                              "feed -0.00001 2.00000 3.00000\n"));
+  r = sh(std::string("path --chord 0.5 ") + kIn, "G21 F1\nG0 X10\nG3 X-10 I-10\n");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "tol=0.5\n"));
+  CHECK(has(r.out, "feed -10.00000 0.00000 0.00000\n"));
+}
+
+TEST(cli_path_errors) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  Result r = sh(std::string("path ") + kIn, "G21\nG0 X1\nG1 X2 Y\nG0 X5\n");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, "dexmill_cli_input.ngc:3:7: error: 'Y' is not followed by a number\n"));
+  CHECK(!has(r.out, "rapid 5.0"));  // stops at the first error
+  r = sh("path /nonexistent/file.ngc");
+  CHECK_EQ(r.code, 3);
+  CHECK(has(r.out, "dexmill: error: cannot open '/nonexistent/file.ngc'"));
+  r = sh("path");
+  CHECK_EQ(r.code, 2);
+  r = sh(std::string("path --chord 0 ") + kIn);
+  CHECK_EQ(r.code, 2);
+  r = sh(std::string("path --bogus ") + kIn);
+  CHECK_EQ(r.code, 2);
+  r = sh(std::string("path < ") + kIn + " -", "G21\nG0 X7\n");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "rapid 7.00000 0.00000 0.00000\n"));
+}
+
+TEST(cli_check_reports_all_errors) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  Result r = sh(std::string("check ") + kIn, "G21\nG0 X1\n");
+  CHECK_EQ(r.code, 0);
+  CHECK_EQ(r.out, std::string(""));
+  r = sh(std::string("check ") + kIn, "G21\nG1 X1\nG0 X1 A1\n$H\nG2 X3 Y4 (no centre)\nM2\n");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":2:1: error: G1: feed move with zero feed rate"));
+  CHECK(has(r.out, ":3:7: error: A axis is not supported"));
+  CHECK(has(r.out, ":4:1: warning: grbl command '$H' skipped"));
+  CHECK(has(r.out, ":5:1: error: G2: R, I, J and K words all missing for arc"));
+  r = sh("check --help");
+  CHECK_EQ(r.code, 0);
+  r = sh("check a b");
+  CHECK_EQ(r.code, 2);
+}

@@ -1,0 +1,200 @@
+// The program corpora of tests/gcode: every bad program fails with the error
+// written on its first line (`; expect LINE:COL: MESSAGE`), and every golden
+// program's path (`dexmill path`) matches NAME.path byte for byte. Also the
+// hosted reader (platform/gcode_file.h) on line ends, long lines and a long
+// streamed file.
+#include <dirent.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/interp.h"
+#include "platform/gcode_file.h"
+#include "tests/alloc_count.h"
+#include "tests/runner.h"
+
+// Evaluates `call` once (CHECK_EQ evaluates its arguments twice).
+#define CHECK_EQ_ONCE(call, want)   \
+  do {                              \
+    const auto got_ = (call);       \
+    CHECK_EQ(got_, want);           \
+  } while (0)
+
+using namespace dexmill;
+
+namespace {
+
+std::vector<std::string> list(const std::string& dir, const char* ext) {
+  std::vector<std::string> out;
+  DIR* d = opendir(dir.c_str());
+  if (!d) return out;
+  while (dirent* e = readdir(d)) {
+    std::string n = e->d_name;
+    if (n.size() > std::strlen(ext) && n.compare(n.size() - std::strlen(ext), std::string::npos, ext) == 0)
+      out.push_back(n);
+  }
+  closedir(d);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Collects "LINE:COL: MESSAGE" of errors and warnings.
+struct Collect final : GcodeMessages {
+  std::vector<std::string> errors, warnings;
+  static std::string text(const GcodeDiag& d) {
+    char msg[400], buf[460];
+    gcode_format_message(d, msg, sizeof msg);
+    std::snprintf(buf, sizeof buf, "%u:%u: %s", d.line, d.col, msg);
+    return buf;
+  }
+  void error(const GcodeDiag& d) override {
+    ++errors_;
+    errors.push_back(text(d));
+  }
+  void warning(const GcodeDiag& d) override {
+    ++warnings_;
+    warnings.push_back(text(d));
+  }
+};
+
+std::string read_file(const std::string& path) {
+  std::string s;
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+    std::fclose(f);
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST(gcode_bad_corpus) {
+  const std::string dir = std::string(t::tests_dir()) + "/gcode/bad";
+  const auto files = list(dir, ".ngc");
+  CHECK_GE(files.size(), 30u);
+  for (const auto& name : files) {
+    const std::string path = dir + "/" + name;
+    std::string first = read_file(path);
+    first = first.substr(0, first.find('\n'));
+    const std::string tag = "; expect ";
+    if (!CHECK(first.compare(0, tag.size(), tag) == 0)) {
+      std::printf("  %s: first line must be '; expect LINE:COL: MESSAGE'\n", name.c_str());
+      continue;
+    }
+    const std::string want = first.substr(tag.size());
+    GcodeFile file;
+    if (!CHECK(file.open(path.c_str()))) continue;
+    Collect msgs;
+    InterpOptions opt;
+    opt.warnings = &msgs;
+    Interp interp(nullptr, opt);
+    GcodeRunner runner(&file, &interp, &msgs, true);
+    runner.run_all();
+    const std::string got = msgs.errors.empty() ? "(no error)" : msgs.errors[0];
+    if (got != want) {
+      t::fail(__FILE__, __LINE__, "bad program", name.c_str());
+      std::printf("  want %s\n  got  %s\n", want.c_str(), got.c_str());
+    }
+  }
+}
+
+TEST(gcode_golden_paths) {
+  const char* bin = t::dexmill_binary();
+  if (!CHECK(bin != nullptr)) {
+    std::printf("  DEXMILL is not set (make test sets it to the built binary)\n");
+    return;
+  }
+  const std::string dir = std::string(t::tests_dir()) + "/gcode/paths";
+  const auto files = list(dir, ".ngc");
+  CHECK_GE(files.size(), 7u);
+  for (const auto& name : files) {
+    const std::string base = dir + "/" + name.substr(0, name.size() - 4);
+    const std::string want = read_file(base + ".path");
+    if (!CHECK(!want.empty())) {
+      std::printf("  %s.path is missing\n", base.c_str());
+      continue;
+    }
+    const std::string cmd = std::string("'") + bin + "' path '" + base + ".ngc' 2>&1";
+    std::string got;
+    if (std::FILE* p = popen(cmd.c_str(), "r")) {
+      char buf[4096];
+      std::size_t n;
+      while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) got.append(buf, n);
+      const int rc = pclose(p);
+      CHECK_EQ(rc, 0);
+    }
+    if (got == want) continue;
+    // First differing line, for the log.
+    std::size_t line = 1, i = 0;
+    while (i < got.size() && i < want.size() && got[i] == want[i]) line += got[i++] == '\n';
+    auto line_at = [](const std::string& s, std::size_t at) {
+      std::size_t b = s.rfind('\n', at ? at - 1 : 0);
+      b = (b == std::string::npos || at == 0) ? 0 : b + 1;
+      return s.substr(b, s.find('\n', b) - b);
+    };
+    t::fail(__FILE__, __LINE__, "golden path differs", name.c_str());
+    std::printf("  line %zu:\n  want: %s\n  got:  %s\n", line, line_at(want, i).c_str(), line_at(got, i).c_str());
+  }
+}
+
+TEST(gcode_file_line_ends) {
+  const char* path = "/tmp/dexmill_test_line_ends.ngc";
+  std::FILE* f = std::fopen(path, "wb");
+  // CRLF, LF, an empty line, a 300-byte line, and a last line with no newline.
+  std::fputs("G21\r\nG0 X1\n\n(", f);
+  for (int i = 0; i < 300; ++i) std::fputc('x', f);
+  std::fputs(")\nG0 X2", f);
+  std::fclose(f);
+  GcodeFile file;
+  CHECK(file.open(path));
+  CHECK_GT(file.total_bytes(), 300);
+  const char* text;
+  std::size_t len;
+  uint32_t line;
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(len, 3u);
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(std::string(text, len), std::string("G0 X1"));
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(len, 0u);
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kTooLong);
+  CHECK_EQ(line, 4u);
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(std::string(text, len), std::string("G0 X2"));
+  CHECK_EQ(line, 5u);
+  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kEof);
+  CHECK_EQ(static_cast<int64_t>(file.bytes_read()), file.total_bytes());
+  std::remove(path);
+}
+
+TEST(gcode_file_streams_150k_lines_without_heap) {
+  const char* path = "/tmp/dexmill_test_150k.ngc";
+  std::FILE* f = std::fopen(path, "wb");
+  std::fputs("G21 G90 F1000\n", f);
+  for (int i = 0; i < 150000; ++i) std::fprintf(f, "G1 X%d.%02d Y%d Z-%d.5\n", i % 500, i % 100, (i / 500) % 300, i % 3);
+  std::fputs("M2\n", f);
+  std::fclose(f);
+  GcodeFile file;
+  CHECK(file.open(path));
+  Collect msgs;
+  InterpOptions opt;
+  opt.warnings = &msgs;
+  struct Count final : CanonSink {
+    uint64_t n = 0;
+    void emit(const CanonRecord&) override { ++n; }
+  } sink;
+  Interp interp(&sink, opt);
+  GcodeRunner runner(&file, &interp, &msgs, true);
+  const uint64_t before = t::heap_allocations();
+  runner.run_all();
+  CHECK_EQ(t::heap_allocations() - before, 0u);
+  CHECK_EQ(msgs.errors.size(), 0u);
+  CHECK_EQ(sink.n, 150001u);
+  CHECK_EQ(runner.lines(), 150002u);
+  std::remove(path);
+}

@@ -1,0 +1,254 @@
+// core/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
+// tolerances, warnings, and the no-heap streaming guarantee.
+#include <cstdio>
+#include <cstring>
+
+#include "core/interp.h"
+#include "tests/alloc_count.h"
+#include "tests/gcode_test_util.h"
+#include "tests/runner.h"
+
+// Evaluates `call` once (CHECK_EQ evaluates its arguments twice).
+#define CHECK_EQ_ONCE(call, want)   \
+  do {                              \
+    const auto got_ = (call);       \
+    CHECK_EQ(got_, want);           \
+  } while (0)
+
+using namespace dexmill;
+using t::mm;
+
+namespace {
+
+GcodeError run(const char* program, t::Recorder* rec, GcodeDiag* d, InterpOptions opt = {}) {
+  Interp in(rec, opt);
+  return t::run_program(&in, program, d);
+}
+
+bool same_state(const InterpState& a, const InterpState& b) {
+  bool same = a.pos == b.pos && a.motion == b.motion && a.plane == b.plane && a.inch == b.inch &&
+              a.incremental == b.incremental && a.arc_absolute == b.arc_absolute && a.inverse_time == b.inverse_time &&
+              a.retract_to_r == b.retract_to_r && a.coord_system == b.coord_system && a.feed_nm_per_min == b.feed_nm_per_min &&
+              a.spindle_rpm == b.spindle_rpm && a.spindle_dir == b.spindle_dir && a.coolant == b.coolant &&
+              a.tool == b.tool && a.selected_tool == b.selected_tool && a.tlo_nm == b.tlo_nm && a.g92 == b.g92 &&
+              a.cycle_level_set == b.cycle_level_set && a.ended == b.ended;
+  for (int i = 0; i < 9; ++i) same = same && a.work_offset[i] == b.work_offset[i];
+  return same;
+}
+
+}  // namespace
+
+TEST(interp_simple_records) {
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21 G90\nG0 X1 Y2 Z3\nG1 X4 F600\nG2 X14 Y12 I10 J0\nG4 P1.5\nM3 S1000\nM8\nT3 M6\nM2\n", &rec, &d),
+           GcodeError::kOk);
+  CHECK_EQ(rec.records.size(), 8u);
+  const CanonRecord& r0 = rec.records[0];
+  CHECK_EQ(r0.kind, CanonKind::kTraverse);
+  CHECK(r0.start == (PointNm{0, 0, 0}));
+  CHECK(r0.end == (PointNm{mm(1), mm(2), mm(3)}));
+  CHECK_EQ(r0.line, 2u);
+  const CanonRecord& r1 = rec.records[1];
+  CHECK_EQ(r1.kind, CanonKind::kFeed);
+  CHECK_EQ(r1.feed_nm_per_min, mm(600));
+  const CanonRecord& r2 = rec.records[2];
+  CHECK_EQ(r2.kind, CanonKind::kArc);
+  CHECK(r2.arc.centre == (PointNm{mm(14), mm(2), mm(3)}));
+  CHECK_EQ(r2.arc.turns, -1);
+  CHECK_EQ(rec.records[3].kind, CanonKind::kDwell);
+  CHECK_EQ(rec.records[3].dwell_ms, 1500);
+  CHECK_EQ(rec.records[4].kind, CanonKind::kSpindle);
+  CHECK_EQ(rec.records[4].spindle_rpm, 1000);
+  CHECK_EQ(rec.records[5].kind, CanonKind::kCoolant);
+  CHECK_EQ(rec.records[5].coolant, 2);
+  CHECK_EQ(rec.records[6].kind, CanonKind::kToolChange);
+  CHECK_EQ(rec.records[6].tool, 3);
+  CHECK_EQ(rec.records[7].kind, CanonKind::kEnd);
+}
+
+TEST(interp_bad_block_changes_nothing) {
+  t::Recorder rec;
+  Interp in(&rec, InterpOptions{});
+  GcodeDiag d;
+  CHECK_EQ_ONCE(t::run_program(&in, "G21 G90 G17 F100\nG0 X10 Y0 Z1\nM3 S100", &d), GcodeError::kOk);
+  const InterpState before = in.state();
+  const size_t n = rec.records.size();
+  // Every code of these blocks would change the state, but each has an error.
+  const char* bad[] = {
+      "G91 G20 G18 G55 M5 M9 T7 F50 S9 G2 X0 Y10",  // arc without centre
+      "G91 G20 G93 G43.1 Z1 G1 X1",                 // two users of the axis words
+      "G91 G20 G55 G98 G81 X1 Y1 Z-1",              // cycle without R
+      "G91 G20 M8 G0 X1 Q1",                        // unused word
+      "G92 X0 G20 G91 M7 Y1 X2",                    // duplicate word
+      "G10 L2 P1 X5 Y6 G91 R30",                    // rotation not supported
+      "G91 G0 X20000",                              // number too large
+  };
+  for (const char* line : bad) {
+    GcodeError e = in.execute_line(line, std::strlen(line), 9, &d);
+    CHECK_NE(e, GcodeError::kOk);
+    CHECK(same_state(before, in.state()));
+    CHECK_EQ(rec.records.size(), n);
+  }
+  // And the next good block runs from the unchanged state.
+  CHECK_EQ_ONCE(in.execute_line("X20", 3, 10, &d), GcodeError::kOk);
+  CHECK(rec.records.back().end == (PointNm{mm(20), 0, mm(1)}));
+}
+
+TEST(interp_linuxcnc_arc_tolerance) {
+  t::Recorder rec;
+  GcodeDiag d;
+  // Centre format, mm: |r2 - r1| <= 0.028284 mm, or <= 2.83 mm while within 0.1 %.
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X10\nG3 X0 Y10.02 I-10", &rec, &d), GcodeError::kOk);
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X10\nG3 X0 Y10.03 I-10", &rec, &d), GcodeError::kArcRadiusMismatch);
+  CHECK_EQ(d.line, 3u);
+  CHECK_EQ(d.a_nm, mm(10));
+  CHECK_EQ(d.b_nm, mm(10.03));
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X1000\nG3 X0 Y1000.9 I-1000", &rec, &d), GcodeError::kOk);
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X1000\nG3 X0 Y1001.1 I-1000", &rec, &d), GcodeError::kArcRadiusMismatch);
+  // Inch: 0.0028284 in.
+  CHECK_EQ_ONCE(run("G20 F1\nG0 X1\nG3 X0 Y1.002 I-1", &rec, &d), GcodeError::kOk);
+  CHECK_EQ_ONCE(run("G20 F1\nG0 X1\nG3 X0 Y1.003 I-1", &rec, &d), GcodeError::kArcRadiusMismatch);
+  // Radius format: half the chord may exceed |R| by 0.00127 mm at most.
+  CHECK_EQ_ONCE(run("G21 F1\nG2 X10 R4.999", &rec, &d), GcodeError::kOk);
+  CHECK_EQ_ONCE(run("G21 F1\nG2 X10 R4.998", &rec, &d), GcodeError::kArcRTooSmall);
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X1\nG2 X1 R4", &rec, &d), GcodeError::kArcRSameEnds);
+  CHECK_EQ_ONCE(run("G21 F1\nG2 X10 Y0.0005 I0.0002", &rec, &d), GcodeError::kArcZeroRadius);
+}
+
+TEST(interp_r_arc_centres) {
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21 F1\nG2 X10 R5\nG3 X20 R5\nG2 X10 Y10 R10\nG2 X0 Y0 R-10\nG18 G2 Z5 X5 R5", &rec, &d),
+           GcodeError::kOk);
+  CHECK(rec.records[0].arc.centre == (PointNm{mm(5), 0, 0}));
+  CHECK(rec.records[1].arc.centre == (PointNm{mm(15), 0, 0}));
+  // G2 with R > 0: centre right of the chord, the short way (90 degrees).
+  CHECK(rec.records[2].arc.centre == (PointNm{mm(20), mm(10), 0}));
+  // R < 0: left of the chord, the long way round (270 degrees).
+  CHECK(rec.records[3].arc.centre == (PointNm{mm(10), 0, 0}));
+  CHECK_EQ(rec.records[4].arc.plane, Plane::kZX);
+}
+
+TEST(interp_inverse_time_and_units) {
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21 G93\nG1 X10 F2\nG20 G94 G1 X1 F10", &rec, &d), GcodeError::kOk);
+  CHECK_EQ(rec.records[0].feed_nm_per_min, mm(20));  // 10 mm in 1/2 minute
+  CHECK_EQ(rec.records[1].feed_nm_per_min, 254000000);
+  CHECK(rec.records[1].end == (PointNm{25400000, 0, 0}));
+  CHECK_EQ_ONCE(run("G21 G93\nG1 X10 F2\nG1 X20", &rec, &d), GcodeError::kInverseTimeNoF);
+  InterpOptions inch;
+  inch.inch = true;
+  rec.records.clear();
+  CHECK_EQ_ONCE(run("G0 X1", &rec, &d, inch), GcodeError::kOk);
+  CHECK_EQ(rec.records[0].end.x_nm, 25400000);
+}
+
+TEST(interp_offsets_and_home) {
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21\nG10 L2 P2 X10 Y20 Z30\nG55 G0 X1 Y1 Z1\nG92 X0 Y0 Z0\nG0 X1\nG53 G0 Z-5\nG28.1\nG0 X0 Y0 Z0\nG28",
+               &rec, &d),
+           GcodeError::kOk);
+  CHECK(rec.records[0].end == (PointNm{mm(11), mm(21), mm(31)}));
+  CHECK(rec.records[1].end == (PointNm{mm(12), mm(21), mm(31)}));
+  CHECK(rec.records[2].end == (PointNm{mm(12), mm(21), mm(-5)}));
+  CHECK(rec.records[3].end == (PointNm{mm(11), mm(21), mm(31)}));
+  // G28 with no axis: a zero-length traverse (LinuxCNC does the same), then home.
+  CHECK(rec.records[4].end == rec.records[3].end);
+  CHECK(rec.records[5].end == (PointNm{mm(12), mm(21), mm(-5)}));
+}
+
+TEST(interp_tool_length_from_table) {
+  struct Table final : ToolTable {
+    bool tool_length_nm(int32_t tool, int64_t* z) const override {
+      if (tool != 4) return false;
+      *z = mm(50);
+      return true;
+    }
+  } table;
+  InterpOptions opt;
+  opt.tools = &table;
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21\nT4 M6\nG43 H4\nG0 X1 Z10\nG53 G0 Z0\nG49\nG0 X2", &rec, &d, opt), GcodeError::kOk);
+  CHECK_EQ(rec.records[1].tool_length_offset_nm, mm(50));
+  CHECK(rec.records[1].end == (PointNm{mm(1), 0, mm(10)}));
+  CHECK(rec.records[2].end == (PointNm{mm(1), 0, mm(-50)}));  // spindle at machine Z0: tip 50 mm below
+  CHECK(rec.records[3].end == (PointNm{mm(2), 0, 0}));        // G49: the tip reads the spindle again
+  CHECK_EQ_ONCE(run("G21\nG43 H5", &rec, &d, opt), GcodeError::kToolUnknown);
+}
+
+TEST(interp_warnings_and_end) {
+  t::Recorder rec;
+  t::Warnings w;
+  InterpOptions opt;
+  opt.warnings = &w;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("$H\nG21 M48\nG0 X1\nM30\nG0 X2\nG0 X3", &rec, &d, opt), GcodeError::kOk);
+  CHECK_EQ(w.list.size(), 3u);
+  CHECK_EQ(w.list[0].code, GcodeError::kWarnGrblCommand);
+  CHECK_EQ(w.list[1].code, GcodeError::kWarnMcodeIgnored);
+  CHECK_EQ(w.list[2].code, GcodeError::kWarnAfterEnd);
+  CHECK_EQ(w.list[2].line, 5u);
+  CHECK_EQ(rec.count(CanonKind::kTraverse), 1u);
+  CHECK_EQ(rec.count(CanonKind::kEnd), 1u);
+}
+
+TEST(interp_large_numbers_are_errors) {
+  t::Recorder rec;
+  GcodeDiag d;
+  CHECK_EQ_ONCE(run("G21\nG0 X10000", &rec, &d), GcodeError::kOk);
+  CHECK_EQ_ONCE(run("G21\nG0 X10000.000001", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G20\nG0 X394", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21 G91\nG0 X6000\nG0 X6000", &rec, &d), GcodeError::kPositionOutOfRange);
+  CHECK_EQ(d.a_nm, mm(12000));
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X1\nG2 X1 I99999", &rec, &d), GcodeError::kOk);  // 100 km radius? no: 99.999 m
+  CHECK_EQ_ONCE(run("G21 F1\nG2 X1 I100001", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21 F1\nG81 X1 Z-1 R1 L1000001", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21 F1\nG83 X1 Z-9000 R1 Q0.000001", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21\nS1000001 M3", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21\nT2147483648", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21\nG4 P1000001", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ_ONCE(run("G21 F1\nG0 X1\nG2 X1 I-1 P10001", &rec, &d), GcodeError::kNumberTooLarge);
+}
+
+namespace {
+struct CountingSink final : CanonSink {
+  uint64_t moves = 0;
+  int64_t checksum = 0;
+  void emit(const CanonRecord& r) override {
+    ++moves;
+    checksum += r.end.x_nm ^ r.end.y_nm ^ r.end.z_nm;
+  }
+};
+}  // namespace
+
+TEST(interp_150k_lines_no_heap) {
+  // The interpreter keeps no per-line memory: 150 000 lines of mixed moves,
+  // arcs and cycles make no heap allocation and leave its size unchanged.
+  CountingSink sink;
+  Interp in(&sink, InterpOptions{});
+  GcodeDiag d;
+  char line[128];
+  const uint64_t before = t::heap_allocations();
+  const char* head = "G21 G90 G17 F1200 S10000 M3";
+  CHECK_EQ_ONCE(in.execute_line(head, std::strlen(head), 1, &d), GcodeError::kOk);
+  uint32_t n = 1;
+  for (int i = 0; i < 150000; ++i) {
+    int len;
+    switch (i % 5) {
+      case 0: len = std::snprintf(line, sizeof line, "N%d G1 X%d.%03d Y%d Z-1.5", i, i % 300, i % 1000, (i / 300) % 200); break;
+      case 1: len = std::snprintf(line, sizeof line, "G0 X%d Y%d Z2 (rapid)", i % 300, (i / 300) % 200); break;
+      case 2: len = std::snprintf(line, sizeof line, "G2 I5 J0 (full circle)"); break;
+      case 3: len = std::snprintf(line, sizeof line, "G98 G81 X%d Y3 Z-2 R1 ; drill", i % 300); break;
+      default: len = std::snprintf(line, sizeof line, "G80 g0 z 5"); break;
+    }
+    GcodeError e = in.execute_line(line, static_cast<size_t>(len), ++n, &d);
+    if (e != GcodeError::kOk && !CHECK_EQ(e, GcodeError::kOk)) break;
+  }
+  CHECK_EQ(t::heap_allocations() - before, 0u);
+  CHECK_GT(sink.moves, 150000u);
+  static_assert(sizeof(Interp) < 2048, "the interpreter's whole state is small and fixed");
+}

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Checks `dexmill path` against LinuxCNC's interpreter, within 0.002 mm.
+#
+#   tools/scripts/oracle-check.sh [--rs274] [DEXMILL]
+#
+# 1. The stored oracles ../shared/corpus/linuxcnc-interp-oracle/*/expected
+#    (LinuxCNC's canonical trace of each program): skipped with a message
+#    when ../shared is absent.
+# 2. With --rs274 (needs LinuxCNC's standalone interpreter `rs274`, Debian
+#    package linuxcnc-uspace): every tests/gcode/paths/*.ngc and every file of
+#    ../shared/corpus, traced by rs274 and compared the same way.
+# A program that dexmill refuses as "not supported" is reported, not failed.
+# Exit 1 if any comparison differs.
+set -u
+root=$(cd "$(dirname "$0")/../.." && pwd)
+shared="$root/../shared"
+use_rs274=0
+if [ "${1:-}" = --rs274 ]; then use_rs274=1; shift; fi
+dexmill=${1:-$root/build/dexmill}
+compare="python3 $root/tools/scripts/lcnc_compare.py"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+[ -x "$dexmill" ] || { echo "oracle-check: $dexmill not built (run make)" >&2; exit 2; }
+failed=0; agreed=0; unsupported=0
+
+# check NAME PROGRAM TRACE: compare dexmill's path of PROGRAM with TRACE.
+check() {
+  local name=$1 prog=$2 trace=$3
+  "$dexmill" path "$prog" > "$tmp/path" 2> "$tmp/err"
+  local rc=$? first
+  first=$(grep -m1 ': error: ' "$tmp/err" | sed 's/^.*: error: //')
+  if [ $rc -ne 0 ] && grep -q 'not supported' <<<"$first"; then
+    local where; where=$(grep -m1 ': error: ' "$tmp/err" | sed -E 's/^.*:([0-9]+):([0-9]+): error: .*/\1/')
+    echo "$name: UNSUPPORTED (line $where: $first)"
+    unsupported=$((unsupported + 1))
+    return
+  fi
+  local res; res=$($compare "$trace" "$tmp/path")
+  local crc=$?
+  [ $rc -ne 0 ] && res="$res [dexmill stopped: $first]"
+  echo "$name: $res"
+  if [ $crc -eq 0 ]; then agreed=$((agreed + 1)); else failed=$((failed + 1)); fi
+}
+
+if [ -d "$shared/corpus/linuxcnc-interp-oracle" ]; then
+  echo "== stored LinuxCNC oracles (../shared/corpus/linuxcnc-interp-oracle)"
+  for d in "$shared"/corpus/linuxcnc-interp-oracle/*/; do
+    prog=$(ls "$d"*.ngc | head -1)
+    check "$(basename "$d")" "$prog" "$d/expected"
+  done
+else
+  echo "oracle-check: ../shared is absent; skipping the stored LinuxCNC oracles"
+fi
+
+if [ $use_rs274 = 1 ]; then
+  if ! command -v rs274 >/dev/null; then
+    echo "oracle-check: rs274 not installed (apt-get install linuxcnc-uspace); skipping --rs274"
+  else
+    echo "== rs274 (LinuxCNC $(dpkg-query -W -f='${Version}' linuxcnc-uspace 2>/dev/null)) on the project's programs and the corpus"
+    files=$(ls "$root"/tests/gcode/paths/*.ngc 2>/dev/null)
+    if [ -d "$shared/corpus" ]; then
+      files="$files $(cut -f1 "$shared/corpus/index.tsv" | tail -n +2 | sed "s|^|$shared/corpus/|")"
+    fi
+    # A tool table with tools 0..999, all of length 0 (dexmill's path does not
+    # apply tool lengths; without a table rs274 refuses unknown tools).
+    for t in $(seq 0 999); do echo "T$t P$t Z0 D0"; done > "$tmp/tools.tbl"
+    for f in $files; do
+      # dexmill skips grbl `$` lines with a warning; LinuxCNC would stop
+      # there, so it gets them as comments.
+      sed -E 's/^[[:space:]]*\$(.*)$/(grbl $\1)/' "$f" > "$tmp/prog.ngc"
+      ( cd "$tmp" && timeout 300 rs274 -t "$tmp/tools.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
+      name=${f#"$root"/}; name=${name#"$shared"/}
+      check "$name" "$f" "$tmp/trace"
+    done
+  fi
+fi
+echo "oracle-check: $agreed agree, $failed differ, $unsupported not supported by dexmill"
+[ $failed -eq 0 ]
