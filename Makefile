@@ -104,3 +104,19 @@ cortexm:
 	$(EMBEDDED_ENV) tools/scripts/cortexm.sh $(CORTEXM_ARGS)
 panel:
 	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)
+
+# ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
+#   make fuzz SECONDS=N   run the pipeline fuzz target N seconds (default 60)
+#                         over tests/fuzz/seeds plus build/fuzz/corpus
+SECONDS ?= 60
+FUZZ_BIN := build/fuzz/fuzz_pipeline
+FUZZ_SRC := tests/fuzz/fuzz_pipeline.cpp $(CORE_SRC) $(DISPLAY_SRC)
+.PHONY: fuzz
+$(FUZZ_BIN): $(FUZZ_SRC) $(wildcard tests/fuzz/*.h core/*.h display/*.h)
+	@mkdir -p $(dir $@)
+	clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
+	  -fno-sanitize-recover=all $(FUZZ_SRC) -o $@
+fuzz: $(FUZZ_BIN)
+	@mkdir -p build/fuzz/corpus
+	$(FUZZ_BIN) -max_total_time=$(SECONDS) -max_len=4096 -timeout=10 -print_final_stats=1 \
+	  build/fuzz/corpus tests/fuzz/seeds
