@@ -39,6 +39,10 @@ double best_time_s(F fn, double min_s = 0.2, int max_runs = 50) {
 
 Case* first();
 
+// True with `dexmill bench --once`: every figure from a single run (for
+// instruction counts under valgrind, where repeats only multiply the total).
+bool single_run();
+
 }  // namespace bench
 }  // namespace dexmill
 

@@ -13,7 +13,10 @@ namespace bench {
 namespace {
 Case* g_head = nullptr;
 Case* g_tail = nullptr;
+bool g_once = false;
 }  // namespace
+
+bool single_run() { return g_once; }
 
 Registrar::Registrar(Case* c) {
   if (g_tail) g_tail->next = c; else g_head = c;
@@ -46,10 +49,11 @@ int cmd_bench(int argc, char** argv) {
   bool list = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
-      std::printf("usage: dexmill bench [--list] [NAME...]\n  Runs the benchmarks whose names start with a NAME (all without one).\n");
+      std::printf("usage: dexmill bench [--list] [--once] [NAME...]\n  Runs the benchmarks whose names start with a NAME (all without one).\n");
       return kExitOk;
     }
     if (!std::strcmp(argv[i], "--list")) list = true;
+    else if (!std::strcmp(argv[i], "--once")) bench::g_once = true;
     else if (argv[i][0] == '-') return fail(kExitUsage, "bench: unknown option '%s'", argv[i]);
   }
   int ran = 0;
