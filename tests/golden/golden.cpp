@@ -9,6 +9,8 @@ const Section kSections[] = {
     {"math", golden_math},
     {"tool", golden_tool},
     {"stamp", golden_stamp},
+    {"mill", golden_mill},
+    {"path", golden_path},
     {"regress", golden_regress},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];

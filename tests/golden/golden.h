@@ -63,6 +63,8 @@ void fail(Out& out, const char* what);
 void golden_math(Out& out);   // golden_math.cpp: fixed point, roots, muldiv, CORDIC
 void golden_tool(Out& out);   // golden_tool.cpp: tool profiles and cutter dexel sets
 void golden_stamp(Out& out);  // golden_stamp.cpp: grid hashes of cutting programs, m = 8/16/32
+void golden_mill(Out& out);   // golden_mill.cpp: a G-code program cut by core/mill (sweep, stamp), m = 8/16/32
+void golden_path(Out& out);   // golden_mill.cpp: the same program's canonical records and arc chords, hashed
 void golden_regress(Out& out);  // golden_regress.cpp: regression cases named after their bug
 
 }  // namespace golden

@@ -1,0 +1,155 @@
+// Golden sections "mill" and "path": a G-code program stored as text (as a
+// panel would keep it in flash) read by the interpreter (core/interp.h) and
+// (mill) cut by core/mill.h in sweep and stamp mode into m = 8, 16, 32 grids,
+// one grid hash per mode and m; (path) every canonical record and arc chord
+// point hashed in order, the same trace `dexmill path` prints.
+#include <stdint.h>
+#include <string.h>
+
+#include "core/arc_chords.h"
+#include "core/grid.h"
+#include "core/hash.h"
+#include "core/interp.h"
+#include "core/mill.h"
+#include "core/tool.h"
+#include "tests/golden/golden.h"
+
+using namespace dexmill;
+
+namespace golden {
+namespace {
+
+const char kProgram[] =
+    "%\n"
+    "G21 G90 G17 G94 (golden mill program)\n"
+    "T1 M6\n"
+    "G0 Z25\n"
+    "G0 X4 Y4\n"
+    "G1 Z15 F300\n"
+    "G1 X26 Y4 F800\n"
+    "G1 X26 Y20 Z13\n"
+    "G2 X18 Y12 I-8 J0\n"
+    "G3 X10 Y20 R8\n"
+    "G2 X10 Y20 I0 J-4 Z10\n"
+    "T2 M6\n"
+    "G1 X4 Y4 Z14\n"
+    "G18 G2 X14 Z14 I5 K0\n"
+    "G17 G91 G1 X4 Y3 Z-1\n"
+    "G90 G81 X22 Y16 Z-1 R18 F200\n"
+    "X24 Y10\n"
+    "G80 G0 Z25\n"
+    "T3 M6\n"
+    "G1 X6 Y18 Z16 F500\n"
+    "G3 X6 Y18 I3 J-3 Z13 P2\n"
+    "G0 Z25\n"
+    "M30\n"
+    "%\n";
+
+class Library : public ToolLibrary {
+ public:
+  bool tool(int32_t number, Tool* out) const override {
+    Tool t;
+    t.flute_length_nm = 20 * kNmPerMm;
+    t.length_nm = 50 * kNmPerMm;
+    switch (number) {
+      case 1: t.kind = ToolKind::kBall; t.diameter_nm = 6 * kNmPerMm; break;
+      case 2: t.kind = ToolKind::kFlat; t.diameter_nm = 3 * kNmPerMm; break;
+      case 3:
+        t.kind = ToolKind::kBullNose;
+        t.diameter_nm = 5 * kNmPerMm;
+        t.corner_radius_nm = kNmPerMm;
+        break;
+      default: return false;
+    }
+    *out = t;
+    return true;
+  }
+};
+
+// Feeds the program line by line; returns the number of lines in error.
+int interpret(CanonSink* sink) {
+  InterpOptions opt;
+  Interp in(sink, opt);
+  int errors = 0;
+  uint32_t line = 1;
+  const char* p = kProgram;
+  while (*p) {
+    const char* e = strchr(p, '\n');
+    GcodeDiag d;
+    if (in.execute_line(p, static_cast<size_t>(e - p), line++, &d) != GcodeError::kOk) ++errors;
+    p = e + 1;
+  }
+  return errors;
+}
+
+template <class H>
+void mill_one(Out& out, CutMode mode) {
+  const int bits = static_cast<int>(sizeof(H) * 8);
+  Arena& a = arena();
+  a.reset();
+  const int32_t nx = 64, ny = 48;
+  const size_t cells = static_cast<size_t>(nx) * ny;
+  H* top = a.take<H>(cells);
+  H* bottom = a.take<H>(cells);
+  const size_t words = cutter_storage_words(12);
+  int32_t* w = a.take<int32_t>(words);
+  DexelGrid<H> g;
+  const GridGeometry geo{nx, ny, 0, 0, 500000, 0, lsb_for_range(25 * kNmPerMm, bits)};
+  if (!top || !bottom || !w || !ok(grid_init(&g, geo, top, bottom, cells))) {
+    fail(out, "mill: set-up");
+    return;
+  }
+  grid_block_stock(&g, grid_height_of_z(g, 20 * kNmPerMm));
+  Library lib;
+  Mill<H> mill(&g, mode, &lib, w, words);
+  const int errors = interpret(&mill);
+  out.str("mill ").str(mode == CutMode::kSweep ? "sweep" : "stamp").kv("m", bits).kx("grid", grid_hash(g));
+  out.kv("instances", static_cast<int64_t>(mill.stats().instances));
+  out.kv("updates", static_cast<int64_t>(mill.stats().dexel_updates)).kv("errors", errors);
+  out.kv("status", static_cast<int64_t>(mill.status())).end();
+}
+
+// Hashes every record and every arc chord point (1 um sagitta).
+class PathHash : public CanonSink {
+ public:
+  void emit(const CanonRecord& r) override {
+    ++records;
+    h.uint_le(static_cast<uint8_t>(r.kind), 1);
+    h.uint_le(r.line, 4);
+    if (r.kind == CanonKind::kArc) {
+      ArcChords c;
+      c.init(r, 1000);
+      PointNm p;
+      while (c.next(&p)) point(p);
+    } else {
+      point(r.end);
+    }
+  }
+  void point(const PointNm& p) {
+    h.uint_le(static_cast<uint64_t>(p.x_nm), 8);
+    h.uint_le(static_cast<uint64_t>(p.y_nm), 8);
+    h.uint_le(static_cast<uint64_t>(p.z_nm), 8);
+    ++points;
+  }
+  Hash64 h;
+  int64_t records = 0, points = 0;
+};
+
+}  // namespace
+
+void golden_mill(Out& out) {
+  for (int mode = 0; mode < 2; ++mode) {
+    const CutMode m = mode ? CutMode::kStamp : CutMode::kSweep;
+    mill_one<uint8_t>(out, m);
+    mill_one<uint16_t>(out, m);
+    mill_one<uint32_t>(out, m);
+  }
+}
+
+void golden_path(Out& out) {
+  PathHash ph;
+  const int errors = interpret(&ph);
+  out.str("path").kv("records", ph.records).kv("points", ph.points).kx("trace", ph.h.value()).kv("errors", errors).end();
+}
+
+}  // namespace golden
