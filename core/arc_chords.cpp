@@ -85,15 +85,20 @@ bool ArcChords::next(PointNm* p) {
     return true;
   }
   // Angle from the start: total * k / n, exactly, modulo one turn.
-  const uint64_t along = step_q_ * k_ + (step_r_ * k_) / n_;
-  const uint32_t ang = dir_ > 0 ? static_cast<uint32_t>(a0_ + along) : static_cast<uint32_t>(a0_ - along);
-  int64_t r = r0_;
-  if (dr_) r += muldiv_round(dr_, k_, n_);
-  int64_t c = c0_;
-  if (dc_) c += muldiv_round(dc_, k_, n_);
-  const SinCosQ30 sc = sincos_bam(ang);
-  *p = plane_point(plane_, ca_ + scale_q30(r, sc.cos_q30), cb_ + scale_q30(r, sc.sin_q30), c);
+  *p = point_at(step_q_ * k_ + (step_r_ * k_) / n_);
   return true;
+}
+
+PointNm ArcChords::point_at(uint64_t along) const {
+  if (along >= static_cast<uint64_t>(total_)) return end_;
+  const uint32_t ang = dir_ > 0 ? static_cast<uint32_t>(a0_ + along) : static_cast<uint32_t>(a0_ - along);
+  const int64_t along_s = static_cast<int64_t>(along);
+  int64_t r = r0_;
+  if (dr_) r += muldiv_round(dr_, along_s, total_);
+  int64_t c = c0_;
+  if (dc_) c += muldiv_round(dc_, along_s, total_);
+  const SinCosQ30 sc = sincos_bam(ang);
+  return plane_point(plane_, ca_ + scale_q30(r, sc.cos_q30), cb_ + scale_q30(r, sc.sin_q30), c);
 }
 
 }  // namespace dexmill

@@ -38,6 +38,12 @@ class ArcChords {
   int64_t sweep_bam() const { return dir_ > 0 ? total_ : -total_; }
   // End point of the next chord; false after the last one.
   bool next(PointNm* p);
+  // The point `along` binary angles from the start (0 <= along <= |sweep|),
+  // with the radius and the axis coordinate interpolated as above.
+  PointNm point_at(uint64_t along) const;
+  // The larger of the start and end radii, nm.
+  int64_t radius_max() const { return dr_ > 0 ? r0_ + dr_ : r0_; }
+  Plane plane() const { return plane_; }
 
  private:
   Plane plane_;

@@ -1,7 +1,7 @@
 // The cutting stage: canonical records to stamp or sweep calls.
 #include "core/mill.h"
 
-#include "core/arc_chords.h"
+#include "core/arc_walk.h"
 #include "core/stamp.h"
 
 namespace dexmill {
@@ -54,13 +54,13 @@ void Mill<H>::emit(const CanonRecord& r) {
         chained_ = true;
         break;
       }
-      ArcChords chords;
-      chords.init(r, kArcChordSagittaNm);
-      PointNm from = r.start, to;
-      while (chords.next(&to)) {
-        cut_line(from, to);
-        from = to;
-      }
+      // Chords near the grid only; the tool tip still ends at r.end.
+      const int64_t margin = tool_.diameter_nm + grid_->pitch_nm;
+      const RectNm reach{grid_->x0_nm - margin, grid_->y0_nm - margin,
+                         grid_->x0_nm + (grid_->nx - 1) * grid_->pitch_nm + margin,
+                         grid_->y0_nm + (grid_->ny - 1) * grid_->pitch_nm + margin};
+      arc_walk(r, kArcChordSagittaNm, reach, [this](PointNm a, PointNm b) { cut_line(a, b); });
+      last_ = r.end;
       break;
     }
     case CanonKind::kToolChange: {

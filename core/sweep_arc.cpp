@@ -12,6 +12,7 @@
 // 2^27 nm) is cut as chords of sagitta <= kArcChordSagittaNm, each swept
 // exactly: the tool path is then within 1 um + 7 nm of the arc.
 #include "core/arc_chords.h"
+#include "core/arc_walk.h"
 #include "core/fixed.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
@@ -102,16 +103,28 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
   const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
   const bool exact = exact_shape && arc.arc.plane == Plane::kXY && arc.start.z_nm == arc.end.z_nm &&
                      ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
+  if (!exact) {
+    // Chords near the grid only (core/arc_walk.h); a joint is chained when
+    // the chord starts where the last one ended.
+    const int64_t margin = 2 * (t.r_u / kSweepUnitsPerNm) + g->pitch_nm;
+    const RectNm reach{g->x0_nm - margin, g->y0_nm - margin, g->x0_nm + (g->nx - 1) * g->pitch_nm + margin,
+                       g->y0_nm + (g->ny - 1) * g->pitch_nm + margin};
+    PointNm last = arc.start;
+    bool chained = !start_cap;
+    arc_walk(arc, kArcChordSagittaNm, reach, [&](PointNm a, PointNm b) {
+      sweep_line(g, t, a, b, st, !(chained && a == last));
+      last = b;
+      chained = true;
+    });
+    return;
+  }
   ArcChords pieces;
-  // Exact: quarter-turn pieces (a sagitta as large as the radius); else
-  // chords of the stated sagitta.
-  pieces.init(arc, exact ? ra_nm : kArcChordSagittaNm);
+  // Quarter-turn pieces: a sagitta as large as the radius.
+  pieces.init(arc, ra_nm);
   PointNm from = arc.start, to;
   bool cap = start_cap;
   while (pieces.next(&to)) {
-    if (!exact) {
-      sweep_line(g, t, from, to, st, cap);
-    } else {
+    {
       // The piece on the circle of the start's radius; the end's radius may
       // differ by the interpreter's tolerance: that gap is a straight sweep.
       const int64_t ax = (from.x_nm - cx) * kSweepUnitsPerNm, ay = (from.y_nm - cy) * kSweepUnitsPerNm;
