@@ -4,6 +4,7 @@
 #   make run          build and run the built-in demo (writes out/)
 #   make test         build and run every test (SAN=1: under ASan+UBSan)
 #   make CXX=clang++  the same with clang
+#   make GLFW=1       with the live window of `dexmill run --window` (libglfw3-dev)
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (DESIGN.md
@@ -26,6 +27,12 @@ INTFLAGS := -fno-exceptions -fno-rtti -include core/integer_only.h
 HOSTFLAGS :=
 LDFLAGS  += $(LDSAN)
 LDLIBS   ?=
+# The window (platform/window_glfw.cpp) needs GLFW and OpenGL.
+GLFW     ?=
+ifneq ($(GLFW),)
+HOSTFLAGS += -DDEXMILL_GLFW $(shell pkg-config --cflags glfw3 gl)
+LDLIBS   += $(shell pkg-config --libs glfw3 gl)
+endif
 
 CORE_SRC     := $(sort $(wildcard core/*.cpp))
 DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))
