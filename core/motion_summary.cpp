@@ -67,6 +67,7 @@ void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t
   if (feed) {
     feed_.add(a);
     feed_.add(b);
+    feed_level_top_nm_ = max_of(feed_level_top_nm_, min_of(a.z_nm, b.z_nm));
     if (a.z_nm < 0 || b.z_nm < 0) {
       feed_below_zero_.add(a);
       feed_below_zero_.add(b);

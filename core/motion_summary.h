@@ -52,6 +52,10 @@ class MotionSummary final : public CanonSink {
   // Points of the feed pieces that reach below z = 0 (both ends of each):
   // where a program with Z0 on the stock top cuts.
   const BoxAccum& feed_below_zero_box() const { return feed_below_zero_; }
+  // The highest of the lower ends of the feed pieces: the highest level a
+  // feed reaches and stays at or below (a plunge from a safe height counts
+  // at its bottom). INT64_MIN without feeds.
+  int64_t feed_level_top_nm() const { return feed_level_top_nm_; }
   int64_t feed_length_nm() const { return feed_nm_; }
   int64_t rapid_length_nm() const { return rapid_nm_; }
   int64_t estimated_time_us() const { return feed_us_ + rapid_us_ + dwell_us_; }
@@ -70,6 +74,7 @@ class MotionSummary final : public CanonSink {
   MotionTimeModel model_;
   uint64_t counts_[kCanonKinds] = {};
   BoxAccum motion_, feed_, feed_below_zero_;
+  int64_t feed_level_top_nm_ = INT64_MIN;
   int64_t feed_nm_ = 0, rapid_nm_ = 0;
   int64_t feed_us_ = 0, rapid_us_ = 0, dwell_us_ = 0;
 };

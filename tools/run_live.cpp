@@ -48,7 +48,7 @@ constexpr double kFrameS = 1.0 / 30;
 constexpr int64_t kElevationLimitBam = 0x3fffffff;  // just under 90 degrees
 constexpr int32_t kBamPerPixel = 5965232;  // 0.5 degree: a drag across 720 pixels turns once
 
-int32_t band_scale(int32_t width) { return width >= 600 ? 2 : 1; }
+int32_t band_scale(int32_t width) { return width >= 960 ? 2 : 1; }  // the status line fits up to 80 cells
 int32_t band_height(int32_t scale) { return kFontCellH * scale + 4; }
 
 }  // namespace

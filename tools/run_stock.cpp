@@ -21,7 +21,7 @@ StockBox default_stock(const MotionSummary& s, int64_t max_tool_radius_nm) {
     top = 0;
     deepest = below.lo.z_nm;
   } else if (feed.valid) {
-    top = feed.hi.z_nm;
+    top = s.feed_level_top_nm();
     deepest = feed.lo.z_nm;
   } else {
     top = any.lo.z_nm;

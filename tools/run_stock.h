@@ -4,7 +4,9 @@
 // (core/motion_summary.h), for programs that put Z0 on the stock top as CAM
 // programs do:
 //   top    Z = 0 when any feed reaches below 0; otherwise (a program zeroed on
-//          the table) the highest feed Z;
+//          the table) the highest level a feed reaches: the highest of the
+//          lower ends of the feed moves (a plunge from a safe height counts
+//          at its bottom);
 //   bottom Z = the deepest feed, less a quarter of the cut depth (at least
 //          1 mm), and at least 2 mm below the top;
 //   X, Y   = the box of the feed moves that reach below the top (all feeds,
