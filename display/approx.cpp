@@ -11,8 +11,8 @@ struct RecipTable {
   uint32_t v[256];
   constexpr RecipTable() : v() {
     // a/2^32 in [0.5 + k/512, 0.5 + (k+1)/512): 1/x at the midpoint is
-    // 512 / (256.5 + k), in q30 2^41 / (513 + 2k).
-    for (int k = 0; k < 256; ++k) v[k] = static_cast<uint32_t>((static_cast<uint64_t>(1) << 41) / (513 + 2 * k));
+    // 512 / (256.5 + k), in q30 2^40 / (513 + 2k).
+    for (int k = 0; k < 256; ++k) v[k] = static_cast<uint32_t>((static_cast<uint64_t>(1) << 40) / (513 + 2 * k));
   }
 };
 

@@ -9,8 +9,8 @@
 //   recip_u32:  |m * 2^-shift - 1/v| <= 2^-28 / v            (relative 3.8e-9)
 //   rsqrt_u32:  |m * 2^-shift - 1/sqrt(v)| <= 2^-28 / sqrt(v) (relative 3.8e-9)
 //   rsqrt_fast_u32 (one Newton step, for 8-bit shading):
-//               |m * 2^-shift - 1/sqrt(v)| <= 2^-16 / sqrt(v) (relative 1.5e-5)
-//   normal_unit_q14: each component within 3 q14 LSB (1.9e-4) of the exact
+//               |m * 2^-shift - 1/sqrt(v)| <= 2^-15 / sqrt(v) (relative 3.1e-5)
+//   normal_unit_q14: each component within 2 q14 LSB (1.2e-4) of the exact
 //               unit vector, for any non-zero integer vector.
 #ifndef DEXMILL_DISPLAY_APPROX_H
 #define DEXMILL_DISPLAY_APPROX_H

@@ -195,7 +195,7 @@ void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32
     }
     // Depth range: the scene's sphere as seen along d, the near plane no
     // closer than R / 256.
-    const int64_t wc_u = v->world.c[2] >> 32;  // w of the scene centre
+    const int64_t wc_u = (v->world.c[2] + (static_cast<int64_t>(1) << 31)) >> 32;  // w of the scene centre
     const int64_t near_u = max_of<int64_t>(ku / 256, wc_u - ku - ku / 64);
     const int64_t far_u = max_of<int64_t>(wc_u + ku + ku / 64, near_u + near_u / 256 + 1);
     uint32_t fov = cam.fov_bam;
@@ -211,6 +211,11 @@ void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32
     v->eye = PointNm{t.x_nm + muldiv_round(dist, b.d[0], kOneQ30), t.y_nm + muldiv_round(dist, b.d[1], kOneQ30),
                      t.z_nm + muldiv_round(dist, b.d[2], kOneQ30)};
     v->sees_below = v->eye.z_nm < scene.stock_top_nm;
+  }
+  // The maps end with >> 32: half a unit here makes that round to nearest.
+  for (int row = 0; row < 3; ++row) {
+    v->grid.c[row] = sat_add_i64(v->grid.c[row], static_cast<int64_t>(1) << 31);
+    v->world.c[row] = sat_add_i64(v->world.c[row], static_cast<int64_t>(1) << 31);
   }
   clip_set_planes(&p, width, height);
 }

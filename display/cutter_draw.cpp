@@ -3,7 +3,6 @@
 
 #include "core/fixed.h"
 #include "core/trig.h"
-#include "display/approx.h"
 
 namespace dexmill {
 namespace {
@@ -74,20 +73,25 @@ ScreenRect cutter_rect(const CutterShape& s, const View& v, PointNm tip, int32_t
   return rect_intersect(r, all);
 }
 
-void cutter_place(const CutterShape& s, const View& v, const Lighting& l, PointNm tip, int32_t width, int32_t height,
-                  CutterMesh* m) {
+void cutter_light(const CutterShape& s, const Lighting& l, CutterMesh* m) {
+  for (int k = 0; k < kCutterRingCount; ++k)
+    for (int a = 0; a < kCutterSegments; ++a)
+      m->shade[idx(k, a)] = static_cast<uint8_t>(
+          shade_of_vector(l, s.ring_nr[k] * s.cos_q30[a], s.ring_nr[k] * s.sin_q30[a], s.ring_nz[k] * kOneQ30));
+}
+
+void cutter_place(const CutterShape& s, const View& v, PointNm tip, int32_t width, int32_t height, CutterMesh* m) {
   m->rect = cutter_rect(s, v, tip, width, height);
   if (!s.valid) return;
   for (int k = 0; k < kCutterRingCount; ++k) {
+    // Radii and heights are below 2^31 nm (tool_check's 1 m), cosines q30:
+    // 64-bit products.
+    const int64_t r = s.ring_r_nm[k];
     for (int a = 0; a < kCutterSegments; ++a) {
       const int n = idx(k, a);
-      const int64_t r = s.ring_r_nm[k];
-      const PointNm q{tip.x_nm + muldiv_round(r, s.cos_q30[a], kOneQ30), tip.y_nm + muldiv_round(r, s.sin_q30[a], kOneQ30),
-                      tip.z_nm + s.ring_h_nm[k]};
-      ClipVertex cv = view_point(v, q);
-      const int64_t nr = s.ring_nr[k];
-      cv.shade = shade_of_normal(l, normal_unit_q14(muldiv_round(nr, s.cos_q30[a], kOneQ30 >> 14),
-                                                    muldiv_round(nr, s.sin_q30[a], kOneQ30 >> 14), s.ring_nz[k] * 16384));
+      const int64_t ox = (r * s.cos_q30[a] + (kOneQ30 >> 1)) >> 30, oy = (r * s.sin_q30[a] + (kOneQ30 >> 1)) >> 30;
+      ClipVertex cv = view_point(v, PointNm{tip.x_nm + ox, tip.y_nm + oy, tip.z_nm + s.ring_h_nm[k]});
+      cv.shade = m->shade[n];
       m->clip[n] = cv;
       m->oc[n] = clip_outcode(v.proj, cv.x, cv.y, cv.w);
       if (m->oc[n] == 0) m->screen[n] = clip_project(v.proj, cv);

@@ -41,16 +41,20 @@ struct CutterShape {
 
 void cutter_shape_build(const ToolProfile& p, CutterShape* s);
 
-// The solid placed and lit for one frame.
+// The solid lit for a view and placed at a tip.
 struct CutterMesh {
+  uint8_t shade[kCutterVertices];  // from cutter_light
   ClipVertex clip[kCutterVertices];
   RasterVertex screen[kCutterVertices];  // valid where oc == 0
   uint8_t oc[kCutterVertices];
   ScreenRect rect;  // pixels it can touch (the whole frame when any bound leaves the guard band)
 };
 
-void cutter_place(const CutterShape& s, const View& v, const Lighting& l, PointNm tip, int32_t width, int32_t height,
-                  CutterMesh* m);
+// Shades of the solid's vertices under a light (a directional light and a
+// distant viewer: the shades do not depend on where the tool is).
+void cutter_light(const CutterShape& s, const Lighting& l, CutterMesh* m);
+// Places the lit solid with its tip at `tip`.
+void cutter_place(const CutterShape& s, const View& v, PointNm tip, int32_t width, int32_t height, CutterMesh* m);
 
 // The pixels the tool's bounding box covers (what cutter_place puts in rect).
 ScreenRect cutter_rect(const CutterShape& s, const View& v, PointNm tip, int32_t width, int32_t height);

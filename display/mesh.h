@@ -56,12 +56,20 @@ constexpr int32_t kBlockCells = 8;
 
 // Draws the cells [c.i0, c.i1) x [c.j0, c.j1) (at most kBlockCells each way),
 // rows in descending j when j_desc, columns in descending i when i_desc.
+// With `cull` (the cells straddle the clip rectangle's edge), cells that
+// cannot reach the clip are skipped early: per row, those whose box between
+// heights zlo and zhi (bounds of every height the cells draw) projects
+// outside it (orthographic views), and cells of top triangles holding no
+// pixel centre inside it. The picture is the same either way.
 template <class H>
-void mesh_draw_cells(const MeshPass<H>& p, GridRect c, bool i_desc, bool j_desc);
+void mesh_draw_cells(const MeshPass<H>& p, GridRect c, bool i_desc, bool j_desc, bool cull, uint32_t zlo, uint32_t zhi);
 
-extern template void mesh_draw_cells<uint8_t>(const MeshPass<uint8_t>&, GridRect, bool, bool);
-extern template void mesh_draw_cells<uint16_t>(const MeshPass<uint16_t>&, GridRect, bool, bool);
-extern template void mesh_draw_cells<uint32_t>(const MeshPass<uint32_t>&, GridRect, bool, bool);
+extern template void mesh_draw_cells<uint8_t>(const MeshPass<uint8_t>&, GridRect, bool, bool, bool, uint32_t,
+                                                uint32_t);
+extern template void mesh_draw_cells<uint16_t>(const MeshPass<uint16_t>&, GridRect, bool, bool, bool, uint32_t,
+                                                uint32_t);
+extern template void mesh_draw_cells<uint32_t>(const MeshPass<uint32_t>&, GridRect, bool, bool, bool, uint32_t,
+                                                uint32_t);
 
 }  // namespace dexmill
 

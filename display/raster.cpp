@@ -13,9 +13,6 @@ inline int64_t centre_q4(int32_t p) { return static_cast<int64_t>(p) * kSubpixel
 inline int32_t first_centre(int32_t lo) { return (lo - kSubpixelOne / 2 + kSubpixelOne - 1) >> kSubpixelBits; }
 inline int32_t last_centre(int32_t hi) { return (hi - kSubpixelOne / 2) >> kSubpixelBits; }
 
-// n / d rounded to nearest, d > 0, |n| < 2^62.
-inline int64_t div_round_pos(int64_t n, int64_t d) { return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d); }
-
 // Fraction bits of the interpolated depth and shade.
 constexpr int kDepthFrac = 7;   // depth < 2^24, so depth << 7 < 2^31
 constexpr int kShadeFrac = 16;  // shade < 2^8
@@ -210,10 +207,13 @@ void single(RasterTarget* t, const Tri& tri) {
   const RasterVertex& b = *tri.v[1];
   const RasterVertex& c = *tri.v[2];
   // The box is under 2 pixels each way: |w| < 2^11 and area2 < 2^11.
-  const int64_t z = ((w1 * (b.depth - a.depth) + w2 * (c.depth - a.depth)) << kDepthFrac) / tri.area2;
-  const int64_t s = ((w1 * (b.shade - a.shade) + w2 * (c.shade - a.shade)) << kShadeFrac) / tri.area2;
-  const uint32_t zv = static_cast<uint32_t>((static_cast<int64_t>(a.depth) << kDepthFrac) + z);
-  const uint32_t sv = static_cast<uint32_t>((static_cast<int64_t>(a.shade) << kShadeFrac) + s);
+  // Truncating towards vertex 0 keeps the values between the vertices'; the
+  // shade gets the same half-step bias as the plane path.
+  constexpr int64_t kZOne = static_cast<int64_t>(1) << kDepthFrac, kSOne = static_cast<int64_t>(1) << kShadeFrac;
+  const int64_t z = (w1 * (b.depth - a.depth) + w2 * (c.depth - a.depth)) * kZOne / tri.area2;
+  const int64_t s = (w1 * (b.shade - a.shade) + w2 * (c.shade - a.shade)) * kSOne / tri.area2;
+  const uint32_t zv = static_cast<uint32_t>(a.depth * kZOne + z);
+  const uint32_t sv = static_cast<uint32_t>(a.shade * kSOne + kSOne / 2 + s);
   Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(tri.by0) * t->color_stride) + tri.bx0;
   Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(tri.by0) * t->z_stride) + tri.bx0;
   t->stats.pixels_written += fragment(cp, zp, zv, sv, t->lut);

@@ -67,6 +67,8 @@ ScreenRect box_rect(const View& v, int32_t i0, int32_t j0, int32_t i1, int32_t j
 void tiles_clear(TileMap* t) {
   const size_t n = static_cast<size_t>(t->tiles_x) * static_cast<size_t>(t->tiles_y);
   for (size_t k = 0; k < n; ++k) t->flags[k] = 0;
+  t->ty0 = t->tiles_y;
+  t->ty1 = 0;
 }
 
 void tiles_mark(TileMap* t, const ScreenRect& r0) {
@@ -76,13 +78,15 @@ void tiles_mark(TileMap* t, const ScreenRect& r0) {
   const int32_t ty0 = r.y0 / kTileSide, ty1 = (r.y1 - 1) / kTileSide;
   for (int32_t ty = ty0; ty <= ty1; ++ty)
     for (int32_t tx = tx0; tx <= tx1; ++tx) t->flags[static_cast<size_t>(ty) * t->tiles_x + tx] = 1;
+  t->ty0 = min_of(t->ty0, ty0);
+  t->ty1 = max_of(t->ty1, ty1 + 1);
 }
 
 int tiles_rects(TileMap* t, ScreenRect* out, int max) {
   int n = 0;
   ScreenRect rest{0, 0, 0, 0};
   const ScreenRect frame{0, 0, t->width, t->height};
-  for (int32_t ty = 0; ty < t->tiles_y; ++ty) {
+  for (int32_t ty = t->ty0; ty < t->ty1; ++ty) {
     uint8_t* row = t->flags + static_cast<size_t>(ty) * t->tiles_x;
     for (int32_t tx = 0; tx < t->tiles_x; ++tx) {
       if (!row[tx]) continue;
@@ -91,7 +95,7 @@ int tiles_rects(TileMap* t, ScreenRect* out, int max) {
       // Extend down while the next row holds the same run, bounded by
       // unmarked tiles on both sides.
       int32_t ey = ty + 1;
-      for (; ey < t->tiles_y; ++ey) {
+      for (; ey < t->ty1; ++ey) {
         const uint8_t* next = t->flags + static_cast<size_t>(ey) * t->tiles_x;
         bool same = (tx == 0 || !next[tx - 1]) && (ex == t->tiles_x || !next[ex]);
         for (int32_t x = tx; x < ex && same; ++x) same = next[x] != 0;
@@ -106,6 +110,8 @@ int tiles_rects(TileMap* t, ScreenRect* out, int max) {
     }
   }
   if (!rest.empty()) out[n++] = rest;
+  t->ty0 = t->tiles_y;
+  t->ty1 = 0;
   return n;
 }
 

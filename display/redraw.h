@@ -53,13 +53,14 @@ void block_heights(const DexelGrid<H>& g, int32_t bx, int32_t by, bool bottoms, 
 ScreenRect box_rect(const View& v, int32_t i0, int32_t j0, int32_t i1, int32_t j1, int64_t zlo, int64_t zhi,
                     int32_t width, int32_t height);
 
-constexpr int32_t kTileSide = 16;
+constexpr int32_t kTileSide = 8;
 constexpr int kMaxDirtyRects = 32;
 
 struct TileMap {
   uint8_t* flags = nullptr;  // tiles_x * tiles_y, caller memory
   int32_t tiles_x = 0, tiles_y = 0;
   int32_t width = 0, height = 0;
+  int32_t ty0 = 0, ty1 = 0;  // rows that may hold marks: [ty0, ty1)
 };
 
 inline size_t tile_count(int32_t width, int32_t height) {

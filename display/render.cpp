@@ -86,8 +86,11 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
       const int32_t bx = r->i_desc ? r->bnx - 1 - m : m;
       const BlockInfo& b = r->blocks[static_cast<size_t>(by) * r->bnx + bx];
       if (b.zlo_lsb > b.zhi_lsb) continue;
-      if (rect_intersect(rect, ScreenRect{b.x0, b.y0, b.x1, b.y1}).empty()) continue;
-      mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc);
+      const ScreenRect br{b.x0, b.y0, b.x1, b.y1};
+      const ScreenRect in = rect_intersect(rect, br);
+      if (in.empty()) continue;
+      const bool inside = in.x0 == br.x0 && in.y0 == br.y0 && in.x1 == br.x1 && in.y1 == br.y1;
+      mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
   }
   if (cutter && !rect_intersect(rect, r->cutter.rect).empty()) {
@@ -117,6 +120,7 @@ void prepare_view(Renderer<H>* r) {
   shade_ramp(r->fb.format, r->opt.cutter, base, r->lut_cutter);
   shade_ramp(r->fb.format, r->opt.table_colour, base, r->lut_table);
   r->bottom_shade = shade_of_normal(r->light, UnitQ14{0, 0, -16384});
+  cutter_light(r->tool, r->light, &r->cutter);
   r->i_desc = v.eye_q30[0] > 0;  // nearer cells first: fewer pixels shaded twice
   r->j_desc = v.eye_q30[1] > 0;
   // The table: a plane a little below the stock, seen only from above.
@@ -137,7 +141,7 @@ void prepare_view(Renderer<H>* r) {
 
 template <class H>
 void place_cutter(Renderer<H>* r, const CutterPose& c) {
-  if (c.visible && r->tool.valid) cutter_place(r->tool, r->view, r->light, c.tip, r->fb.width, r->fb.height, &r->cutter);
+  if (c.visible && r->tool.valid) cutter_place(r->tool, r->view, c.tip, r->fb.width, r->fb.height, &r->cutter);
   else r->cutter.rect = ScreenRect{0, 0, 0, 0};
   r->cutter_pose = c;
 }
@@ -227,6 +231,7 @@ template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p) {
   r->tool = CutterShape{};
   if (p) cutter_shape_build(*p, &r->tool);
+  r->need_full = true;  // the shades of the new shape come with the next full frame
 }
 
 template <class H>

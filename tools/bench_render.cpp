@@ -6,7 +6,8 @@
 //   render-wN    full frame (surface extraction, shading, rasterization) at
 //                640x480 and 480x272, one line each
 //   update-w3    the local update after one instance of motion of the
-//                6-dexel cutter (cutting excluded), averaged over a stripe
+//                6-dexel cutter (cutting excluded), averaged over three
+//                finishing stripes
 //   render-1k    full frame of a 1024x1024 grid at 640x480
 //
 // The zig milling: x-parallel stripes one dexel apart, the tool tip following
@@ -128,18 +129,19 @@ void bench_update_w3(const char* name) {
   setup(&g_renderer, &f, w.g, 640, 480);
   renderer_set_tool(&g_renderer, &w.profile);
   render_full(&g_renderer, &w.g, CutterPose{true, PointNm{0, 0, kStock}});
-  // One instance of motion per update, along a stripe 1.5 mm below the
-  // milled relief's deepest level, so that every instance cuts.
-  const int32_t j = 128;
+  // One instance of motion per update: a finishing pass along stripes that
+  // follows the relief 0.5 mm below the milled surface, so every instance
+  // cuts, as the paper's local update does.
+  const int64_t sx = 255 * kPitch, sy = 255 * kPitch;
   double total = 0, worst = 0;
   uint64_t tris = 0, pixels = 0, rects = 0;
   int n = 0;
   CutStats st;
-  for (int pass = 0; pass < 3; ++pass) {
+  for (int32_t j = 60; j < 240; j += 60) {
     for (int32_t i = 8; i < 248; ++i, ++n) {
-      const int64_t tip = grid_height_of_z(w.g, 2 * kNmPerMm + pass * kNmPerMm / 2);
-      stamp_instance(&w.g, w.c, i, j + pass * 40, tip, &st);
-      const CutterPose pose{true, PointNm{i * kPitch, (j + pass * 40) * kPitch, tip * w.g.lsb_nm}};
+      const int64_t x = i * kPitch, y = j * kPitch, z = relief_nm(x, y, sx, sy) - kNmPerMm / 2;
+      stamp_instance(&w.g, w.c, i, j, grid_height_of_z(w.g, z), &st);
+      const CutterPose pose{true, PointNm{x, y, z}};
       const double t0 = bench::now_s();
       const RenderResult res = render_update(&g_renderer, &w.g, pose);
       const double dt = bench::now_s() - t0;
