@@ -106,11 +106,11 @@ TEST(run_pocket_outputs_are_pinned) {
   CHECK_EQ(r.code, 0);
   CHECK(r.err.empty());
   const std::string d = tmp_dir() + "/";
-  check_hash(d + "p.ppm", 0x732f4eff53255d3bULL);
+  check_hash(d + "p.ppm", 0x0ba41c956c95902dULL);
   check_hash(d + "p.pgm", 0x78521702829f757fULL);
   check_hash(d + "p.stl", 0x654d2105bf2dda8cULL);
-  check_hash(d + "pf/frame-000001.ppm", 0xd24b2bb40a9db919ULL);
-  check_hash(d + "pf/frame-000004.ppm", 0x58fdd066072bfbd8ULL);
+  check_hash(d + "pf/frame-000001.ppm", 0xb3c03b83b1f99b4fULL);
+  check_hash(d + "pf/frame-000004.ppm", 0xbf08be1f430c8ee4ULL);
   // The untouched stock, then every 4 of the 22 moves, then the last.
   struct stat st;
   CHECK_EQ(stat((d + "pf/frame-000007.ppm").c_str(), &st), 0);
@@ -129,11 +129,11 @@ TEST(run_inch_arcs_and_tool_table) {
   if (skip()) return;
   Result r = run("arcs_inch.ngc -q --size 120x90 --image %/a.ppm --report %/a.json");
   CHECK_EQ(r.code, 0);
-  check_hash(tmp_dir() + "/a.ppm", 0x077591f30bbaea4eULL);
+  check_hash(tmp_dir() + "/a.ppm", 0xc2b9e08cfb972802ULL);
   CHECK(has(slurp(tmp_dir() + "/a.json"), "\"dwell\": 1"));
   r = run("tool_change.ngc --tools tools.tbl -q --size 120x90 --image %/t.ppm --report %/t.json --mode stamp");
   CHECK_EQ(r.code, 0);
-  check_hash(tmp_dir() + "/t.ppm", 0x07a3646ce46230e6ULL);
+  check_hash(tmp_dir() + "/t.ppm", 0xd17682ca02d0844cULL);
   CHECK(has(slurp(tmp_dir() + "/t.json"), "\"used\": [{\"number\": 1, \"spec\": \"flat:4\"}, {\"number\": 2, \"spec\": \"ball:6\"}]"));
   CHECK(has(slurp(tmp_dir() + "/t.json"), "\"mode\": \"stamp\""));
 }
@@ -154,7 +154,7 @@ TEST(run_stdin_and_demo) {
   CHECK_EQ(stat((tmp_dir() + "/out/demo.ngc").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.ppm").c_str(), &st), 0);
-  check_hash(tmp_dir() + "/out/final.ppm", 0xe5c1c4a2f2421572ULL);
+  check_hash(tmp_dir() + "/out/final.ppm", 0xa5ba658e155d9ae3ULL);
 }
 
 TEST(run_usage_errors_exit_2) {
