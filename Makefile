@@ -4,6 +4,7 @@
 #   make run          build and run the built-in demo (writes out/)
 #   make test         build and run every test (SAN=1: under ASan+UBSan)
 #   make CXX=clang++  the same with clang
+#   make GLFW=1       with the live window of `dexmill run --window` (libglfw3-dev)
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (DESIGN.md
@@ -18,7 +19,8 @@ BUILD    ?= build$(if $(SAN),/san)
 WARN     := -Wall -Wextra -Werror -Wshadow -Wvla -Wundef
 BASEFLAGS := -std=c++17 $(OPT) -g $(WARN) -I. -MMD -MP
 ifneq ($(SAN),)
-# vptr checks need RTTI, which core/ and display/ do not have.
+# vptr checks need RTTI, which core/ and display/ do not have (host code holds
+# core CanonSinks such as Mill and MotionSummary).
 BASEFLAGS += -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=all -fno-omit-frame-pointer
 LDSAN    := -fsanitize=address,undefined
 endif
@@ -27,6 +29,12 @@ INTFLAGS := -fno-exceptions -fno-rtti -include core/integer_only.h
 HOSTFLAGS :=
 LDFLAGS  += $(LDSAN)
 LDLIBS   ?=
+# The window (platform/window_glfw.cpp) needs GLFW and OpenGL.
+GLFW     ?=
+ifneq ($(GLFW),)
+HOSTFLAGS += -DDEXMILL_GLFW $(shell pkg-config --cflags glfw3 gl)
+LDLIBS   += $(shell pkg-config --libs glfw3 gl)
+endif
 
 CORE_SRC     := $(sort $(wildcard core/*.cpp))
 DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))

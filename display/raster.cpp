@@ -1,0 +1,299 @@
+// Span rasterizer: coverage set-up, the depth-tested Gouraud span filler.
+#include "display/raster.h"
+
+#include "core/fixed.h"
+
+namespace dexmill {
+namespace {
+
+// Pixel centre of pixel p in q4.
+inline int64_t centre_q4(int32_t p) { return static_cast<int64_t>(p) * kSubpixelOne + kSubpixelOne / 2; }
+
+// Range of pixels whose centre 16p + 8 lies in [lo, hi] (q4): first, last.
+inline int32_t first_centre(int32_t lo) { return (lo - kSubpixelOne / 2 + kSubpixelOne - 1) >> kSubpixelBits; }
+inline int32_t last_centre(int32_t hi) { return (hi - kSubpixelOne / 2) >> kSubpixelBits; }
+
+// Fraction bits of the interpolated depth and shade.
+constexpr int kDepthFrac = 7;   // depth < 2^24, so depth << 7 < 2^31
+constexpr int kShadeFrac = 16;  // shade < 2^8
+
+inline int32_t min3(int32_t a, int32_t b, int32_t c) { return min_of(a, min_of(b, c)); }
+inline int32_t max3(int32_t a, int32_t b, int32_t c) { return max_of(a, max_of(b, c)); }
+
+// One triangle's edge functions over the pixels of its clipped bounding
+// box. E_k(p) for the edge from v[k+1] to v[k+2] is
+// (p.x - a.x)(b.y - a.y) - (p.y - a.y)(b.x - a.x): area2 at v[k], 0 on the
+// edge, positive inside. The stored values carry the top-left bias (-1 on
+// edges that are neither top nor left), so covered means all three >= 0.
+struct Tri {
+  const RasterVertex* v[3];    // counterclockwise on screen (area2 > 0)
+  int64_t area2;               // twice the area, q8
+  int32_t bx0, by0, bx1, by1;  // pixel bounding box, inclusive, clipped
+  int64_t e[3];                // biased edge values at the centre of (bx0, by0)
+  int64_t dx[3], dy[3];        // change per pixel step in x and in y
+  int32_t bias[3];             // 0 or 1
+};
+
+// One edge from p to q: its biased value at (px, py) and its steps.
+inline void edge(Tri* t, int k, const RasterVertex& p, const RasterVertex& q, int64_t px, int64_t py) {
+  const int64_t ex = static_cast<int64_t>(q.x_q4) - p.x_q4, ey = static_cast<int64_t>(q.y_q4) - p.y_q4;
+  // Top-left rule for counterclockwise-on-screen triangles (y down): left
+  // edges run downwards, top edges run leftwards.
+  t->bias[k] = (ey > 0 || (ey == 0 && ex < 0)) ? 0 : 1;
+  t->e[k] = (px - p.x_q4) * ey - (py - p.y_q4) * ex - t->bias[k];
+  t->dx[k] = ey * kSubpixelOne;
+  t->dy[k] = -ex * kSubpixelOne;
+}
+
+inline void edges(Tri* t) {
+  const int64_t px = centre_q4(t->bx0), py = centre_q4(t->by0);
+  edge(t, 0, *t->v[1], *t->v[2], px, py);
+  edge(t, 1, *t->v[2], *t->v[0], px, py);
+  edge(t, 2, *t->v[0], *t->v[1], px, py);
+}
+
+// Calls span(y, x0, x1) for each row with covered pixels [x0, x1), top to
+// bottom.
+template <class Span>
+void spans(const Tri& t, Span& span) {
+  int64_t r0 = t.e[0], r1 = t.e[1], r2 = t.e[2];
+  const int32_t width = t.bx1 - t.bx0 + 1;
+  if (width <= 24) {
+    // Narrow: walk the row from the box's left edge. A row crosses the
+    // triangle at most once (it is convex).
+    for (int32_t y = t.by0; y <= t.by1; ++y, r0 += t.dy[0], r1 += t.dy[1], r2 += t.dy[2]) {
+      int64_t e0 = r0, e1 = r1, e2 = r2;
+      int32_t x = t.bx0;
+      while (x <= t.bx1 && (e0 | e1 | e2) < 0) {
+        ++x;
+        e0 += t.dx[0];
+        e1 += t.dx[1];
+        e2 += t.dx[2];
+      }
+      if (x > t.bx1) continue;
+      const int32_t xs = x;
+      while (x <= t.bx1 && (e0 | e1 | e2) >= 0) {
+        ++x;
+        e0 += t.dx[0];
+        e1 += t.dx[1];
+        e2 += t.dx[2];
+      }
+      span(y, xs, x);
+    }
+    return;
+  }
+  // Wide: solve each edge for the row's first and last covered pixel.
+  for (int32_t y = t.by0; y <= t.by1; ++y, r0 += t.dy[0], r1 += t.dy[1], r2 += t.dy[2]) {
+    int64_t lo = 0, hi = width - 1;
+    const int64_t e[3] = {r0, r1, r2};
+    for (int k = 0; k < 3; ++k) {
+      const int64_t s = t.dx[k];
+      if (s > 0) {  // e + s*n >= 0  <=>  n >= ceil(-e / s)
+        const int64_t n = -e[k];
+        const int64_t c = n >= 0 ? (n + s - 1) / s : -((-n) / s);
+        lo = c > lo ? c : lo;
+      } else if (s < 0) {  // e + s*n >= 0  <=>  n <= floor(e / -s)
+        const int64_t d = -s, n = e[k];
+        const int64_t f = n >= 0 ? n / d : -((-n + d - 1) / d);
+        hi = f < hi ? f : hi;
+      } else if (e[k] < 0) {
+        hi = -1;
+      }
+    }
+    if (lo <= hi) span(y, t.bx0 + static_cast<int32_t>(lo), t.bx0 + static_cast<int32_t>(hi) + 1);
+  }
+}
+
+// An attribute plane: value(px, py) = base + floor((gx * X + gy * Y) / 16)
+// with X, Y the q4 offsets of the pixel centre from vertex 0. Since X and Y
+// move by 16 per pixel, stepping by gx and gy gives exactly these values
+// wherever the stepping starts (so clipping changes no bit). Computed modulo
+// 2^64 and 2^32: only the values at covered pixels (which fit) matter, and
+// modular arithmetic gets those exactly even when a sliver's gradient is huge.
+struct Plane {
+  int64_t gx, gy;  // per pixel, with the attribute's fraction bits
+  uint32_t row;    // value at pixel (bx0, y) of the current row
+
+  void setup(const Tri& t, int32_t a0, int32_t a1, int32_t a2, int frac, int64_t bias) {
+    const RasterVertex& v0 = *t.v[0];
+    const int64_t d1 = static_cast<int64_t>(a1) - a0, d2 = static_cast<int64_t>(a2) - a0;
+    const int64_t x1 = static_cast<int64_t>(t.v[1]->x_q4) - v0.x_q4, y1 = static_cast<int64_t>(t.v[1]->y_q4) - v0.y_q4;
+    const int64_t x2 = static_cast<int64_t>(t.v[2]->x_q4) - v0.x_q4, y2 = static_cast<int64_t>(t.v[2]->y_q4) - v0.y_q4;
+    // Solving a1 - a0 = gx x1 + gy y1, a2 - a0 = gx x2 + gy y2 (per q4
+    // unit); per pixel is 16 times that. Truncated: under one unit of the
+    // last fraction bit per pixel.
+    const int64_t scale = static_cast<int64_t>(kSubpixelOne) << frac;
+    gx = (d2 * y1 - d1 * y2) * scale / t.area2;
+    gy = (x2 * d1 - x1 * d2) * scale / t.area2;
+    const uint64_t X = static_cast<uint64_t>(centre_q4(t.bx0) - v0.x_q4);
+    const uint64_t Y = static_cast<uint64_t>(centre_q4(t.by0) - v0.y_q4);
+    const uint64_t s = static_cast<uint64_t>(gx) * X + static_cast<uint64_t>(gy) * Y;
+    row = static_cast<uint32_t>(static_cast<uint64_t>(a0) * (static_cast<uint64_t>(1) << frac) + static_cast<uint64_t>(bias) +
+                                static_cast<uint64_t>(static_cast<int64_t>(s) >> kSubpixelBits));
+  }
+};
+
+// Writes one fragment (depth-tested); returns 1 when it passed.
+template <class Pix, class Z>
+inline uint32_t fragment(Pix* cp, Z* zp, uint32_t zv, uint32_t sv, const uint32_t* lut) {
+  // 31-bit depth; a 16-bit buffer keeps its top 16 bits.
+  const Z zs = static_cast<Z>(sizeof(Z) == 2 ? zv >> 15 : zv);
+  if (zs < *zp) {
+    *zp = zs;
+    *cp = static_cast<Pix>(lut[sv >> kShadeFrac]);
+    return 1;
+  }
+  return 0;
+}
+
+template <class Pix, class Z>
+struct SpanFill {
+  RasterTarget* t;
+  const Tri* tri;
+  Plane z, s;
+  int32_t y_row;  // the row z.row and s.row hold
+  bool ready;
+
+  void operator()(int32_t y, int32_t x0, int32_t x1) {
+    if (!ready) {
+      // Set up on the first covered span only: many triangles of a fine grid
+      // cover no pixel centre and never pay for the divisions.
+      z.setup(*tri, tri->v[0]->depth, tri->v[1]->depth, tri->v[2]->depth, kDepthFrac, 0);
+      // Half a shade step of bias: the rounding error stays inside [0, 256).
+      s.setup(*tri, tri->v[0]->shade, tri->v[1]->shade, tri->v[2]->shade, kShadeFrac, 1 << (kShadeFrac - 1));
+      ready = true;
+    }
+    for (; y_row < y; ++y_row) {
+      z.row += static_cast<uint32_t>(z.gy);
+      s.row += static_cast<uint32_t>(s.gy);
+    }
+    Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(y) * t->color_stride);
+    Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(y) * t->z_stride);
+    const uint32_t zg = static_cast<uint32_t>(z.gx), sg = static_cast<uint32_t>(s.gx);
+    const uint32_t dx = static_cast<uint32_t>(x0 - tri->bx0);
+    uint32_t zv = z.row + zg * dx, sv = s.row + sg * dx;
+    const uint32_t* lut = t->lut;
+    uint64_t written = 0;
+    for (int32_t x = x0; x < x1; ++x, zv += zg, sv += sg) written += fragment(cp + x, zp + x, zv, sv, lut);
+    t->stats.pixels_written += written;
+  }
+};
+
+struct SpanCount {
+  RasterTarget* t;
+  void operator()(int32_t y, int32_t x0, int32_t x1) {
+    uint8_t* row = t->color + static_cast<ptrdiff_t>(y) * t->color_stride;
+    for (int32_t x = x0; x < x1; ++x) ++row[x];
+    t->stats.pixels_written += static_cast<uint64_t>(x1 - x0);
+  }
+};
+
+template <class Pix, class Z>
+void fill(RasterTarget* t, const Tri& tri) {
+  SpanFill<Pix, Z> f{t, &tri, {}, {}, tri.by0, false};
+  spans(tri, f);
+}
+
+// A triangle whose unclipped bounding box holds one pixel centre: the
+// coverage test at that centre, and the attributes by barycentric weights
+// (the weights are the unbiased edge values over area2, so the values are
+// convex combinations of the vertices'). Chosen from the unclipped box, so a
+// pixel gets the same value whatever the clip rectangle.
+template <class Pix, class Z>
+void single(RasterTarget* t, const Tri& tri) {
+  if ((tri.e[0] | tri.e[1] | tri.e[2]) < 0) return;
+  const int64_t w1 = tri.e[1] + tri.bias[1], w2 = tri.e[2] + tri.bias[2];
+  const RasterVertex& a = *tri.v[0];
+  const RasterVertex& b = *tri.v[1];
+  const RasterVertex& c = *tri.v[2];
+  // The box is under 2 pixels each way: |w| < 2^11 and area2 < 2^11.
+  // Truncating towards vertex 0 keeps the values between the vertices'; the
+  // shade gets the same half-step bias as the plane path.
+  constexpr int64_t kZOne = static_cast<int64_t>(1) << kDepthFrac, kSOne = static_cast<int64_t>(1) << kShadeFrac;
+  const int64_t z = (w1 * (b.depth - a.depth) + w2 * (c.depth - a.depth)) * kZOne / tri.area2;
+  const int64_t s = (w1 * (b.shade - a.shade) + w2 * (c.shade - a.shade)) * kSOne / tri.area2;
+  const uint32_t zv = static_cast<uint32_t>(a.depth * kZOne + z);
+  const uint32_t sv = static_cast<uint32_t>(a.shade * kSOne + kSOne / 2 + s);
+  Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(tri.by0) * t->color_stride) + tri.bx0;
+  Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(tri.by0) * t->z_stride) + tri.bx0;
+  t->stats.pixels_written += fragment(cp, zp, zv, sv, t->lut);
+}
+
+template <class Pix, class Z>
+void draw(RasterTarget* t, const Tri& tri, bool one) {
+  if (one) single<Pix, Z>(t, tri);
+  else fill<Pix, Z>(t, tri);
+}
+
+}  // namespace
+
+int32_t z_bytes(ZFormat f) { return f == ZFormat::kZ16 ? 2 : 4; }
+
+void raster_triangle(RasterTarget* t, const RasterVertex& a, const RasterVertex& b, const RasterVertex& c) {
+  ++t->stats.triangles;
+  // The pixel centres of the bounding box first: most triangles of a fine
+  // grid hold none and stop here.
+  Tri tri;
+  tri.bx0 = first_centre(min3(a.x_q4, b.x_q4, c.x_q4));
+  tri.bx1 = last_centre(max3(a.x_q4, b.x_q4, c.x_q4));
+  if (tri.bx0 > tri.bx1) return;
+  tri.by0 = first_centre(min3(a.y_q4, b.y_q4, c.y_q4));
+  tri.by1 = last_centre(max3(a.y_q4, b.y_q4, c.y_q4));
+  if (tri.by0 > tri.by1) return;
+  const bool one = tri.bx0 == tri.bx1 && tri.by0 == tri.by1;
+  tri.bx0 = max_of(tri.bx0, t->clip.x0);
+  tri.bx1 = min_of(tri.bx1, t->clip.x1 - 1);
+  tri.by0 = max_of(tri.by0, t->clip.y0);
+  tri.by1 = min_of(tri.by1, t->clip.y1 - 1);
+  if (tri.bx0 > tri.bx1 || tri.by0 > tri.by1) return;
+  int64_t area2 = (static_cast<int64_t>(c.x_q4) - a.x_q4) * (static_cast<int64_t>(b.y_q4) - a.y_q4) -
+                  (static_cast<int64_t>(b.x_q4) - a.x_q4) * (static_cast<int64_t>(c.y_q4) - a.y_q4);
+  tri.v[0] = &a;
+  if (area2 > 0) {
+    tri.v[1] = &b;
+    tri.v[2] = &c;
+  } else {
+    if (area2 == 0 || t->cull_back) return;
+    tri.v[1] = &c;
+    tri.v[2] = &b;
+    area2 = -area2;
+  }
+  tri.area2 = area2;
+  edges(&tri);
+  if (t->count_coverage) {
+    SpanCount sc{t};
+    spans(tri, sc);
+    return;
+  }
+  const bool c565 = t->format == PixelFormat::kRgb565, z16 = t->zformat == ZFormat::kZ16;
+  if (c565) {
+    if (z16) draw<uint16_t, uint16_t>(t, tri, one);
+    else draw<uint16_t, uint32_t>(t, tri, one);
+  } else {
+    if (z16) draw<uint32_t, uint16_t>(t, tri, one);
+    else draw<uint32_t, uint32_t>(t, tri, one);
+  }
+}
+
+void raster_clear(RasterTarget* t, const ScreenRect& r, uint32_t color_value) {
+  for (int32_t y = r.y0; y < r.y1; ++y) {
+    uint8_t* zrow = t->z + static_cast<ptrdiff_t>(y) * t->z_stride;
+    uint8_t* crow = t->color + static_cast<ptrdiff_t>(y) * t->color_stride;
+    if (t->zformat == ZFormat::kZ16) {
+      uint16_t* z = reinterpret_cast<uint16_t*>(zrow);
+      for (int32_t x = r.x0; x < r.x1; ++x) z[x] = 0xFFFF;
+    } else {
+      uint32_t* z = reinterpret_cast<uint32_t*>(zrow);
+      for (int32_t x = r.x0; x < r.x1; ++x) z[x] = 0xFFFFFFFFu;
+    }
+    if (t->format == PixelFormat::kRgb565) {
+      uint16_t* c = reinterpret_cast<uint16_t*>(crow);
+      for (int32_t x = r.x0; x < r.x1; ++x) c[x] = static_cast<uint16_t>(color_value);
+    } else {
+      uint32_t* c = reinterpret_cast<uint32_t*>(crow);
+      for (int32_t x = r.x0; x < r.x1; ++x) c[x] = color_value;
+    }
+  }
+}
+
+}  // namespace dexmill

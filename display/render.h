@@ -1,0 +1,158 @@
+// dexmill's display, in one header: the workpiece drawn from its dexel grid
+// the way the paper's §2.4 does (polygons per cell, normals blurred), by an
+// integer-only span rasterizer into a caller's framebuffer, with the cutter
+// as a red solid and incremental redraw of what a cut changed.
+//
+// Set-up, all memory the caller's (nothing here allocates):
+//
+//   static Renderer<height_t> r;                       // ~20 KB of state
+//   FrameView fb{pixels, 480, 272, 480 * 2, PixelFormat::kRgb565};
+//   RenderOptions opt;                                  // defaults are fine
+//   size_t n = renderer_scratch_bytes(grid, fb.width, fb.height, opt.zformat);
+//   // n bytes, 8-byte aligned: z-buffer, shade cache, block table, tiles
+//   renderer_init(&r, grid, fb, opt, scratch, n);
+//   renderer_set_tool(&r, &profile);                    // tool_profile(tool)
+//   renderer_set_camera(&r, renderer_fit(r, ViewPreset::kIso));
+//
+// Each frame:
+//
+//   CutterPose pose{true, tip};
+//   RenderResult res = render_update(&r, &grid, pose);  // after cutting
+//   for (int k = 0; k < res.nrects; ++k) present(res.rects[k]);
+//
+// render_update repaints only the screen area that the grid's dirty
+// rectangle (which it consumes and clears) and the cutter's old and new
+// positions can touch; the pixels come out bit-identical to render_full of
+// the same scene. It falls back to render_full after set-up or a camera or
+// tool change. The stock's size (its highest top) is taken at
+// renderer_init; afterwards the grid may only be cut (not re-stocked) until
+// the next renderer_init.
+#ifndef DEXMILL_DISPLAY_RENDER_H
+#define DEXMILL_DISPLAY_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/grid.h"
+#include "core/point.h"
+#include "core/status.h"
+#include "core/tool.h"
+#include "display/camera.h"
+#include "display/cutter_draw.h"
+#include "display/framebuffer.h"
+#include "display/raster.h"
+#include "display/redraw.h"
+#include "display/shade.h"
+
+namespace dexmill {
+
+struct RenderOptions {
+  ZFormat zformat = ZFormat::kZ32;
+  bool table = true;       // a machine table plane under the stock (drawn when seen from above)
+  bool gradient = true;    // background: vertical gradient top to bottom (else top colour)
+  Rgb background_top{44, 52, 66};
+  Rgb background_bottom{150, 160, 176};
+  Rgb workpiece{196, 204, 214};  // light aluminium
+  Rgb cutter{215, 38, 30};       // red
+  Rgb table_colour{92, 98, 108};
+  // The light: with light_follows_camera, a direction in the camera's frame
+  // (right, up, towards the eye), else in machine coordinates; any length.
+  bool light_follows_camera = true;
+  int32_t light[3] = {-5, 9, 13};
+  bool specular = true;
+};
+
+// Where the tool tip is, if the tool is to be drawn.
+struct CutterPose {
+  bool visible = false;
+  PointNm tip{0, 0, 0};
+};
+
+struct RenderResult {
+  bool full = false;          // the whole frame was drawn
+  int nrects = 0;             // changed screen rectangles, for present()
+  ScreenRect rects[kMaxDirtyRects];
+  RasterStats stats;          // triangles submitted, pixels written
+};
+
+// The renderer's state; fields are internal.
+template <class H>
+struct Renderer {
+  FrameView fb;
+  RenderOptions opt;
+  int32_t nx = 0, ny = 0;
+  SceneFrame scene;
+  BoxNm stock;
+  Camera cam;
+  View view;
+  Lighting light;
+  uint32_t lut_work[kShadeLevels], lut_cutter[kShadeLevels], lut_table[kShadeLevels];
+  uint8_t* z = nullptr;
+  ShadeCache shades;
+  BlockInfo* blocks = nullptr;
+  int32_t bnx = 0, bny = 0;
+  TileMap tiles;
+  CutterShape tool;
+  CutterMesh cutter;
+  CutterPose cutter_pose;       // as last drawn
+  ScreenRect cutter_rect{0, 0, 0, 0};  // where it was last drawn (empty: not drawn)
+  ClipVertex table_quad[4];
+  bool table_visible = false;
+  bool need_full = true;
+  bool i_desc = false, j_desc = false;
+  int32_t bottom_shade = 0;
+  RasterTarget target;
+};
+
+// Scratch bytes for a grid's size, a frame size and a z format.
+size_t renderer_scratch_bytes_for(int32_t nx, int32_t ny, int32_t width, int32_t height, ZFormat zf);
+template <class H>
+size_t renderer_scratch_bytes(const DexelGrid<H>& g, int32_t width, int32_t height, ZFormat zf) {
+  return renderer_scratch_bytes_for(g.nx, g.ny, width, height, zf);
+}
+
+// kBadArgument for an unusable frame view or grid, kBufferTooSmall when
+// `scratch` is null or shorter than renderer_scratch_bytes.
+template <class H>
+Status renderer_init(Renderer<H>* r, const DexelGrid<H>& g, const FrameView& fb, const RenderOptions& opt,
+                     void* scratch, size_t scratch_bytes);
+
+// The stock's box (the grid's dexel axes, heights 0 to the highest top at
+// init), which renderer_fit frames.
+template <class H>
+BoxNm renderer_stock_box(const Renderer<H>& r);
+// A preset camera fitted to the stock (orthographic).
+template <class H>
+Camera renderer_fit(const Renderer<H>& r, ViewPreset v);
+
+template <class H>
+void renderer_set_camera(Renderer<H>* r, const Camera& c);
+// The tool to draw (null: none).
+template <class H>
+void renderer_set_tool(Renderer<H>* r, const ToolProfile* p);
+
+// Draws everything. Clears the grid's dirty rectangle.
+template <class H>
+RenderResult render_full(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutter);
+// Redraws what changed since the last render. Clears the grid's dirty
+// rectangle.
+template <class H>
+RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutter);
+
+#define DEXMILL_RENDER_EXTERN(H)                                                                                   \
+  extern template Status renderer_init<H>(Renderer<H>*, const DexelGrid<H>&, const FrameView&, const RenderOptions&, \
+                                          void*, size_t);                                                          \
+  extern template BoxNm renderer_stock_box<H>(const Renderer<H>&);                                                 \
+  extern template Camera renderer_fit<H>(const Renderer<H>&, ViewPreset);                                          \
+  extern template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
+  extern template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
+  extern template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
+  extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
+DEXMILL_RENDER_EXTERN(uint8_t)
+DEXMILL_RENDER_EXTERN(uint16_t)
+DEXMILL_RENDER_EXTERN(uint32_t)
+#undef DEXMILL_RENDER_EXTERN
+
+}  // namespace dexmill
+
+#endif

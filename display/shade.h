@@ -1,0 +1,89 @@
+// Shading: normals from the dexel grid, a fixed-point light, and the colour
+// ramps the rasterizer indexes.
+//
+// Normals (paper §2.1 eq. 1, §2.4.2): the height gradient of every dexel by
+// central differences (core/grid.h grid_gradient, one-sided at the grid's
+// edge), blurred with the 3x3 kernel [1 2 1; 2 4 2; 1 2 1] so that the
+// staircase of vertical side faces shades smoothly (the paper's figure 7).
+// A top vertex uses the blurred normal (-gx, -gy, 16 dz); a side-face vertex
+// uses its horizontal part (-gx, -gy, 0), which points out of the material
+// towards the hole it borders (when that part vanishes, as on a fin one
+// dexel thick, the top normal stands in).
+//
+// Light (one directional light, by default following the camera): the
+// brightness of a unit normal n is
+//   b = ambient + diffuse * max(0, n.L) + specular * max(0, n.H)^32
+// (Blinn-Phong, H the half vector between L and the view direction, taken
+// constant over the frame as OpenGL's infinite viewer does). b maps linearly
+// to a shade index 0..255, and a material's ramp turns the index into a pixel
+// value: black to the material's colour at b = ambient + diffuse, then on
+// towards white, so a highlight over-exposes the colour. Vertices carry the
+// index and triangles interpolate it (Gouraud): one interpolant and a table
+// look-up per pixel. The index is within 1 of the double-precision oracle
+// (tests/test_shade.cpp).
+#ifndef DEXMILL_DISPLAY_SHADE_H
+#define DEXMILL_DISPLAY_SHADE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/grid.h"
+#include "display/approx.h"
+#include "display/framebuffer.h"
+
+namespace dexmill {
+
+struct Lighting {
+  UnitQ14 light;  // towards the light
+  UnitQ14 half;   // normalised light + view direction
+  int32_t ambient_q14 = 3000;
+  int32_t diffuse_q14 = 13384;  // ambient + diffuse = 1
+  int32_t specular_q14 = 5000;
+  int64_t index_scale_q30 = 0;  // 255 / (ambient + diffuse + specular), set by lighting_finish
+};
+
+// Sets `half` and `index_scale_q30` from light, view direction and the
+// coefficients.
+void lighting_finish(Lighting* l, const UnitQ14& toward_eye);
+// The shade index 0..255 of a unit normal.
+int32_t shade_of_normal(const Lighting& l, const UnitQ14& n);
+// The same for the direction of any non-zero integer vector, without forming
+// the unit vector (dot products first, one reciprocal square root): what
+// the per-dexel pass uses.
+int32_t shade_of_vector(const Lighting& l, int64_t nx, int64_t ny, int64_t nz);
+// The index at which a ramp reaches the material's own colour.
+int32_t shade_base_index(const Lighting& l);
+
+// A material's ramp in a pixel format: index 0 black, `base_index` the
+// colour, 255 white.
+void shade_ramp(PixelFormat f, Rgb colour, int32_t base_index, uint32_t lut[256]);
+
+// Per-dexel shades for the rasterizer: top vertices and side-face vertices,
+// one byte each, caller memory of nx*ny each.
+struct ShadeCache {
+  uint8_t* top = nullptr;
+  uint8_t* wall = nullptr;
+};
+
+// Recomputes the shades of the dexels in `r` (clipped to the grid). Hole
+// dexels are skipped (they are never vertices).
+template <class H>
+void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache* cache);
+
+// The blurred gradient of one dexel (the reference the fast path of
+// shade_grid must equal; tests use it): sums of 16 weighted grid_gradient
+// values with clamped neighbours.
+template <class H>
+void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
+
+#define DEXMILL_SHADE_EXTERN(H)                                                                       \
+  extern template void shade_grid<H>(const DexelGrid<H>&, const Lighting&, GridRect, ShadeCache*); \
+  extern template void blurred_gradient<H>(const DexelGrid<H>&, int32_t, int32_t, int64_t*, int64_t*);
+DEXMILL_SHADE_EXTERN(uint8_t)
+DEXMILL_SHADE_EXTERN(uint16_t)
+DEXMILL_SHADE_EXTERN(uint32_t)
+#undef DEXMILL_SHADE_EXTERN
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,41 @@
+// A Screen whose every present() writes the whole frame as the next file of
+// a numbered sequence: DIR/frame-000001.ppm, DIR/frame-000002.ppm, ...
+// The frame is XRGB8888 in memory this object owns.
+#ifndef DEXMILL_PLATFORM_PPM_FRAMES_H
+#define DEXMILL_PLATFORM_PPM_FRAMES_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "platform/screen.h"
+
+namespace dexmill {
+
+class PpmFrames final : public Screen {
+ public:
+  // Frames of width x height into `dir` (which must exist).
+  PpmFrames(const std::string& dir, int32_t width, int32_t height);
+
+  FrameView frame() override { return view_; }
+  bool present(const ScreenRect* rects, int count) override;
+  const char* error() const override { return error_; }
+  // Files written so far.
+  uint32_t written() const { return written_; }
+
+ private:
+  std::string dir_;
+  std::vector<uint32_t> pixels_;
+  FrameView view_;
+  uint32_t written_ = 0;
+  char error_[1300] = {0};
+};
+
+// Creates `dir` and its missing parents (mode 0777 before the umask). False
+// with a message ("cannot create directory 'x': ...") on failure, including
+// when a component exists and is not a directory.
+bool make_dirs(const std::string& dir, std::string* err);
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,140 @@
+#include "platform/report_json.h"
+
+#include <cstdio>
+
+#include "core/fixed.h"
+#include "platform/atomic_file.h"
+
+namespace dexmill {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string o = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') { o += '\\'; o += static_cast<char>(c); }
+    else if (c == '\n') o += "\\n";
+    else if (c == '\t') o += "\\t";
+    else if (c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); o += b; }
+    else o += static_cast<char>(c);
+  }
+  return o + "\"";
+}
+
+std::string u64(uint64_t v) { return std::to_string(v); }
+
+// A non-negative integer count of 10^-d units as "I.FFF".
+std::string fixed_text(uint64_t units, int decimals, bool negative) {
+  uint64_t p = 1;
+  for (int k = 0; k < decimals; ++k) p *= 10;
+  std::string f = std::to_string(units % p);
+  while (static_cast<int>(f.size()) < decimals) f = "0" + f;
+  return std::string(negative && units ? "-" : "") + std::to_string(units / p) + (decimals ? "." + f : "");
+}
+
+std::string point_mm(const PointNm& p) {
+  return "[" + nm_to_mm_text(p.x_nm, 4) + ", " + nm_to_mm_text(p.y_nm, 4) + ", " + nm_to_mm_text(p.z_nm, 4) + "]";
+}
+
+std::string seconds_of_us(int64_t us) { return fixed_text(static_cast<uint64_t>(div_round(max_of<int64_t>(us, 0), 1000)), 3, false); }
+
+void diags(std::string* o, const char* key, const std::vector<ReportDiag>& v) {
+  *o += "  " + quoted(key) + ": [";
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    *o += k ? ",\n    " : "\n    ";
+    *o += "{\"line\": " + u64(v[k].line) + ", \"column\": " + u64(v[k].column) + ", \"message\": " + quoted(v[k].message) + "}";
+  }
+  *o += v.empty() ? "],\n" : "\n  ],\n";
+}
+
+}  // namespace
+
+std::string nm_to_mm_text(int64_t nm, int decimals) {
+  int64_t scale = 1;
+  for (int k = decimals; k < 6; ++k) scale *= 10;
+  const int64_t v = div_round(nm, scale);
+  return fixed_text(abs_u64(v), decimals, v < 0);
+}
+
+std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_nm) {
+  // nm^3 = removed * lsb * pitch^2, in 128 bits; mm^3 x 1000 = nm^3 / 1e15.
+  const U128 a = mul_wide_u64(removed_lsb, static_cast<uint64_t>(lsb_nm));
+  const uint64_t p2 = static_cast<uint64_t>(pitch_nm) * static_cast<uint64_t>(pitch_nm);
+  // (a.hi * 2^64 + a.lo) * p2, as 192 bits: three 64-bit limbs.
+  const U128 lo = mul_wide_u64(a.lo, p2), hi = mul_wide_u64(a.hi, p2);
+  uint64_t limb[3] = {lo.lo, lo.hi + hi.lo, hi.hi + (lo.hi + hi.lo < lo.hi ? 1 : 0)};
+  // Add 1e15 / 2 and divide by 1e15 (mm^3 x 1000, rounded), a byte at a
+  // time so that remainder x 256 stays below 2^58.
+  const uint64_t d = 1000000000000000ULL;
+  const uint64_t s0 = limb[0] + d / 2;
+  if (s0 < limb[0] && ++limb[1] == 0) ++limb[2];
+  limb[0] = s0;
+  uint64_t rem = 0, quotient = 0;
+  for (int k = 23; k >= 0; --k) {
+    const uint64_t cur = rem * 256 + ((limb[k / 8] >> (8 * (k % 8))) & 0xff);
+    quotient = quotient * 256 + cur / d;  // fits: any grid a run holds is far below 2^64 / 1000 mm^3
+    rem = cur % d;
+  }
+  return fixed_text(quotient, 3, false);
+}
+
+std::string report_json_text(const RunReport& r) {
+  std::string o = "{\n";
+  o += "  \"dexmill_report\": 1,\n";
+  o += "  \"program\": {\"file\": " + quoted(r.file) + ", \"lines\": " + u64(r.lines) + ", \"units\": " +
+       quoted(r.inch ? "inch" : "mm") + ",\n";
+  o += "    \"moves\": {\"rapid\": " + u64(r.rapid) + ", \"feed\": " + u64(r.feed) + ", \"arc\": " + u64(r.arc) +
+       ", \"dwell\": " + u64(r.dwell) + ", \"tool_change\": " + u64(r.tool_change) + "}},\n";
+  o += "  \"status\": " + quoted(r.errors.empty() ? "ok" : "errors") + ",\n";
+  diags(&o, "errors", r.errors);
+  diags(&o, "warnings", r.warnings);
+  o += "  \"warnings_total\": " + u64(r.warnings_total) + ",\n";
+  if (r.have_stock)
+    o += "  \"stock\": {\"min_mm\": " + point_mm(r.stock_lo) + ", \"max_mm\": " + point_mm(r.stock_hi) +
+         ", \"source\": " + quoted(r.stock_source) + "},\n";
+  else
+    o += "  \"stock\": null,\n";
+  if (r.nx)
+    o += "  \"grid\": {\"nx\": " + u64(static_cast<uint64_t>(r.nx)) + ", \"ny\": " + u64(static_cast<uint64_t>(r.ny)) +
+         ", \"pitch_mm\": " + nm_to_mm_text(r.pitch_nm, 6) + ", \"lsb_mm\": " + nm_to_mm_text(r.lsb_nm, 6) +
+         ", \"height_bits\": " + std::to_string(r.height_bits) + "},\n";
+  else
+    o += "  \"grid\": null,\n";
+  o += "  \"mode\": " + quoted(r.mode) + ",\n";
+  o += "  \"tool\": {\"default\": " + quoted(r.default_tool) + ", \"table\": " +
+       (r.tool_table.empty() ? std::string("null") : quoted(r.tool_table)) + ", \"used\": [";
+  for (std::size_t k = 0; k < r.tools_used.size(); ++k)
+    o += std::string(k ? ", " : "") + "{\"number\": " + std::to_string(r.tools_used[k].number) +
+         ", \"spec\": " + quoted(r.tools_used[k].spec) + "}";
+  o += "]},\n";
+  o += "  \"removed_mm3\": " + (r.nx ? volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) : std::string("0.000")) + ",\n";
+  o += "  \"estimated_time_s\": " + seconds_of_us(r.estimated_us) + ",\n";
+  o += "  \"time_model\": {\"rapid_mm_per_min\": " + nm_to_mm_text(r.rapid_nm_per_min, 0) + ", \"feed_s\": " +
+       seconds_of_us(r.feed_us) + ", \"rapid_s\": " + seconds_of_us(r.rapid_us) + ", \"dwell_s\": " +
+       seconds_of_us(r.dwell_us) + "},\n";
+  if (r.have_bounds)
+    o += "  \"bounds_mm\": {\"min\": " + point_mm(r.bounds_lo) + ", \"max\": " + point_mm(r.bounds_hi) + "},\n";
+  else
+    o += "  \"bounds_mm\": null,\n";
+  o += "  \"cut\": {\"instances\": " + u64(r.instances) + ", \"dexel_updates\": " + u64(r.dexel_updates) + "},\n";
+  o += "  \"timing\": {";
+  for (std::size_t k = 0; k < r.timing.size(); ++k) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.3f", r.timing[k].second);
+    o += std::string(k ? ", " : "") + quoted(r.timing[k].first + "_s") + ": " + b;
+  }
+  o += "}\n}\n";
+  return o;
+}
+
+bool write_report_json(const char* path, const RunReport& r, char* err, std::size_t errn) {
+  const std::string text = report_json_text(r);
+  AtomicFile f;
+  if (f.open(path)) {
+    f.write(text.data(), text.size());
+    if (f.commit()) return true;
+  }
+  std::snprintf(err, errn, "%s", f.error());
+  return false;
+}
+
+}  // namespace dexmill

@@ -1,0 +1,84 @@
+// The JSON report of `dexmill run --report FILE.json`. Keys always come in
+// the order below; lengths are millimetres with 4 decimals, volumes mm^3
+// with 3, simulated times seconds with 3, all printed from integers (the
+// same bytes on every machine). Only `timing` (wall-clock seconds per stage)
+// differs between two runs of the same job, and it comes last.
+//
+//   dexmill_report  1 (the format's version)
+//   program         file, lines (read), units (default: mm|inch),
+//                   moves {rapid, feed, arc, dwell, tool_change}
+//   status          "ok" or "errors"
+//   errors          [{line, column, message}]          input errors
+//   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept)
+//   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
+//   grid            {nx, ny, pitch_mm, lsb_mm, height_bits}
+//   mode            "sweep"|"stamp"
+//   tool            {default, table (file or null), used [{number, spec}]}
+//   removed_mm3     material removed: (sum of dexel heights before - after) x lsb x pitch^2
+//   estimated_time_s  feeds at F, rapids at rapid_mm_per_min, dwells added,
+//                     no acceleration; time_model holds the parts
+//   time_model      {rapid_mm_per_min, feed_s, rapid_s, dwell_s}
+//   bounds_mm       {min [x,y,z], max [x,y,z]} of all motion (null: none)
+//   cut             {instances, dexel_updates}
+//   timing          {STAGE_s: seconds, ...}
+#ifndef DEXMILL_PLATFORM_REPORT_JSON_H
+#define DEXMILL_PLATFORM_REPORT_JSON_H
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/point.h"
+
+namespace dexmill {
+
+struct ReportDiag {
+  uint32_t line = 0, column = 0;
+  std::string message;
+};
+
+struct ReportToolUse {
+  int32_t number;
+  std::string spec;
+};
+
+struct RunReport {
+  std::string file;
+  uint32_t lines = 0;
+  bool inch = false;
+  uint64_t rapid = 0, feed = 0, arc = 0, dwell = 0, tool_change = 0;
+  std::vector<ReportDiag> errors, warnings;
+  uint64_t warnings_total = 0;
+  bool have_stock = false;
+  PointNm stock_lo{0, 0, 0}, stock_hi{0, 0, 0};
+  std::string stock_source;
+  int32_t nx = 0, ny = 0;
+  int64_t pitch_nm = 0, lsb_nm = 0;
+  int height_bits = 16;
+  std::string mode;
+  std::string default_tool, tool_table;
+  std::vector<ReportToolUse> tools_used;
+  uint64_t removed_lsb_dexels = 0;  // sum over dexels of height removed, LSB
+  int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
+  int64_t rapid_nm_per_min = 0;
+  bool have_bounds = false;
+  PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
+  uint64_t instances = 0, dexel_updates = 0;
+  std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
+};
+
+// The report as text.
+std::string report_json_text(const RunReport& r);
+// Writes it atomically; false with a message on failure.
+bool write_report_json(const char* path, const RunReport& r, char* err, std::size_t errn);
+
+// removed_lsb x lsb x pitch^2 in mm^3 with 3 decimals, exactly rounded.
+std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_nm);
+// nm as mm with `decimals` (<= 6) decimals, rounded to nearest.
+std::string nm_to_mm_text(int64_t nm, int decimals);
+
+}  // namespace dexmill
+
+#endif

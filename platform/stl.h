@@ -1,0 +1,36 @@
+// The final workpiece as a closed binary STL, for comparison with the CAD
+// model. The surface is the display's (display/mesh.h, kCellCases): per cell
+// of four neighbouring dexels, its top triangles at the dexels' tops, the
+// same triangles turned over at their bottoms, and side walls where material
+// meets holes (the stock's border dexels are holes, so the outer walls come
+// from the same rule). Every edge is shared by exactly two triangles, with
+// opposite directions (consistently outward normals). Material one dexel
+// wide has no width in that surface (its two walls would meet on the
+// dexel's axis) and is left out, so the solid is 2-manifold; it holds no
+// volume in the surface either way.
+//
+// Streaming: one pass counts the triangles (the header needs the count), a
+// second writes them through a small buffer; no mesh is held in memory.
+// Coordinates are machine millimetres as float32, the same integer grid
+// point always giving the same float, so shared vertices match bit for bit.
+#ifndef DEXMILL_PLATFORM_STL_H
+#define DEXMILL_PLATFORM_STL_H
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/grid.h"
+
+namespace dexmill {
+
+template <class H>
+uint64_t stl_triangle_count(const DexelGrid<H>& g);
+
+// Writes the surface to `path` atomically. False with a message on failure
+// (an I/O error, or more than 2^32 - 1 triangles).
+template <class H>
+bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t errn);
+
+}  // namespace dexmill
+
+#endif

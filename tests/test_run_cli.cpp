@@ -1,0 +1,260 @@
+// `dexmill run` end to end on the programs in tests/run/: outputs pinned by
+// hashes (frames, final image, heightmap, STL) and the report's text, and
+// every error path of ../shared/CLI.md with its exit status and message.
+// Golden values change only in a commit that says why.
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "tests/runner.h"
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string err;
+};
+
+std::string tmp_dir() {
+  static std::string dir;
+  if (dir.empty()) {
+    char t[] = "/tmp/dexmill-run-test-XXXXXX";
+    if (mkdtemp(t)) dir = t;
+  }
+  return dir;
+}
+
+std::string slurp(const std::string& path) {
+  std::string s;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return s;
+  char b[65536];
+  size_t n;
+  while ((n = std::fread(b, 1, sizeof b, f)) > 0) s.append(b, n);
+  std::fclose(f);
+  return s;
+}
+
+uint64_t fnv(const std::string& s) {
+  uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) { h ^= c; h *= 1099511628211ULL; }
+  return h;
+}
+uint64_t file_hash(const std::string& path) { return fnv(slurp(path)); }
+
+// Runs `dexmill run ARGS` in the tests/run folder (so reports name the
+// inputs without a path); % in ARGS stands for the temporary folder.
+Result run(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false) {
+  Result r;
+  const char* bin = t::dexmill_binary();
+  if (!bin) return r;
+  std::string a;
+  for (char c : args) {
+    if (c == '%') a += tmp_dir();
+    else a += c;
+  }
+  char abs[4096];
+  const std::string binary = realpath(bin, abs) ? abs : bin;
+  const std::string err = tmp_dir() + "/stderr.txt";
+  const std::string cwd = in_tmp ? tmp_dir() : std::string(t::tests_dir()) + "/run";
+  std::string cmd = "cd '" + cwd + "' && '" + binary + "' run " + a + " 2>'" + err + "'";
+  char in_abs[4096];
+  if (stdin_file && realpath(stdin_file, in_abs)) stdin_file = in_abs;
+  cmd += stdin_file ? " <'" + std::string(stdin_file) + "'" : std::string(" </dev/null");
+  const int st = std::system(cmd.c_str());
+  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  r.err = slurp(err);
+  return r;
+}
+
+bool has(const std::string& s, const char* part) {
+  if (s.find(part) != std::string::npos) return true;
+  std::printf("  wanted '%s' in: %s\n", part, s.c_str());
+  return false;
+}
+
+// The report without its wall-clock timing.
+std::string report_body(const std::string& path) {
+  std::string s = slurp(path);
+  const size_t t = s.find("  \"timing\"");
+  return t == std::string::npos ? s : s.substr(0, t);
+}
+
+bool skip() {
+  if (t::dexmill_binary()) return false;
+  std::printf("  (skipped: set DEXMILL to the built binary)\n");
+  return true;
+}
+
+void check_hash(const std::string& path, uint64_t want) {
+  const uint64_t got = file_hash(path);
+  if (got != want) std::printf("  %s: hash 0x%016llxULL\n", path.c_str(), static_cast<unsigned long long>(got));
+  CHECK_EQ(got, want);
+}
+
+}  // namespace
+
+TEST(run_pocket_outputs_are_pinned) {
+  if (skip()) return;
+  const Result r = run("pocket.ngc -q --size 160x120 --image %/p.ppm --frames %/pf --every 4 --heightmap %/p.pgm "
+                       "--stl %/p.stl --report %/p.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(r.err.empty());
+  const std::string d = tmp_dir() + "/";
+  check_hash(d + "p.ppm", 0x0ba41c956c95902dULL);
+  check_hash(d + "p.pgm", 0x78521702829f757fULL);
+  check_hash(d + "p.stl", 0x654d2105bf2dda8cULL);
+  check_hash(d + "pf/frame-000001.ppm", 0xb3c03b83b1f99b4fULL);
+  check_hash(d + "pf/frame-000004.ppm", 0xbf08be1f430c8ee4ULL);
+  // The untouched stock, then every 4 of the 22 moves, then the last.
+  struct stat st;
+  CHECK_EQ(stat((d + "pf/frame-000007.ppm").c_str(), &st), 0);
+  CHECK(stat((d + "pf/frame-000008.ppm").c_str(), &st) != 0);
+  // The last frame of the sequence is the final image.
+  CHECK_EQ(file_hash(d + "pf/frame-000007.ppm"), file_hash(d + "p.ppm"));
+  const std::string golden = slurp(std::string(t::tests_dir()) + "/run/pocket.report.golden");
+  const std::string body = report_body(d + "p.json");
+  if (body != golden) {
+    std::printf("  report differs from tests/run/pocket.report.golden:\n%s", body.c_str());
+    CHECK(false);
+  }
+}
+
+TEST(run_inch_arcs_and_tool_table) {
+  if (skip()) return;
+  Result r = run("arcs_inch.ngc -q --size 120x90 --image %/a.ppm --report %/a.json");
+  CHECK_EQ(r.code, 0);
+  check_hash(tmp_dir() + "/a.ppm", 0xc2b9e08cfb972802ULL);
+  CHECK(has(slurp(tmp_dir() + "/a.json"), "\"dwell\": 1"));
+  r = run("tool_change.ngc --tools tools.tbl -q --size 120x90 --image %/t.ppm --report %/t.json --mode stamp");
+  CHECK_EQ(r.code, 0);
+  check_hash(tmp_dir() + "/t.ppm", 0xd17682ca02d0844cULL);
+  CHECK(has(slurp(tmp_dir() + "/t.json"), "\"used\": [{\"number\": 1, \"spec\": \"flat:4\"}, {\"number\": 2, \"spec\": \"ball:6\"}]"));
+  CHECK(has(slurp(tmp_dir() + "/t.json"), "\"mode\": \"stamp\""));
+}
+
+TEST(run_stdin_and_demo) {
+  if (skip()) return;
+  const std::string in = std::string(t::tests_dir()) + "/run/pocket.ngc";
+  Result r = run("- -q --size 160x120 --image %/s.ppm --report %/s.json", in.c_str());
+  CHECK_EQ(r.code, 0);
+  CHECK(has(slurp(tmp_dir() + "/s.json"), "\"file\": \"<stdin>\""));
+  // Same program, same picture, whether from a file or a pipe.
+  r = run("pocket.ngc -q --size 160x120 --image %/f.ppm");
+  CHECK_EQ(file_hash(tmp_dir() + "/s.ppm"), file_hash(tmp_dir() + "/f.ppm"));
+  // The demo: its program, final image and frames in out/.
+  r = run("-q --size 80x60", nullptr, true);
+  CHECK_EQ(r.code, 0);
+  struct stat st;
+  CHECK_EQ(stat((tmp_dir() + "/out/demo.ngc").c_str(), &st), 0);
+  CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
+  CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.ppm").c_str(), &st), 0);
+  check_hash(tmp_dir() + "/out/final.ppm", 0xa5ba658e155d9ae3ULL);
+}
+
+TEST(run_usage_errors_exit_2) {
+  if (skip()) return;
+  struct Case {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {"pocket.ngc --frobnicate", "dexmill: error: unknown option '--frobnicate'"},
+      {"pocket.ngc --grid 3x3", "dexmill: error: --grid needs NXxNY"},
+      {"pocket.ngc --grid 10x", "dexmill: error: --grid needs NXxNY"},
+      {"pocket.ngc --pitch 0", "dexmill: error: --pitch needs"},
+      {"pocket.ngc --grid 10x10 --pitch 1", "dexmill: error: give --grid or --pitch, not both"},
+      {"pocket.ngc --size 0x0", "dexmill: error: --size needs WxH"},
+      {"pocket.ngc --tool ball:", "dexmill: error: bad --tool 'ball:'"},
+      {"pocket.ngc --tool bull:6:4", "dexmill: error: bad --tool 'bull:6:4': tool out of range"},
+      {"pocket.ngc --units furlong", "dexmill: error: --units must be mm or inch"},
+      {"pocket.ngc --mode carve", "dexmill: error: --mode must be sweep or stamp"},
+      {"pocket.ngc --every 5", "dexmill: error: --every needs --frames DIR"},
+      {"pocket.ngc --frames % --every 0", "dexmill: error: --every needs a whole number"},
+      {"pocket.ngc --stock 1,2,3", "dexmill: error: --stock needs X0,Y0,Z0,X1,Y1,Z1"},
+      {"pocket.ngc --stock 0,0,0,10,10,-5", "dexmill: error: --stock needs"},
+      {"pocket.ngc --view sideways", "dexmill: error: --view must be iso, top, front or right"},
+      {"pocket.ngc --view top --azimuth 30", "dexmill: error: give --view or --azimuth/--elevation"},
+      {"pocket.ngc --elevation 95", "dexmill: error: --elevation needs degrees"},
+      {"pocket.ngc --image", "dexmill: error: --image needs a value"},
+      {"pocket.ngc arcs_inch.ngc", "dexmill: error: more than one input file"},
+      {"pocket.ngc --pitch 0.0001", "dexmill: error: the grid would be"},
+  };
+  for (const Case& c : cases) {
+    const Result r = run(c.args);
+    if (r.code != 2) std::printf("  %s: exit %d\n", c.args, r.code);
+    CHECK_EQ(r.code, 2);
+    CHECK(has(r.err, c.message));
+  }
+}
+
+TEST(run_io_errors_exit_3) {
+  if (skip()) return;
+  std::FILE* f = std::fopen((tmp_dir() + "/plain").c_str(), "wb");
+  if (f) std::fclose(f);
+  struct Case {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {"nope.ngc", "dexmill: error: cannot open 'nope.ngc': No such file or directory"},
+      {".", "dexmill: error: cannot read '.': Is a directory"},
+      {"pocket.ngc --image %/nodir/x.ppm", "dexmill: error: cannot write the image '"},
+      {"pocket.ngc --report %", "dexmill: error: cannot write the report '"},
+      {"pocket.ngc --frames %/plain/sub", "dexmill: error: cannot create directory '"},
+      {"pocket.ngc --tools nope.tbl", "dexmill: error: cannot open 'nope.tbl'"},
+      {"pocket.ngc --fbdev %/plain", "not a framebuffer device"},
+  };
+  for (const Case& c : cases) {
+    const Result r = run(c.args);
+    if (r.code != 3) std::printf("  %s: exit %d\n", c.args, r.code);
+    CHECK_EQ(r.code, 3);
+    CHECK(has(r.err, c.message));
+  }
+  // No partial file is left behind by a refused run.
+  struct stat st;
+  CHECK(stat((tmp_dir() + "/nodir").c_str(), &st) != 0);
+}
+
+TEST(run_input_errors_exit_1) {
+  if (skip()) return;
+  Result r = run("bad_word.ngc --report %/bad.json --image %/bad.ppm");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "bad_word.ngc:4:8: error: 'Q' is not followed by a number"));
+  const std::string rep = slurp(tmp_dir() + "/bad.json");
+  CHECK(has(rep, "\"status\": \"errors\""));
+  CHECK(has(rep, "{\"line\": 4, \"column\": 8, \"message\": \"'Q' is not followed by a number\"}"));
+  struct stat st;
+  CHECK(stat((tmp_dir() + "/bad.ppm").c_str(), &st) != 0);  // a program with errors is not cut
+  r = run("unknown_tool.ngc --tools tools.tbl");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "unknown_tool.ngc:4:1: error: tool T7 is not in the tool table 'tools.tbl'"));
+  std::FILE* f = std::fopen((tmp_dir() + "/bad.tbl").c_str(), "wb");
+  if (f) {
+    std::fputs("T1 P1 D6\nT2 P2 Z3\n", f);
+    std::fclose(f);
+  }
+  r = run("pocket.ngc --tools %/bad.tbl");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "bad.tbl:2:1: error: tool T2 has no diameter (D)"));
+}
+
+TEST(run_window_needs_glfw_or_a_display) {
+  if (skip()) return;
+  // A plain build refuses --window (exit 2); a GLFW build with no display
+  // cannot open one (exit 3).
+  const std::string cmd_env = "env -u DISPLAY -u WAYLAND_DISPLAY ";
+  (void)cmd_env;
+  const Result r = run("pocket.ngc --window --exit-when-done");
+  if (r.code == 2) CHECK(has(r.err, "built without GLFW"));
+  else if (r.code == 3) CHECK(has(r.err, "cannot open a window"));
+  else CHECK(r.code == 2 || r.code == 3);
+}
+
+TEST(run_zz_cleanup) {
+  // Last in this file: the temporary folder goes.
+  if (!tmp_dir().empty()) CHECK_EQ(std::system(("rm -rf '" + tmp_dir() + "'").c_str()), 0);
+}

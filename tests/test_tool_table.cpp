@@ -1,0 +1,90 @@
+// LinuxCNC tool tables: fields, units, shapes from comments, errors.
+#include <cstring>
+#include <string>
+
+#include "core/fixed.h"
+#include "platform/tool_table.h"
+#include "tests/runner.h"
+
+using namespace dexmill;
+
+namespace {
+ToolTableFile::Load parse(ToolTableFile* t, const char* text, bool inch = false) {
+  return t->parse("tt.tbl", text, std::strlen(text), inch);
+}
+}  // namespace
+
+TEST(tool_table_reads_linuxcnc_lines) {
+  ToolTableFile t;
+  CHECK_EQ(parse(&t,
+                 "; a table\n"
+                 "T1 P1 D6.0 Z+30.0 ;flat end mill 6 mm\n"
+                 "\n"
+                 "T2 P2 X0 Y0 Z35 D6 I0 J0 Q0 ;Ball nose 6mm\r\n"
+                 "t3 p3 d5 z40 ;spot drill vbit:5:118\n"
+                 "T4 P4 D10 Z50 ;bull:99:2,len=20 (its D is the table's)\n"),
+           ToolTableFile::Load::kOk);
+  CHECK_EQ(t.entries().size(), 4u);
+  Tool tool;
+  CHECK(t.tool(1, &tool));
+  CHECK_EQ(tool.kind, ToolKind::kFlat);
+  CHECK_EQ(tool.diameter_nm, 6 * kNmPerMm);
+  CHECK(t.tool(2, &tool));
+  CHECK_EQ(tool.kind, ToolKind::kBall);
+  CHECK(t.tool(3, &tool));
+  CHECK_EQ(tool.kind, ToolKind::kVBit);
+  CHECK_EQ(tool.tip_angle_mdeg, 118000);
+  CHECK_EQ(tool.diameter_nm, 5 * kNmPerMm);
+  CHECK(t.tool(4, &tool));
+  CHECK_EQ(tool.kind, ToolKind::kBullNose);
+  CHECK_EQ(tool.diameter_nm, 10 * kNmPerMm);
+  CHECK_EQ(tool.corner_radius_nm, 2 * kNmPerMm);
+  CHECK_EQ(tool.flute_length_nm, 20 * kNmPerMm);
+  int64_t z = 0;
+  CHECK(t.tool_length_nm(2, &z));
+  CHECK_EQ(z, 35 * kNmPerMm);
+  CHECK(!t.tool(9, &tool));
+  CHECK(!t.tool_length_nm(9, &z));
+  CHECK(t.warnings().empty());
+}
+
+TEST(tool_table_inch_and_warnings) {
+  ToolTableFile t;
+  CHECK_EQ(parse(&t, "T7 P7 D0.25 Z1.5 ;1/4 V-bit\n", true), ToolTableFile::Load::kOk);
+  Tool tool;
+  CHECK(t.tool(7, &tool));
+  CHECK_EQ(tool.diameter_nm, 6350000);
+  CHECK_EQ(tool.kind, ToolKind::kFlat);
+  int64_t z = 0;
+  CHECK(t.tool_length_nm(7, &z));
+  CHECK_EQ(z, 38100000);
+  CHECK_EQ(t.warnings().size(), 1u);
+  CHECK(t.warnings()[0].find("tt.tbl:1:1: warning: T7 is simulated as a flat end mill") == 0);
+}
+
+TEST(tool_table_errors) {
+  struct Case {
+    const char* text;
+    const char* message;
+  } cases[] = {
+      {"T1 D6 K3\n", "tt.tbl:1:7: error: unknown word 'K'"},
+      {"T1 P1\n", "tt.tbl:1:1: error: tool T1 has no diameter (D)"},
+      {"P1 D6\n", "tt.tbl:1:1: error: a tool needs a number (T)"},
+      {"T1 D6\nT1 D3\n", "tt.tbl:2:1: error: tool T1 is already defined on line 1"},
+      {"T1.5 D6\n", "tt.tbl:1:1: error: the tool number must be a whole number"},
+      {"T1 D0\n", "tt.tbl:1:4: error: the diameter must be between"},
+      {"T1 DX\n", "tt.tbl:1:4: error: 'D' needs a number"},
+      {"T1 D4 ;bull:4:1.5\nT2 D2 ;bull:4:1.5\n", "tt.tbl:2:1: error: the corner radius of T2 is larger than D/2"},
+  };
+  for (const Case& c : cases) {
+    ToolTableFile t;
+    CHECK_EQ(parse(&t, c.text), ToolTableFile::Load::kInputError);
+    if (t.message().find(c.message) != 0) {
+      std::printf("  message: %s\n  wanted:  %s...\n", t.message().c_str(), c.message);
+      CHECK(false);
+    }
+  }
+  ToolTableFile t;
+  CHECK_EQ(t.load("/nonexistent/tools.tbl", false), ToolTableFile::Load::kIoError);
+  CHECK(t.message().find("cannot open '/nonexistent/tools.tbl'") == 0);
+}

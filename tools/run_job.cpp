@@ -1,0 +1,543 @@
+// The passes and outputs of `dexmill run`; see run_job.h.
+#include "tools/run_job.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/cutter.h"
+#include "core/grid_volume.h"
+#include "core/interp.h"
+#include "core/mill.h"
+#include "core/motion_summary.h"
+#include "core/sweep.h"
+#include "core/tool_spec.h"
+#include "core/trig.h"
+#include "platform/atomic_file.h"
+#include "platform/clock.h"
+#include "platform/gcode_file.h"
+#include "platform/pgm.h"
+#include "platform/ppm.h"
+#include "platform/ppm_frames.h"
+#include "platform/progress.h"
+#include "platform/report_json.h"
+#include "platform/stl.h"
+#include "platform/tool_table.h"
+#include "tools/cli.h"
+#include "tools/demo_program.h"
+#include "tools/run_live.h"
+#include "tools/run_render.h"
+#include "tools/run_stock.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+constexpr size_t kMaxReportedWarnings = 100;
+
+// Prints diagnostics (when asked) and keeps them for the report.
+class RunMessages final : public GcodeMessages {
+ public:
+  RunMessages(const std::string& file, bool print) : file_(file), print_(print) {}
+  void error(const GcodeDiag& d) override { add(d, true); }
+  void warning(const GcodeDiag& d) override { add(d, false); }
+  // An error found outside the interpreter (a tool the table lacks).
+  void error_text(uint32_t line, uint32_t col, const std::string& msg) {
+    ++errors_;
+    if (print_) std::fprintf(stderr, "%s:%u:%u: error: %s\n", file_.c_str(), line, col, msg.c_str());
+    error_list.push_back(ReportDiag{line, col, msg});
+  }
+  std::vector<ReportDiag> error_list, warning_list;
+
+ private:
+  void add(const GcodeDiag& d, bool is_error) {
+    char msg[400];
+    gcode_format_message(d, msg, sizeof msg);
+    if (is_error) ++errors_;
+    else ++warnings_;
+    if (print_) {
+      char line[700];
+      gcode_format_diag(file_.c_str(), d, is_error, line, sizeof line);
+      std::fprintf(stderr, "%s\n", line);
+    }
+    if (is_error) error_list.push_back(ReportDiag{d.line, d.col, msg});
+    else if (warning_list.size() < kMaxReportedWarnings) warning_list.push_back(ReportDiag{d.line, d.col, msg});
+  }
+  std::string file_;
+  bool print_;
+};
+
+// The scan pass: the summary, and the tools the program changes to.
+class ScanSink final : public CanonSink {
+ public:
+  ScanSink(const ToolLibrary* lib, const Tool& initial) : max_radius_nm(initial.diameter_nm / 2), lib_(lib) {
+    tools_seen.push_back(initial);
+  }
+  void emit(const CanonRecord& r) override {
+    summary.emit(r);
+    if (r.kind != CanonKind::kToolChange) return;
+    Tool t;
+    if (!lib_->tool(r.tool, &t)) {
+      if (!bad_tool_line) { bad_tool_line = r.line; bad_tool = r.tool; }
+      return;
+    }
+    max_radius_nm = max_of(max_radius_nm, t.diameter_nm / 2);
+    tools_seen.push_back(t);
+    for (const ReportToolUse& u : used)
+      if (u.number == r.tool) return;
+    char spec[64];
+    tool_spec_format(t, spec, sizeof spec);
+    used.push_back(ReportToolUse{r.tool, spec});
+  }
+  MotionSummary summary;
+  std::vector<ReportToolUse> used;
+  std::vector<Tool> tools_seen;
+  int64_t max_radius_nm;
+  uint32_t bad_tool_line = 0;
+  int32_t bad_tool = 0;
+
+ private:
+  const ToolLibrary* lib_;
+};
+
+// Everything that watches the cut pass.
+struct Watchers {
+  std::vector<RenderOutput*> outputs;  // fed the grid's changes
+  RenderOutput* frames_out = nullptr;
+  PpmFrames* frames = nullptr;
+  uint64_t every = 0;
+  RenderOutput* live_out = nullptr;
+};
+
+// The cut pass: records into the Mill, then frames.
+class CutSink final : public CanonSink {
+ public:
+  CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib)
+      : mill_(mill), g_(g), w_(w), lib_(lib) {}
+  void emit(const CanonRecord& r) override {
+    mill_->emit(r);
+    time.emit(r);
+    status.line = r.line;
+    status.pos = mill_->position();
+    if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) status.feed_nm_per_min = r.feed_nm_per_min;
+    if (r.kind == CanonKind::kToolChange) {
+      status.tool = r.tool;
+      Tool t;
+      if (lib_->tool(r.tool, &t)) {
+        char spec[64];
+        tool_spec_format(t, spec, sizeof spec);
+        status.tool_spec = spec;
+        for (RenderOutput* o : w_->outputs) o->set_tool(t);
+      }
+    }
+    status.sim_us = time.estimated_time_us();
+    fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
+    if (r.kind != CanonKind::kTraverse && r.kind != CanonKind::kFeed && r.kind != CanonKind::kArc) return;
+    ++moves;
+    if (w_->frames && moves % w_->every == 0) write_frame();
+  }
+  // One frame of the sequence; false (and frame_error set) on failure.
+  bool write_frame() {
+    if (!frame_error.empty()) return false;
+    const double t0 = clock_now_s();
+    const RenderResult res = w_->frames_out->draw(g_, pose());
+    const double t1 = clock_now_s();
+    if (!w_->frames->present(res.rects, res.nrects)) frame_error = w_->frames->error();
+    render_s += t1 - t0;
+    write_s += clock_now_s() - t1;
+    last_frame_moves = moves;
+    return frame_error.empty();
+  }
+  CutterPose pose() const { return CutterPose{true, mill_->position()}; }
+
+  MotionSummary time;
+  LiveStatus status;
+  uint64_t moves = 0, last_frame_moves = 0;
+  std::string frame_error;
+  double render_s = 0, write_s = 0;
+
+ private:
+  Mill<height_t>* mill_;
+  DexelGrid<height_t>* g_;
+  Watchers* w_;
+  const ToolLibrary* lib_;
+};
+
+std::string dir_of(const std::string& path) {
+  const size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+// An output file's folder must exist and be writable: checked before the
+// simulation, so that a typo does not cost a long run.
+bool check_output(const char* what, const std::string& path, std::string* err) {
+  if (path.empty()) return true;
+  const std::string dir = dir_of(path);
+  struct stat st;
+  if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+    *err = std::string("cannot write the ") + what + " '" + path + "': no directory '" + dir + "'";
+    return false;
+  }
+  if (access(dir.c_str(), W_OK) != 0) {
+    *err = std::string("cannot write the ") + what + " '" + path + "': directory '" + dir + "' is not writable";
+    return false;
+  }
+  struct stat fst;
+  if (stat(path.c_str(), &fst) == 0 && S_ISDIR(fst.st_mode)) {
+    *err = std::string("cannot write the ") + what + " '" + path + "': it is a directory";
+    return false;
+  }
+  return true;
+}
+
+// Standard input is read twice (scan and cut), so it is kept in a file.
+bool spool_stdin(std::string* path, std::string* err) {
+  const char* tmpdir = std::getenv("TMPDIR");
+  std::string templ = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/dexmill-stdin-XXXXXX";
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back(0);
+  const int fd = mkstemp(buf.data());
+  if (fd < 0) {
+    *err = std::string("cannot keep standard input in '") + templ + "': " + std::strerror(errno);
+    return false;
+  }
+  *path = buf.data();
+  char chunk[65536];
+  for (;;) {
+    const size_t n = std::fread(chunk, 1, sizeof chunk, stdin);
+    if (n == 0) break;
+    if (write(fd, chunk, n) != static_cast<ssize_t>(n)) {
+      *err = std::string("cannot keep standard input in '") + *path + "': " + std::strerror(errno);
+      close(fd);
+      return false;
+    }
+  }
+  const bool bad = std::ferror(stdin);
+  close(fd);
+  if (bad) {
+    *err = "cannot read standard input";
+    return false;
+  }
+  return true;
+}
+
+struct TempFile {
+  std::string path;
+  ~TempFile() {
+    if (!path.empty()) std::remove(path.c_str());
+  }
+};
+
+bool write_heightmap(const char* path, const DexelGrid<height_t>& g, char* err, size_t errn) {
+  // Row 0 of the image is the grid's last row (north up); samples are the
+  // top heights in LSB (the report gives the LSB), holes 0.
+  std::vector<uint16_t> img(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny));
+  for (int32_t j = 0; j < g.ny; ++j)
+    for (int32_t i = 0; i < g.nx; ++i) {
+      const uint64_t h = g.top[g.index(i, j)];
+      img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
+          static_cast<uint16_t>(h > 65535 ? 65535 : h);
+    }
+  return write_pgm16(path, g.nx, g.ny, img.data(), err, errn);
+}
+
+}  // namespace
+
+int run_job(RunOptions o) {
+  const double t_start = clock_now_s();
+  RunReport rep;
+  const bool demo = o.file.empty();
+  std::string read_path = o.file, shown_name = o.file;
+  TempFile spooled;
+  std::string err;
+
+  // -- inputs and output folders, before anything long happens
+  if (demo) {
+    if (o.image.empty()) o.image = "out/final.ppm";
+    if (o.frames_dir.empty()) o.frames_dir = "out/frames";
+    if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
+    read_path = shown_name = "out/demo.ngc";
+    AtomicFile f;
+    const std::string text = demo_program();
+    if (!f.open(read_path.c_str())) return fail(kExitIo, "%s", f.error());
+    f.write(text.data(), text.size());
+    if (!f.commit()) return fail(kExitIo, "%s", f.error());
+  } else if (o.file == "-") {
+    shown_name = "<stdin>";
+    if (!spool_stdin(&spooled.path, &err)) return fail(kExitIo, "%s", err.c_str());
+    read_path = spooled.path;
+  }
+  if (!check_output("image", o.image, &err) || !check_output("heightmap", o.heightmap, &err) ||
+      !check_output("STL file", o.stl, &err) || !check_output("report", o.report, &err))
+    return fail(kExitIo, "%s", err.c_str());
+  if (!o.frames_dir.empty() && !make_dirs(o.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (!o.frames_dir.empty() && access(o.frames_dir.c_str(), W_OK) != 0)
+    return fail(kExitIo, "cannot write frames into '%s': %s", o.frames_dir.c_str(), std::strerror(errno));
+
+  // -- tools
+  ToolTableFile table;
+  const bool have_table = !o.tools_file.empty() || demo;
+  if (!o.tools_file.empty()) {
+    const ToolTableFile::Load l = table.load(o.tools_file.c_str(), o.inch);
+    if (l == ToolTableFile::Load::kIoError) return fail(kExitIo, "%s", table.message().c_str());
+    if (l == ToolTableFile::Load::kInputError) {
+      std::fprintf(stderr, "%s\n", table.message().c_str());
+      return kExitInput;
+    }
+  } else if (demo) {
+    const char* t = demo_tool_table();
+    if (table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
+      return fail(kExitInput, "%s", table.message().c_str());
+  }
+  for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
+  SingleToolLibrary single(o.tool);
+  const ToolLibrary* lib = have_table ? static_cast<const ToolLibrary*>(&table) : &single;
+
+  rep.file = shown_name;
+  rep.inch = o.inch;
+  rep.mode = o.mode == CutMode::kSweep ? "sweep" : "stamp";
+  rep.default_tool = o.tool_text;
+  rep.tool_table = demo && o.tools_file.empty() ? "(built-in demo table)" : o.tools_file;
+  rep.height_bits = DEXMILL_HEIGHT_BITS;
+  rep.rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;
+  auto write_report = [&]() -> bool {
+    if (o.report.empty()) return true;
+    rep.timing.emplace_back("total", clock_now_s() - t_start);
+    char e[1300];
+    if (write_report_json(o.report.c_str(), rep, e, sizeof e)) return true;
+    fail(kExitIo, "%s", e);
+    return false;
+  };
+
+  // -- scan pass
+  RunMessages scan_msgs(shown_name, true);
+  ScanSink scan(lib, o.tool);
+  {
+    const double t0 = clock_now_s();
+    GcodeFile in;
+    if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
+    InterpOptions opt;
+    opt.inch = o.inch;
+    opt.warnings = &scan_msgs;
+    opt.tools = have_table ? &table : nullptr;
+    Interp interp(&scan, opt);
+    GcodeRunner runner(&in, &interp, &scan_msgs, true);
+    while (runner.step()) {
+      if (scan.bad_tool_line) {
+        char m[200];
+        std::snprintf(m, sizeof m, "tool T%d is not in the tool table '%s'", static_cast<int>(scan.bad_tool),
+                      table.name().c_str());
+        scan_msgs.error_text(scan.bad_tool_line, 1, m);
+        break;
+      }
+    }
+    if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+    rep.lines = runner.lines();
+    rep.timing.emplace_back("scan", clock_now_s() - t0);
+  }
+  const MotionSummary& sum = scan.summary;
+  rep.rapid = sum.count(CanonKind::kTraverse);
+  rep.feed = sum.count(CanonKind::kFeed);
+  rep.arc = sum.count(CanonKind::kArc);
+  rep.dwell = sum.count(CanonKind::kDwell);
+  rep.tool_change = sum.count(CanonKind::kToolChange);
+  rep.errors = scan_msgs.error_list;
+  rep.warnings = scan_msgs.warning_list;
+  rep.warnings_total = scan_msgs.warnings();
+  rep.tools_used = scan.used;
+  rep.estimated_us = sum.estimated_time_us();
+  rep.feed_us = sum.feed_time_us();
+  rep.rapid_us = sum.rapid_time_us();
+  rep.dwell_us = sum.dwell_time_us();
+  rep.have_bounds = sum.motion_box().valid;
+  rep.bounds_lo = sum.motion_box().lo;
+  rep.bounds_hi = sum.motion_box().hi;
+  if (scan_msgs.errors()) {
+    if (!write_report()) return kExitIo;
+    return kExitInput;
+  }
+
+  // -- stock and grid
+  StockBox stock;
+  if (o.have_stock) {
+    stock = StockBox{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
+    rep.stock_source = "option";
+  } else if (demo) {
+    int64_t v[6];
+    const char* s = demo_stock();
+    for (int k = 0; k < 6; ++k) {
+      v[k] = std::strtol(s, const_cast<char**>(&s), 10) * kNmPerMm;
+      if (*s == ',') ++s;
+    }
+    stock = StockBox{PointNm{v[0], v[1], v[2]}, PointNm{v[3], v[4], v[5]}};
+    rep.stock_source = "demo";
+  } else {
+    stock = default_stock(sum, scan.max_radius_nm);
+    rep.stock_source = "program";
+  }
+  GridPlan plan;
+  if (!plan_grid(stock, o.grid_nx, o.grid_ny, o.pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  rep.have_stock = true;
+  rep.stock_lo = plan.stock.lo;
+  rep.stock_hi = plan.stock.hi;
+  rep.nx = plan.geo.nx;
+  rep.ny = plan.geo.ny;
+  rep.pitch_nm = plan.geo.pitch_nm;
+  rep.lsb_nm = plan.geo.lsb_nm;
+  const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
+  std::vector<height_t> top(cells), bottom(cells);
+  DexelGrid<height_t> grid;
+  if (!ok(grid_init(&grid, plan.geo, top.data(), bottom.data(), cells)))
+    return fail(kExitUsage, "the stock and grid give a geometry the dexel grid cannot hold");
+  fill_stock(&grid, plan);
+  const uint64_t material_before = grid_material_lsb(grid);
+
+  // -- the cutter's memory: the stamp set of the largest tool used
+  size_t words = 0;
+  for (const Tool& t : scan.tools_seen) {
+    const ToolProfile p = tool_profile(t);
+    char spec[64];
+    tool_spec_format(t, spec, sizeof spec);
+    if (o.mode == CutMode::kStamp) {
+      const int32_t reach = cutter_reach_dex(p, grid.pitch_nm);
+      if (reach > kCutterMaxReach)
+        return fail(kExitUsage, "the tool %s spans more than %d dexels at this pitch; use a coarser --pitch or --mode sweep",
+                    spec, 2 * kCutterMaxReach + 1);
+      words = max_of(words, cutter_storage_words(reach));
+    } else {
+      SweepTool st;
+      if (!ok(sweep_tool_prepare(p, grid.lsb_nm, &st)))
+        return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 268 mm)", spec);
+    }
+  }
+  std::vector<int32_t> cutter_words(words);
+  Mill<height_t> mill(&grid, o.mode, lib, cutter_words.empty() ? nullptr : cutter_words.data(), cutter_words.size());
+  if (!ok(mill.set_tool(o.tool))) return fail(kExitUsage, "the tool %s cannot cut this grid", o.tool_text.c_str());
+
+  // -- outputs that watch the cut
+  CameraChoice cam;
+  cam.preset = o.view;
+  if (o.have_azimuth || o.have_elevation) {
+    const Camera iso = camera_preset(ViewPreset::kIso);
+    cam.angles = true;
+    cam.azimuth_bam = o.have_azimuth ? bam_from_mdeg(o.azimuth_mdeg) : iso.azimuth_bam;
+    cam.elevation_bam = o.have_elevation ? static_cast<int32_t>(bam_from_mdeg(o.elevation_mdeg)) : iso.elevation_bam;
+  }
+  Watchers w;
+  std::unique_ptr<PpmFrames> frames;
+  std::unique_ptr<RenderOutput> frames_out, image_out;
+  std::vector<uint32_t> image_pixels;
+  LiveView live;
+  const bool is_live = o.window || !o.fbdev.empty();
+  const uint64_t motion_moves = rep.rapid + rep.feed + rep.arc;
+  if (is_live) {
+    const int code = live.open(o, grid, cam, sum.estimated_time_us(), &err);
+    if (code != kExitOk) return fail(code, "%s", err.c_str());
+    w.live_out = live.output();
+    w.outputs.push_back(w.live_out);
+  }
+  if (!o.frames_dir.empty()) {
+    frames.reset(new PpmFrames(o.frames_dir, o.width, o.height));
+    frames_out.reset(new RenderOutput());
+    if (!frames_out->init(grid, frames->frame(), cam, &err)) return fail(kExitUsage, "%s", err.c_str());
+    w.frames = frames.get();
+    w.frames_out = frames_out.get();
+    w.every = o.every ? static_cast<uint64_t>(o.every) : max_of<uint64_t>(1, (motion_moves + 99) / 100);
+    w.outputs.push_back(frames_out.get());
+  }
+  // The final image is the frame of the live view or of the sequence when
+  // there is one (the same pixels), else a frame of its own.
+  RenderOutput* image_src = is_live ? w.live_out : frames_out.get();
+  if (!o.image.empty() && !image_src) {
+    image_pixels.assign(static_cast<size_t>(o.width) * static_cast<size_t>(o.height), 0);
+    FrameView fb;
+    fb.pixels = image_pixels.data();
+    fb.width = o.width;
+    fb.height = o.height;
+    fb.stride_bytes = o.width * 4;
+    fb.format = PixelFormat::kXrgb8888;
+    image_out.reset(new RenderOutput());
+    if (!image_out->init(grid, fb, cam, &err)) return fail(kExitUsage, "%s", err.c_str());
+    w.outputs.push_back(image_out.get());
+    image_src = image_out.get();
+  }
+  for (RenderOutput* out : w.outputs) out->set_tool(o.tool);
+  grid.dirty = grid.bounds();
+  fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
+
+  // -- cut pass
+  CutSink cut(&mill, &grid, &w, lib);
+  cut.status.inch = o.inch;
+  cut.status.tool_spec = o.tool_text;
+  bool user_quit = false;
+  {
+    const double t0 = clock_now_s();
+    if (frames) cut.write_frame();  // the untouched stock
+    GcodeFile in;
+    if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
+    RunMessages quiet(shown_name, false);
+    InterpOptions opt;
+    opt.inch = o.inch;
+    opt.tools = have_table ? &table : nullptr;
+    Interp interp(&cut, opt);
+    GcodeRunner runner(&in, &interp, &quiet, true);
+    Progress progress(stderr, !o.quiet && !is_live);
+    while (runner.step()) {
+      progress.update(in.bytes_read(), in.total_bytes(), cut.moves);
+      if (!cut.frame_error.empty()) break;
+      if (is_live && !live.tick(&grid, cut.pose(), cut.status)) {
+        user_quit = !live.failed();
+        break;
+      }
+    }
+    progress.finish();
+    if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+    if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());
+    if (live.failed()) return fail(kExitIo, "%s", live.error().c_str());
+    if (frames && cut.last_frame_moves != cut.moves && !cut.write_frame())
+      return fail(kExitIo, "%s", cut.frame_error.c_str());
+    rep.timing.emplace_back("cut", clock_now_s() - t0 - cut.render_s - cut.write_s);
+  }
+  rep.instances = mill.stats().instances;
+  rep.dexel_updates = mill.stats().dexel_updates;
+  rep.removed_lsb_dexels = material_before - grid_material_lsb(grid);
+
+  // -- final frame and files
+  double render_s = cut.render_s, write_s = cut.write_s;
+  char e[1300];
+  if (is_live && !user_quit && !live.last_frame(&grid, cut.pose(), cut.status))
+    return fail(kExitIo, "%s", live.error().c_str());
+  if (!o.image.empty()) {
+    const double t0 = clock_now_s();
+    if (image_src != w.live_out) image_src->draw(&grid, cut.pose());
+    const double t1 = clock_now_s();
+    render_s += t1 - t0;
+    if (!write_ppm(o.image.c_str(), image_src->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    write_s += clock_now_s() - t1;
+  }
+  const double t_files = clock_now_s();
+  if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
+  if (!o.stl.empty() && !write_stl(o.stl.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
+  write_s += clock_now_s() - t_files;
+  rep.timing.emplace_back("render", render_s);
+  rep.timing.emplace_back("write", write_s);
+  if (!write_report()) return kExitIo;
+  if (is_live && !user_quit && !live.wait_done(&grid, cut.pose(), cut.status))
+    return fail(kExitIo, "%s", live.error().c_str());
+  if (!o.quiet && demo)
+    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, frames/%s)\n",
+                 frames ? "frame-*.ppm" : "");
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill

@@ -1,0 +1,198 @@
+// `dexmill run` option parsing; see run_options.h.
+#include "tools/run_options.h"
+
+#include <cstdio>
+#include <cstring>
+
+#include "core/decimal.h"
+#include "core/fixed.h"
+#include "core/interp.h"
+#include "core/tool_spec.h"
+#include "display/framebuffer.h"
+#include "tools/cli.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// A decimal number as written, scaled (1e6 for mm -> nm, 1000 for s -> ms).
+bool parse_scaled(const char* s, std::size_t n, int64_t scale, int64_t* out) {
+  Decimal d;
+  std::size_t pos = 0;
+  if (n == 0 || decimal_parse(s, n, &pos, &d) != DecimalParse::kOk || pos != n) return false;
+  *out = decimal_scale(d, scale);
+  return true;
+}
+bool parse_scaled(const char* s, int64_t scale, int64_t* out) { return parse_scaled(s, std::strlen(s), scale, out); }
+
+// "AxB" with both whole numbers in [lo, hi].
+bool parse_pair(const char* s, int64_t lo, int64_t hi, int32_t* a, int32_t* b) {
+  const char* x = std::strchr(s, 'x');
+  if (!x) x = std::strchr(s, 'X');
+  if (!x) return false;
+  int64_t va, vb;
+  if (!parse_scaled(s, static_cast<std::size_t>(x - s), 1, &va) || !parse_scaled(x + 1, 1, &vb)) return false;
+  for (const char* p = s; *p; ++p)
+    if (*p == '.' || *p == '-' || *p == '+' || *p == ' ') return false;
+  if (va < lo || va > hi || vb < lo || vb > hi) return false;
+  *a = static_cast<int32_t>(va);
+  *b = static_cast<int32_t>(vb);
+  return true;
+}
+
+bool parse_stock(const char* s, int64_t* v) {
+  int k = 0;
+  const char* p = s;
+  for (;;) {
+    const char* c = std::strchr(p, ',');
+    const std::size_t n = c ? static_cast<std::size_t>(c - p) : std::strlen(p);
+    if (k == 6 || !parse_scaled(p, n, kNmPerMm, &v[k])) return false;
+    if (v[k] > kGcodeMaxCoordNm || v[k] < -kGcodeMaxCoordNm) return false;
+    ++k;
+    if (!c) break;
+    p = c + 1;
+  }
+  return k == 6 && v[0] < v[3] && v[1] < v[4] && v[2] < v[5];
+}
+
+}  // namespace
+
+void run_usage(std::FILE* f) {
+  std::fprintf(f,
+               "usage: dexmill run [FILE|-] [options]\n\n"
+               "Simulates milling a G-code program into a block of stock and writes what you ask\n"
+               "for. With no FILE it runs the built-in demo (writes out/demo.ngc, out/final.ppm\n"
+               "and out/frames/).\n\n"
+               "  --stock X0,Y0,Z0,X1,Y1,Z1  stock box, mm, machine coordinates (default: from the program)\n"
+               "  --grid NXxNY | --pitch MM  dexel resolution (default 256 across the longer side)\n"
+               "  --tool SPEC                ball:D flat:D bull:D:R vbit:D:ANGLE [,len=L] (default flat:6)\n"
+               "  --tools FILE               LinuxCNC tool table; T/M6 pick from it\n"
+               "  --units mm|inch            units of programs that never say G20/G21 (default mm)\n"
+               "  --mode sweep|stamp         exact swept envelopes or instances of motion (default sweep)\n"
+               "  --image FILE.ppm           final frame\n"
+               "  --frames DIR [--every N]   a frame every N moves: DIR/frame-000001.ppm ...\n"
+               "  --size WxH                 frame size (default 640x480)\n"
+               "  --view iso|top|front|right or --azimuth DEG --elevation DEG   camera (default iso)\n"
+               "  --heightmap FILE.pgm       final tops as a 16-bit PGM\n"
+               "  --stl FILE.stl             final surface as a closed binary STL\n"
+               "  --report FILE.json         summary: program, errors, stock, grid, tools, volume, time\n"
+               "  --window                   show the simulation live (GLFW build: make GLFW=1)\n"
+               "  --fbdev DEV                draw live into a Linux framebuffer (/dev/fb0)\n"
+               "  --speed X                  live: simulated seconds per second (default: ~20 s per job)\n"
+               "  --exit-when-done [--hold S]  live: close after the program (after S seconds)\n"
+               "  -q                         no progress bar\n\n"
+               "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, r resets\n"
+               "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O.\n");
+}
+
+int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
+  *help = false;
+  {
+    const ToolSpecError e = tool_spec_parse("flat:6", 6, &o->tool);
+    if (e != ToolSpecError::kOk) return fail(kExitUsage, "internal: default tool");
+  }
+  bool have_file = false, have_grid = false, have_pitch = false, have_view = false, have_every = false;
+  for (int i = 1; i < argc; ++i) {
+    const char* a = argv[i];
+    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
+      run_usage(stdout);
+      *help = true;
+      return kExitOk;
+    }
+    if (!std::strcmp(a, "-q") || !std::strcmp(a, "--quiet")) { o->quiet = true; continue; }
+    if (!std::strcmp(a, "--window")) { o->window = true; continue; }
+    if (!std::strcmp(a, "--exit-when-done")) { o->exit_when_done = true; continue; }
+    if (a[0] != '-' || !a[1]) {
+      if (have_file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", o->file.c_str(), a);
+      o->file = a;
+      have_file = true;
+      continue;
+    }
+    static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
+                                             "--mode", "--image", "--frames", "--every", "--size", "--view",
+                                             "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
+                                             "--fbdev", "--hold", "--speed"};
+    bool known = false;
+    for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
+    if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
+    if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
+    const char* v = argv[++i];
+    const std::string name = a;
+    if (name == "--stock") {
+      if (!parse_stock(v, o->stock_nm))
+        return fail(kExitUsage, "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1, not '%s'", v);
+      o->have_stock = true;
+    } else if (name == "--grid") {
+      if (!parse_pair(v, 4, 65535, &o->grid_nx, &o->grid_ny))
+        return fail(kExitUsage, "--grid needs NXxNY with whole numbers from 4 to 65535, not '%s'", v);
+      have_grid = true;
+    } else if (name == "--pitch") {
+      if (!parse_scaled(v, kNmPerMm, &o->pitch_nm) || o->pitch_nm < 100 || o->pitch_nm > 100 * kNmPerMm)
+        return fail(kExitUsage, "--pitch needs a dexel spacing from 0.0001 to 100 mm, not '%s'", v);
+      have_pitch = true;
+    } else if (name == "--tool") {
+      const ToolSpecError e = tool_spec_parse(v, std::strlen(v), &o->tool);
+      if (e != ToolSpecError::kOk) return fail(kExitUsage, "bad --tool '%s': %s", v, tool_spec_message(e));
+      o->tool_text = v;
+    } else if (name == "--tools") {
+      o->tools_file = v;
+    } else if (name == "--units") {
+      if (!std::strcmp(v, "mm")) o->inch = false;
+      else if (!std::strcmp(v, "inch")) o->inch = true;
+      else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+    } else if (name == "--mode") {
+      if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
+      else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;
+      else return fail(kExitUsage, "--mode must be sweep or stamp, not '%s'", v);
+    } else if (name == "--image") {
+      o->image = v;
+    } else if (name == "--frames") {
+      o->frames_dir = v;
+    } else if (name == "--every") {
+      if (!parse_scaled(v, 1, &o->every) || o->every < 1 || std::strchr(v, '.'))
+        return fail(kExitUsage, "--every needs a whole number of moves >= 1, not '%s'", v);
+      have_every = true;
+    } else if (name == "--size") {
+      if (!parse_pair(v, 16, kFrameMaxSide, &o->width, &o->height))
+        return fail(kExitUsage, "--size needs WxH with whole numbers from 16 to %d, not '%s'",
+                    static_cast<int>(kFrameMaxSide), v);
+    } else if (name == "--view") {
+      if (!view_preset_from_name(v, &o->view))
+        return fail(kExitUsage, "--view must be iso, top, front or right, not '%s'", v);
+      have_view = true;
+    } else if (name == "--azimuth" || name == "--elevation") {
+      int64_t mdeg = 0;
+      if (!parse_scaled(v, 1000, &mdeg) || mdeg < -360000 || mdeg > 360000)
+        return fail(kExitUsage, "%s needs degrees from -360 to 360, not '%s'", a, v);
+      if (name == "--azimuth") { o->azimuth_mdeg = mdeg; o->have_azimuth = true; }
+      else {
+        if (mdeg < -90000 || mdeg > 90000) return fail(kExitUsage, "--elevation needs degrees from -90 to 90, not '%s'", v);
+        o->elevation_mdeg = mdeg;
+        o->have_elevation = true;
+      }
+    } else if (name == "--heightmap") {
+      o->heightmap = v;
+    } else if (name == "--stl") {
+      o->stl = v;
+    } else if (name == "--report") {
+      o->report = v;
+    } else if (name == "--fbdev") {
+      o->fbdev = v;
+    } else if (name == "--hold") {
+      if (!parse_scaled(v, 1000, &o->hold_ms) || o->hold_ms < 0 || o->hold_ms > 3600000)
+        return fail(kExitUsage, "--hold needs seconds from 0 to 3600, not '%s'", v);
+    } else if (name == "--speed") {
+      if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
+        return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
+    }
+  }
+  if (have_grid && have_pitch) return fail(kExitUsage, "give --grid or --pitch, not both");
+  if (have_view && (o->have_azimuth || o->have_elevation))
+    return fail(kExitUsage, "give --view or --azimuth/--elevation, not both");
+  if (have_every && o->frames_dir.empty()) return fail(kExitUsage, "--every needs --frames DIR");
+  if (o->window && !o->fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill

@@ -1,0 +1,55 @@
+// The options of `dexmill run` (../shared/CLI.md), parsed and checked before
+// anything is read or written: a bad value is a usage error (exit 2) with a
+// message that names the option and what it wants.
+#ifndef DEXMILL_TOOLS_RUN_OPTIONS_H
+#define DEXMILL_TOOLS_RUN_OPTIONS_H
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "core/mill.h"
+#include "core/tool.h"
+#include "display/camera.h"
+
+namespace dexmill {
+namespace cli {
+
+struct RunOptions {
+  std::string file;              // input; "-" is standard input; empty: the built-in demo
+  bool have_stock = false;
+  int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
+  int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
+  int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
+  Tool tool;                     // --tool (default flat:6)
+  std::string tool_text = "flat:6";
+  std::string tools_file;        // --tools
+  bool inch = false;             // --units inch
+  CutMode mode = CutMode::kSweep;
+  std::string image;             // --image (demo: out/final.ppm)
+  std::string frames_dir;        // --frames
+  int64_t every = 0;             // --every; 0: about 100 frames over the program
+  int32_t width = 640, height = 480;  // --size
+  ViewPreset view = ViewPreset::kIso;
+  bool have_azimuth = false, have_elevation = false;
+  int64_t azimuth_mdeg = 0, elevation_mdeg = 0;
+  std::string heightmap, stl, report;
+  bool window = false;
+  std::string fbdev;
+  bool quiet = false;
+  // Live outputs (--window, --fbdev).
+  bool exit_when_done = false;   // close the window after the program (fbdev always does)
+  int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
+  int64_t speed_milli = 0;       // --speed X: simulated seconds per second, x1000; 0: auto
+};
+
+// Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the
+// error and returns kExitUsage; *help is set for --help (usage printed).
+int parse_run_options(int argc, char** argv, RunOptions* out, bool* help);
+
+void run_usage(std::FILE* f);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,72 @@
+#include "tools/run_render.h"
+
+namespace dexmill {
+namespace cli {
+
+RenderOutput::RenderOutput() : r_(new Renderer<height_t>()) {}
+RenderOutput::~RenderOutput() = default;
+
+bool RenderOutput::init(const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam, std::string* err) {
+  choice_ = cam;
+  if (!resize(g, fb, err)) return false;
+  set_camera(initial_camera());
+  return true;
+}
+
+bool RenderOutput::resize(const DexelGrid<height_t>& g, const FrameView& fb, std::string* err) {
+  const bool had_camera = r_->fb.pixels != nullptr;
+  const Camera keep = r_->cam;
+  RenderOptions opt;
+  const size_t bytes = renderer_scratch_bytes(g, fb.width, fb.height, opt.zformat);
+  scratch_.assign((bytes + 7) / 8, 0);
+  const Status s = renderer_init(r_.get(), g, fb, opt, scratch_.data(), scratch_.size() * 8);
+  if (!ok(s)) {
+    *err = std::string("cannot draw a ") + std::to_string(fb.width) + "x" + std::to_string(fb.height) +
+           " frame of this grid: " + status_message(s);
+    return false;
+  }
+  fb_ = fb;
+  if (had_camera) {
+    Camera c = keep;
+    // Keep direction and zoom; refit only the target to the new aspect.
+    renderer_set_camera(r_.get(), c);
+  }
+  if (have_tool_) renderer_set_tool(r_.get(), &profile_);
+  return true;
+}
+
+void RenderOutput::set_tool(const Tool& t) {
+  profile_ = tool_profile(t);
+  have_tool_ = true;
+  renderer_set_tool(r_.get(), &profile_);
+}
+
+RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) {
+  const GridRect saved = g->dirty;
+  g->dirty = pending_;
+  pending_ = GridRect::none();
+  RenderResult res = render_update(r_.get(), g, pose);
+  g->dirty = saved;
+  return res;
+}
+
+Camera RenderOutput::camera() const { return r_->cam; }
+
+void RenderOutput::set_camera(const Camera& c) { renderer_set_camera(r_.get(), c); }
+
+Camera RenderOutput::initial_camera() const {
+  if (!choice_.angles) return renderer_fit(*r_, choice_.preset);
+  Camera c = camera_preset(ViewPreset::kIso);
+  c.azimuth_bam = choice_.azimuth_bam;
+  c.elevation_bam = choice_.elevation_bam;
+  camera_fit(&c, renderer_stock_box(*r_), fb_.width, fb_.height);
+  return c;
+}
+
+void fan_out_dirty(DexelGrid<height_t>* g, RenderOutput* const* outputs, int n) {
+  for (int k = 0; k < n; ++k) outputs[k]->note_dirty(g->dirty);
+  g->dirty = GridRect::none();
+}
+
+}  // namespace cli
+}  // namespace dexmill

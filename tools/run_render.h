@@ -1,0 +1,69 @@
+// One drawing of the simulation for `dexmill run`: a renderer
+// (display/render.h) with its memory, over a framebuffer view that a Screen
+// owns. Several can watch one grid (PPM frames at --size and a window at its
+// own size): each keeps the grid changes it has not drawn yet, since a
+// render consumes the grid's dirty rectangle.
+#ifndef DEXMILL_TOOLS_RUN_RENDER_H
+#define DEXMILL_TOOLS_RUN_RENDER_H
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "core/grid.h"
+#include "core/tool.h"
+#include "display/render.h"
+
+namespace dexmill {
+namespace cli {
+
+// The camera the options ask for: a preset, or azimuth and elevation.
+struct CameraChoice {
+  ViewPreset preset = ViewPreset::kIso;
+  bool angles = false;
+  uint32_t azimuth_bam = 0;
+  int32_t elevation_bam = 0;
+};
+
+class RenderOutput {
+ public:
+  RenderOutput();
+  ~RenderOutput();
+
+  // (Re)starts drawing `g` into `fb` with the chosen camera. False with a
+  // message if the renderer rejects the view.
+  bool init(const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam, std::string* err);
+  // A new frame size (a window resized), keeping the camera and tool.
+  bool resize(const DexelGrid<height_t>& g, const FrameView& fb, std::string* err);
+  void set_tool(const Tool& t);
+
+  // Grid changes since the last call of take_dirty (every output gets them).
+  void note_dirty(const GridRect& r) { pending_.include(r); }
+  // Draws what changed (everything after init, resize or a camera change).
+  RenderResult draw(DexelGrid<height_t>* g, const CutterPose& pose);
+
+  const FrameView& view() const { return fb_; }
+  Camera camera() const;
+  void set_camera(const Camera& c);
+  // The chosen camera fitted to the stock (what `r` resets the window to).
+  Camera initial_camera() const;
+
+ private:
+  std::unique_ptr<Renderer<height_t>> r_;
+  std::vector<uint64_t> scratch_;
+  FrameView fb_;
+  CameraChoice choice_;
+  bool have_tool_ = false;
+  ToolProfile profile_{};
+  GridRect pending_ = GridRect::none();
+};
+
+// Moves the grid's dirty rectangle into every output (then clears it).
+void fan_out_dirty(DexelGrid<height_t>* g, RenderOutput* const* outputs, int n);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,65 @@
+// The stock and the dexel grid of `dexmill run`.
+//
+// Default stock (no --stock), from a first pass over the program
+// (core/motion_summary.h), for programs that put Z0 on the stock top as CAM
+// programs do:
+//   top    Z = 0 when any feed reaches below 0; otherwise (a program zeroed on
+//          the table) the highest level a feed reaches: the highest of the
+//          lower ends of the feed moves (a plunge from a safe height counts
+//          at its bottom);
+//   bottom Z = the deepest feed, less a quarter of the cut depth (at least
+//          1 mm), and at least 2 mm below the top;
+//   X, Y   = the box of the feed moves that reach below the top (all feeds,
+//          or all motion, when there are none), widened on every side by
+//          the largest tool radius the program uses plus 2 mm.
+// A program with no motion gets a 50 x 50 x 10 mm block under the origin.
+//
+// The grid: the longer side of the stock gets 256 dexels (or --grid NXxNY,
+// or --pitch MM), one pitch for x and y. Dexel axes run from the stock's
+// X0, Y0 in steps of the pitch, so the stock is rounded up to whole pitches
+// (by less than one); one ring of hole dexels around it makes its side
+// walls (core/grid.h). With --grid, dexels past the stock are holes too.
+// Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
+// the stock height in 16 bits (core/grid.h lsb_for_range).
+#ifndef DEXMILL_TOOLS_RUN_STOCK_H
+#define DEXMILL_TOOLS_RUN_STOCK_H
+
+#include <cstdint>
+#include <string>
+
+#include "core/grid.h"
+#include "core/motion_summary.h"
+
+namespace dexmill {
+namespace cli {
+
+struct StockBox {
+  PointNm lo, hi;
+};
+
+StockBox default_stock(const MotionSummary& s, int64_t max_tool_radius_nm);
+
+struct GridPlan {
+  GridGeometry geo;
+  int32_t stock_nx, stock_ny;  // dexels holding stock: i in [1, stock_nx], j in [1, stock_ny]
+  int64_t top_lsb;             // stock top height
+  StockBox stock;              // the stock as the grid holds it (rounded up to whole pitches)
+};
+
+// Most dexels a run may use (2 x 2 bytes each for 16-bit heights).
+constexpr int64_t kMaxGridCells = 64LL << 20;
+
+// Plans the grid for a stock. grid_nx/ny or pitch_nm (0 if not given).
+// False with a message for a grid beyond kMaxGridCells or a pitch that
+// leaves fewer than 2 dexels across.
+bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
+               std::string* err);
+
+// Fills a grid set up by grid_init with the plan's stock.
+template <class H>
+void fill_stock(DexelGrid<H>* g, const GridPlan& plan);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# The live window of `dexmill run --window`, checked as a person would see
+# it: a GLFW build runs tests/run/pocket.ngc in a window under Xvfb, the
+# window is captured with xwd once the program is done, and its picture
+# (above the status line) must equal, pixel for pixel, the PPM of the same
+# final frame that the run wrote with --image.
+#
+#   tools/scripts/window-test.sh            builds build/glfw/dexmill if needed
+# Skips (exit 0, with a message) when Xvfb, xwd or GLFW is not installed:
+# tools/scripts/install-deps.sh window installs them.
+set -u
+cd "$(dirname "$0")/../.."
+skip() { echo "window-test: skipped: $*"; exit 0; }
+command -v Xvfb >/dev/null || skip "Xvfb is not installed (tools/scripts/install-deps.sh window)"
+command -v xwd >/dev/null || skip "xwd is not installed (x11-apps)"
+pkg-config --exists glfw3 2>/dev/null || skip "GLFW is not installed (libglfw3-dev)"
+make -s -j2 GLFW=1 BUILD=build/glfw build/glfw/dexmill || { echo "window-test: FAIL: the GLFW build failed"; exit 1; }
+
+tmp=$(mktemp -d)
+xpid=; dpid=
+cleanup() {
+  [ -n "$dpid" ] && kill "$dpid" 2>/dev/null
+  [ -n "$xpid" ] && kill "$xpid" 2>/dev/null
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+disp=:$((90 + RANDOM % 100))
+Xvfb "$disp" -screen 0 800x600x24 -nolisten tcp >"$tmp/xvfb.log" 2>&1 &
+xpid=$!
+for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${disp#:}" ] && break; sleep 0.1; done
+[ -e "/tmp/.X11-unix/X${disp#:}" ] || { echo "window-test: FAIL: Xvfb did not start"; cat "$tmp/xvfb.log"; exit 1; }
+
+# --hold keeps the last frame up while xwd takes it; the window then closes itself.
+DISPLAY=$disp build/glfw/dexmill run tests/run/pocket.ngc --window --exit-when-done --hold 3 --speed 50 \
+  --size 320x240 --image "$tmp/final.ppm" -q 2>"$tmp/run.err" &
+dpid=$!
+for _ in $(seq 300); do [ -s "$tmp/final.ppm" ] && break; kill -0 "$dpid" 2>/dev/null || break; sleep 0.1; done
+[ -s "$tmp/final.ppm" ] || { echo "window-test: FAIL: no final image"; cat "$tmp/run.err"; exit 1; }
+sleep 0.5
+xwd -display "$disp" -name dexmill -silent -out "$tmp/window.xwd" || { echo "window-test: FAIL: xwd could not capture the window"; exit 1; }
+wait "$dpid"; rc=$?; dpid=
+[ "$rc" = 0 ] || { echo "window-test: FAIL: dexmill exited $rc"; cat "$tmp/run.err"; exit 1; }
+
+python3 - "$tmp/window.xwd" "$tmp/final.ppm" <<'PY'
+import struct, sys
+
+def read_xwd(path):
+    d = open(path, "rb").read()
+    h = struct.unpack(">25I", d[:100])
+    header_size, width, height = h[0], h[4], h[5]
+    byte_order, bpp, bpl, ncolors = h[7], h[11], h[12], h[19]
+    rmask, gmask, bmask = h[14], h[15], h[16]
+    if bpp != 32:
+        sys.exit("window-test: FAIL: xwd gave %d bits per pixel, this check reads 32" % bpp)
+    pos = header_size + 12 * ncolors
+    fmt = "<I" if byte_order == 0 else ">I"
+    def shift(m):
+        s = 0
+        while m and not (m >> s) & 1: s += 1
+        return s
+    rs, gs, bs = shift(rmask), shift(gmask), shift(bmask)
+    px = []
+    for y in range(height):
+        row = d[pos + y * bpl: pos + y * bpl + 4 * width]
+        px.append([((v & rmask) >> rs, (v & gmask) >> gs, (v & bmask) >> bs)
+                   for (v,) in struct.iter_unpack(fmt, row)])
+    return width, height, px
+
+def read_ppm(path):
+    d = open(path, "rb").read()
+    parts, pos = [], 0
+    while len(parts) < 4:
+        while d[pos:pos+1].isspace(): pos += 1
+        end = pos
+        while not d[end:end+1].isspace(): end += 1
+        parts.append(d[pos:end]); pos = end
+    pos += 1
+    w, h = int(parts[1]), int(parts[2])
+    return w, h, [[tuple(d[pos + 3 * (y * w + x): pos + 3 * (y * w + x) + 3]) for x in range(w)] for y in range(h)]
+
+ww, wh, win = read_xwd(sys.argv[1])
+pw, ph, pic = read_ppm(sys.argv[2])
+if ww != pw or wh <= ph:
+    sys.exit("window-test: FAIL: window %dx%d, image %dx%d (the window should be the image plus a status line)" % (ww, wh, pw, ph))
+for y in range(ph):
+    for x in range(pw):
+        if win[y][x] != pic[y][x]:
+            sys.exit("window-test: FAIL: first differing pixel (%d, %d): window %s, image %s" % (x, y, win[y][x], pic[y][x]))
+band = set(p for row in win[ph:] for p in row)
+if len(band) < 2:
+    sys.exit("window-test: FAIL: the status line under the picture is blank")
+print("window-test: ok: the %dx%d window shows the final frame pixel for pixel, with a status line below" % (ww, wh))
+PY
