@@ -93,8 +93,12 @@ void MotionSummary::emit(const CanonRecord& r) {
     case CanonKind::kArc: {
       // Boxes from the chords the cutter follows; length and time from the
       // arc itself (chords would be short by sagitta / (3 r) relative).
+      // Long arcs (thousands of turns, metres of radius) get coarser chords,
+      // sagitta r / 1000, so the scan stays cheap; the box is then within
+      // r / 1000 of the arc's.
       ArcChords chords;
-      chords.init(r, kArcSagittaNm);
+      chords.init(r, kArcChordSagittaNm);
+      if (chords.count() > 100000) chords.init(r, chords.radius_max() / 1000);
       const int64_t len = arc_length_nm(r, chords.sweep_bam());
       piece(r.start, r.start, true, r.feed_nm_per_min, len);
       PointNm from = r.start, to;
