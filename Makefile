@@ -118,12 +118,15 @@ panel:
 #                         over tests/fuzz/seeds plus build/fuzz/corpus
 SECONDS ?= 60
 FUZZ_BIN := build/fuzz/fuzz_pipeline
-FUZZ_SRC := tests/fuzz/fuzz_pipeline.cpp $(CORE_SRC) $(DISPLAY_SRC)
+FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
+            -fno-sanitize-recover=all
+FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
 .PHONY: fuzz
-$(FUZZ_BIN): $(FUZZ_SRC) $(wildcard tests/fuzz/*.h core/*.h display/*.h)
+build/fuzz/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
-	clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
-	  -fno-sanitize-recover=all $(FUZZ_SRC) -o $@
+	$(FUZZ_CXX) $(INTFLAGS) -c $< -o $@
+$(FUZZ_BIN): tests/fuzz/fuzz_pipeline.cpp $(wildcard tests/fuzz/*.h) $(FUZZ_OBJ)
+	$(FUZZ_CXX) tests/fuzz/fuzz_pipeline.cpp $(FUZZ_OBJ) -o $@
 fuzz: $(FUZZ_BIN)
 	@mkdir -p build/fuzz/corpus
 	$(FUZZ_BIN) -max_total_time=$(SECONDS) -max_len=4096 -timeout=10 -print_final_stats=1 \

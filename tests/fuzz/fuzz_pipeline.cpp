@@ -1,7 +1,7 @@
 // libFuzzer target: bytes -> G-code reader -> interpreter -> cutting into a
-// small grid (sweep or stamp, by the first byte) [-> render, once display/ is
-// in the pipeline]. Any crash, sanitizer report, heap use in the cutting
-// loop or broken grid invariant is a bug. `make fuzz SECONDS=N`.
+// small grid (sweep or stamp, by the first byte) -> rendering a small frame.
+// Any crash, sanitizer report, broken grid invariant or non-deterministic
+// frame is a bug. `make fuzz SECONDS=N`.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -39,6 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   const CutMode mode = (data[0] & 1) ? CutMode::kStamp : CutMode::kSweep;
   const bool inch = (data[0] & 2) != 0;
+  const uint8_t view = static_cast<uint8_t>(data[0] >> 2);
   ++data;
   --size;
   static std::vector<uint16_t> top(48 * 40), bottom(48 * 40);
@@ -68,6 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t k = 0; k < top.size(); ++k) {
     if (bottom[k] > top[k]) abort();
   }
-  fuzz_render(g);
+  // Drawing is slow next to reading and cutting: one input in eight.
+  if (view & 0x20) fuzz_render(g, tool_profile(mill.tool()), mill.position(), view);
   return 0;
 }
