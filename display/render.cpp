@@ -66,12 +66,6 @@ template <class H>
 void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bool cutter) {
   RasterTarget* t = &r->target;
   t->clip = rect;
-  if (r->table_visible) {
-    t->lut = r->lut_table;
-    const ClipVertex* q = r->table_quad;
-    clip_draw_triangle(t, r->view.proj, q[0], q[1], q[2]);
-    clip_draw_triangle(t, r->view.proj, q[0], q[2], q[3]);
-  }
   t->lut = r->lut_work;
   MeshPass<H> pass;
   pass.grid = &g;
@@ -92,6 +86,15 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
       const bool inside = in.x0 == br.x0 && in.y0 == br.y0 && in.x1 == br.x1 && in.y1 == br.y1;
       mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
+  }
+  // The table lies wholly behind the stock (below its bottom, seen from
+  // above), so drawing it after the stock changes no pixel and skips the
+  // colour writes under the stock.
+  if (r->table_visible) {
+    t->lut = r->lut_table;
+    const ClipVertex* q = r->table_quad;
+    clip_draw_triangle(t, r->view.proj, q[0], q[1], q[2]);
+    clip_draw_triangle(t, r->view.proj, q[0], q[2], q[3]);
   }
   if (cutter && !rect_intersect(rect, r->cutter.rect).empty()) {
     t->lut = r->lut_cutter;
