@@ -34,7 +34,7 @@ uint32_t background_row(const Renderer<H>& r, int32_t y) {
   const Rgb a = r.opt.background_top;
   if (!r.opt.gradient) return pixel_pack(r.fb.format, a);
   const Rgb b = r.opt.background_bottom;
-  const int32_t d = max_of(r.fb.height - 1, 1);
+  const int32_t d = max_of<int32_t>(r.fb.height - 1, 1);
   auto mix = [&](int32_t u, int32_t v) { return static_cast<uint8_t>(u + ((v - u) * y + (v > u ? d / 2 : -d / 2)) / d); };
   return pixel_pack(r.fb.format, Rgb{mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)});
 }
@@ -266,13 +266,16 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   RenderResult res;
   if (g->nx != r->nx || g->ny != r->ny) return res;
   r->target.stats = RasterStats{};
-  const GridRect d{max_of(g->dirty.i0, 0), max_of(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx), min_of(g->dirty.j1, g->ny)};
+  const GridRect d{max_of<int32_t>(g->dirty.i0, 0), max_of<int32_t>(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx),
+                   min_of(g->dirty.j1, g->ny)};
   if (!d.empty()) {
     // Shades reach two dexels past a change (gradient, then blur), and a
     // cell draws from its four corners.
-    const GridRect s{max_of(d.i0 - 2, 0), max_of(d.j0 - 2, 0), min_of(d.i1 + 2, g->nx), min_of(d.j1 + 2, g->ny)};
+    const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
+                     min_of<int32_t>(d.j1 + 2, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
-    const GridRect cells{max_of(s.i0 - 1, 0), max_of(s.j0 - 1, 0), min_of(s.i1, g->nx - 1), min_of(s.j1, g->ny - 1)};
+    const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
+                         min_of<int32_t>(s.j1, g->ny - 1)};
     const int32_t bx0 = cells.i0 / kBlockCells, bx1 = (cells.i1 - 1) / kBlockCells;
     const int32_t by0 = cells.j0 / kBlockCells, by1 = (cells.j1 - 1) / kBlockCells;
     // The cells' heights before and after: their blocks' ranges.
