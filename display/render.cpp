@@ -79,11 +79,8 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
     for (int32_t m = 0; m < r->bnx; ++m) {
       const int32_t bx = r->i_desc ? r->bnx - 1 - m : m;
       const BlockInfo& b = r->blocks[static_cast<size_t>(by) * r->bnx + bx];
-      if (b.zlo_lsb > b.zhi_lsb) continue;
-      const ScreenRect br{b.x0, b.y0, b.x1, b.y1};
-      const ScreenRect in = rect_intersect(rect, br);
-      if (in.empty()) continue;
-      const bool inside = in.x0 == br.x0 && in.y0 == br.y0 && in.x1 == br.x1 && in.y1 == br.y1;
+      if (b.zlo_lsb > b.zhi_lsb || b.x1 <= rect.x0 || b.x0 >= rect.x1 || b.y1 <= rect.y0 || b.y0 >= rect.y1) continue;
+      const bool inside = b.x0 >= rect.x0 && b.x1 <= rect.x1 && b.y0 >= rect.y0 && b.y1 <= rect.y1;
       mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
   }
