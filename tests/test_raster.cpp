@@ -7,23 +7,14 @@
 
 #include "display/clip.h"
 #include "display/raster.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
 
 namespace {
 
-struct Rng {
-  uint64_t s;
-  explicit Rng(uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ull + 1) {}
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using t::Rng;
 
 // A frame with colour and depth, XRGB8888 and 32-bit depth.
 struct Canvas {

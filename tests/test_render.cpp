@@ -10,6 +10,7 @@
 #include "core/trig.h"
 #include "display/render.h"
 #include "tests/alloc_count.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
 
@@ -19,17 +20,7 @@ namespace {
 
 constexpr int64_t mm = kNmPerMm;
 
-struct Rng {
-  uint64_t s;
-  explicit Rng(uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ull + 7) {}
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using t::Rng;
 
 Camera with_angles(Camera c, int32_t az_mdeg, int32_t el_mdeg) {
   c.azimuth_bam = bam_from_mdeg(az_mdeg);
