@@ -1,6 +1,8 @@
 // Orbit camera, presets, fit-to-stock and the per-frame maps.
 #include "display/camera.h"
 
+#include <string.h>
+
 #include "core/fixed.h"
 #include "core/trig.h"
 
