@@ -11,7 +11,8 @@
 //                6-dexel cutter (cutting excluded), over three finishing
 //                stripes: median, mean and worst time, the area redrawn
 //                (pixels of the returned rectangles) and ns per such pixel
-//   render-1k    full frame of a 1024x1024 grid at 640x480
+//   render-1k    full frame of a 1024x1024 block (not milled: zig milling it
+//                would take the bench most of a minute), both sizes
 //
 // The zig milling: x-parallel stripes one dexel apart, the tool tip following
 // a smooth relief, lifted between stripes (the lift is not cut).
