@@ -1,6 +1,8 @@
 // Orbit camera, presets, fit-to-stock and the per-frame maps.
 #include "display/camera.h"
 
+#include <string.h>
+
 #include "core/fixed.h"
 #include "core/trig.h"
 
@@ -122,7 +124,7 @@ void camera_fit(Camera* c, const BoxNm& box, int32_t width, int32_t height) {
   if (w < h) half_angle = atan2_bam(static_cast<int64_t>(v.sin_q30) * w, static_cast<int64_t>(v.cos_q30) * h);
   const SinCosQ30 s = sincos_bam(half_angle);
   const int64_t radius = length3(half[0], half[1], half[2]);
-  c->distance_nm = max_of<int64_t>(1, muldiv_round(radius, static_cast<int64_t>(105) * kOneQ30, 100 * static_cast<int64_t>(max_of(s.sin_q30, 1))));
+  c->distance_nm = max_of<int64_t>(1, muldiv_round(radius, static_cast<int64_t>(105) * kOneQ30, 100 * static_cast<int64_t>(max_of<int32_t>(s.sin_q30, 1))));
 }
 
 void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32_t height, View* v) {
@@ -203,7 +205,7 @@ void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32
     const SinCosQ30 f = sincos_bam(fov / 2);
     p.cx_q4 = static_cast<int32_t>(w16 / 2);
     p.cy_q4 = static_cast<int32_t>(h16 / 2);
-    p.focal_q4 = max_of<int64_t>(1, muldiv_round(h16 / 2, f.cos_q30, max_of(f.sin_q30, 1)));
+    p.focal_q4 = max_of<int64_t>(1, muldiv_round(h16 / 2, f.cos_q30, max_of<int32_t>(f.sin_q30, 1)));
     p.near_u = static_cast<int32_t>(near_u);
     const int64_t range = kDepthMax - 2 * kDepthMargin;
     p.depth_bn = muldiv_round(range, far_u, far_u - near_u);

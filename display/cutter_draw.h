@@ -7,6 +7,8 @@
 // slope between neighbouring rings (radial on the shaft, up on the cap).
 // Every vertex lies inside the tool's bounding box, which is what the
 // incremental redraw projects to find the screen area the cutter can touch.
+// A tool drawn small uses every 2nd or 3rd segment (12 or 8 around), chosen
+// from its box on the screen: under 24 pixels across 8, under 48 12.
 #ifndef DEXMILL_DISPLAY_CUTTER_DRAW_H
 #define DEXMILL_DISPLAY_CUTTER_DRAW_H
 
@@ -48,6 +50,7 @@ struct CutterMesh {
   RasterVertex screen[kCutterVertices];  // valid where oc == 0
   uint8_t oc[kCutterVertices];
   ScreenRect rect;  // pixels it can touch (the whole frame when any bound leaves the guard band)
+  int step;         // segments used: every step-th of kCutterSegments
 };
 
 // Shades of the solid's vertices under a light (a directional light and a
@@ -56,7 +59,9 @@ void cutter_light(const CutterShape& s, const Lighting& l, CutterMesh* m);
 // Places the lit solid with its tip at `tip`.
 void cutter_place(const CutterShape& s, const View& v, PointNm tip, int32_t width, int32_t height, CutterMesh* m);
 
-// The pixels the tool's bounding box covers (what cutter_place puts in rect).
+// Pixels the tool can cover (what cutter_place puts in rect): orthographic,
+// its axis's projection widened by the radius; perspective, its bounding
+// box's.
 ScreenRect cutter_rect(const CutterShape& s, const View& v, PointNm tip, int32_t width, int32_t height);
 
 // Draws the placed solid into t (with t's clip and LUT).

@@ -58,7 +58,9 @@ class CellDrawer {
     const ScreenRect& clip = p_.target->clip;
     const int32_t xlo = clip.x0 * kSubpixelOne + kSubpixelOne / 2, xhi = (clip.x1 - 1) * kSubpixelOne + kSubpixelOne / 2;
     const int32_t ylo = clip.y0 * kSubpixelOne + kSubpixelOne / 2, yhi = (clip.y1 - 1) * kSubpixelOne + kSubpixelOne / 2;
-    cull = cull && !p_.bottoms;
+    // Skipping a cell by its top corners is only right when it draws nothing
+    // else; the row windows below use heights that include bottoms.
+    const bool cull_tops = cull && !p_.bottoms;
     // Cells [ca, cb) of each cell row (relative to c.i0) that can reach the
     // clip rectangle, and the dexels [va, vb] of each vertex row they use.
     int32_t ca[kBlockCells], cb[kBlockCells], va[kBlockCells + 1], vb[kBlockCells + 1];
@@ -105,7 +107,7 @@ class CellDrawer {
         const int32_t a = i_desc ? cb[r] - 1 - m : ca[r] + m;
         Corner* q[4] = {&lo[a], &lo[a + 1], &hi[a + 1], &hi[a]};
         const int mask = q[0]->material | q[1]->material << 1 | q[2]->material << 2 | q[3]->material << 3;
-        if (mask == 15 && cull && (q[0]->top.oc | q[1]->top.oc | q[2]->top.oc | q[3]->top.oc) == 0) {
+        if (mask == 15 && cull_tops && (q[0]->top.oc | q[1]->top.oc | q[2]->top.oc | q[3]->top.oc) == 0) {
           // A cell of top triangles only, every pixel centre it holds
           // outside the clip rectangle: skip it (the rasterizer would).
           const RasterVertex& v0 = q[0]->top.r;

@@ -38,8 +38,9 @@ struct Tri {
 inline void edge(Tri* t, int k, const RasterVertex& p, const RasterVertex& q, int64_t px, int64_t py) {
   const int64_t ex = static_cast<int64_t>(q.x_q4) - p.x_q4, ey = static_cast<int64_t>(q.y_q4) - p.y_q4;
   // Top-left rule for counterclockwise-on-screen triangles (y down): left
-  // edges run downwards, top edges run leftwards.
-  t->bias[k] = (ey > 0 || (ey == 0 && ex < 0)) ? 0 : 1;
+  // edges run downwards, top edges run leftwards; the others lose centres
+  // exactly on them.
+  t->bias[k] = (ey < 0) | ((ey == 0) & (ex >= 0));
   t->e[k] = (px - p.x_q4) * ey - (py - p.y_q4) * ex - t->bias[k];
   t->dx[k] = ey * kSubpixelOne;
   t->dy[k] = -ex * kSubpixelOne;
@@ -153,6 +154,7 @@ struct SpanFill {
   Plane z, s;
   int32_t y_row;  // the row z.row and s.row hold
   bool ready;
+  uint32_t written;
 
   void operator()(int32_t y, int32_t x0, int32_t x1) {
     if (!ready) {
@@ -173,9 +175,7 @@ struct SpanFill {
     const uint32_t dx = static_cast<uint32_t>(x0 - tri->bx0);
     uint32_t zv = z.row + zg * dx, sv = s.row + sg * dx;
     const uint32_t* lut = t->lut;
-    uint64_t written = 0;
     for (int32_t x = x0; x < x1; ++x, zv += zg, sv += sg) written += fragment(cp + x, zp + x, zv, sv, lut);
-    t->stats.pixels_written += written;
   }
 };
 
@@ -190,38 +190,50 @@ struct SpanCount {
 
 template <class Pix, class Z>
 void fill(RasterTarget* t, const Tri& tri) {
-  SpanFill<Pix, Z> f{t, &tri, {}, {}, tri.by0, false};
+  SpanFill<Pix, Z> f{t, &tri, {}, {}, tri.by0, false, 0};
   spans(tri, f);
+  t->stats.pixels_written += f.written;
 }
 
-// A triangle whose unclipped bounding box holds one pixel centre: the
-// coverage test at that centre, and the attributes by barycentric weights
-// (the weights are the unbiased edge values over area2, so the values are
-// convex combinations of the vertices'). Chosen from the unclipped box, so a
-// pixel gets the same value whatever the clip rectangle.
+// A triangle whose unclipped bounding box holds at most 3 x 3 pixel centres
+// (most triangles of a fine grid): the coverage test at each centre, and the
+// attributes by barycentric weights, with no plane to set up. The weights
+// are the unbiased edge values over area2, so the values are convex
+// combinations of the vertices'; truncating towards vertex 0 keeps them
+// there, and the shade gets the plane path's half-step bias. The path is
+// chosen from the unclipped box, so a pixel gets the same value whatever
+// the clip rectangle.
 template <class Pix, class Z>
-void single(RasterTarget* t, const Tri& tri) {
-  if ((tri.e[0] | tri.e[1] | tri.e[2]) < 0) return;
-  const int64_t w1 = tri.e[1] + tri.bias[1], w2 = tri.e[2] + tri.bias[2];
+void small(RasterTarget* t, const Tri& tri) {
   const RasterVertex& a = *tri.v[0];
   const RasterVertex& b = *tri.v[1];
   const RasterVertex& c = *tri.v[2];
-  // The box is under 2 pixels each way: |w| < 2^11 and area2 < 2^11.
-  // Truncating towards vertex 0 keeps the values between the vertices'; the
-  // shade gets the same half-step bias as the plane path.
+  // The box is under 4 pixels each way: |w| <= area2 < 2^13, so the
+  // products below stay under 2^46.
   constexpr int64_t kZOne = static_cast<int64_t>(1) << kDepthFrac, kSOne = static_cast<int64_t>(1) << kShadeFrac;
-  const int64_t z = (w1 * (b.depth - a.depth) + w2 * (c.depth - a.depth)) * kZOne / tri.area2;
-  const int64_t s = (w1 * (b.shade - a.shade) + w2 * (c.shade - a.shade)) * kSOne / tri.area2;
-  const uint32_t zv = static_cast<uint32_t>(a.depth * kZOne + z);
-  const uint32_t sv = static_cast<uint32_t>(a.shade * kSOne + kSOne / 2 + s);
-  Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(tri.by0) * t->color_stride) + tri.bx0;
-  Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(tri.by0) * t->z_stride) + tri.bx0;
-  t->stats.pixels_written += fragment(cp, zp, zv, sv, t->lut);
+  const int64_t dz1 = (b.depth - a.depth) * kZOne, dz2 = (c.depth - a.depth) * kZOne;
+  const int64_t ds1 = (b.shade - a.shade) * kSOne, ds2 = (c.shade - a.shade) * kSOne;
+  const int64_t z0 = a.depth * kZOne, s0 = a.shade * kSOne + kSOne / 2;
+  uint32_t written = 0;
+  int64_t r0 = tri.e[0], r1 = tri.e[1], r2 = tri.e[2];
+  for (int32_t y = tri.by0; y <= tri.by1; ++y, r0 += tri.dy[0], r1 += tri.dy[1], r2 += tri.dy[2]) {
+    Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(y) * t->color_stride);
+    Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(y) * t->z_stride);
+    int64_t e0 = r0, e1 = r1, e2 = r2;
+    for (int32_t x = tri.bx0; x <= tri.bx1; ++x, e0 += tri.dx[0], e1 += tri.dx[1], e2 += tri.dx[2]) {
+      if ((e0 | e1 | e2) < 0) continue;
+      const int64_t w1 = e1 + tri.bias[1], w2 = e2 + tri.bias[2];
+      const uint32_t zv = static_cast<uint32_t>(z0 + (w1 * dz1 + w2 * dz2) / tri.area2);
+      const uint32_t sv = static_cast<uint32_t>(s0 + (w1 * ds1 + w2 * ds2) / tri.area2);
+      written += fragment(cp + x, zp + x, zv, sv, t->lut);
+    }
+  }
+  t->stats.pixels_written += written;
 }
 
 template <class Pix, class Z>
-void draw(RasterTarget* t, const Tri& tri, bool one) {
-  if (one) single<Pix, Z>(t, tri);
+void draw(RasterTarget* t, const Tri& tri, bool is_small) {
+  if (is_small) small<Pix, Z>(t, tri);
   else fill<Pix, Z>(t, tri);
 }
 
@@ -240,7 +252,7 @@ void raster_triangle(RasterTarget* t, const RasterVertex& a, const RasterVertex&
   tri.by0 = first_centre(min3(a.y_q4, b.y_q4, c.y_q4));
   tri.by1 = last_centre(max3(a.y_q4, b.y_q4, c.y_q4));
   if (tri.by0 > tri.by1) return;
-  const bool one = tri.bx0 == tri.bx1 && tri.by0 == tri.by1;
+  const bool is_small = tri.bx1 - tri.bx0 <= 2 && tri.by1 - tri.by0 <= 2;
   tri.bx0 = max_of(tri.bx0, t->clip.x0);
   tri.bx1 = min_of(tri.bx1, t->clip.x1 - 1);
   tri.by0 = max_of(tri.by0, t->clip.y0);
@@ -267,11 +279,11 @@ void raster_triangle(RasterTarget* t, const RasterVertex& a, const RasterVertex&
   }
   const bool c565 = t->format == PixelFormat::kRgb565, z16 = t->zformat == ZFormat::kZ16;
   if (c565) {
-    if (z16) draw<uint16_t, uint16_t>(t, tri, one);
-    else draw<uint16_t, uint32_t>(t, tri, one);
+    if (z16) draw<uint16_t, uint16_t>(t, tri, is_small);
+    else draw<uint16_t, uint32_t>(t, tri, is_small);
   } else {
-    if (z16) draw<uint32_t, uint16_t>(t, tri, one);
-    else draw<uint32_t, uint32_t>(t, tri, one);
+    if (z16) draw<uint32_t, uint16_t>(t, tri, is_small);
+    else draw<uint32_t, uint32_t>(t, tri, is_small);
   }
 }
 

@@ -9,8 +9,9 @@
 // a pixel is covered never depends on the clip rectangle.
 //
 // Each row's covered pixels form one span [x0, x1), filled left to right with
-// the depth test; a triangle whose bounding box holds a single pixel centre
-// (common on fine grids) takes a shorter path with the same coverage rule.
+// the depth test; a triangle whose bounding box holds at most 3 x 3 pixel
+// centres (most of them on fine grids) takes a shorter path with the same
+// coverage rule and barycentric attributes.
 //
 // Attributes (depth and shade) are planes a + gx*x + gy*y with integer
 // gradients rounded once per triangle; the value at a pixel is a function of

@@ -12,8 +12,8 @@ void block_heights(const DexelGrid<H>& g, int32_t bx, int32_t by, bool bottoms, 
   if (!bottoms) {
     // Side faces start at a material dexel of a cell with a hole corner: a
     // hole within one dexel of the block's dexels.
-    const int32_t i0 = max_of(c.i0 - 1, 0), i1 = min_of(c.i1 + 1, g.nx - 1);
-    const int32_t j0 = max_of(c.j0 - 1, 0), j1 = min_of(c.j1 + 1, g.ny - 1);
+    const int32_t i0 = max_of<int32_t>(c.i0 - 1, 0), i1 = min_of<int32_t>(c.i1 + 1, g.nx - 1);
+    const int32_t j0 = max_of<int32_t>(c.j0 - 1, 0), j1 = min_of<int32_t>(c.j1 + 1, g.ny - 1);
     for (int32_t j = j0; j <= j1 && !bottoms; ++j) {
       const H* t = g.top + g.index(0, j);
       const H* b = g.bottom + g.index(0, j);

@@ -53,7 +53,7 @@ void block_heights(const DexelGrid<H>& g, int32_t bx, int32_t by, bool bottoms, 
 ScreenRect box_rect(const View& v, int32_t i0, int32_t j0, int32_t i1, int32_t j1, int64_t zlo, int64_t zhi,
                     int32_t width, int32_t height);
 
-constexpr int32_t kTileSide = 8;
+constexpr int32_t kTileSide = 4;
 constexpr int kMaxDirtyRects = 32;
 
 struct TileMap {

@@ -34,7 +34,7 @@ uint32_t background_row(const Renderer<H>& r, int32_t y) {
   const Rgb a = r.opt.background_top;
   if (!r.opt.gradient) return pixel_pack(r.fb.format, a);
   const Rgb b = r.opt.background_bottom;
-  const int32_t d = max_of(r.fb.height - 1, 1);
+  const int32_t d = max_of<int32_t>(r.fb.height - 1, 1);
   auto mix = [&](int32_t u, int32_t v) { return static_cast<uint8_t>(u + ((v - u) * y + (v > u ? d / 2 : -d / 2)) / d); };
   return pixel_pack(r.fb.format, Rgb{mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)});
 }
@@ -66,12 +66,6 @@ template <class H>
 void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bool cutter) {
   RasterTarget* t = &r->target;
   t->clip = rect;
-  if (r->table_visible) {
-    t->lut = r->lut_table;
-    const ClipVertex* q = r->table_quad;
-    clip_draw_triangle(t, r->view.proj, q[0], q[1], q[2]);
-    clip_draw_triangle(t, r->view.proj, q[0], q[2], q[3]);
-  }
   t->lut = r->lut_work;
   MeshPass<H> pass;
   pass.grid = &g;
@@ -85,13 +79,19 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
     for (int32_t m = 0; m < r->bnx; ++m) {
       const int32_t bx = r->i_desc ? r->bnx - 1 - m : m;
       const BlockInfo& b = r->blocks[static_cast<size_t>(by) * r->bnx + bx];
-      if (b.zlo_lsb > b.zhi_lsb) continue;
-      const ScreenRect br{b.x0, b.y0, b.x1, b.y1};
-      const ScreenRect in = rect_intersect(rect, br);
-      if (in.empty()) continue;
-      const bool inside = in.x0 == br.x0 && in.y0 == br.y0 && in.x1 == br.x1 && in.y1 == br.y1;
+      if (b.zlo_lsb > b.zhi_lsb || b.x1 <= rect.x0 || b.x0 >= rect.x1 || b.y1 <= rect.y0 || b.y0 >= rect.y1) continue;
+      const bool inside = b.x0 >= rect.x0 && b.x1 <= rect.x1 && b.y0 >= rect.y0 && b.y1 <= rect.y1;
       mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
+  }
+  // The table lies wholly behind the stock (below its bottom, seen from
+  // above), so drawing it after the stock changes no pixel and skips the
+  // colour writes under the stock.
+  if (r->table_visible) {
+    t->lut = r->lut_table;
+    const ClipVertex* q = r->table_quad;
+    clip_draw_triangle(t, r->view.proj, q[0], q[1], q[2]);
+    clip_draw_triangle(t, r->view.proj, q[0], q[2], q[3]);
   }
   if (cutter && !rect_intersect(rect, r->cutter.rect).empty()) {
     t->lut = r->lut_cutter;
@@ -263,13 +263,16 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   RenderResult res;
   if (g->nx != r->nx || g->ny != r->ny) return res;
   r->target.stats = RasterStats{};
-  const GridRect d{max_of(g->dirty.i0, 0), max_of(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx), min_of(g->dirty.j1, g->ny)};
+  const GridRect d{max_of<int32_t>(g->dirty.i0, 0), max_of<int32_t>(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx),
+                   min_of(g->dirty.j1, g->ny)};
   if (!d.empty()) {
     // Shades reach two dexels past a change (gradient, then blur), and a
     // cell draws from its four corners.
-    const GridRect s{max_of(d.i0 - 2, 0), max_of(d.j0 - 2, 0), min_of(d.i1 + 2, g->nx), min_of(d.j1 + 2, g->ny)};
+    const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
+                     min_of<int32_t>(d.j1 + 2, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
-    const GridRect cells{max_of(s.i0 - 1, 0), max_of(s.j0 - 1, 0), min_of(s.i1, g->nx - 1), min_of(s.j1, g->ny - 1)};
+    const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
+                         min_of<int32_t>(s.j1, g->ny - 1)};
     const int32_t bx0 = cells.i0 / kBlockCells, bx1 = (cells.i1 - 1) / kBlockCells;
     const int32_t by0 = cells.j0 / kBlockCells, by1 = (cells.j1 - 1) / kBlockCells;
     // The cells' heights before and after: their blocks' ranges.

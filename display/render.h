@@ -5,7 +5,7 @@
 //
 // Set-up, all memory the caller's (nothing here allocates):
 //
-//   static Renderer<height_t> r;                       // ~20 KB of state
+//   static Renderer<height_t> r;                       // about 18 KB of state
 //   FrameView fb{pixels, 480, 272, 480 * 2, PixelFormat::kRgb565};
 //   RenderOptions opt;                                  // defaults are fine
 //   size_t n = renderer_scratch_bytes(grid, fb.width, fb.height, opt.zformat);
@@ -22,11 +22,14 @@
 //
 // render_update repaints only the screen area that the grid's dirty
 // rectangle (which it consumes and clears) and the cutter's old and new
-// positions can touch; the pixels come out bit-identical to render_full of
-// the same scene. It falls back to render_full after set-up or a camera or
-// tool change. The stock's size (its highest top) is taken at
-// renderer_init; afterwards the grid may only be cut (not re-stocked) until
-// the next renderer_init.
+// positions can touch (the old one is where the renderer last drew it; pass
+// the new one, or visible = false to hide the tool); the pixels come out
+// bit-identical to render_full of the same scene. It falls back to
+// render_full after set-up or a camera or tool change. The rectangles it
+// returns (at most kMaxDirtyRects, on the 4-pixel tile grid, overlapping
+// when many) cover every pixel that changed. The stock's size (its highest
+// top) is taken at renderer_init; afterwards the grid may only be cut (not
+// re-stocked) until the next renderer_init.
 #ifndef DEXMILL_DISPLAY_RENDER_H
 #define DEXMILL_DISPLAY_RENDER_H
 

@@ -42,7 +42,7 @@ inline int32_t cos_q14(int64_t dot, ScaledRecip r) {
 }  // namespace
 
 int32_t shade_of_normal(const Lighting& l, const UnitQ14& n) {
-  return index_of(l, max_of(0, dot_q14(n, l.light)), max_of(0, dot_q14(n, l.half)));
+  return index_of(l, max_of<int32_t>(0, dot_q14(n, l.light)), max_of<int32_t>(0, dot_q14(n, l.half)));
 }
 
 int32_t shade_of_vector(const Lighting& l, int64_t nx, int64_t ny, int64_t nz) {
@@ -65,13 +65,13 @@ int32_t shade_base_index(const Lighting& l) {
 }
 
 void shade_ramp(PixelFormat f, Rgb c, int32_t base, uint32_t lut[256]) {
-  base = clamp(base, 1, 255);
+  base = clamp<int32_t>(base, 1, 255);
   const int32_t ch[3] = {c.r, c.g, c.b};
   for (int32_t i = 0; i < 256; ++i) {
     int32_t o[3];
     for (int k = 0; k < 3; ++k) {
       if (i <= base) o[k] = (ch[k] * i + base / 2) / base;
-      else o[k] = ch[k] + ((255 - ch[k]) * (i - base) + (255 - base) / 2) / max_of(255 - base, 1);
+      else o[k] = ch[k] + ((255 - ch[k]) * (i - base) + (255 - base) / 2) / max_of<int32_t>(255 - base, 1);
     }
     lut[i] = pixel_pack(f, Rgb{static_cast<uint8_t>(o[0]), static_cast<uint8_t>(o[1]), static_cast<uint8_t>(o[2])});
   }
@@ -83,7 +83,7 @@ void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, 
   int64_t sx = 0, sy = 0;
   for (int32_t b = -1; b <= 1; ++b) {
     for (int32_t a = -1; a <= 1; ++a) {
-      const int32_t ii = clamp(i + a, 0, g.nx - 1), jj = clamp(j + b, 0, g.ny - 1);
+      const int32_t ii = clamp<int32_t>(i + a, 0, g.nx - 1), jj = clamp<int32_t>(j + b, 0, g.ny - 1);
       const GradientLsb n = grid_gradient(g, ii, jj);
       sx += kW[a + 1] * kW[b + 1] * n.dx;
       sy += kW[a + 1] * kW[b + 1] * n.dy;
@@ -95,8 +95,8 @@ void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, 
 
 template <class H>
 void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache* cache) {
-  r.i0 = max_of(r.i0, 0);
-  r.j0 = max_of(r.j0, 0);
+  r.i0 = max_of<int32_t>(r.i0, 0);
+  r.j0 = max_of<int32_t>(r.j0, 0);
   r.i1 = min_of(r.i1, g.nx);
   r.j1 = min_of(r.j1, g.ny);
   const int64_t dz16 = 16 * div_round(2 * g.pitch_nm, g.lsb_nm);  // eq. 1's constant, times the kernel's weight

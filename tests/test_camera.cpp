@@ -5,6 +5,7 @@
 
 #include "core/trig.h"
 #include "display/camera.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -14,16 +15,7 @@ namespace {
 constexpr int64_t mm = kNmPerMm;
 constexpr double kPi = 3.14159265358979323846;
 
-struct Rng {
-  uint64_t s = 0x1234567;
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using t::Rng;
 
 // A 100 x 60 x 30 mm scene around a 200 x 120 grid of 0.5 mm.
 SceneFrame scene() {

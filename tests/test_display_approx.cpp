@@ -5,29 +5,14 @@
 #include <initializer_list>
 
 #include "display/approx.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
 
 namespace {
 
-// xorshift64*: deterministic test inputs.
-struct Rng {
-  uint64_t s = 0x9E3779B97F4A7C15ull;
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  // Log-uniform in [1, 2^32): every octave as often.
-  uint32_t u32_log() {
-    const int bits = 1 + static_cast<int>(next() % 32);
-    uint32_t v = static_cast<uint32_t>(next() >> 32);
-    v = bits == 32 ? v : (v & ((1u << bits) - 1)) | (1u << (bits - 1));
-    return v ? v : 1;
-  }
-};
+using t::Rng;
 
 double value(ScaledRecip r) { return std::ldexp(static_cast<double>(r.m), -r.shift); }
 

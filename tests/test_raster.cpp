@@ -7,23 +7,14 @@
 
 #include "display/clip.h"
 #include "display/raster.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
 
 namespace {
 
-struct Rng {
-  uint64_t s;
-  explicit Rng(uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ull + 1) {}
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using t::Rng;
 
 // A frame with colour and depth, XRGB8888 and 32-bit depth.
 struct Canvas {
@@ -111,7 +102,7 @@ struct MeshCase {
   int32_t jitter;
 };
 const MeshCase kMeshCases[] = {
-    {40, 40, 16 * 60 + 8, 16 * 50 + 8, 80, 70, 2},      // cells under a pixel: the single-pixel path
+    {40, 40, 16 * 60 + 8, 16 * 50 + 8, 80, 70, 2},      // cells under a pixel: the small-triangle path
     {37, 21, 16 * 150 + 3, 16 * 100 + 13, 40, 30, 12},  // a few pixels each
     {8, 8, 16 * 180 + 8, 16 * 120 + 8, 3, 2, 200},      // wide triangles: the analytic span path
     {8, 8, 16 * 100 + 8, 16 * 80 + 8, 25, 20, 0},       // vertices on pixel centres: edges through centres
@@ -224,11 +215,11 @@ TEST(clipping_changes_no_pixel) {
 TEST(interpolation_against_double_oracle) {
   // Depth and shade at every covered pixel against barycentric interpolation
   // in double: depth within 2^-7 * (1 + pixels from vertex 0) + 1/2 units
-  // (gradients truncated per pixel, the single-pixel path rounds once),
+  // (gradients truncated per pixel, the small-triangle path rounds once),
   // shade index within 1 of the exact value.
   Rng rng(4);
   double worst_z = 0, worst_s = 0;
-  for (int rep = 0; rep < 400; ++rep) {
+  for (int rep = 0; rep < 2000; ++rep) {
     Canvas c(64, 64);
     const int32_t size = int32_t(rng.range(10, 16 * 64));
     RasterVertex p[3];
@@ -237,6 +228,13 @@ TEST(interpolation_against_double_oracle) {
             int32_t(rng.range(kDepthMargin, kDepthMax - kDepthMargin)), int32_t(rng.range(0, 255)));
     p[1].x_q4 = p[0].x_q4 + int32_t(rng.range(-size, size));
     p[2].y_q4 = p[0].y_q4 + int32_t(rng.range(-size, size));
+    if (rep % 2) {
+      // Within 3 pixels of vertex 0: the small-triangle path.
+      for (int k = 1; k < 3; ++k) {
+        p[k].x_q4 = p[0].x_q4 + int32_t(rng.range(-24, 24));
+        p[k].y_q4 = p[0].y_q4 + int32_t(rng.range(-24, 24));
+      }
+    }
     if (area2(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
     const double A = double(area2(p[0], p[1], p[2]));
     if (A == 0) continue;

@@ -7,22 +7,14 @@
 
 #include "core/grid.h"
 #include "display/shade.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
 
 namespace {
 
-struct Rng {
-  uint64_t s = 0xABCDEF;
-  uint64_t next() {
-    s ^= s >> 12;
-    s ^= s << 25;
-    s ^= s >> 27;
-    return s * 2685821657736338717ull;
-  }
-  int64_t range(int64_t lo, int64_t hi) { return lo + static_cast<int64_t>(next() % static_cast<uint64_t>(hi - lo + 1)); }
-};
+using t::Rng;
 
 Lighting light(Rng* rng) {
   Lighting l;
