@@ -4,21 +4,24 @@
 // the reference output; tools/scripts/panel.sh requires every line that does
 // not start with "info" to be identical.
 //
-// Pipeline (DESIGN.md "One pipeline"): program source -> canonical motion
-// records (core/canon.h) -> CutSink (stamping, paper §2.3) -> static dexel
-// grid -> grid hash -> [frame render + frame hash: see FRAME below].
+// Pipeline (DESIGN.md "One pipeline"): G-code text in flash -> interpreter
+// (core/interp.h) -> canonical records -> Mill (core/mill.h, exact sweeps)
+// -> static dexel grid -> renderer (display/render.h) -> a 480x272 RGB565
+// frame in a static framebuffer -> its hash.
 //
-// Everything lives in static memory sized at compile time; the move list is
-// const data in flash. No heap, no stdio, integer only.
+// Everything lives in static memory sized at compile time. No heap, no
+// stdio, integer only.
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
-#include "core/canon.h"
 #include "core/config.h"
 #include "core/cutter.h"
 #include "core/grid.h"
-#include "core/stamp.h"
+#include "core/interp.h"
+#include "core/mill.h"
 #include "core/tool.h"
+#include "display/render.h"
 #include "tests/golden/board.h"
 #include "tests/golden/golden_out.h"
 
@@ -61,144 +64,135 @@ constexpr size_t cutter_words_for(int i) {
 }
 constexpr size_t kCutterWords = cutter_words_for(0);
 int32_t g_cutter_words[kCutterWords];
-CutterDexels g_cutters[kToolCount];
 
-// ---- the demo program: const data in flash ----------------------------------
-// One record per canonical command, positions in um. It stands in for G-code
-// text in flash until the reader (core/gcode*, core/interp*) lands; then
-// play_program() parses the text instead and emits into the same CanonSink.
-struct DemoMove {
-  CanonKind kind;
-  int32_t arg;             // kToolChange: tool number; kSpindle: rpm
-  int32_t x_um, y_um, z_um;  // kTraverse, kFeed: end point
-};
-constexpr CanonKind G0 = CanonKind::kTraverse, G1 = CanonKind::kFeed, M6 = CanonKind::kToolChange;
-constexpr int32_t kSafeZ = 25000;
-const DemoMove kDemo[] = {
-    {M6, 1, 0, 0, 0}, {CanonKind::kSpindle, 12000, 0, 0, 0},
-    // T1: ramp into a 28 x 16 mm pocket 4 mm deep, zig-zag, then a deeper
-    // inner pocket, then four through holes
-    {G0, 0, 10000, 8000, kSafeZ}, {G1, 0, 10000, 8000, 21000}, {G1, 0, 20000, 8000, 16000},
-    {G1, 0, 38000, 8000, 16000}, {G1, 0, 38000, 12000, 16000}, {G1, 0, 10000, 12000, 16000},
-    {G1, 0, 10000, 16000, 16000}, {G1, 0, 38000, 16000, 16000}, {G1, 0, 38000, 20000, 16000},
-    {G1, 0, 10000, 20000, 16000}, {G1, 0, 10000, 24000, 16000}, {G1, 0, 38000, 24000, 16000},
-    {G0, 0, 38000, 24000, kSafeZ},
-    {G0, 0, 16000, 13000, kSafeZ}, {G1, 0, 16000, 13000, 13000}, {G1, 0, 32000, 13000, 13000},
-    {G1, 0, 32000, 19000, 13000}, {G1, 0, 16000, 19000, 13000}, {G1, 0, 16000, 13000, 13000},
-    {G0, 0, 16000, 13000, kSafeZ},
-    {G0, 0, 4000, 4000, kSafeZ}, {G1, 0, 4000, 4000, -1000}, {G0, 0, 4000, 4000, kSafeZ},
-    {G0, 0, 44000, 4000, kSafeZ}, {G1, 0, 44000, 4000, -1000}, {G0, 0, 44000, 4000, kSafeZ},
-    {G0, 0, 44000, 28000, kSafeZ}, {G1, 0, 44000, 28000, -1000}, {G0, 0, 44000, 28000, kSafeZ},
-    {G0, 0, 4000, 28000, kSafeZ}, {G1, 0, 4000, 28000, -1000}, {G0, 0, 4000, 28000, kSafeZ},
-    // T4: a contour around the pocket, 5 mm deep
-    {M6, 4, 0, 0, 0},
-    {G0, 0, 7000, 5000, kSafeZ}, {G1, 0, 7000, 5000, 15000}, {G1, 0, 41000, 5000, 15000},
-    {G1, 0, 41000, 27000, 15000}, {G1, 0, 7000, 27000, 15000}, {G1, 0, 7000, 5000, 15000},
-    {G0, 0, 7000, 5000, kSafeZ},
-    // T2: finishing ramps across the pocket floor
-    {M6, 2, 0, 0, 0},
-    {G0, 0, 12000, 14000, kSafeZ}, {G1, 0, 12000, 14000, 16000}, {G1, 0, 36000, 18000, 13500},
-    {G1, 0, 12000, 22000, 14500}, {G1, 0, 36000, 10500, 15250}, {G0, 0, 36000, 10500, kSafeZ},
-    // T3: engraving on the top face, 0.8 mm deep, and one stroke over the edge
-    {M6, 3, 0, 0, 0},
-    {G0, 0, 9000, 30000, kSafeZ}, {G1, 0, 9000, 30000, 19200}, {G1, 0, 15000, 30000, 19200},
-    {G1, 0, 17000, 28600, 19200}, {G1, 0, 19000, 31000, 19200}, {G1, 0, 21000, 28600, 19200},
-    {G1, 0, 23000, 31000, 19200}, {G1, 0, 39000, 30500, 19400}, {G1, 0, 46000, 33500, 19200},
-    {G0, 0, 46000, 33500, kSafeZ},
-    {CanonKind::kEnd, 0, 0, 0, 0},
-};
-constexpr int kDemoCount = static_cast<int>(sizeof kDemo / sizeof kDemo[0]);
+// ---- the demo program: G-code text in flash ---------------------------------
+// T1 ramps into a pocket and zig-zags it, cuts an inner pocket with arcs,
+// drills four through holes with a canned cycle; T4 contours the pocket;
+// T2 finishes with ramps and a helix; T3 engraves the top face.
+const char kProgram[] =
+    "%\n"
+    "(dexmill panel demo: 48 x 32 x 20 mm block)\n"
+    "G21 G90 G17 G94\n"
+    "T1 M6\n"
+    "S12000 M3\n"
+    "G0 X10 Y8 Z25\n"
+    "G1 Z21 F400\n"
+    "G1 X20 Z16 F900\n"
+    "G1 X38\n"
+    "Y12\n"
+    "X10\n"
+    "Y16\n"
+    "X38\n"
+    "Y20\n"
+    "X10\n"
+    "Y24\n"
+    "X38\n"
+    "G0 Z25\n"
+    "G0 X18 Y13\n"
+    "G1 Z13 F400\n"
+    "G1 X30 F900\n"
+    "G3 X30 Y19 R3\n"
+    "G1 X18\n"
+    "G3 X18 Y13 R3\n"
+    "G0 Z25\n"
+    "G98 G81 X4 Y4 Z-1 R22 F300\n"
+    "X44\n"
+    "Y28\n"
+    "X4\n"
+    "G80\n"
+    "T4 M6\n"
+    "G0 X7 Y5 Z25\n"
+    "G1 Z15 F400\n"
+    "G1 X41 F900\n"
+    "Y27\n"
+    "X7\n"
+    "Y5\n"
+    "G0 Z25\n"
+    "T2 M6\n"
+    "G0 X12 Y14\n"
+    "G1 Z16 F400\n"
+    "G1 X36 Y18 Z13.5 F900\n"
+    "G1 X12 Y22 Z14.5\n"
+    "G0 Z25\n"
+    "G0 X34 Y16\n"
+    "G1 Z15 F400\n"
+    "G2 X34 Y16 I-2 J0 Z13 P2\n"
+    "G0 Z25\n"
+    "T3 M6\n"
+    "G0 X9 Y30\n"
+    "G1 Z19.2 F300\n"
+    "G1 X15\n"
+    "X17 Y28.6\n"
+    "X19 Y31\n"
+    "X21 Y28.6\n"
+    "X23 Y31\n"
+    "X39 Y30.5 Z19.4\n"
+    "X46 Y33.5 Z19.2\n"
+    "G0 Z25\n"
+    "M30\n"
+    "%\n";
 
-// The program source: turns the const records into canonical records.
-void play_program(CanonSink* sink) {
-  CanonRecord r{};
-  r.start = PointNm{0, 0, mm(50)};  // machine home, above the work
-  for (int i = 0; i < kDemoCount; ++i) {
-    const DemoMove& m = kDemo[i];
-    r.kind = m.kind;
-    r.line = static_cast<uint32_t>(i + 1);
-    r.end = r.start;
-    if (m.kind == CanonKind::kTraverse || m.kind == CanonKind::kFeed) r.end = PointNm{um(m.x_um), um(m.y_um), um(m.z_um)};
-    if (m.kind == CanonKind::kToolChange) r.tool = m.arg;
-    if (m.kind == CanonKind::kSpindle) r.spindle_rpm = m.arg;
-    sink->emit(r);
-    r.start = r.end;
-  }
-}
-
-// The consumer: cuts every straight move (traverses too: a rapid through
-// material is a crash the preview must show) with the tool in the spindle.
-class CutSink final : public CanonSink {
+class PanelLibrary final : public ToolLibrary {
  public:
-  explicit CutSink(DexelGrid<height_t>* g) : grid_(g) {}
-  void emit(const CanonRecord& r) override {
-    ++records_;
-    switch (r.kind) {
-      case CanonKind::kToolChange:
-        tool_ = r.tool;
-        break;
-      case CanonKind::kTraverse:
-      case CanonKind::kFeed:
-        if (tool_ >= 1 && tool_ <= kToolCount) {
-          stamp_line(grid_, g_cutters[tool_ - 1], r.start, r.end, &stats_);
-          ++moves_;
-        } else {
-          ++skipped_;  // no tool in the spindle
-        }
-        break;
-      case CanonKind::kArc:
-        ++skipped_;  // arcs need the motion stage's arc stepping: counted, not cut
-        break;
-      default:
-        break;
-    }
+  bool tool(int32_t number, Tool* out) const override {
+    if (number < 1 || number > kToolCount) return false;
+    const PanelTool& p = kTools[number - 1];
+    Tool t;
+    t.kind = p.kind;
+    t.diameter_nm = p.diameter_nm;
+    t.corner_radius_nm = p.corner_nm;
+    t.tip_angle_mdeg = p.tip_mdeg;
+    t.flute_length_nm = mm(20);
+    t.length_nm = kToolLengthNm;
+    *out = t;
+    return true;
   }
-  CutStats stats_;
-  uint32_t records_ = 0, moves_ = 0, skipped_ = 0;
-
- private:
-  DexelGrid<height_t>* grid_;
-  int32_t tool_ = 0;
 };
 
-bool build_cutters(const DexelGrid<height_t>& g) {
-  size_t used = 0;
-  for (int t = 0; t < kToolCount; ++t) {
-    Tool tool;
-    tool.kind = kTools[t].kind;
-    tool.diameter_nm = kTools[t].diameter_nm;
-    tool.corner_radius_nm = kTools[t].corner_nm;
-    tool.tip_angle_mdeg = kTools[t].tip_mdeg;
-    tool.flute_length_nm = mm(20);
-    tool.length_nm = kToolLengthNm;
-    if (!ok(tool_check(tool))) return false;
-    const ToolProfile p = tool_profile(tool);
-    const size_t words = cutter_storage_words(cutter_reach_dex(p, g.pitch_nm));
-    if (words > kCutterWords - used) return false;
-    if (!ok(cutter_build(p, g.pitch_nm, g.lsb_nm, g_cutter_words + used, words, &g_cutters[t]))) return false;
-    used += words;
+// Feeds the program to the interpreter line by line; returns the lines in
+// error (0 expected) and the number of lines.
+int play_program(CanonSink* sink, uint32_t* lines) {
+  InterpOptions opt;
+  Interp in(sink, opt);
+  int errors = 0;
+  uint32_t line = 1;
+  const char* p = kProgram;
+  while (*p) {
+    const char* e = strchr(p, '\n');
+    GcodeDiag d;
+    if (in.execute_line(p, static_cast<size_t>(e - p), line++, &d) != GcodeError::kOk) ++errors;
+    p = e + 1;
   }
-  return true;
+  *lines = line - 1;
+  return errors;
 }
 
-// ==== FRAME: render + frame hash (to add when display/ lands) ================
-// The panel is a 480x272 RGB565 TFT (a common 4.3" controller display). Once
-// display/ provides the renderer, this function:
-//   1. owns static buffers beside the grid, sized here at compile time:
-//        uint16_t g_frame[kFrameW * kFrameH];   // RGB565, 261 120 bytes
-//        uint16_t g_zbuf[kFrameW * kFrameH];    // 16-bit z, 261 120 bytes
-//   2. renders `g` into them (a camera framing the whole block),
-//   3. prints "panel frame 480x272 rgb565 hash=<16 hex>" with the hash over
-//      the pixels as little-endian bytes (core/hash.h), never raw memory,
-//   4. brackets the render with golden::board_instructions() like the cut,
-//      and prints the count on an "info" line.
-// panel.sh compares every non-"info" line with the host build, so the frame
-// hash is checked with no change to the scripts.
+// ==== FRAME: render + frame hash ==============================================
+// The panel is a 480x272 RGB565 TFT (a common 4.3" controller display): a
+// static framebuffer and the renderer's scratch (16-bit z-buffer, shade
+// cache, block table, tiles) sized at compile time, an iso camera fitted to
+// the block, the last tool drawn at its last position.
 constexpr int32_t kFrameW = 480, kFrameH = 272;
-void render_frame(golden::Out& out, const DexelGrid<height_t>& g) {
-  (void)g;
-  out.str("panel display").kv("w", kFrameW).kv("h", kFrameH).str(" rgb565");
-  out.kv("frame_bytes", static_cast<int64_t>(kFrameW) * kFrameH * 2).str(" renderer=pending-display").end();
+uint16_t g_frame[kFrameW * kFrameH];
+constexpr size_t kScratchWords = (kFrameW * kFrameH * 2 + kNx * kNy * 2 + 64 * 1024) / 8;
+uint64_t g_scratch[kScratchWords];
+Renderer<height_t> g_renderer;
+
+bool render_frame(golden::Out& out, DexelGrid<height_t>* g, const ToolProfile& tool, PointNm tip) {
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  RenderOptions opt;
+  opt.zformat = ZFormat::kZ16;
+  const size_t need = renderer_scratch_bytes(*g, kFrameW, kFrameH, opt.zformat);
+  if (need > sizeof g_scratch || !ok(renderer_init(&g_renderer, *g, fb, opt, g_scratch, sizeof g_scratch))) {
+    out.str("panel FAIL renderer set-up").kv("scratch_needed", static_cast<int64_t>(need)).end();
+    return false;
+  }
+  renderer_set_tool(&g_renderer, &tool);
+  renderer_set_camera(&g_renderer, renderer_fit(g_renderer, ViewPreset::kIso));
+  const RenderResult res = render_full(&g_renderer, g, CutterPose{true, tip});
+  out.str("panel frame").kv("w", kFrameW).kv("h", kFrameH).str(" rgb565").kx("hash", frame_hash(fb));
+  out.kv("rects", res.nrects).kv("scratch_bytes", static_cast<int64_t>(need)).end();
+  return true;
 }
 
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
@@ -216,34 +210,37 @@ int main(int, char**) {
   DexelGrid<height_t> g;
   const int bits = static_cast<int>(sizeof(height_t) * 8);
   const GridGeometry geo{kNx, kNy, kPitchNm / 2, kPitchNm / 2, kPitchNm, 0, lsb_for_range(kRangeNm, bits)};
-  if (!ok(grid_init(&g, geo, g_top, g_bottom, static_cast<size_t>(kNx) * kNy)) || !build_cutters(g)) {
+  if (!ok(grid_init(&g, geo, g_top, g_bottom, static_cast<size_t>(kNx) * kNy))) {
     out.str("panel FAIL set-up").end();
     return 1;
   }
   grid_block_stock(&g, grid_height_of_z(g, kStockTopNm));
   out.str("panel grid").kv("nx", kNx).kv("ny", kNy).kv("m", bits).kv("pitch_nm", g.pitch_nm).kv("lsb_nm", g.lsb_nm);
-  out.kv("grid_bytes", static_cast<int64_t>(sizeof g_top + sizeof g_bottom));
-  out.kv("cutter_bytes", static_cast<int64_t>(sizeof g_cutter_words)).end();
+  out.kv("grid_bytes", static_cast<int64_t>(sizeof g_top + sizeof g_bottom)).end();
   const uint64_t t1 = golden::board_instructions();
 
-  CutSink sink(&g);
-  play_program(&sink);
+  PanelLibrary lib;
+  Mill<height_t> mill(&g, CutMode::kSweep, &lib, g_cutter_words, kCutterWords);
+  uint32_t lines = 0;
+  const int errors = play_program(&mill, &lines);
   const uint64_t t2 = golden::board_instructions();
 
   const uint64_t hash = grid_hash(g);
-  const uint64_t t3 = golden::board_instructions();
-  out.str("panel program").kv("records", sink.records_).kv("moves", sink.moves_).kv("skipped", sink.skipped_).end();
-  out.str("panel cut").kv("instances", static_cast<int64_t>(sink.stats_.instances));
-  out.kv("dexel_updates", static_cast<int64_t>(sink.stats_.dexel_updates)).end();
+  out.str("panel program").kv("lines", lines).kv("errors", errors).kv("status", static_cast<int64_t>(mill.status())).end();
+  out.str("panel cut").kv("pieces", static_cast<int64_t>(mill.stats().instances));
+  out.kv("dexel_updates", static_cast<int64_t>(mill.stats().dexel_updates)).end();
   out.str("panel grid").kx("hash", hash).end();
+  const uint64_t t3 = golden::board_instructions();
 
-  render_frame(out, g);
+  const ToolProfile prof = tool_profile(mill.tool());
+  const bool drawn = render_frame(out, &g, prof, mill.position());
+  const uint64_t t4 = golden::board_instructions();
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
-    info_instructions(out, "setup(grid+cutters)", t1 - t0, 0);
-    info_instructions(out, "cut", t2 - t1, sink.stats_.dexel_updates);
-    info_instructions(out, "grid_hash", t3 - t2, 0);
+    info_instructions(out, "setup(grid)", t1 - t0, 0);
+    info_instructions(out, "cut", t2 - t1, mill.stats().dexel_updates);
+    info_instructions(out, "render(480x272)", t4 - t3, 0);
   }
-  return 0;
+  return (errors == 0 && drawn) ? 0 : 1;
 }
