@@ -4,8 +4,9 @@
 // only. Depth-first halving of the sweep: a stretch whose bounding box (its
 // end points, widened by its bulge) misses the region is dropped whole; a
 // reachable stretch of at most 64 chords is cut into equal chords of the
-// angle core/arc_chords.h would use. No heap: a fixed stack of 96 stretches
-// (the halving depth is at most 47 for 10 000 turns).
+// angle core/arc_chords.h would use. No heap, and small enough for a
+// microcontroller's stack: 52 stretches of two angles (832 bytes; the
+// halving depth is at most 47 for 10 000 turns), end points recomputed.
 #ifndef DEXMILL_CORE_ARC_WALK_H
 #define DEXMILL_CORE_ARC_WALK_H
 
@@ -37,13 +38,16 @@ void arc_walk(const CanonRecord& arc, int64_t sagitta_nm, const RectNm& reach, F
   const uint64_t theta = (total + fine.count() - 1) / fine.count();  // chord angle, >= 1
   struct Stretch {
     uint64_t t0, t1;
-    PointNm p0, p1;
   };
-  Stretch stack[96];
+  Stretch stack[52];
   int sp = 0;
-  stack[sp++] = Stretch{0, total, arc.start, arc.end};
+  stack[sp++] = Stretch{0, total};
   while (sp > 0) {
-    const Stretch s = stack[--sp];
+    const Stretch st = stack[--sp];
+    struct {
+      uint64_t t0, t1;
+      PointNm p0, p1;
+    } s{st.t0, st.t1, st.t0 == 0 ? arc.start : geo.point_at(st.t0), geo.point_at(st.t1)};
     const uint64_t span = s.t1 - s.t0;
     // How far the curve leaves the chord p0-p1: r (1 - cos(span / 2)) below
     // half a turn (plus a margin for CORDIC), else anything up to 2r.
@@ -52,7 +56,7 @@ void arc_walk(const CanonRecord& arc, int64_t sagitta_nm, const RectNm& reach, F
       const SinCosQ30 sc = sincos_bam(static_cast<uint32_t>(span / 2));
       bulge = mul_shift(rmax, (static_cast<int64_t>(1) << 30) - sc.cos_q30 + 4, 30) + 2;
     }
-    const bool leaf = span <= 64 * theta || sp >= 94;
+    const bool leaf = span <= 64 * theta || sp >= 50;
     const int64_t xl = min_of(s.p0.x_nm, s.p1.x_nm) - bulge, xh = max_of(s.p0.x_nm, s.p1.x_nm) + bulge;
     const int64_t yl = min_of(s.p0.y_nm, s.p1.y_nm) - bulge, yh = max_of(s.p0.y_nm, s.p1.y_nm) + bulge;
     if (xh < reach.x0 || xl > reach.x1 || yh < reach.y0 || yl > reach.y1) continue;
@@ -67,9 +71,8 @@ void arc_walk(const CanonRecord& arc, int64_t sagitta_nm, const RectNm& reach, F
       continue;
     }
     const uint64_t tm = s.t0 + span / 2;
-    const PointNm pm = geo.point_at(tm);
-    stack[sp++] = Stretch{tm, s.t1, pm, s.p1};  // the later half waits
-    stack[sp++] = Stretch{s.t0, tm, s.p0, pm};
+    stack[sp++] = Stretch{tm, s.t1};  // the later half waits
+    stack[sp++] = Stretch{s.t0, tm};
   }
 }
 

@@ -11,6 +11,7 @@ const Section kSections[] = {
     {"stamp", golden_stamp},
     {"mill", golden_mill},
     {"path", golden_path},
+    {"frame", golden_frame},
     {"regress", golden_regress},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
