@@ -814,4 +814,20 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   return GcodeError::kOk;
 }
 
+uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first) {
+  uint32_t errors = 0, line = 1;
+  size_t start = 0;
+  for (size_t i = 0; i <= len; ++i) {
+    if (i < len && text[i] != '\n') continue;
+    if (i == len && start == len) break;  // no empty line after a final '\n'
+    GcodeDiag d;
+    if (in->execute_line(text + start, i - start, line, &d) != GcodeError::kOk) {
+      if (errors++ == 0 && first) *first = d;
+    }
+    ++line;
+    start = i + 1;
+  }
+  return errors;
+}
+
 }  // namespace dexmill

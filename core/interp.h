@@ -122,6 +122,12 @@ class Interp {
   friend struct BlockRunner;
 };
 
+// Runs a whole program held in memory (a panel keeps it in flash): the
+// lines of text[0, len) split at '\n', numbered from 1. Returns the number
+// of lines in error (each skipped, as `dexmill check` does); *first gets the
+// first error when not null.
+uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first);
+
 }  // namespace dexmill
 
 #endif

@@ -10,23 +10,15 @@
 #include "core/stamp.h"
 #include "core/tool.h"
 #include "tests/alloc_count.h"
+#include "tests/cut_fixtures.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
 
 namespace {
 
-constexpr int64_t mm(int64_t v) { return v * kNmPerMm; }
-
-template <class H>
-struct TestGrid {
-  std::vector<H> top, bottom;
-  DexelGrid<H> g;
-  TestGrid(int32_t nx, int32_t ny, int64_t pitch_nm, int64_t lsb_nm) : top(nx * ny), bottom(nx * ny) {
-    GridGeometry geo{nx, ny, 0, 0, pitch_nm, 0, lsb_nm};
-    grid_init(&g, geo, top.data(), bottom.data(), top.size());
-  }
-};
+using fixtures::mm;
+using fixtures::TestGrid;
 
 struct TestCutter {
   std::vector<int32_t> words;
@@ -39,16 +31,7 @@ struct TestCutter {
   }
 };
 
-Tool tool_of(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) {
-  Tool t;
-  t.kind = k;
-  t.diameter_nm = d;
-  t.corner_radius_nm = rc;
-  t.tip_angle_mdeg = mdeg;
-  t.flute_length_nm = mm(20);
-  t.length_nm = mm(40);
-  return t;
-}
+Tool tool_of(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) { return fixtures::test_tool(k, d, rc, mdeg, mm(40)); }
 
 // A one-dexel cutter (K = 0) with the given bottom and top offsets.
 struct PairCutter {

@@ -12,6 +12,7 @@
 #include "core/sweep.h"
 #include "core/tool.h"
 #include "tests/alloc_count.h"
+#include "tests/cut_fixtures.h"
 #include "tests/runner.h"
 #include "tests/sweep_oracle.h"
 
@@ -19,32 +20,17 @@ using namespace dexmill;
 
 namespace {
 
-constexpr int64_t mm(int64_t v) { return v * kNmPerMm; }
+using fixtures::mm;
 
+// A grid with material up to z = 30 mm (or the top of the m-bit range).
 template <class H>
-struct Fixture {
-  std::vector<H> top, bottom;
-  DexelGrid<H> g;
-  int64_t stock_lsb;  // material up to z = 30 mm (or the top of the range)
-  Fixture(int32_t nx, int32_t ny, int64_t pitch, int64_t lsb) : top(nx * ny), bottom(nx * ny) {
-    GridGeometry geo{nx, ny, 0, 0, pitch, 0, lsb};
-    grid_init(&g, geo, top.data(), bottom.data(), top.size());
-    stock_lsb = std::min<int64_t>(height_max<H>(), mm(30) / lsb);
-    for (auto& v : top) v = static_cast<H>(stock_lsb);
-    for (auto& v : bottom) v = 0;
+struct Fixture : fixtures::TestGrid<H> {
+  Fixture(int32_t nx, int32_t ny, int64_t pitch, int64_t lsb) : fixtures::TestGrid<H>(nx, ny, pitch, lsb) {
+    this->fill(mm(30));
   }
 };
 
-Tool make_tool(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) {
-  Tool t;
-  t.kind = k;
-  t.diameter_nm = d;
-  t.corner_radius_nm = rc;
-  t.tip_angle_mdeg = mdeg;
-  t.flute_length_nm = mm(20);
-  t.length_nm = mm(60);
-  return t;
-}
+Tool make_tool(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) { return fixtures::test_tool(k, d, rc, mdeg, mm(60)); }
 
 const Tool kTools[] = {make_tool(ToolKind::kBall, mm(6)),         make_tool(ToolKind::kFlat, mm(5)),
                        make_tool(ToolKind::kBullNose, mm(8), mm(2)), make_tool(ToolKind::kVBit, mm(6), 0, 90000),

@@ -13,6 +13,7 @@
 #include "core/sweep.h"
 #include "core/tool.h"
 #include "tests/alloc_count.h"
+#include "tests/cut_fixtures.h"
 #include "tests/runner.h"
 #include "tests/sweep_oracle.h"
 
@@ -20,19 +21,10 @@ using namespace dexmill;
 
 namespace {
 
-constexpr int64_t mm(int64_t v) { return v * kNmPerMm; }
+using fixtures::mm;
 const double kPi = 3.14159265358979323846;
 
-Tool tool_of(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) {
-  Tool t;
-  t.kind = k;
-  t.diameter_nm = d;
-  t.corner_radius_nm = rc;
-  t.tip_angle_mdeg = mdeg;
-  t.flute_length_nm = mm(20);
-  t.length_nm = mm(60);
-  return t;
-}
+Tool tool_of(ToolKind k, int64_t d, int64_t rc = 0, int32_t mdeg = 0) { return fixtures::test_tool(k, d, rc, mdeg, mm(60)); }
 
 // Lowest tool point over a (helical) arc by dense sampling plus ternary
 // refinement around the best sample, nm; HUGE_VAL if out of reach.
@@ -61,14 +53,9 @@ double oracle_arc(const Tool& t, double cx, double cy, double ra, double a0, dou
   return std::min(bv, g((lo + hi) / 2));
 }
 
-struct ArcGrid {
-  std::vector<uint16_t> top, bottom;
-  DexelGrid<uint16_t> g;
-  ArcGrid() : top(64 * 64), bottom(64 * 64) {
-    GridGeometry geo{64, 64, 0, 0, 250000, 0, 500};
-    grid_init(&g, geo, top.data(), bottom.data(), top.size());
-    for (auto& v : top) v = 60000;  // 30 mm of material
-  }
+// 64 x 64 dexels of 0.25 mm, LSB 0.5 um, 30 mm of material.
+struct ArcGrid : fixtures::TestGrid<uint16_t> {
+  ArcGrid() : fixtures::TestGrid<uint16_t>(64, 64, 250000, 500) { fill(mm(30)); }
 };
 
 // Backward bound of sweep.h, widened to the chord bound (1 um) when the arc
@@ -185,15 +172,7 @@ uint64_t run_golden(CutMode mode, const Tool& tool, CutStats* st, uint64_t* news
   mill.set_tool(tool);
   InterpOptions opt;
   Interp interp(&mill, opt);
-  const char* p = kGoldenProgram;
-  uint32_t line = 1;
-  while (*p) {
-    const char* e = std::strchr(p, '\n');
-    GcodeDiag d;
-    GcodeError err = interp.execute_line(p, static_cast<size_t>(e - p), line++, &d);
-    CHECK_EQ(static_cast<int>(err), 0);
-    p = e + 1;
-  }
+  CHECK_EQ(interp_run_text(&interp, kGoldenProgram, std::strlen(kGoldenProgram), nullptr), 0u);
   *news = t::heap_allocations() - before;
   *st = mill.stats();
   return grid_hash(g);

@@ -56,15 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   InterpOptions opt;
   opt.inch = inch;
   Interp interp(&mill, opt);
-  uint32_t line = 1;
-  size_t start = 0;
-  for (size_t i = 0; i <= size; ++i) {
-    if (i == size || data[i] == '\n') {
-      GcodeDiag d;
-      (void)interp.execute_line(reinterpret_cast<const char*>(data + start), i - start, line++, &d);
-      start = i + 1;
-    }
-  }
+  (void)interp_run_text(&interp, reinterpret_cast<const char*>(data), size, nullptr);
   // Invariants of the dexel set: bottom <= top, holes are 0/0.
   for (size_t k = 0; k < top.size(); ++k) {
     if (bottom[k] > top[k]) abort();

@@ -70,16 +70,7 @@ class Library : public ToolLibrary {
 int interpret(CanonSink* sink) {
   InterpOptions opt;
   Interp in(sink, opt);
-  int errors = 0;
-  uint32_t line = 1;
-  const char* p = kProgram;
-  while (*p) {
-    const char* e = strchr(p, '\n');
-    GcodeDiag d;
-    if (in.execute_line(p, static_cast<size_t>(e - p), line++, &d) != GcodeError::kOk) ++errors;
-    p = e + 1;
-  }
-  return errors;
+  return static_cast<int>(interp_run_text(&in, kProgram, strlen(kProgram), nullptr));
 }
 
 template <class H>

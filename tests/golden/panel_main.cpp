@@ -149,22 +149,15 @@ class PanelLibrary final : public ToolLibrary {
   }
 };
 
-// Feeds the program to the interpreter line by line; returns the lines in
-// error (0 expected) and the number of lines.
+// Feeds the program to the interpreter; returns the lines in error (0
+// expected) and the number of lines.
 int play_program(CanonSink* sink, uint32_t* lines) {
   InterpOptions opt;
   Interp in(sink, opt);
-  int errors = 0;
-  uint32_t line = 1;
-  const char* p = kProgram;
-  while (*p) {
-    const char* e = strchr(p, '\n');
-    GcodeDiag d;
-    if (in.execute_line(p, static_cast<size_t>(e - p), line++, &d) != GcodeError::kOk) ++errors;
-    p = e + 1;
-  }
-  *lines = line - 1;
-  return errors;
+  const size_t len = strlen(kProgram);
+  *lines = 0;
+  for (size_t i = 0; i < len; ++i) *lines += kProgram[i] == '\n';
+  return static_cast<int>(interp_run_text(&in, kProgram, len, nullptr));
 }
 
 // ==== FRAME: render + frame hash ==============================================

@@ -1,0 +1,51 @@
+// Shared fixtures of the cutting tests: a grid over vectors, and tools.
+#ifndef DEXMILL_TESTS_CUT_FIXTURES_H
+#define DEXMILL_TESTS_CUT_FIXTURES_H
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/fixed.h"
+#include "core/grid.h"
+#include "core/tool.h"
+
+namespace fixtures {
+
+constexpr int64_t mm(int64_t v) { return v * dexmill::kNmPerMm; }
+
+// A grid with dexel (0, 0) at the origin and height 0 at z = 0; heights as
+// grid_init leaves them (zero) until fill().
+template <class H>
+struct TestGrid {
+  std::vector<H> top, bottom;
+  dexmill::DexelGrid<H> g;
+  int64_t stock_lsb = 0;
+  TestGrid(int32_t nx, int32_t ny, int64_t pitch_nm, int64_t lsb_nm) : top(nx * ny), bottom(nx * ny) {
+    dexmill::GridGeometry geo{nx, ny, 0, 0, pitch_nm, 0, lsb_nm};
+    dexmill::grid_init(&g, geo, top.data(), bottom.data(), top.size());
+  }
+  // Material from 0 up to z (clamped to the m-bit range), borders included.
+  TestGrid& fill(int64_t z_nm) {
+    stock_lsb = std::min<int64_t>(dexmill::height_max<H>(), z_nm / g.lsb_nm);
+    std::fill(top.begin(), top.end(), static_cast<H>(stock_lsb));
+    std::fill(bottom.begin(), bottom.end(), H(0));
+    return *this;
+  }
+};
+
+// A tool with 20 mm of flutes and the given stick-out.
+inline dexmill::Tool test_tool(dexmill::ToolKind k, int64_t d_nm, int64_t rc_nm, int32_t mdeg, int64_t length_nm) {
+  dexmill::Tool t;
+  t.kind = k;
+  t.diameter_nm = d_nm;
+  t.corner_radius_nm = rc_nm;
+  t.tip_angle_mdeg = mdeg;
+  t.flute_length_nm = mm(20);
+  t.length_nm = length_nm;
+  return t;
+}
+
+}  // namespace fixtures
+
+#endif
