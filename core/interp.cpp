@@ -28,7 +28,8 @@ constexpr int64_t kMaxCycleMoves = 10000000;
 inline int64_t& axis_ref(PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
 inline int64_t axis_val(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
 inline bool is_cycle(int m) { return m == 730 || m == 810 || m == 820 || m == 830 || m == 850 || m == 890; }
-inline int64_t abs64(int64_t v) { return v < 0 ? -v : v; }
+// |v|, saturating: INT64_MIN (a saturated huge number) stays beyond every limit.
+inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : (v < 0 ? -v : v); }
 constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
 inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
 inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
