@@ -94,6 +94,115 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   }
 }
 
+
+// A helical piece (at most a quarter turn) from A to B about C, radius ra,
+// tip height z0 -> z1 linear in the angle; flat or ball end; ra > R for the
+// ball (the reach window then spans less than a half turn, where the ball's
+// lowest point is convex in the angle). Per column, with s the angle along
+// the piece, s_P the column's own angle and r(s) its distance to the axis:
+//   reach: |s - s_P| <= alpha, cos(alpha) = (rho^2 + ra^2 - R^2) / (2 rho ra);
+//   flat: the reachable end of the window in the descending direction;
+//   ball: z(s) + R - sqrt(R^2 - r(s)^2) is stationary where
+//         cos(s - s_P) = -kk + sqrt(kk^2 - kk qq + 1), kk = kappa^2 / (rho ra),
+//         qq = (R^2 - rho^2 - ra^2) / (rho ra), kappa = dz/ds per radian,
+//         clamped to the window (convexity makes that the minimum).
+// Angles are CORDIC binary angles (2 bam: 3e-9 rad), so the column is met
+// within ra * 3e-9 of its place: inside the backward bound for ra <= 2^27 nm.
+template <class H>
+void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
+                 int64_t bx, int64_t by, int64_t ra, int dir, int64_t z0_nm, int64_t z1_nm, CutStats* st,
+                 bool start_cap) {
+  const int64_t z0_v = muldiv_round(z0_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t z1_v = muldiv_round(z1_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t hmax = height_max<H>();
+  const int64_t zlow = min_of(z0_v, z1_v);
+  if (zlow >= (hmax << kSweepVBits) || zlow + t.len_v <= 0) return;
+  const int64_t ct_lsb = (zlow + t.len_v) >> kSweepVBits;
+  const bool shaft_above = ct_lsb >= hmax;
+  const uint32_t phi_a = atan2_bam(ay, ax);
+  int64_t span = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(by, bx) - phi_a));
+  if (span <= 0) span += static_cast<int64_t>(1) << 32;  // a piece is at most a quarter turn
+  const int64_t dz_v = z1_v - z0_v;
+  const int64_t dz_u = (z1_nm - z0_nm) * kSweepUnitsPerNm;
+  // kappa = dz/ds in U per radian: dz_u * 2^32 / (2 pi span).
+  constexpr int64_t kTwoPiQ28 = 1686629713;  // 2 pi * 2^28
+  const int64_t kappa_u = muldiv_round(dz_u, static_cast<int64_t>(1) << 60, kTwoPiQ28 * span);
+  const int64_t r2 = t.r2_u;
+  const int64_t margin = t.r_u + kSweepUnitsPerNm;
+  const int64_t p = g->pitch_nm, rn = margin / kSweepUnitsPerNm + 1, ran = ra / kSweepUnitsPerNm;
+  const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm - ran - rn - g->x0_nm, p));
+  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + ran + rn - g->x0_nm, p));
+  const int64_t j_first = max_of<int64_t>(0, div_ceil(cy_nm - ran - rn - g->y0_nm, p));
+  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(cy_nm + ran + rn - g->y0_nm, p));
+  if (i_first > i_last || j_first > j_last) return;
+  st->instances++;
+  constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
+  for (int64_t j = j_first; j <= j_last; ++j) {
+    const int64_t qy = (g->y0_nm + j * p - cy_nm) * kSweepUnitsPerNm;
+    st->dexel_updates += static_cast<uint64_t>(i_last - i_first + 1);
+    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(i_first), static_cast<int32_t>(i_last));
+    H* wt = g->top + g->index(0, static_cast<int32_t>(j));
+    H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
+    for (int64_t i = i_first; i <= i_last; ++i) {
+      const int64_t qx = (g->x0_nm + i * p - cx_nm) * kSweepUnitsPerNm;
+      const int64_t rho2 = qx * qx + qy * qy;
+      const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
+      if (rho - ra > t.r_u || ra - rho > t.r_u) continue;  // never within R of the circle
+      // The window of reach, [lo, hi] in bam along the piece.
+      const int64_t s_p = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(qy, qx) - phi_a));
+      int64_t alpha = static_cast<int64_t>(1) << 31;
+      if (rho > 0) {
+        const int64_t c_q30 = muldiv_round(rho2 + ra * ra - r2, kQ30, 2 * rho * ra);
+        if (c_q30 > kQ30) continue;
+        if (c_q30 > -kQ30) {
+          const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
+          alpha = atan2_bam(sn, c_q30);
+        }
+      } else if (ra > t.r_u) {
+        continue;
+      }
+      const int64_t lo = max_of<int64_t>(0, s_p - alpha), hi = min_of(span, s_p + alpha);
+      if (lo > hi) continue;
+      int64_t s_best;
+      if (t.kind == ToolKind::kFlat || rho == 0) {
+        s_best = dz_v < 0 ? hi : lo;
+      } else {
+        // kk and qq in q30 (the arc qualified with kk < 2^16 for every rho).
+        const int64_t kk = muldiv_round(muldiv_round(kappa_u, kQ30, rho), kappa_u, ra);
+        const int64_t qq = muldiv_round(r2 - rho2 - ra * ra, kQ30, rho * ra);
+        const int64_t disc = mul_shift(kk, kk, 30) - mul_shift(kk, qq, 30) + kQ30;
+        const int64_t root = disc > 0 ? static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, static_cast<uint64_t>(disc)}, 30))) : 0;
+        const int64_t c = clamp(root - kk, -kQ30, kQ30);
+        const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));
+        const int64_t u = static_cast<int64_t>(atan2_bam(sn, c));
+        s_best = clamp(s_p + (dz_v > 0 ? -u : u), lo, hi);
+      }
+      if (s_best == 0 && !start_cap) continue;  // the tool at A: cut by the move before
+      // r^2 at s_best = (rho - ra)^2 + 4 rho ra sin^2((s - s_P) / 2).
+      const SinCosQ30 half = sincos_bam(static_cast<uint32_t>((s_best - s_p) / 2));
+      const int64_t t1 = mul_shift(rho, half.sin_q30, 30), t2 = mul_shift(ra, half.sin_q30, 30);
+      const int64_t d2 = (rho - ra) * (rho - ra) + 4 * t1 * t2;
+      const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
+      if (d2 > reach2) continue;
+      const int64_t z_v = z0_v + muldiv_round(dz_v, s_best, span);
+      const int64_t cb = (z_v + sweep_profile_v(t, min_of(d2, t.r2_u)) + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >>
+                         kSweepVBits;
+      CutCase cc;
+      if (shaft_above) {
+        if (cb >= static_cast<int64_t>(wt[i])) continue;
+        if (cb > static_cast<int64_t>(wb[i])) { wt[i] = static_cast<H>(cb); cc = CutCase::kB; }
+        else { wt[i] = 0; wb[i] = 0; cc = CutCase::kE; }
+      } else {
+        cc = apply_cut<H, int64_t>(&wt[i], &wb[i], cb, ct_lsb);
+        if (cc == CutCase::kC) g->bottoms_zero = false;
+      }
+      if (cut_changed(cc))
+        g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
+                                  static_cast<int32_t>(j + 1)});
+    }
+  }
+}
+
 }  // namespace
 
 template <class H>
@@ -101,8 +210,19 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
   const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
   const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
   const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
-  const bool exact = exact_shape && arc.arc.plane == Plane::kXY && arc.start.z_nm == arc.end.z_nm &&
-                     ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
+  const bool level = arc.start.z_nm == arc.end.z_nm;
+  bool exact = exact_shape && arc.arc.plane == Plane::kXY && ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
+  if (exact && !level) {
+    // The helix formulas want ra > R (a window under half a turn; for the
+    // ball, convex) and kk < 2^16 at the closest column, rho = ra - R:
+    // kappa^2 < 2^16 ra (ra - R), kappa the descent per radian (bounded by
+    // dz over the whole sweep / 1 rad). Helices tighter than the tool (a
+    // helical bore) go through chords.
+    const int64_t ra_u = ra_nm * kSweepUnitsPerNm;
+    const uint64_t dz_u = abs_u64(arc.end.z_nm - arc.start.z_nm) * kSweepUnitsPerNm;
+    exact = ra_u > t.r_u && static_cast<uint64_t>(mul_shift(static_cast<int64_t>(dz_u), static_cast<int64_t>(dz_u), 16)) <
+                                static_cast<uint64_t>(ra_u) * static_cast<uint64_t>(ra_u - t.r_u);
+  }
   if (!exact) {
     // Chords near the grid only (core/arc_walk.h); a joint is chained when
     // the chord starts where the last one ended.
@@ -131,8 +251,12 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
       const int64_t ex = to.x_nm - cx, ey = to.y_nm - cy;
       const int64_t re = hypot_round(ex, ey);
       const int64_t bx_nm = re ? muldiv_round(ex, ra_nm, re) : 0, by_nm = re ? muldiv_round(ey, ra_nm, re) : 0;
-      level_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
-                  ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, st, cap);
+      if (level)
+        level_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
+                    ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, st, cap);
+      else
+        helix_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
+                    ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, to.z_nm, st, cap);
       const PointNm on_circle{cx + bx_nm, cy + by_nm, to.z_nm};
       if (!(on_circle == to)) sweep_line(g, t, on_circle, to, st, false);
     }

@@ -129,7 +129,7 @@ TEST(run_inch_arcs_and_tool_table) {
   if (skip()) return;
   Result r = run("arcs_inch.ngc -q --size 120x90 --image %/a.ppm --report %/a.json");
   CHECK_EQ(r.code, 0);
-  check_hash(tmp_dir() + "/a.ppm", 0x8d62377e5ddd4bb6ULL);
+  check_hash(tmp_dir() + "/a.ppm", 0x34ec770f5530ef72ULL);
   CHECK(has(slurp(tmp_dir() + "/a.json"), "\"dwell\": 1"));
   r = run("tool_change.ngc --tools tools.tbl -q --size 120x90 --image %/t.ppm --report %/t.json --mode stamp");
   CHECK_EQ(r.code, 0);
