@@ -43,7 +43,7 @@ struct CanonRecord {
                          // end == start for records that do not move
   CanonArc arc;          // kArc only
   int64_t feed_nm_per_min;  // kFeed, kArc: feed in force (G93: the equivalent rate)
-  int32_t tool;          // tool number in the spindle (after kToolChange: the new one)
+  int32_t tool;          // tool number in the spindle (after kToolChange: the one just loaded)
   int64_t tool_length_offset_nm;  // G43/G49 offset in force (not applied to start/end)
   int64_t dwell_ms;      // kDwell
   int32_t spindle_rpm;   // kSpindle

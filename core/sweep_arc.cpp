@@ -16,6 +16,7 @@
 #include "core/fixed.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
+#include "core/sweep_cut.h"
 
 namespace dexmill {
 namespace {
@@ -75,21 +76,9 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
         d2 = min_of(da2, db2);
       }
       if (d2 > reach2) continue;
-      const int64_t cb = (z_v + sweep_profile_v(t, min_of(d2, t.r2_u)) + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >>
-                         kSweepVBits;
-      CutCase c;
-      if (shaft_above) {
-        if (cb >= static_cast<int64_t>(wt[i])) continue;
-        if (cb > static_cast<int64_t>(wb[i])) { wt[i] = static_cast<H>(cb); c = CutCase::kB; }
-        else { wt[i] = 0; wb[i] = 0; c = CutCase::kE; }
-      } else {
-        c = apply_cut<H, int64_t>(&wt[i], &wb[i], cb, ct_lsb);
-        if (c == CutCase::kC) g->bottoms_zero = false;
-      }
-      if (cut_changed(c)) {
+      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], z_v + sweep_profile_v(t, min_of(d2, t.r2_u)), ct_lsb, shaft_above))
         g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
                                   static_cast<int32_t>(j + 1)});
-      }
     }
   }
 }
@@ -185,18 +174,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
       if (d2 > reach2) continue;
       const int64_t z_v = z0_v + muldiv_round(dz_v, s_best, span);
-      const int64_t cb = (z_v + sweep_profile_v(t, min_of(d2, t.r2_u)) + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >>
-                         kSweepVBits;
-      CutCase cc;
-      if (shaft_above) {
-        if (cb >= static_cast<int64_t>(wt[i])) continue;
-        if (cb > static_cast<int64_t>(wb[i])) { wt[i] = static_cast<H>(cb); cc = CutCase::kB; }
-        else { wt[i] = 0; wb[i] = 0; cc = CutCase::kE; }
-      } else {
-        cc = apply_cut<H, int64_t>(&wt[i], &wb[i], cb, ct_lsb);
-        if (cc == CutCase::kC) g->bottoms_zero = false;
-      }
-      if (cut_changed(cc))
+      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], z_v + sweep_profile_v(t, min_of(d2, t.r2_u)), ct_lsb, shaft_above))
         g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
                                   static_cast<int32_t>(j + 1)});
     }

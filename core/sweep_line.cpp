@@ -17,6 +17,7 @@
 #include "core/fixed.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
+#include "core/sweep_cut.h"
 
 namespace dexmill {
 namespace {
@@ -118,26 +119,6 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   return true;
 }
 
-// Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
-// shaft top. Returns true when the dexel changed.
-template <class H>
-inline bool cut_dexel(DexelGrid<H>* g, H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_above) {
-  const int64_t cb = (h_v + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
-  if (shaft_above) {
-    if (cb >= static_cast<int64_t>(*wt)) return false;
-    if (cb > static_cast<int64_t>(*wb)) {
-      *wt = static_cast<H>(cb);  // case b
-    } else {
-      *wt = 0;  // case e
-      *wb = 0;
-    }
-    return true;
-  }
-  const CutCase c = apply_cut<H, int64_t>(wt, wb, cb, ct_lsb);
-  if (c == CutCase::kC) g->bottoms_zero = false;
-  return cut_changed(c);
-}
-
 // Narrows [*i_lo, *i_hi] to the i with lo <= alpha + (i - i0) * beta <= hi.
 void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int64_t* i_lo, int64_t* i_hi) {
   if (beta == 0) {
@@ -226,7 +207,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
         if (r2 > reach2) continue;
         const int64_t h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
-        row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+        row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
       }
     } else if (dv == 0) {
       // The move runs along the row (x-parallel): v, w*(v) and the flank's
@@ -259,7 +240,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
           const int64_t r2 = w * w + v2;
           if (r2 > reach2) return;
           const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
-          row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+          row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
         };
         for (int64_t i = lo; i < f_lo; ++i) side(i);
         if (flank_reaches && f_lo <= f_hi) {
@@ -282,7 +263,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
             row_changed |= any;
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
-              row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
+              row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
           }
         }
         for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
@@ -298,7 +279,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
         const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
-        row_changed |= cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+        row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
       }
     }
     if (row_changed) {

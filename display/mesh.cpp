@@ -93,7 +93,7 @@ class CellDrawer {
     build_row(c.j0 + r + 1, hi, va[r + 1], vb[r + 1]);
     for (int32_t n = 0; n < rows; ++n) {
       if (n > 0) {
-        if (j_desc) {  // the old row r is the new row r + 1
+        if (j_desc) {  // the old row r is row r + 1 now
           --r;
           Corner* t = hi; hi = lo; lo = t;
           build_row(c.j0 + r, lo, va[r], vb[r]);

@@ -231,7 +231,7 @@ template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p) {
   r->tool = CutterShape{};
   if (p) cutter_shape_build(*p, &r->tool);
-  r->need_full = true;  // the shades of the new shape come with the next full frame
+  r->need_full = true;  // the shades of the changed shape come with the next full frame
 }
 
 template <class H>

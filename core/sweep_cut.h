@@ -1,0 +1,38 @@
+// The sweep's last step at one dexel, shared by lines and arcs: the lowest
+// tool height in V (core/sweep.h) rounded to an LSB and applied with the
+// figure-2 cases (core/stamp.h). Internal to the sweep.
+#ifndef DEXMILL_CORE_SWEEP_CUT_H
+#define DEXMILL_CORE_SWEEP_CUT_H
+
+#include <stdint.h>
+
+#include "core/grid.h"
+#include "core/stamp.h"
+#include "core/sweep.h"
+
+namespace dexmill {
+
+// Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
+// shaft top, shaft_above when it is above every possible top (then only
+// cases a, b and e remain). Returns true when the dexel changed.
+template <class H>
+inline bool sweep_cut_dexel(DexelGrid<H>* g, H* wt, H* wb, int64_t h_v, int64_t ct_lsb, bool shaft_above) {
+  const int64_t cb = (h_v + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
+  if (shaft_above) {
+    if (cb >= static_cast<int64_t>(*wt)) return false;
+    if (cb > static_cast<int64_t>(*wb)) {
+      *wt = static_cast<H>(cb);  // case b
+    } else {
+      *wt = 0;  // case e
+      *wb = 0;
+    }
+    return true;
+  }
+  const CutCase c = apply_cut<H, int64_t>(wt, wb, cb, ct_lsb);
+  if (c == CutCase::kC) g->bottoms_zero = false;
+  return cut_changed(c);
+}
+
+}  // namespace dexmill
+
+#endif
