@@ -8,7 +8,7 @@ set -eu
 pkgs="g++ clang make"
 for extra in "$@"; do
   case $extra in
-    window) pkgs="$pkgs libglfw3-dev xvfb x11-apps imagemagick";;
+    window) pkgs="$pkgs libglfw3-dev pkg-config xvfb x11-apps imagemagick";;
     cross) pkgs="$pkgs g++-12-multilib g++-arm-linux-gnueabihf g++-aarch64-linux-gnu g++-powerpc-linux-gnu
                  g++-s390x-linux-gnu g++-mips-linux-gnu qemu-user gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
                  libnewlib-arm-none-eabi qemu-system-arm";;
