@@ -169,6 +169,12 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   bool changed = false;
   int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
   const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  // A bound on |w*(v)| for any v: 0 when level; the ball's w* is
+  // rho * m / sqrt(1 + m^2) <= R |sin|; other shapes may reach the rim.
+  const int64_t w_bound = lp.plunge || lp.level ? 0
+                          : t.kind == ToolKind::kBall
+                              ? mul_shift(t.r_u, lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30, 30) + 2
+                              : t.r_u;
   // Along x, the along-track range of columns is the same on every row:
   // narrow it once (the divisions in `narrow` cost more than a short row).
   const bool along_x = !lp.plunge && lp.ey_q30 == 0;
@@ -273,9 +279,19 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
         if (v * v > reach2) continue;
         const int64_t v2 = min_of(v * v, t.r2_u);
-        const int64_t ws = best_w(t, lp, v, v2);
-        if (u < ws && !start_cap) continue;
-        const int64_t w = clamp(ws, u - lp.len_u, u);
+        // |w*| <= w_bound: outside that band the clamp is decided without
+        // computing w* (a square root for ramps).
+        int64_t w;
+        if (u < -w_bound) {
+          if (!start_cap) continue;
+          w = u;
+        } else if (u - lp.len_u > w_bound) {
+          w = u - lp.len_u;
+        } else {
+          const int64_t ws = best_w(t, lp, v, v2);
+          if (u < ws && !start_cap) continue;
+          w = clamp(ws, u - lp.len_u, u);
+        }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
         const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));

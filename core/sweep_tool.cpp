@@ -23,26 +23,4 @@ Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) 
   return Status::kOk;
 }
 
-int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
-  int64_t f_u = 0;
-  switch (t.kind) {
-    case ToolKind::kFlat:
-      return 0;
-    case ToolKind::kBall:  // R - sqrt(R^2 - r^2)
-      f_u = t.r_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - r2)));
-      break;
-    case ToolKind::kBullNose: {  // flat to a, then the torus of radius rc
-      const int64_t r = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2)));
-      if (r <= t.a_u) return 0;
-      const int64_t d = min_of(r - t.a_u, t.rc_u);
-      f_u = t.rc_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.rc2_u - d * d)));
-      break;
-    }
-    case ToolKind::kVBit:  // k * r
-      f_u = mul_shift(static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2))), t.cot_q30, 30);
-      break;
-  }
-  return mul_shift(f_u, t.v_per_u_q32, 32);
-}
-
 }  // namespace dexmill
