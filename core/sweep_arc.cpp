@@ -25,27 +25,19 @@ constexpr int64_t kMaxExactRadiusNm = static_cast<int64_t>(1) << 27;
 
 int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by - ay * bx; }
 
-// A level quarter-turn (at most) piece from A to B about C, radius ra, all in
-// U relative to C; dir = +1 counterclockwise.
-template <class H>
-void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
-                 int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
-  const int64_t z_v = muldiv_round(z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+// What level arcs and helices share: the tip's height range against the
+// grid's, the shaft top, the dexels of a box around the centre C (U relative
+// to C, widened by the tool), and the bookkeeping (counts, span log, one
+// dirty-rectangle update a row). column(qx, qy, &h_v) gets a column's offset
+// from C (U) and gives the lowest tool height there (V above z0), or false
+// when the tool does not reach it or the column is left to another move.
+template <class H, class F>
+void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
+                 int64_t y0, int64_t x1, int64_t y1, int64_t zlow_v, F column) {
   const int64_t hmax = height_max<H>();
-  if (z_v >= (hmax << kSweepVBits) || z_v + t.len_v <= 0) return;
-  const int64_t ct_lsb = (z_v + t.len_v) >> kSweepVBits;
+  if (zlow_v >= (hmax << kSweepVBits) || zlow_v + t.len_v <= 0) return;
+  const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
   const bool shaft_above = ct_lsb >= hmax;
-  const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
-
-  // Bounding box: the end points and any axis extreme inside the sector.
-  int64_t x0 = min_of(ax, bx), x1 = max_of(ax, bx), y0 = min_of(ay, by), y1 = max_of(ay, by);
-  const int64_t ext[4][2] = {{ra, 0}, {0, ra}, {-ra, 0}, {0, -ra}};
-  for (const auto& e : ext) {
-    if (cross(ax, ay, e[0], e[1]) * dir >= 0 && cross(e[0], e[1], bx, by) * dir >= 0) {
-      x0 = min_of(x0, e[0]); x1 = max_of(x1, e[0]);
-      y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
-    }
-  }
   const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
   const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm + x0 / kSweepUnitsPerNm - r_nm - g->x0_nm, p));
   const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + x1 / kSweepUnitsPerNm + r_nm - g->x0_nm, p));
@@ -61,28 +53,56 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
     int64_t qx = (g->x0_nm + i_first * p - cx_nm) * kSweepUnitsPerNm;
+    int64_t ch0 = i_last + 1, ch1 = i_first - 1;
     for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
-      const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
-      int64_t d2;
-      if (after_a && before_b) {
-        const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(qx * qx + qy * qy)));
-        d2 = (rho - ra) * (rho - ra);
-      } else {
-        const int64_t da2 = (qx - ax) * (qx - ax) + (qy - ay) * (qy - ay);
-        const int64_t db2 = (qx - bx) * (qx - bx) + (qy - by) * (qy - by);
-        // Behind the start, where the tool standing at A is lowest: already
-        // cut by the move that ended there.
-        if (!start_cap && da2 < db2) continue;
-        d2 = min_of(da2, db2);
+      int64_t h_v;
+      if (!column(qx, qy, &h_v)) continue;
+      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above)) {
+        ch0 = min_of(ch0, i);
+        ch1 = i;
       }
-      if (d2 > reach2) continue;
-      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], z_v + sweep_profile_v(t, min_of(d2, t.r2_u)), ct_lsb, shaft_above))
-        g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
-                                  static_cast<int32_t>(j + 1)});
     }
+    if (ch0 <= ch1)
+      g->dirty.include(GridRect{static_cast<int32_t>(ch0), static_cast<int32_t>(j), static_cast<int32_t>(ch1 + 1),
+                                static_cast<int32_t>(j + 1)});
   }
 }
 
+// A level quarter-turn (at most) piece from A to B about C, radius ra, all in
+// U relative to C; dir = +1 counterclockwise.
+template <class H>
+void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
+                 int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
+  const int64_t z_v = muldiv_round(z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t reach2 = sweep_reach2(t);
+  // Bounding box: the end points and any axis extreme inside the sector.
+  int64_t x0 = min_of(ax, bx), x1 = max_of(ax, bx), y0 = min_of(ay, by), y1 = max_of(ay, by);
+  const int64_t ext[4][2] = {{ra, 0}, {0, ra}, {-ra, 0}, {0, -ra}};
+  for (const auto& e : ext) {
+    if (cross(ax, ay, e[0], e[1]) * dir >= 0 && cross(e[0], e[1], bx, by) * dir >= 0) {
+      x0 = min_of(x0, e[0]); x1 = max_of(x1, e[0]);
+      y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
+    }
+  }
+  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, [&](int64_t qx, int64_t qy, int64_t* h_v) {
+    const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
+    int64_t d2;
+    if (after_a && before_b) {
+      const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(qx * qx + qy * qy)));
+      d2 = (rho - ra) * (rho - ra);
+    } else {
+      const int64_t da2 = (qx - ax) * (qx - ax) + (qy - ay) * (qy - ay);
+      const int64_t db2 = (qx - bx) * (qx - bx) + (qy - by) * (qy - by);
+      // Behind the start, where the tool standing at A is lowest: already
+      // cut by the move that ended there.
+      if (!start_cap && da2 < db2) return false;
+      d2 = min_of(da2, db2);
+    }
+    if (d2 > reach2) return false;
+    *h_v = z_v + sweep_profile_v(t, min_of(d2, t.r2_u));
+    return true;
+  });
+}
 
 // A helical piece (at most a quarter turn) from A to B about C, radius ra,
 // tip height z0 -> z1 linear in the angle; flat or ball end; ra > R for the
@@ -103,11 +123,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
                  bool start_cap) {
   const int64_t z0_v = muldiv_round(z0_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
   const int64_t z1_v = muldiv_round(z1_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
-  const int64_t hmax = height_max<H>();
   const int64_t zlow = min_of(z0_v, z1_v);
-  if (zlow >= (hmax << kSweepVBits) || zlow + t.len_v <= 0) return;
-  const int64_t ct_lsb = (zlow + t.len_v) >> kSweepVBits;
-  const bool shaft_above = ct_lsb >= hmax;
   const uint32_t phi_a = atan2_bam(ay, ax);
   int64_t span = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(by, bx) - phi_a));
   if (span <= 0) span += static_cast<int64_t>(1) << 32;  // a piece is at most a quarter turn
@@ -116,69 +132,50 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   // kappa = dz/ds in U per radian: dz_u * 2^32 / (2 pi span).
   constexpr int64_t kTwoPiQ28 = 1686629713;  // 2 pi * 2^28
   const int64_t kappa_u = muldiv_round(dz_u, static_cast<int64_t>(1) << 60, kTwoPiQ28 * span);
-  const int64_t r2 = t.r2_u;
-  const int64_t margin = t.r_u + kSweepUnitsPerNm;
-  const int64_t p = g->pitch_nm, rn = margin / kSweepUnitsPerNm + 1, ran = ra / kSweepUnitsPerNm;
-  const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm - ran - rn - g->x0_nm, p));
-  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + ran + rn - g->x0_nm, p));
-  const int64_t j_first = max_of<int64_t>(0, div_ceil(cy_nm - ran - rn - g->y0_nm, p));
-  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(cy_nm + ran + rn - g->y0_nm, p));
-  if (i_first > i_last || j_first > j_last) return;
-  st->instances++;
+  const int64_t r2 = t.r2_u, reach2 = sweep_reach2(t);
   constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
-  for (int64_t j = j_first; j <= j_last; ++j) {
-    const int64_t qy = (g->y0_nm + j * p - cy_nm) * kSweepUnitsPerNm;
-    st->dexel_updates += static_cast<uint64_t>(i_last - i_first + 1);
-    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(i_first), static_cast<int32_t>(i_last));
-    H* wt = g->top + g->index(0, static_cast<int32_t>(j));
-    H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
-    for (int64_t i = i_first; i <= i_last; ++i) {
-      const int64_t qx = (g->x0_nm + i * p - cx_nm) * kSweepUnitsPerNm;
-      const int64_t rho2 = qx * qx + qy * qy;
-      const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
-      if (rho - ra > t.r_u || ra - rho > t.r_u) continue;  // never within R of the circle
-      // The window of reach, [lo, hi] in bam along the piece.
-      const int64_t s_p = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(qy, qx) - phi_a));
-      int64_t alpha = static_cast<int64_t>(1) << 31;
-      if (rho > 0) {
-        const int64_t c_q30 = muldiv_round(rho2 + ra * ra - r2, kQ30, 2 * rho * ra);
-        if (c_q30 > kQ30) continue;
-        if (c_q30 > -kQ30) {
-          const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
-          alpha = atan2_bam(sn, c_q30);
-        }
-      } else if (ra > t.r_u) {
-        continue;
+  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, [&](int64_t qx, int64_t qy, int64_t* h_v) {
+    const int64_t rho2 = qx * qx + qy * qy;
+    const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
+    if (rho - ra > t.r_u || ra - rho > t.r_u) return false;  // never within R of the circle
+    // The window of reach, [lo, hi] in bam along the piece.
+    const int64_t s_p = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(qy, qx) - phi_a));
+    int64_t alpha = static_cast<int64_t>(1) << 31;
+    if (rho > 0) {
+      const int64_t c_q30 = muldiv_round(rho2 + ra * ra - r2, kQ30, 2 * rho * ra);
+      if (c_q30 > kQ30) return false;
+      if (c_q30 > -kQ30) {
+        const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
+        alpha = atan2_bam(sn, c_q30);
       }
-      const int64_t lo = max_of<int64_t>(0, s_p - alpha), hi = min_of(span, s_p + alpha);
-      if (lo > hi) continue;
-      int64_t s_best;
-      if (t.kind == ToolKind::kFlat || rho == 0) {
-        s_best = dz_v < 0 ? hi : lo;
-      } else {
-        // kk and qq in q30 (the arc qualified with kk < 2^16 for every rho).
-        const int64_t kk = muldiv_round(muldiv_round(kappa_u, kQ30, rho), kappa_u, ra);
-        const int64_t qq = muldiv_round(r2 - rho2 - ra * ra, kQ30, rho * ra);
-        const int64_t disc = mul_shift(kk, kk, 30) - mul_shift(kk, qq, 30) + kQ30;
-        const int64_t root = disc > 0 ? static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, static_cast<uint64_t>(disc)}, 30))) : 0;
-        const int64_t c = clamp(root - kk, -kQ30, kQ30);
-        const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));
-        const int64_t u = static_cast<int64_t>(atan2_bam(sn, c));
-        s_best = clamp(s_p + (dz_v > 0 ? -u : u), lo, hi);
-      }
-      if (s_best == 0 && !start_cap) continue;  // the tool at A: cut by the move before
-      // r^2 at s_best = (rho - ra)^2 + 4 rho ra sin^2((s - s_P) / 2).
-      const SinCosQ30 half = sincos_bam(static_cast<uint32_t>((s_best - s_p) / 2));
-      const int64_t t1 = mul_shift(rho, half.sin_q30, 30), t2 = mul_shift(ra, half.sin_q30, 30);
-      const int64_t d2 = (rho - ra) * (rho - ra) + 4 * t1 * t2;
-      const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
-      if (d2 > reach2) continue;
-      const int64_t z_v = z0_v + muldiv_round(dz_v, s_best, span);
-      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], z_v + sweep_profile_v(t, min_of(d2, t.r2_u)), ct_lsb, shaft_above))
-        g->dirty.include(GridRect{static_cast<int32_t>(i), static_cast<int32_t>(j), static_cast<int32_t>(i + 1),
-                                  static_cast<int32_t>(j + 1)});
+    } else if (ra > t.r_u) {
+      return false;
     }
-  }
+    const int64_t lo = max_of<int64_t>(0, s_p - alpha), hi = min_of(span, s_p + alpha);
+    if (lo > hi) return false;
+    int64_t s_best;
+    if (t.kind == ToolKind::kFlat || rho == 0) {
+      s_best = dz_v < 0 ? hi : lo;
+    } else {
+      // kk and qq in q30 (the arc qualified with kk < 2^16 for every rho).
+      const int64_t kk = muldiv_round(muldiv_round(kappa_u, kQ30, rho), kappa_u, ra);
+      const int64_t qq = muldiv_round(r2 - rho2 - ra * ra, kQ30, rho * ra);
+      const int64_t disc = mul_shift(kk, kk, 30) - mul_shift(kk, qq, 30) + kQ30;
+      const int64_t root = disc > 0 ? static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, static_cast<uint64_t>(disc)}, 30))) : 0;
+      const int64_t c = clamp(root - kk, -kQ30, kQ30);
+      const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));
+      const int64_t u = static_cast<int64_t>(atan2_bam(sn, c));
+      s_best = clamp(s_p + (dz_v > 0 ? -u : u), lo, hi);
+    }
+    if (s_best == 0 && !start_cap) return false;  // the tool at A: cut by the move before
+    // r^2 at s_best = (rho - ra)^2 + 4 rho ra sin^2((s - s_P) / 2).
+    const SinCosQ30 half = sincos_bam(static_cast<uint32_t>((s_best - s_p) / 2));
+    const int64_t t1 = mul_shift(rho, half.sin_q30, 30), t2 = mul_shift(ra, half.sin_q30, 30);
+    const int64_t d2 = (rho - ra) * (rho - ra) + 4 * t1 * t2;
+    if (d2 > reach2) return false;
+    *h_v = z0_v + muldiv_round(dz_v, s_best, span) + sweep_profile_v(t, min_of(d2, t.r2_u));
+    return true;
+  });
 }
 
 }  // namespace

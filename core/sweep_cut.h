@@ -12,6 +12,11 @@
 
 namespace dexmill {
 
+// r^2 (U^2) up to which a column counts as reached: 2 U (0.5 nm) beyond the
+// rim, so that the rounding of derived coordinates never drops a column an
+// exact test keeps (r <= R).
+inline int64_t sweep_reach2(const SweepTool& t) { return t.r2_u + 4 * t.r_u + 4; }
+
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top, shaft_above when it is above every possible top (then only
 // cases a, b and e remain). Returns true when the dexel changed.

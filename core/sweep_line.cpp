@@ -162,9 +162,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   st->instances++;
 
   const int64_t p_u = p * kSweepUnitsPerNm;
-  // Columns within 2 U (0.5 nm) outside the rim count as on it: the rounding
-  // of u and v must not drop a column that an exact test keeps (r <= R).
-  const int64_t reach2 = t.r2_u + 4 * t.r_u + 4;
+  const int64_t reach2 = sweep_reach2(t);
   const int64_t dx0_u = (g->x0_nm + i_first * p - o.x_nm) * kSweepUnitsPerNm;  // column i_first - origin
   bool changed = false;
   int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
