@@ -45,6 +45,13 @@ int fail(int code, const char* fmt, ...) {
   return code;
 }
 
+bool parse_units(const char* value, bool* inch) {
+  if (!std::strcmp(value, "mm")) *inch = false;
+  else if (!std::strcmp(value, "inch")) *inch = true;
+  else return fail(kExitUsage, "--units must be mm or inch, not '%s'", value), false;
+  return true;
+}
+
 int main(int argc, char** argv) {
   if (argc < 2) {
     usage(stderr);

@@ -16,6 +16,10 @@ int cmd_path(int argc, char** argv);
 int cmd_check(int argc, char** argv);
 int cmd_bench(int argc, char** argv);
 
+// The value of --units: "mm" or "inch" into *inch; else prints the usage
+// error and returns false (the caller exits kExitUsage).
+bool parse_units(const char* value, bool* inch);
+
 // `dexmill: error: MESSAGE` on stderr (printf-style); returns `code`.
 int fail(int code, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
 

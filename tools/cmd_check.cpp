@@ -37,9 +37,7 @@ int cmd_check(int argc, char** argv) {
     if (!std::strcmp(a, "--units")) {
       if (i + 1 >= argc) return fail(kExitUsage, "--units needs a value");
       const char* v = argv[++i];
-      if (!std::strcmp(v, "mm")) inch = false;
-      else if (!std::strcmp(v, "inch")) inch = true;
-      else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+      if (!parse_units(v, &inch)) return kExitUsage;
       continue;
     }
     if (!std::strcmp(a, "--max-errors")) {

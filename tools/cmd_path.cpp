@@ -93,9 +93,7 @@ int cmd_path(int argc, char** argv) {
       if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
       const char* v = argv[++i];
       if (!std::strcmp(a, "--units")) {
-        if (!std::strcmp(v, "mm")) inch = false;
-        else if (!std::strcmp(v, "inch")) inch = true;
-        else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+        if (!parse_units(v, &inch)) return kExitUsage;
         continue;
       }
       Decimal d;

@@ -137,9 +137,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     } else if (name == "--tools") {
       o->tools_file = v;
     } else if (name == "--units") {
-      if (!std::strcmp(v, "mm")) o->inch = false;
-      else if (!std::strcmp(v, "inch")) o->inch = true;
-      else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+      if (!parse_units(v, &o->inch)) return kExitUsage;
     } else if (name == "--mode") {
       if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
       else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;
