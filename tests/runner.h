@@ -60,6 +60,23 @@ bool check_cmp(bool ok, const char* file, int line, const char* what, const A& a
   return false;
 }
 
+enum class Op { kEq, kNe, kLe, kLt, kGe, kGt };
+
+// Evaluates each side once (the macros pass values, not expressions).
+template <class A, class B>
+bool check_op(Op op, const char* file, int line, const char* what, const A& a, const B& b) {
+  bool ok = false;
+  switch (op) {
+    case Op::kEq: ok = a == b; break;
+    case Op::kNe: ok = a != b; break;
+    case Op::kLe: ok = a <= b; break;
+    case Op::kLt: ok = a < b; break;
+    case Op::kGe: ok = a >= b; break;
+    case Op::kGt: ok = a > b; break;
+  }
+  return check_cmp(ok, file, line, what, a, b);
+}
+
 template <class A, class B, class C>
 bool check_near(const char* file, int line, const char* what, const A& a, const B& b, const C& tol) {
   // Integers and floats alike: |a - b| <= tol, computed in long double to
@@ -91,12 +108,12 @@ const char* tests_dir();
 
 #define CHECK(cond) \
   ((cond) ? true : (::t::fail(__FILE__, __LINE__, "CHECK(" #cond ")", nullptr), false))
-#define CHECK_EQ(a, b) ::t::check_cmp((a) == (b), __FILE__, __LINE__, "CHECK_EQ(" #a ", " #b ")", (a), (b))
-#define CHECK_NE(a, b) ::t::check_cmp((a) != (b), __FILE__, __LINE__, "CHECK_NE(" #a ", " #b ")", (a), (b))
-#define CHECK_LE(a, b) ::t::check_cmp((a) <= (b), __FILE__, __LINE__, "CHECK_LE(" #a ", " #b ")", (a), (b))
-#define CHECK_LT(a, b) ::t::check_cmp((a) < (b), __FILE__, __LINE__, "CHECK_LT(" #a ", " #b ")", (a), (b))
-#define CHECK_GE(a, b) ::t::check_cmp((a) >= (b), __FILE__, __LINE__, "CHECK_GE(" #a ", " #b ")", (a), (b))
-#define CHECK_GT(a, b) ::t::check_cmp((a) > (b), __FILE__, __LINE__, "CHECK_GT(" #a ", " #b ")", (a), (b))
+#define CHECK_EQ(a, b) ::t::check_op(::t::Op::kEq, __FILE__, __LINE__, "CHECK_EQ(" #a ", " #b ")", (a), (b))
+#define CHECK_NE(a, b) ::t::check_op(::t::Op::kNe, __FILE__, __LINE__, "CHECK_NE(" #a ", " #b ")", (a), (b))
+#define CHECK_LE(a, b) ::t::check_op(::t::Op::kLe, __FILE__, __LINE__, "CHECK_LE(" #a ", " #b ")", (a), (b))
+#define CHECK_LT(a, b) ::t::check_op(::t::Op::kLt, __FILE__, __LINE__, "CHECK_LT(" #a ", " #b ")", (a), (b))
+#define CHECK_GE(a, b) ::t::check_op(::t::Op::kGe, __FILE__, __LINE__, "CHECK_GE(" #a ", " #b ")", (a), (b))
+#define CHECK_GT(a, b) ::t::check_op(::t::Op::kGt, __FILE__, __LINE__, "CHECK_GT(" #a ", " #b ")", (a), (b))
 #define CHECK_NEAR(a, b, tol) ::t::check_near(__FILE__, __LINE__, "CHECK_NEAR(" #a ", " #b ", " #tol ")", (a), (b), (tol))
 
 #endif

@@ -16,13 +16,6 @@
 #include "tests/alloc_count.h"
 #include "tests/runner.h"
 
-// Evaluates `call` once (CHECK_EQ evaluates its arguments twice).
-#define CHECK_EQ_ONCE(call, want)   \
-  do {                              \
-    const auto got_ = (call);       \
-    CHECK_EQ(got_, want);           \
-  } while (0)
-
 using namespace dexmill;
 
 namespace {
@@ -156,18 +149,18 @@ TEST(gcode_file_line_ends) {
   const char* text;
   std::size_t len;
   uint32_t line;
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kLine);
   CHECK_EQ(len, 3u);
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kLine);
   CHECK_EQ(std::string(text, len), std::string("G0 X1"));
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kLine);
   CHECK_EQ(len, 0u);
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kTooLong);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kTooLong);
   CHECK_EQ(line, 4u);
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kLine);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kLine);
   CHECK_EQ(std::string(text, len), std::string("G0 X2"));
   CHECK_EQ(line, 5u);
-  CHECK_EQ_ONCE(file.next(&text, &len, &line), GcodeFile::Read::kEof);
+  CHECK_EQ(file.next(&text, &len, &line), GcodeFile::Read::kEof);
   CHECK_EQ(static_cast<int64_t>(file.bytes_read()), file.total_bytes());
   std::remove(path);
 }

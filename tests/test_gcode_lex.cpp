@@ -5,13 +5,6 @@
 #include "core/gcode_block.h"
 #include "tests/runner.h"
 
-// Evaluates `call` once (CHECK_EQ evaluates its arguments twice).
-#define CHECK_EQ_ONCE(call, want)   \
-  do {                              \
-    const auto got_ = (call);       \
-    CHECK_EQ(got_, want);           \
-  } while (0)
-
 using namespace dexmill;
 
 namespace {
@@ -26,7 +19,7 @@ TEST(lex_case_spaces_leading_zeros) {
   GcodeBlock b;
   GcodeLineKind k;
   GcodeDiag d;
-  CHECK_EQ_ONCE(read("g01 x 1 0 Y-.5 f0200.", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("g01 x 1 0 Y-.5 f0200.", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.g[kGMotion], 10);
   CHECK(b.has_word('X'));
   CHECK_EQ(b.val('X').mant, 10);
@@ -34,10 +27,10 @@ TEST(lex_case_spaces_leading_zeros) {
   CHECK_EQ(b.val('Y').frac, 1);
   CHECK_EQ(b.col_of('Y'), 11);
   CHECK_EQ(b.val('F').mant, 200);
-  CHECK_EQ_ONCE(read("G 1 X 1 0", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("G 1 X 1 0", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.g[kGMotion], 10);
   CHECK_EQ(b.val('X').mant, 10);
-  CHECK_EQ_ONCE(read("G38.2 Z-1 F10", &b, &k, &d), GcodeError::kUnsupportedGcode);
+  CHECK_EQ(read("G38.2 Z-1 F10", &b, &k, &d), GcodeError::kUnsupportedGcode);
   CHECK_EQ(std::strcmp(d.word, "G38.2"), 0);
 }
 
@@ -45,18 +38,18 @@ TEST(lex_comments_anywhere) {
   GcodeBlock b;
   GcodeLineKind k;
   GcodeDiag d;
-  CHECK_EQ_ONCE(read("G1 (comment) X2 (another)Y3 ; tail (not closed", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("G1 (comment) X2 (another)Y3 ; tail (not closed", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.val('X').mant, 2);
   CHECK_EQ(b.val('Y').mant, 3);
-  CHECK_EQ_ONCE(read("(only a comment)", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("(only a comment)", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.has, 0u);
-  CHECK_EQ_ONCE(read("(non-ASCII \xc3\xa9 \xff inside)G0 X1", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("(non-ASCII \xc3\xa9 \xff inside)G0 X1", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.val('X').mant, 1);
-  CHECK_EQ_ONCE(read("G0 X1 (open", &b, &k, &d), GcodeError::kUnterminatedComment);
+  CHECK_EQ(read("G0 X1 (open", &b, &k, &d), GcodeError::kUnterminatedComment);
   CHECK_EQ(d.col, 7);
-  CHECK_EQ_ONCE(read("(a (b))", &b, &k, &d), GcodeError::kNestedComment);
+  CHECK_EQ(read("(a (b))", &b, &k, &d), GcodeError::kNestedComment);
   CHECK_EQ(d.col, 4);
-  CHECK_EQ_ONCE(read("G0 X1 )", &b, &k, &d), GcodeError::kStrayCloseParen);
+  CHECK_EQ(read("G0 X1 )", &b, &k, &d), GcodeError::kStrayCloseParen);
   CHECK_EQ(d.col, 7);
 }
 
@@ -64,24 +57,24 @@ TEST(lex_line_forms) {
   GcodeBlock b;
   GcodeLineKind k;
   GcodeDiag d;
-  CHECK_EQ_ONCE(read("%", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("%", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(k, GcodeLineKind::kPercent);
-  CHECK_EQ_ONCE(read("  % (start)\r", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("  % (start)\r", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(k, GcodeLineKind::kPercent);
-  CHECK_EQ_ONCE(read("O1234 (name)", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("O1234 (name)", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(k, GcodeLineKind::kProgramNumber);
-  CHECK_EQ_ONCE(read("o100 sub", &b, &k, &d), GcodeError::kUnsupportedOword);
+  CHECK_EQ(read("o100 sub", &b, &k, &d), GcodeError::kUnsupportedOword);
   CHECK_EQ(std::strcmp(d.word, "O100"), 0);
-  CHECK_EQ_ONCE(read("$H", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("$H", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(k, GcodeLineKind::kGrblCommand);
   CHECK_EQ(std::strcmp(d.word, "$H"), 0);
-  CHECK_EQ_ONCE(read("/G0 X1", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("/G0 X1", &b, &k, &d), GcodeError::kOk);
   CHECK(b.block_delete);
-  CHECK_EQ_ONCE(read("N10 G0 X1\r", &b, &k, &d), GcodeError::kOk);  // CR of CRLF
+  CHECK_EQ(read("N10 G0 X1\r", &b, &k, &d), GcodeError::kOk);  // CR of CRLF
   CHECK_EQ(b.val('X').mant, 1);
-  CHECK_EQ_ONCE(read("G0\tX1\tY2", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("G0\tX1\tY2", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.val('Y').mant, 2);
-  CHECK_EQ_ONCE(read("", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(k, GcodeLineKind::kBlock);
 }
 
@@ -89,30 +82,30 @@ TEST(lex_errors) {
   GcodeBlock b;
   GcodeLineKind k;
   GcodeDiag d;
-  CHECK_EQ_ONCE(read("G0 X", &b, &k, &d), GcodeError::kMissingNumber);
+  CHECK_EQ(read("G0 X", &b, &k, &d), GcodeError::kMissingNumber);
   CHECK_EQ(d.col, 4);
-  CHECK_EQ_ONCE(read("G0 X-", &b, &k, &d), GcodeError::kBadNumber);
-  CHECK_EQ_ONCE(read("G0 X1 X2", &b, &k, &d), GcodeError::kDuplicateWord);
+  CHECK_EQ(read("G0 X-", &b, &k, &d), GcodeError::kBadNumber);
+  CHECK_EQ(read("G0 X1 X2", &b, &k, &d), GcodeError::kDuplicateWord);
   CHECK_EQ(d.col, 7);
-  CHECK_EQ_ONCE(read("G0 G1", &b, &k, &d), GcodeError::kModalGroupConflict);
-  CHECK_EQ_ONCE(read("G0 G80 X1", &b, &k, &d), GcodeError::kOk);  // LinuxCNC drops the G80
+  CHECK_EQ(read("G0 G1", &b, &k, &d), GcodeError::kModalGroupConflict);
+  CHECK_EQ(read("G0 G80 X1", &b, &k, &d), GcodeError::kOk);  // LinuxCNC drops the G80
   CHECK_EQ(b.g[kGMotion], 0);
-  CHECK_EQ_ONCE(read("G1.55", &b, &k, &d), GcodeError::kCodeNotInTenths);
-  CHECK_EQ_ONCE(read("G-1", &b, &k, &d), GcodeError::kNegativeValue);
-  CHECK_EQ_ONCE(read("M3 M4", &b, &k, &d), GcodeError::kModalGroupConflict);
-  CHECK_EQ_ONCE(read("M7 M8", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(read("G1.55", &b, &k, &d), GcodeError::kCodeNotInTenths);
+  CHECK_EQ(read("G-1", &b, &k, &d), GcodeError::kNegativeValue);
+  CHECK_EQ(read("M3 M4", &b, &k, &d), GcodeError::kModalGroupConflict);
+  CHECK_EQ(read("M7 M8", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.coolant_bits, 3);
-  CHECK_EQ_ONCE(read("M8 M9", &b, &k, &d), GcodeError::kModalGroupConflict);
-  CHECK_EQ_ONCE(read("X1 #2", &b, &k, &d), GcodeError::kUnsupportedParameter);
-  CHECK_EQ_ONCE(read("X[1]", &b, &k, &d), GcodeError::kUnsupportedExpression);
-  CHECK_EQ_ONCE(read("G0 A1", &b, &k, &d), GcodeError::kUnsupportedAxis);
-  CHECK_EQ_ONCE(read("G0 X1 \x80", &b, &k, &d), GcodeError::kBadCharacter);
+  CHECK_EQ(read("M8 M9", &b, &k, &d), GcodeError::kModalGroupConflict);
+  CHECK_EQ(read("X1 #2", &b, &k, &d), GcodeError::kUnsupportedParameter);
+  CHECK_EQ(read("X[1]", &b, &k, &d), GcodeError::kUnsupportedExpression);
+  CHECK_EQ(read("G0 A1", &b, &k, &d), GcodeError::kUnsupportedAxis);
+  CHECK_EQ(read("G0 X1 \x80", &b, &k, &d), GcodeError::kBadCharacter);
   CHECK_EQ(std::strcmp(d.word, "\\x80"), 0);
-  CHECK_EQ_ONCE(read("G0 N5", &b, &k, &d), GcodeError::kLineNumberNotFirst);
+  CHECK_EQ(read("G0 N5", &b, &k, &d), GcodeError::kLineNumberNotFirst);
   char long_line[kGcodeMaxLine + 2];
   std::memset(long_line, ' ', sizeof long_line);
   long_line[kGcodeMaxLine + 1] = 0;
-  CHECK_EQ_ONCE(read(long_line, &b, &k, &d), GcodeError::kLineTooLong);
+  CHECK_EQ(read(long_line, &b, &k, &d), GcodeError::kLineTooLong);
   long_line[kGcodeMaxLine] = 0;
-  CHECK_EQ_ONCE(read(long_line, &b, &k, &d), GcodeError::kOk);  // exactly the limit is fine
+  CHECK_EQ(read(long_line, &b, &k, &d), GcodeError::kOk);  // exactly the limit is fine
 }
