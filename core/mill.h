@@ -55,7 +55,6 @@ class Mill : public CanonSink {
   Status status() const { return status_; }
   int32_t failed_tool() const { return failed_tool_; }
   const CutStats& stats() const { return stats_; }
-  CutStats* mutable_stats() { return &stats_; }
   const Tool& tool() const { return tool_; }
   // The tool tip after the last record.
   PointNm position() const { return last_; }
