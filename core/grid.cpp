@@ -32,6 +32,7 @@ Status grid_init(DexelGrid<H>* g, const GridGeometry& geo, H* top, H* bottom, si
   g->lsb_nm = geo.lsb_nm;
   g->dirty = GridRect::none();
   g->bottoms_zero = false;
+  g->top_bound_lsb = height_max<H>();
   return Status::kOk;
 }
 
@@ -50,6 +51,7 @@ void grid_block_stock(DexelGrid<H>* g, int64_t height_lsb) {
   }
   g->dirty = g->bounds();
   g->bottoms_zero = true;
+  g->top_bound_lsb = h;
 }
 
 template <class H>

@@ -55,6 +55,10 @@ struct DexelGrid {
   // True while every bottom is 0 (set by grid_block_stock, cleared by a
   // case-c cut): lets the cutting loops reduce the figure-2 cases to a min().
   bool bottoms_zero = false;
+  // No top is above this (LSB): the m-bit maximum from grid_init, the stock
+  // height from grid_block_stock; cuts only lower tops. A tool whose shaft
+  // reaches it cuts every column as a min() (core/sweep.h).
+  int64_t top_bound_lsb = 0;
 
   size_t index(int32_t i, int32_t j) const { return static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i); }
   bool contains(int32_t i, int32_t j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }

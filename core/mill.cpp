@@ -14,6 +14,7 @@ template <class H>
 Status Mill<H>::set_tool(const Tool& t) {
   Status s = tool_check(t);
   if (!ok(s)) return s;
+  flush();  // the pending cap belongs to the tool in the spindle
   const ToolProfile p = tool_profile(t);
   if (mode_ == CutMode::kStamp) {
     s = cutter_build(p, grid_->pitch_nm, grid_->lsb_nm, words_, nwords_, &cutter_);
@@ -24,7 +25,13 @@ Status Mill<H>::set_tool(const Tool& t) {
   tool_ = t;
   have_tool_ = true;
   chained_ = false;  // a joint cut by another tool does not cover this one
+  chain_ = SweepChain{};
   return Status::kOk;
+}
+
+template <class H>
+void Mill<H>::flush() {
+  if (have_tool_ && mode_ == CutMode::kSweep) sweep_chain_end(grid_, sweep_, &stats_, &chain_);
 }
 
 template <class H>
@@ -34,7 +41,7 @@ void Mill<H>::cut_line(PointNm a, PointNm b) {
   const bool first = !(chained_ && a == last_);
   if (have_tool_) {
     if (mode_ == CutMode::kStamp) stamp_line(grid_, cutter_, a, b, &stats_, first);
-    else sweep_line(grid_, sweep_, a, b, &stats_, first);
+    else sweep_chain_line(grid_, sweep_, a, b, &stats_, &chain_);
   }
   last_ = b;
   chained_ = true;
@@ -49,7 +56,13 @@ void Mill<H>::emit(const CanonRecord& r) {
       break;
     case CanonKind::kArc: {
       if (mode_ == CutMode::kSweep) {
-        if (have_tool_) sweep_arc(grid_, sweep_, r, &stats_, !(chained_ && r.start == last_));
+        // Arcs cut both their caps: a pending line cap goes first, and the
+        // arc's start cap only when nothing ended at its start.
+        flush();
+        const bool joined = chain_.state != SweepChain::State::kFresh && chain_.end == r.start;
+        if (have_tool_) sweep_arc(grid_, sweep_, r, &stats_, !joined);
+        chain_.state = SweepChain::State::kCovered;
+        chain_.end = r.end;
         last_ = r.end;
         chained_ = true;
         break;
@@ -73,6 +86,9 @@ void Mill<H>::emit(const CanonRecord& r) {
       if (!ok(s) && ok(status_)) { status_ = s; failed_tool_ = r.tool; }
       break;
     }
+    case CanonKind::kEnd:
+      flush();
+      break;
     default:
       break;
   }

@@ -50,6 +50,12 @@ class Mill : public CanonSink {
 
   void emit(const CanonRecord& r) override;
 
+  // Sweep mode defers the end cap of the last straight move until the next
+  // move shows how much of it is needed (core/sweep.h, SweepChain). Call
+  // flush before reading the grid (a frame, the end); a program end (M2/M30)
+  // and a tool change flush by themselves. Cheap when nothing is pending.
+  void flush();
+
   // First failure (a tool the library lacks, a tool too large for the
   // stamp memory); cutting goes on with the previous tool.
   Status status() const { return status_; }
@@ -75,7 +81,8 @@ class Mill : public CanonSink {
   Status status_ = Status::kOk;
   int32_t failed_tool_ = -1;
   PointNm last_{0, 0, 0};
-  bool chained_ = false;  // the next move starts where the last cut ended
+  bool chained_ = false;  // stamp: the next move starts where the last cut ended
+  SweepChain chain_;      // sweep: the polyline so far
 };
 
 extern template class Mill<uint8_t>;

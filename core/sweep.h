@@ -83,6 +83,59 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
+// A straight piece prepared for sweeping (internal to core/sweep_line.cpp;
+// declared here so that a SweepChain can hold the last one).
+struct SweepLine {
+  int64_t len_u;             // horizontal length l, U
+  int64_t ex_q30, ey_q30;    // unit direction e
+  int64_t za_v, zb_v;        // tip heights above the grid's z0, V
+  int64_t slope_v_q32;       // dz/ds in V per U, q32
+  int64_t m_geo_q30;         // dz/ds, dimensionless, q30
+  int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
+  int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
+  bool vbit_inside;          // V-bit: |m| < k
+  bool level;                // dz == 0
+  bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+};
+
+// A polyline of straight moves cut with one tool, move by move.
+//
+// Why: for one move, a column's lowest point is either inside the move (its
+// band) or the tool standing at an end (a cap). Along a polyline of short
+// moves the caps are most of the work (a 0.3 mm move of a 3 mm ball: the
+// band is 30x3 dexels, each cap a half disc of 350). But the union of the
+// moves' sweeps needs the tool standing at an inner vertex B only on the
+// columns where both moves meeting at B have their lowest point at B: where
+// one of them has it inside, its band is at least as low (it includes B);
+// where the next has it at its own far end, that cap is lower still. So a
+// chained move cuts its band, its start cap only on that wedge (tested in
+// the previous move's frame), and leaves its end cap pending until the next
+// move or sweep_chain_end. The result is the same union as move-by-move
+// sweep_line with full caps.
+//
+// Only moves whose shaft reaches above every top are chained (their cut is
+// then a min() per column, so leaving out dominated heights changes
+// nothing); others cut their caps at once. Call sweep_chain_end before
+// reading the grid, before changing the tool, and at the end.
+struct SweepChain {
+  enum class State : uint8_t {
+    kFresh,    // no move before: cut the whole start cap
+    kCovered,  // the tool at `end` is cut already: skip the start cap
+    kPending,  // the end cap of `last` at `end` is pending
+  };
+  State state = State::kFresh;
+  PointNm end{0, 0, 0};
+  SweepLine last{};
+};
+
+// Cuts a -> b as the next move of chain c (a move that does not start at
+// c->end first ends the chain).
+template <class H>
+void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, SweepChain* c);
+// Cuts the pending end cap, if any; the chain stays joined at c->end.
+template <class H>
+void sweep_chain_end(DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* c);
+
 // Chords for the arcs not cut exactly: sagitta <= 1 um.
 constexpr int64_t kArcChordSagittaNm = 1000;
 
@@ -95,7 +148,10 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
 
 #define DEXMILL_SWEEP_EXTERN(H)                                                                             \
   extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool); \
-  extern template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);
+  extern template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool); \
+  extern template void sweep_chain_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*,    \
+                                           SweepChain*);                                                     \
+  extern template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);
 DEXMILL_SWEEP_EXTERN(uint8_t)
 DEXMILL_SWEEP_EXTERN(uint16_t)
 DEXMILL_SWEEP_EXTERN(uint32_t)

@@ -37,7 +37,7 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   const int64_t hmax = height_max<H>();
   if (zlow_v >= (hmax << kSweepVBits) || zlow_v + t.len_v <= 0) return;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
-  const bool shaft_above = ct_lsb >= hmax;
+  const bool shaft_above = ct_lsb >= g->top_bound_lsb;  // see DexelGrid::top_bound_lsb
   const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
   const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm + x0 / kSweepUnitsPerNm - r_nm - g->x0_nm, p));
   const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + x1 / kSweepUnitsPerNm + r_nm - g->x0_nm, p));

@@ -26,28 +26,16 @@ constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
 // Pieces of at most 2^27 nm keep every product below 2^63 (see sweep.h).
 constexpr int64_t kMaxPieceNm = static_cast<int64_t>(1) << 27;
 
-struct LinePiece {
-  int64_t len_u;             // l
-  int64_t ex_q30, ey_q30;    // unit direction e
-  int64_t za_v, zb_v;        // tip heights above the grid's z0, V
-  int64_t slope_v_q32;       // dz/ds in V per U, q32
-  int64_t m_geo_q30;         // dz/ds, dimensionless, q30
-  int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
-  int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
-  bool vbit_inside;          // V-bit: |m| < k
-  bool level;                // dz == 0
-  bool plunge;               // no horizontal motion (or steeper than 2^24:1)
-};
 
 int64_t sign_of(int64_t v) { return v < 0 ? -1 : 1; }
 
 // F(w) - m*w in V for the cross-track distance v (v2 = v^2), w^2 + v^2 <= R^2.
-int64_t flank_cost_v(const SweepTool& t, const LinePiece& lp, int64_t w, int64_t v2) {
+int64_t flank_cost_v(const SweepTool& t, const SweepLine& lp, int64_t w, int64_t v2) {
   return sweep_profile_v(t, w * w + v2) - mul_shift(w, lp.slope_v_q32, 32);
 }
 
 // w*(v): the unclamped minimiser of F(w) - m*w (see the file comment).
-int64_t best_w(const SweepTool& t, const LinePiece& lp, int64_t v, int64_t v2) {
+int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
   if (lp.level) return 0;
   const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - v2)));
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
@@ -80,7 +68,7 @@ int64_t best_w(const SweepTool& t, const LinePiece& lp, int64_t v, int64_t v2) {
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
-                 LinePiece* lp) {
+                 SweepLine* lp) {
   lp->za_v = za_v;
   lp->zb_v = zb_v;
   lp->level = za_v == zb_v;
@@ -134,18 +122,89 @@ void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int
   *i_hi = min_of(*i_hi, i0 + b);
 }
 
+// Which columns behind the start (lowest point: the tool standing at a) a
+// piece cuts: all, none, or the chain's wedge (core/sweep.h, SweepChain).
+enum class StartCap : uint8_t { kCut, kSkip, kWedge };
+
+struct PieceCaps {
+  StartCap start;
+  const SweepLine* prev;  // kWedge: the piece before, which ended at a
+  bool end;               // cut the columns whose lowest point is the tool at b
+};
+
+// A bound on |w*(v)| for any v: 0 when level; the ball's w* is
+// rho * m / sqrt(1 + m^2) <= R |sin|; other shapes may reach the rim.
+int64_t w_bound_of(const SweepTool& t, const SweepLine& lp) {
+  if (lp.plunge || lp.level) return 0;
+  if (t.kind != ToolKind::kBall) return t.r_u;
+  return mul_shift(t.r_u, lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30, 30) + 2;
+}
+
+// True when the previous piece, which ended at the joint, has its lowest
+// point for the column at (dx, dy) U from the joint at that end.
+bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64_t dy) {
+  const int64_t u = (dx * prev.ex_q30 + dy * prev.ey_q30 + kQ30 / 2) >> 30;  // from the joint
+  const int64_t v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
+  const int64_t v2 = min_of(v * v, t.r2_u);
+  return u >= best_w(t, prev, v, v2);
+}
+
+// The least along-track u (U, from a) of a column the piece may cut: behind
+// it the lowest point is the tool at a, and with kWedge only columns the
+// previous piece also reaches at its end count. That needs u_p >= -w_bound_p
+// in the previous frame, u_p = u cos + v' sin with |v'| <= R (turns up to
+// 60 degrees; beyond, the whole cap is a candidate).
+int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps, int64_t w_bound) {
+  const int64_t whole = -t.r_u - 1;
+  if (caps.start == StartCap::kCut) return whole;
+  if (caps.start == StartCap::kSkip) return -w_bound - 1;
+  const SweepLine& p = *caps.prev;
+  const int64_t wbp = w_bound_of(t, p);
+  const int64_t c = mul_shift(lp.ex_q30, p.ex_q30, 30) + mul_shift(lp.ey_q30, p.ey_q30, 30);
+  const int64_t sn = mul_shift(lp.ex_q30, p.ey_q30, 30) - mul_shift(lp.ey_q30, p.ex_q30, 30);
+  if (c < kQ30 / 2) return whole;
+  const int64_t reach = wbp + mul_shift(t.r_u + 2, sn < 0 ? -sn : sn, 30) + 2;
+  return min_of(-w_bound - 1, -div_ceil(reach * kQ30, c) - 2);
+}
+
+// What a piece left for its chain: the tool at its end cut as a min()
+// (covered), pending, or cut with a shaft below some top (open: the next
+// move's start cap reaches higher and is cut again).
+enum class PieceEnd : uint8_t { kCovered, kPending, kOpen };
+
 template <class H>
-void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
+PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
+                     SweepLine* lp_out);
+
+// The tool standing at p, whole.
+template <class H>
+void cut_tool_at(DexelGrid<H>* g, const SweepTool& t, PointNm p, CutStats* st) {
+  SweepLine unused;
+  sweep_piece(g, t, p, p, st, PieceCaps{StartCap::kCut, nullptr, true}, &unused);
+}
+
+template <class H>
+PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
+                     SweepLine* lp_out) {
   const int64_t za_v = muldiv_round(a.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
   const int64_t zb_v = muldiv_round(b.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
   const int64_t zlow_v = min_of(za_v, zb_v);
   const int64_t hmax = height_max<H>();
-  // Entirely above every top, or the shaft top below the grid's floor.
-  if (zlow_v >= (hmax << kSweepVBits) || zlow_v + t.len_v <= 0) return;
+  // Entirely above every top, or the whole tool (shaft top at the higher
+  // end) below the grid's floor: nothing to cut, here or at either end.
+  if (zlow_v >= (hmax << kSweepVBits) || max_of(za_v, zb_v) + t.len_v <= 0) return PieceEnd::kCovered;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
-  const bool shaft_above = ct_lsb >= hmax;
+  const bool shaft_above = ct_lsb >= g->top_bound_lsb;
+  // Only a min() per column may leave out dominated heights (SweepChain):
+  // otherwise cut the previous end cap now, with its own shaft, and this
+  // piece's caps in full.
+  if (!shaft_above) {
+    if (caps.start == StartCap::kWedge) cut_tool_at(g, t, a, st);
+    if (caps.start != StartCap::kSkip) caps.start = StartCap::kCut;
+    caps.end = true;
+  }
 
-  LinePiece lp;
+  SweepLine& lp = *lp_out;
   const int64_t dx_u = (b.x_nm - a.x_nm) * kSweepUnitsPerNm, dy_u = (b.y_nm - a.y_nm) * kSweepUnitsPerNm;
   setup_piece(t, za_v, zb_v, dx_u, dy_u, b.z_nm - a.z_nm, &lp);
   // A plunge is the tool at its lower end (the shaft covers the rest).
@@ -158,8 +217,9 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(xmax - g->x0_nm, p));
   const int64_t j_first = max_of<int64_t>(0, div_ceil(ymin - g->y0_nm, p));
   const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(ymax - g->y0_nm, p));
-  if (i_first > i_last || j_first > j_last) return;
+  if (i_first > i_last || j_first > j_last) return PieceEnd::kCovered;
   st->instances++;
+  const PieceEnd result = !shaft_above ? PieceEnd::kOpen : lp.plunge || caps.end ? PieceEnd::kCovered : PieceEnd::kPending;
 
   const int64_t p_u = p * kSweepUnitsPerNm;
   const int64_t reach2 = sweep_reach2(t);
@@ -167,17 +227,24 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   bool changed = false;
   int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
   const int64_t r_q30 = (t.r_u + 1) * kQ30;
-  // A bound on |w*(v)| for any v: 0 when level; the ball's w* is
-  // rho * m / sqrt(1 + m^2) <= R |sin|; other shapes may reach the rim.
-  const int64_t w_bound = lp.plunge || lp.level ? 0
-                          : t.kind == ToolKind::kBall
-                              ? mul_shift(t.r_u, lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30, 30) + 2
-                              : t.r_u;
+  const int64_t w_bound = w_bound_of(t, lp);
+  // The along-track range of columns the caps leave (see u_min_of).
+  const int64_t u_min_q30 = lp.plunge ? 0 : u_min_of(t, lp, caps, w_bound) * kQ30;
+  const int64_t u_max_q30 = (lp.len_u + (caps.end ? t.r_u : w_bound) + 1) * kQ30;
+  const bool collinear = caps.start == StartCap::kWedge && caps.prev->ex_q30 == lp.ex_q30 &&
+                         caps.prev->ey_q30 == lp.ey_q30;
+  // Start-side column at (u, v), i: cut it? (kWedge: the previous piece's
+  // lowest point is at this joint too.)
+  auto start_ok = [&](int64_t u, int64_t v, int64_t v2, int64_t i, int64_t dy_row_u) {
+    if (caps.start != StartCap::kWedge) return caps.start == StartCap::kCut;
+    if (collinear) return u >= best_w(t, *caps.prev, v, v2);
+    return prev_ends_here(t, *caps.prev, dx0_u + (i - i_first) * p_u, dy_row_u);
+  };
   // Along x, the along-track range of columns is the same on every row:
   // narrow it once (the divisions in `narrow` cost more than a short row).
   const bool along_x = !lp.plunge && lp.ey_q30 == 0;
   int64_t x_lo = i_first, x_hi = i_last;
-  if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &x_lo, &x_hi);
+  if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30, i_first, &x_lo, &x_hi);
   for (int64_t j = j_first; j <= j_last; ++j) {
     const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
     int64_t lo = i_first, hi = i_last;
@@ -194,7 +261,7 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         hi = x_hi;
       } else {
         narrow(v_acc, dv, -r_q30, r_q30, i_first, &lo, &hi);
-        narrow(u_acc, du, -r_q30, (lp.len_u + t.r_u + 1) * kQ30, i_first, &lo, &hi);
+        narrow(u_acc, du, u_min_q30, u_max_q30, i_first, &lo, &hi);
       }
     }
     if (lo > hi) continue;
@@ -224,6 +291,8 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         const int64_t ws2 = ws * ws + v2;
         const int64_t flank_v = lp.za_v - mul_shift(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
         const bool flank_reaches = ws2 <= reach2;
+        // Collinear wedge: the previous piece's w* on this row, once.
+        const int64_t ws_prev = collinear ? best_w(t, *caps.prev, v, v2) : 0;
         // u(i) = u_lo + (i - lo) * step exactly (e = (+-1, 0)). Split the row
         // into the flank, where the lowest point is w = w*, and the two ends.
         const int64_t step = du / kQ30, u_lo = u_acc / kQ30;
@@ -239,8 +308,14 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         f_hi = clamp(f_hi, f_lo - 1, hi);
         auto side = [&](int64_t i) {
           const int64_t u = u_lo + (i - lo) * step;
-          if (u < ws && !start_cap) return;
-          const int64_t w = u < ws ? u : u - lp.len_u;
+          int64_t w;
+          if (u < ws) {
+            if (collinear ? u < ws_prev : !start_ok(u, v, v2, i, dy_row_u)) return;
+            w = u;
+          } else {
+            if (!caps.end) return;
+            w = u - lp.len_u;
+          }
           const int64_t r2 = w * w + v2;
           if (r2 > reach2) return;
           const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
@@ -279,16 +354,24 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
         const int64_t v2 = min_of(v * v, t.r2_u);
         // |w*| <= w_bound: outside that band the clamp is decided without
         // computing w* (a square root for ramps).
-        int64_t w;
+        // The lowest point: behind the start (w = u), beyond the end
+        // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
+        int64_t w = 0;
+        int side = 0;
         if (u < -w_bound) {
-          if (!start_cap) continue;
-          w = u;
+          side = -1;
         } else if (u - lp.len_u > w_bound) {
-          w = u - lp.len_u;
+          side = 1;
         } else {
-          const int64_t ws = best_w(t, lp, v, v2);
-          if (u < ws && !start_cap) continue;
-          w = clamp(ws, u - lp.len_u, u);
+          w = best_w(t, lp, v, v2);
+          side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
+        }
+        if (side < 0) {
+          if (!start_ok(u, v, v2, i, dy_row_u)) continue;
+          w = u;
+        } else if (side > 0) {
+          if (!caps.end) continue;
+          w = u - lp.len_u;
         }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
@@ -307,15 +390,13 @@ void sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutS
   if (changed)
     g->dirty.include(GridRect{static_cast<int32_t>(ch_i0), static_cast<int32_t>(ch_j0),
                               static_cast<int32_t>(ch_i1 + 1), static_cast<int32_t>(ch_j1 + 1)});
+  return result;
 }
 
-}  // namespace
-
-template <class H>
-void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
-  a = clamp_point(a);
-  b = clamp_point(b);
-  // Split so that no piece is longer than kMaxPieceNm horizontally.
+// Splits a -> b so that no piece is longer than kMaxPieceNm horizontally
+// and calls piece(from, to, first) for each.
+template <class F>
+void for_each_piece(PointNm a, PointNm b, F piece) {
   const uint64_t span = max_of(abs_u64(b.x_nm - a.x_nm), abs_u64(b.y_nm - a.y_nm));
   const int64_t pieces = static_cast<int64_t>(span / static_cast<uint64_t>(kMaxPieceNm)) + 1;
   PointNm from = a;
@@ -326,13 +407,55 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
       to.y_nm = a.y_nm + muldiv_floor(b.y_nm - a.y_nm, k, pieces);
       to.z_nm = a.z_nm + muldiv_floor(b.z_nm - a.z_nm, k, pieces);
     }
-    sweep_piece(g, t, from, to, st, k == 1 && start_cap);
+    piece(from, to, k == 1);
     from = to;
   }
 }
 
-#define DEXMILL_SWEEP_INSTANTIATE(H) \
-  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);
+}  // namespace
+
+template <class H>
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
+  for_each_piece(clamp_point(a), clamp_point(b), [&](PointNm from, PointNm to, bool first) {
+    SweepLine lp;
+    const StartCap start = first && start_cap ? StartCap::kCut : StartCap::kSkip;
+    sweep_piece(g, t, from, to, st, PieceCaps{start, nullptr, true}, &lp);
+  });
+}
+
+template <class H>
+void sweep_chain_end(DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* c) {
+  if (c->state != SweepChain::State::kPending) return;
+  cut_tool_at(g, t, c->end, st);
+  c->state = SweepChain::State::kCovered;
+}
+
+template <class H>
+void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, SweepChain* c) {
+  a = clamp_point(a);
+  b = clamp_point(b);
+  if (!(c->end == a)) {
+    sweep_chain_end(g, t, st, c);
+    c->state = SweepChain::State::kFresh;
+  }
+  for_each_piece(a, b, [&](PointNm from, PointNm to, bool) {
+    const StartCap start = c->state == SweepChain::State::kFresh     ? StartCap::kCut
+                           : c->state == SweepChain::State::kCovered ? StartCap::kSkip
+                                                                     : StartCap::kWedge;
+    SweepLine lp;
+    const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false}, &lp);
+    c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
+               : e == PieceEnd::kCovered ? SweepChain::State::kCovered
+                                         : SweepChain::State::kFresh;
+    c->last = lp;
+    c->end = to;
+  });
+}
+
+#define DEXMILL_SWEEP_INSTANTIATE(H)                                                                         \
+  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);          \
+  template void sweep_chain_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, SweepChain*); \
+  template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);
 DEXMILL_SWEEP_INSTANTIATE(uint8_t)
 DEXMILL_SWEEP_INSTANTIATE(uint16_t)
 DEXMILL_SWEEP_INSTANTIATE(uint32_t)

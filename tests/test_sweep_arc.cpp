@@ -214,6 +214,7 @@ uint64_t run_golden(CutMode mode, const Tool& tool, CutStats* st, uint64_t* news
   InterpOptions opt;
   Interp interp(&mill, opt);
   CHECK_EQ(interp_run_text(&interp, kGoldenProgram, std::strlen(kGoldenProgram), nullptr), 0u);
+  mill.flush();
   *news = t::heap_allocations() - before;
   *st = mill.stats();
   return grid_hash(g);

@@ -57,12 +57,17 @@ void reset(Job* j) {
   j->g.dirty = GridRect::none();
 }
 
+// The path as one polyline, as core/mill.h cuts a program: stamping leaves
+// out each joint's repeated instance, sweeping chains the moves.
 void cut(Job* j, bool sweep, CutStats* st) {
   const std::vector<PointNm>& path = j->w.path;
-  for (size_t k = 1; k < path.size(); ++k) {
-    if (sweep) sweep_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, /*start_cap=*/false);
-    else stamp_line(&j->g, j->cutter, path[k - 1], path[k], st, /*include_start=*/false);
+  if (!sweep) {
+    for (size_t k = 1; k < path.size(); ++k) stamp_line(&j->g, j->cutter, path[k - 1], path[k], st, k == 1);
+    return;
   }
+  SweepChain chain;
+  for (size_t k = 1; k < path.size(); ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
+  sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
 }
 
 void run(const char* name) {

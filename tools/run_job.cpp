@@ -143,9 +143,16 @@ class CutSink final : public CanonSink {
     ++moves;
     if (w_->frames && moves % w_->every == 0) write_frame();
   }
+  // Completes the cut so far (the Mill defers a move's end cap) and passes
+  // its dirty rectangle on: before anything reads the grid.
+  void sync() {
+    mill_->flush();
+    fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
+  }
   // One frame of the sequence; false (and frame_error set) on failure.
   bool write_frame() {
     if (!frame_error.empty()) return false;
+    sync();
     const double t0 = clock_now_s();
     const RenderResult res = w_->frames_out->draw(g_, pose());
     const double t1 = clock_now_s();
@@ -494,12 +501,14 @@ int run_job(RunOptions o) {
     while (runner.step()) {
       progress.update(in.bytes_read(), in.total_bytes(), cut.moves);
       if (!cut.frame_error.empty()) break;
+      if (is_live) cut.sync();
       if (is_live && !live.tick(&grid, cut.pose(), cut.status)) {
         user_quit = !live.failed();
         break;
       }
     }
     progress.finish();
+    cut.sync();
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());
     if (live.failed()) return fail(kExitIo, "%s", live.error().c_str());

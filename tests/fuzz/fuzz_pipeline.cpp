@@ -57,6 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   opt.inch = inch;
   Interp interp(&mill, opt);
   (void)interp_run_text(&interp, reinterpret_cast<const char*>(data), size, nullptr);
+  mill.flush();
   // Invariants of the dexel set: bottom <= top, holes are 0/0.
   for (size_t k = 0; k < top.size(); ++k) {
     if (bottom[k] > top[k]) abort();

@@ -94,6 +94,7 @@ void mill_one(Out& out, CutMode mode) {
   Library lib;
   Mill<H> mill(&g, mode, &lib, w, words);
   const int errors = interpret(&mill);
+  mill.flush();
   out.str("mill ").str(mode == CutMode::kSweep ? "sweep" : "stamp").kv("m", bits).kx("grid", grid_hash(g));
   out.kv("instances", static_cast<int64_t>(mill.stats().instances));
   out.kv("updates", static_cast<int64_t>(mill.stats().dexel_updates)).kv("errors", errors);

@@ -216,6 +216,7 @@ int main(int, char**) {
   Mill<height_t> mill(&g, CutMode::kSweep, &lib, g_cutter_words, kCutterWords);
   uint32_t lines = 0;
   const int errors = play_program(&mill, &lines);
+  mill.flush();
   const uint64_t t2 = golden::board_instructions();
 
   const uint64_t hash = grid_hash(g);
