@@ -51,6 +51,27 @@ U128 shl_u128(U128 a, int s) {
 }
 
 uint64_t isqrt_u128(U128 v) {
+#ifdef __SIZEOF_INT128__
+  // A 64-bit root of the top bits (at least 31 good bits), one Newton step
+  // with the compiler's 128-bit division (error below 1 after it), then the
+  // exact correction: the same bits as the portable path (tested).
+  if (v.hi == 0) return isqrt_fast_u64(v.lo);
+  using u128 = unsigned __int128;
+  const u128 n = (static_cast<u128>(v.hi) << 64) | v.lo;
+  const int bits = 128 - __builtin_clzll(v.hi);
+  const int s = (bits - 63) & ~1;  // even; n >> s keeps 63 or 64 bits
+  u128 r = static_cast<u128>(isqrt_fast_u64(static_cast<uint64_t>(n >> s))) << (s / 2);
+  r = (r + n / r) >> 1;
+  if (r > UINT64_MAX) r = UINT64_MAX;
+  while (r * r > n) --r;
+  while (r < UINT64_MAX && (r + 1) * (r + 1) <= n) ++r;
+  return static_cast<uint64_t>(r);
+#else
+  return isqrt_u128_portable(v);
+#endif
+}
+
+uint64_t isqrt_u128_portable(U128 v) {
   // Digit-by-digit, two bits of v per step; rem fits in 66 bits, tracked as
   // a U128 to stay exact.
   U128 rem{0, 0};

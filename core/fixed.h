@@ -99,8 +99,11 @@ U128 mul_wide_u64(uint64_t a, uint64_t b);
 U128 sub_u128(U128 a, U128 b);
 // a * 2^s for 0 <= s < 64 (bits shifted out of the top are lost).
 U128 shl_u128(U128 a, int s);
-// floor(sqrt(v)): exact; the root of a 128-bit value fits 64 bits.
+// floor(sqrt(v)): exact; the root of a 128-bit value fits 64 bits. Uses the
+// compiler's 128-bit integers where the target has them; the portable
+// digit-by-digit path (always built, tested equal) elsewhere.
 uint64_t isqrt_u128(U128 v);
+uint64_t isqrt_u128_portable(U128 v);
 
 // floor(a * b / 2^s) for 0 <= s < 64, saturating to the int64 range. Exact:
 // uses the compiler's 128-bit integers where the target has them and the

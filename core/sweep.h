@@ -92,6 +92,7 @@ struct SweepLine {
   int64_t slope_v_q32;       // dz/ds in V per U, q32
   int64_t m_geo_q30;         // dz/ds, dimensionless, q30
   int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
+  int64_t ball_k_q30;        // ball: sqrt(1 + m^2)
   int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
   bool vbit_inside;          // V-bit: |m| < k
   bool level;                // dz == 0

@@ -14,6 +14,9 @@
 //   bull:   no closed form: a ternary search of the convex F(w) - m*w
 // An error in w* changes the height only to second order (w* is a minimum),
 // while the height itself is always evaluated exactly at the clamped w.
+// The ball's flank has a closed form needing no second root: with
+// w* = rho sin(phi), tan(phi) = m, F(w*) - m w* = R - rho (cos + m sin)
+// = R - rho sqrt(1 + m^2), so a band column costs one square root (rho).
 #include "core/fixed.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
@@ -34,10 +37,22 @@ int64_t flank_cost_v(const SweepTool& t, const SweepLine& lp, int64_t w, int64_t
   return sweep_profile_v(t, w * w + v2) - mul_shift(w, lp.slope_v_q32, 32);
 }
 
-// w*(v): the unclamped minimiser of F(w) - m*w (see the file comment).
-int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
+// The ball's flank height F(w*) - m w* = R - rho sqrt(1 + m^2) in V (see
+// the file comment); rho <= R, so it is within [R (1 - K), R], K the slope
+// factor, and rounds like the profile (floor of rho, then of the product).
+int64_t ball_flank_v(const SweepTool& t, const SweepLine& lp, int64_t rho) {
+  return mul_shift(t.r_u - mul_shift(rho, lp.ball_k_q30, 30), t.v_per_u_q32, 32);
+}
+
+// rho(v) = floor(sqrt(R^2 - v^2)): the tool's half chord at cross-track v.
+int64_t rho_of(const SweepTool& t, int64_t v2) {
+  return static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - v2)));
+}
+
+// w*(v): the unclamped minimiser of F(w) - m*w (see the file comment), given
+// rho = rho_of(v2) (rows along x share it between pieces and neighbours).
+int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
   if (lp.level) return 0;
-  const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - v2)));
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
   switch (t.kind) {
     case ToolKind::kFlat:
@@ -67,6 +82,10 @@ int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
   return 0;
 }
 
+int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
+  return lp.level ? 0 : best_w_rho(t, lp, v, v2, rho_of(t, v2));
+}
+
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
                  SweepLine* lp) {
   lp->za_v = za_v;
@@ -75,7 +94,10 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   const uint64_t l2 = static_cast<uint64_t>(dx_u * dx_u) + static_cast<uint64_t>(dy_u * dy_u);
   // The length with 30 fraction bits: the direction must be a unit vector
   // to 2^-30 even for a move a few U long (a 1 nm segment far from a column).
-  const int64_t len_q30 = static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
+  // Along an axis the root is |d| exactly (the common case: skip the root).
+  const int64_t len_q30 = dy_u == 0   ? static_cast<int64_t>(abs_u64(dx_u) << 30)
+                          : dx_u == 0 ? static_cast<int64_t>(abs_u64(dy_u) << 30)
+                                      : static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
   lp->len_u = (len_q30 + (kQ30 >> 1)) >> 30;
   const int64_t dz_u = dz_nm * kSweepUnitsPerNm;
   // Steeper than 2^24:1 is cut as a plunge at the lower end: the horizontal
@@ -83,10 +105,12 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->plunge = len_q30 == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(len_q30) >> 6);
   if (lp->plunge) return true;
   constexpr int64_t kQ60 = static_cast<int64_t>(1) << 60;
-  lp->ex_q30 = muldiv_round(dx_u, kQ60, len_q30);
-  lp->ey_q30 = muldiv_round(dy_u, kQ60, len_q30);
+  const bool axis = dx_u == 0 || dy_u == 0;  // then e is exactly (+-1, 0) or (0, +-1)
+  lp->ex_q30 = axis ? (dx_u > 0 ? kQ30 : dx_u < 0 ? -kQ30 : 0) : muldiv_round(dx_u, kQ60, len_q30);
+  lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
   lp->slope_v_q32 = muldiv_round(zb_v - za_v, static_cast<int64_t>(1) << 62, len_q30);
   lp->m_geo_q30 = muldiv_round(dz_u, kQ60, len_q30);
+  lp->ball_k_q30 = kQ30;
   if (lp->level) return true;
   // sqrt(dz^2 + l^2) with a 128-bit sum.
   U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
@@ -94,6 +118,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   U128 sum{dz2.hi + (dz2.lo + l2w.lo < dz2.lo ? 1u : 0u), dz2.lo + l2w.lo};
   const int64_t hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
   lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp > 0 ? hyp : 1);
+  lp->ball_k_q30 = muldiv_round(hyp, kQ60, len_q30);  // <= 2^54: steeper is a plunge
   if (t.kind == ToolKind::kVBit) {
     // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
     const int64_t k20 = t.cot_q30 >> 10, m20 = lp->m_geo_q30 / 1024;
@@ -120,6 +145,28 @@ void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int
   }
   *i_lo = max_of(*i_lo, i0 + a);
   *i_hi = min_of(*i_hi, i0 + b);
+}
+
+// The flank's inner loop (figure 2 reduced to a min()): top = min(top,
+// (h >> 24)) with h stepping by dh, q16 V with the rounding added. True when
+// a top changed. Branch-free, the changed flag folded from old ^ new.
+template <class H>
+inline uint32_t min_at(H* p, int64_t h) {
+  const H old = *p;
+  const int64_t cb = h >> (16 + kSweepVBits);
+  const H nv = cb < static_cast<int64_t>(old) ? static_cast<H>(cb) : old;
+  *p = nv;
+  return static_cast<uint32_t>(old ^ nv);
+}
+
+template <class H>
+bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
+  uint32_t diff = 0;
+  // Four columns a step: the loop's own bookkeeping is a third of a column.
+  for (const int64_t dh4 = 4 * dh; end - p >= 4; p += 4, h += dh4)
+    diff |= min_at(p, h) | min_at(p + 1, h + dh) | min_at(p + 2, h + 2 * dh) | min_at(p + 3, h + 3 * dh);
+  for (; p != end; ++p, h += dh) diff |= min_at(p, h);
+  return diff != 0;
 }
 
 // Which columns behind the start (lowest point: the tool standing at a) a
@@ -287,12 +334,19 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       const int64_t v = (v_acc + kQ30 / 2) >> 30;
       if (v * v <= reach2) {
         const int64_t v2 = min_of(v * v, t.r2_u);
-        const int64_t ws = best_w(t, lp, v, v2);
+        // One square root a row: rho serves w* of this piece and of the
+        // previous one, and the ball's flank.
+        const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
+        const int64_t rho = need_rho ? rho_of(t, v2) : 0;
+        const int64_t ws = best_w_rho(t, lp, v, v2, rho);
         const int64_t ws2 = ws * ws + v2;
-        const int64_t flank_v = lp.za_v - mul_shift(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
+        const int64_t flank_v =
+            t.kind == ToolKind::kBall
+                ? lp.za_v + ball_flank_v(t, lp, rho)
+                : lp.za_v - mul_shift(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
         const bool flank_reaches = ws2 <= reach2;
         // Collinear wedge: the previous piece's w* on this row, once.
-        const int64_t ws_prev = collinear ? best_w(t, *caps.prev, v, v2) : 0;
+        const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
         // u(i) = u_lo + (i - lo) * step exactly (e = (+-1, 0)). Split the row
         // into the flank, where the lowest point is w = w*, and the two ends.
         const int64_t step = du / kQ30, u_lo = u_acc / kQ30;
@@ -332,14 +386,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
           if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
             // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
-            bool any = false;
-            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) {
-              const int64_t cb = (h_q16 + round) >> (16 + kSweepVBits);
-              const bool lower = cb < static_cast<int64_t>(wt[i]);
-              any |= lower;
-              wt[i] = lower ? static_cast<H>(cb) : wt[i];
-            }
-            row_changed |= any;
+            row_changed |= min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
               row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
@@ -356,14 +403,19 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
-        int64_t w = 0;
+        int64_t w = 0, rho = -1;
         int side = 0;
         if (u < -w_bound) {
           side = -1;
         } else if (u - lp.len_u > w_bound) {
           side = 1;
         } else {
-          w = best_w(t, lp, v, v2);
+          if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
+            rho = rho_of(t, v2);
+            w = best_w_rho(t, lp, v, v2, rho);
+          } else {
+            w = best_w(t, lp, v, v2);
+          }
           side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
         }
         if (side < 0) {
@@ -375,7 +427,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
-        const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+        const int64_t h_v = side == 0 && rho >= 0
+                                ? lp.za_v + mul_shift(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
+                                : lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
         row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
       }
     }

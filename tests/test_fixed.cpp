@@ -105,8 +105,9 @@ TEST(fixed_isqrt_round_bound) {
 TEST(fixed_isqrt_u128) {
   std::mt19937_64 rng(9);
   for (int it = 0; it < 3000; ++it) {
-    U128 v{rng() >> (rng() % 64), rng()};
+    U128 v{it % 5 == 0 ? 0 : rng() >> (rng() % 64), rng()};
     uint64_t r = isqrt_u128(v);
+    if (!CHECK_EQ(r, isqrt_u128_portable(v))) break;
     U128 sq = mul_wide_u64(r, r);
     bool le = sq.hi < v.hi || (sq.hi == v.hi && sq.lo <= v.lo);
     if (!CHECK(le)) break;
@@ -118,6 +119,13 @@ TEST(fixed_isqrt_u128) {
   }
   CHECK_EQ(isqrt_u128(U128{0, 0}), 0u);
   CHECK_EQ(isqrt_u128(U128{UINT64_MAX, UINT64_MAX}), UINT64_MAX);
+  CHECK_EQ(isqrt_u128_portable(U128{UINT64_MAX, UINT64_MAX}), UINT64_MAX);
+  // Perfect squares and their neighbours around 2^64 and at the top.
+  for (uint64_t r : {uint64_t{1} << 32, (uint64_t{1} << 32) + 1, uint64_t{0xfffffffffffffffe}, uint64_t{3037000499}}) {
+    const U128 sq = mul_wide_u64(r, r);
+    CHECK_EQ(isqrt_u128(sq), r);
+    CHECK_EQ(isqrt_u128(sub_u128(sq, U128{0, 1})), r - 1);
+  }
 }
 
 TEST(fixed_family_conversions) {
