@@ -51,8 +51,9 @@ int64_t rho_of(const SweepTool& t, int64_t v2) {
 
 // w*(v): the unclamped minimiser of F(w) - m*w (see the file comment), given
 // rho = rho_of(v2) (rows along x share it between pieces and neighbours).
-int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
+inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
   if (lp.level) return 0;
+  if (t.kind == ToolKind::kBall) return mul_shift(rho, lp.ball_sin_q30, 30);  // the common case first
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
   switch (t.kind) {
     case ToolKind::kFlat:
@@ -108,8 +109,14 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   const bool axis = dx_u == 0 || dy_u == 0;  // then e is exactly (+-1, 0) or (0, +-1)
   lp->ex_q30 = axis ? (dx_u > 0 ? kQ30 : dx_u < 0 ? -kQ30 : 0) : muldiv_round(dx_u, kQ60, len_q30);
   lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
-  lp->slope_v_q32 = muldiv_round(zb_v - za_v, static_cast<int64_t>(1) << 62, len_q30);
-  lp->m_geo_q30 = muldiv_round(dz_u, kQ60, len_q30);
+  // x * 2^s / l rounded: along an axis l is whole (len_q30 = len_u 2^30),
+  // so the same quotient comes from 64-bit operands.
+  auto per_len = [&](int64_t x, int s) {
+    return axis ? muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u)
+                : muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
+  };
+  lp->slope_v_q32 = per_len(zb_v - za_v, 32);
+  lp->m_geo_q30 = per_len(dz_u, 30);
   lp->ball_k_q30 = kQ30;
   if (lp->level) return true;
   // sqrt(dz^2 + l^2) with a 128-bit sum.
@@ -118,7 +125,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   U128 sum{dz2.hi + (dz2.lo + l2w.lo < dz2.lo ? 1u : 0u), dz2.lo + l2w.lo};
   const int64_t hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
   lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp > 0 ? hyp : 1);
-  lp->ball_k_q30 = muldiv_round(hyp, kQ60, len_q30);  // <= 2^54: steeper is a plunge
+  lp->ball_k_q30 = per_len(hyp, 30);  // <= 2^54: steeper is a plunge
   if (t.kind == ToolKind::kVBit) {
     // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
     const int64_t k20 = t.cot_q30 >> 10, m20 = lp->m_geo_q30 / 1024;
@@ -166,6 +173,30 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   for (const int64_t dh4 = 4 * dh; end - p >= 4; p += 4, h += dh4)
     diff |= min_at(p, h) | min_at(p + 1, h + dh) | min_at(p + 2, h + 2 * dh) | min_at(p + 3, h + 3 * dh);
   for (; p != end; ++p, h += dh) diff |= min_at(p, h);
+  return diff != 0;
+}
+
+// min_run of a level flank: one height for the whole run.
+template <class H>
+bool min_run_level(H* p, H* const end, int64_t h) {
+  const int64_t cb = h >> (16 + kSweepVBits);
+  if (cb >= static_cast<int64_t>(height_max<H>())) return false;  // above every top: nothing to lower
+  const H c = static_cast<H>(cb);
+  uint32_t diff = 0;
+  for (; end - p >= 4; p += 4) {
+    const H o0 = p[0], o1 = p[1], o2 = p[2], o3 = p[3];
+    const H n0 = c < o0 ? c : o0, n1 = c < o1 ? c : o1, n2 = c < o2 ? c : o2, n3 = c < o3 ? c : o3;
+    p[0] = n0;
+    p[1] = n1;
+    p[2] = n2;
+    p[3] = n3;
+    diff |= static_cast<uint32_t>((o0 ^ n0) | (o1 ^ n1) | (o2 ^ n2) | (o3 ^ n3));
+  }
+  for (; p != end; ++p) {
+    const H o = *p, n = c < o ? c : o;
+    *p = n;
+    diff |= static_cast<uint32_t>(o ^ n);
+  }
   return diff != 0;
 }
 
@@ -375,7 +406,15 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
           row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
         };
-        for (int64_t i = lo; i < f_lo; ++i) side(i);
+        // Only visit the ends that can cut: the start side unless the
+        // previous piece's band covers it (collinear: w*_prev >= w*), the end
+        // side only with the end cap.
+        const bool start_side = caps.start == StartCap::kCut ||
+                                (caps.start == StartCap::kWedge && (!collinear || ws_prev < ws));
+        const bool low_side = step > 0 ? start_side : caps.end;  // columns lo .. f_lo - 1
+        const bool high_side = step > 0 ? caps.end : start_side;  // columns f_hi + 1 .. hi
+        if (low_side)
+          for (int64_t i = lo; i < f_lo; ++i) side(i);
         if (flank_reaches && f_lo <= f_hi) {
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
@@ -386,13 +425,15 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
           if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
             // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
-            row_changed |= min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
+            row_changed |= dh_q16 == 0 ? min_run_level(wt + f_lo, wt + f_hi + 1, h_q16 + round)
+                                       : min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
               row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
           }
         }
-        for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
+        if (high_side)
+          for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
       }
     } else {
       for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
