@@ -56,13 +56,7 @@ void Mill<H>::emit(const CanonRecord& r) {
       break;
     case CanonKind::kArc: {
       if (mode_ == CutMode::kSweep) {
-        // Arcs cut both their caps: a pending line cap goes first, and the
-        // arc's start cap only when nothing ended at its start.
-        flush();
-        const bool joined = chain_.state != SweepChain::State::kFresh && chain_.end == r.start;
-        if (have_tool_) sweep_arc(grid_, sweep_, r, &stats_, !joined);
-        chain_.state = SweepChain::State::kCovered;
-        chain_.end = r.end;
+        if (have_tool_) sweep_chain_arc(grid_, sweep_, r, &stats_, &chain_);
         last_ = r.end;
         chained_ = true;
         break;

@@ -136,6 +136,11 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
 // Cuts the pending end cap, if any; the chain stays joined at c->end.
 template <class H>
 void sweep_chain_end(DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* c);
+// Cuts an arc (sweep_arc) as the next move of chain c. Arcs cut both their
+// caps: the pending line cap goes first, and the arc's start cap only when
+// nothing ended at its start; the chain goes on covered at the arc's end.
+template <class H>
+void sweep_chain_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, SweepChain* c);
 
 // Chords for the arcs not cut exactly: sagitta <= 1 um.
 constexpr int64_t kArcChordSagittaNm = 1000;
@@ -152,7 +157,9 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
   extern template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool); \
   extern template void sweep_chain_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*,    \
                                            SweepChain*);                                                     \
-  extern template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);
+  extern template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);          \
+  extern template void sweep_chain_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*,  \
+                                          SweepChain*);
 DEXMILL_SWEEP_EXTERN(uint8_t)
 DEXMILL_SWEEP_EXTERN(uint16_t)
 DEXMILL_SWEEP_EXTERN(uint32_t)

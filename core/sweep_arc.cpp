@@ -240,8 +240,18 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
   }
 }
 
-#define DEXMILL_SWEEP_ARC_INSTANTIATE(H) \
-  template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);
+template <class H>
+void sweep_chain_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, SweepChain* c) {
+  sweep_chain_end(g, t, st, c);
+  const bool joined = c->state != SweepChain::State::kFresh && c->end == arc.start;
+  sweep_arc(g, t, arc, st, !joined);
+  c->state = SweepChain::State::kCovered;
+  c->end = arc.end;
+}
+
+#define DEXMILL_SWEEP_ARC_INSTANTIATE(H)                                                                    \
+  template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);         \
+  template void sweep_chain_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, SweepChain*);
 DEXMILL_SWEEP_ARC_INSTANTIATE(uint8_t)
 DEXMILL_SWEEP_ARC_INSTANTIATE(uint16_t)
 DEXMILL_SWEEP_ARC_INSTANTIATE(uint32_t)

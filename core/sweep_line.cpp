@@ -95,10 +95,11 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   const uint64_t l2 = static_cast<uint64_t>(dx_u * dx_u) + static_cast<uint64_t>(dy_u * dy_u);
   // The length with 30 fraction bits: the direction must be a unit vector
   // to 2^-30 even for a move a few U long (a 1 nm segment far from a column).
-  // Along an axis the root is |d| exactly (the common case: skip the root).
-  const int64_t len_q30 = dy_u == 0   ? static_cast<int64_t>(abs_u64(dx_u) << 30)
-                          : dx_u == 0 ? static_cast<int64_t>(abs_u64(dy_u) << 30)
-                                      : static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
+  // Along an axis (the common case) e is exactly (+-1, 0) or (0, +-1) and
+  // the root is |d|: skip it.
+  const bool axis = dx_u == 0 || dy_u == 0;
+  const int64_t len_q30 = axis ? static_cast<int64_t>((abs_u64(dx_u) + abs_u64(dy_u)) << 30)
+                               : static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
   lp->len_u = (len_q30 + (kQ30 >> 1)) >> 30;
   const int64_t dz_u = dz_nm * kSweepUnitsPerNm;
   // Steeper than 2^24:1 is cut as a plunge at the lower end: the horizontal
@@ -106,7 +107,6 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->plunge = len_q30 == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(len_q30) >> 6);
   if (lp->plunge) return true;
   constexpr int64_t kQ60 = static_cast<int64_t>(1) << 60;
-  const bool axis = dx_u == 0 || dy_u == 0;  // then e is exactly (+-1, 0) or (0, +-1)
   lp->ex_q30 = axis ? (dx_u > 0 ? kQ30 : dx_u < 0 ? -kQ30 : 0) : muldiv_round(dx_u, kQ60, len_q30);
   lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
   // x * 2^s / l rounded: along an axis l is whole (len_q30 = len_u 2^30),
@@ -173,30 +173,6 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   for (const int64_t dh4 = 4 * dh; end - p >= 4; p += 4, h += dh4)
     diff |= min_at(p, h) | min_at(p + 1, h + dh) | min_at(p + 2, h + 2 * dh) | min_at(p + 3, h + 3 * dh);
   for (; p != end; ++p, h += dh) diff |= min_at(p, h);
-  return diff != 0;
-}
-
-// min_run of a level flank: one height for the whole run.
-template <class H>
-bool min_run_level(H* p, H* const end, int64_t h) {
-  const int64_t cb = h >> (16 + kSweepVBits);
-  if (cb >= static_cast<int64_t>(height_max<H>())) return false;  // above every top: nothing to lower
-  const H c = static_cast<H>(cb);
-  uint32_t diff = 0;
-  for (; end - p >= 4; p += 4) {
-    const H o0 = p[0], o1 = p[1], o2 = p[2], o3 = p[3];
-    const H n0 = c < o0 ? c : o0, n1 = c < o1 ? c : o1, n2 = c < o2 ? c : o2, n3 = c < o3 ? c : o3;
-    p[0] = n0;
-    p[1] = n1;
-    p[2] = n2;
-    p[3] = n3;
-    diff |= static_cast<uint32_t>((o0 ^ n0) | (o1 ^ n1) | (o2 ^ n2) | (o3 ^ n3));
-  }
-  for (; p != end; ++p) {
-    const H o = *p, n = c < o ? c : o;
-    *p = n;
-    diff |= static_cast<uint32_t>(o ^ n);
-  }
   return diff != 0;
 }
 
@@ -425,8 +401,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
           if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
             // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
-            row_changed |= dh_q16 == 0 ? min_run_level(wt + f_lo, wt + f_hi + 1, h_q16 + round)
-                                       : min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
+            row_changed |= min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
               row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
@@ -444,7 +419,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
-        int64_t w = 0, rho = -1;
+        int64_t w = 0, rho = 0;
         int side = 0;
         if (u < -w_bound) {
           side = -1;
@@ -468,7 +443,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
-        const int64_t h_v = side == 0 && rho >= 0
+        const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
                                 ? lp.za_v + mul_shift(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
                                 : lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
         row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);

@@ -3,7 +3,6 @@
 // caps in full (sweep_line), which the oracle tests of test_sweep.cpp pin.
 #include <cstdio>
 #include <cmath>
-#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -164,7 +163,7 @@ void run_all(int64_t lsb, uint64_t seed, Diff* total) {
       const std::vector<PointNm> path = make_path(shape, &rng, mm(12), mm(26));
       for (bool jumps : {false, true}) {
         const Diff d = compare<H>(tool, path, jumps, lsb);
-        if (d.outside || getenv("CHAIN_DEBUG"))
+        if (d.outside)
           std::printf("  tool %d shape %d jumps %d m=%d: %lld differ, worst %lld\n", int(&tool - kTools), int(shape), int(jumps),
                       int(sizeof(H) * 8), static_cast<long long>(d.differ), static_cast<long long>(d.worst));
         total->dexels += d.dexels;

@@ -483,6 +483,7 @@ int run_job(RunOptions o) {
 
   // -- cut pass
   CutSink cut(&mill, &grid, &w, lib);
+  if (is_live) live.set_before_draw([&cut] { cut.sync(); });
   cut.status.inch = o.inch;
   cut.status.tool_spec = o.tool_text;
   bool user_quit = false;
@@ -501,7 +502,6 @@ int run_job(RunOptions o) {
     while (runner.step()) {
       progress.update(in.bytes_read(), in.total_bytes(), cut.moves);
       if (!cut.frame_error.empty()) break;
-      if (is_live) cut.sync();
       if (is_live && !live.tick(&grid, cut.pose(), cut.status)) {
         user_quit = !live.failed();
         break;

@@ -127,6 +127,7 @@ void LiveView::layout(const DexelGrid<height_t>& g) {
 }
 
 bool LiveView::frame(DexelGrid<height_t>* g, const CutterPose& pose, const LiveStatus& st, bool done, bool) {
+  if (before_draw_) before_draw_();
   RenderResult res = out_.draw(g, pose);
   FrameView all = screen_->screen().frame();
   const ScreenRect band{0, all.height - band_h_, all.width, all.height};

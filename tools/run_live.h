@@ -10,6 +10,7 @@
 #define DEXMILL_TOOLS_RUN_LIVE_H
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -50,6 +51,9 @@ class LiveView {
   int open(const RunOptions& o, const DexelGrid<height_t>& g, const CameraChoice& cam, int64_t total_us,
            std::string* err);
   RenderOutput* output() { return &out_; }
+  // Runs before every frame is drawn: completes the cut so far (the Mill
+  // defers a move's end cap) and passes its dirty rectangle on.
+  void set_before_draw(std::function<void()> f) { before_draw_ = std::move(f); }
 
   // Called after every interpreted line, with the simulated time so far:
   // draws and presents a frame when the pacing says so, handles input
@@ -73,6 +77,7 @@ class LiveView {
 
   std::unique_ptr<LiveScreen> screen_;
   RenderOutput out_;
+  std::function<void()> before_draw_;
   bool interactive_ = false;
   bool exit_when_done_ = false;
   int64_t hold_ms_ = 0;
