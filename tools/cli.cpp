@@ -52,6 +52,13 @@ bool parse_units(const char* value, bool* inch) {
   return true;
 }
 
+int take_input_file(const char* cmd, const char* arg, const char** file) {
+  if (arg[0] == '-' && arg[1]) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", arg, cmd);
+  if (*file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", *file, arg);
+  *file = arg;
+  return kExitOk;
+}
+
 int main(int argc, char** argv) {
   if (argc < 2) {
     usage(stderr);

@@ -20,6 +20,11 @@ int cmd_bench(int argc, char** argv);
 // error and returns false (the caller exits kExitUsage).
 bool parse_units(const char* value, bool* inch);
 
+// A non-option argument of `dexmill CMD`: the one input file, into *file.
+// Returns kExitOk, or prints the usage error for an unknown option or a
+// second file and returns kExitUsage.
+int take_input_file(const char* cmd, const char* arg, const char** file);
+
 // `dexmill: error: MESSAGE` on stderr (printf-style); returns `code`.
 int fail(int code, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
 

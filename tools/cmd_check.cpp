@@ -47,9 +47,7 @@ int cmd_check(int argc, char** argv) {
       if (!end || *end || max_errors < 0) return fail(kExitUsage, "--max-errors needs a count, not '%s'", argv[i]);
       continue;
     }
-    if (a[0] == '-' && a[1]) return fail(kExitUsage, "unknown option '%s' (try 'dexmill check --help')", a);
-    if (file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", file, a);
-    file = a;
+    if (const int code = take_input_file("check", a, &file)) return code;
   }
   if (!file) {
     usage(stderr);

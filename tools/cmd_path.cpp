@@ -105,9 +105,7 @@ int cmd_path(int argc, char** argv) {
         return fail(kExitUsage, "--chord must be between 0.000001 and 1000 mm, not '%s'", v);
       continue;
     }
-    if (a[0] == '-' && a[1]) return fail(kExitUsage, "unknown option '%s' (try 'dexmill path --help')", a);
-    if (file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", file, a);
-    file = a;
+    if (const int code = take_input_file("path", a, &file)) return code;
   }
   if (!file) {
     usage(stderr);
