@@ -4,27 +4,6 @@
 
 namespace dexmill {
 
-int64_t div_floor(int64_t n, int64_t d) {
-  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
-  int64_t q = n / d, r = n % d;
-  return (r != 0 && ((r < 0) != (d < 0))) ? q - 1 : q;
-}
-
-int64_t div_ceil(int64_t n, int64_t d) {
-  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
-  int64_t q = n / d, r = n % d;
-  return (r != 0 && ((r < 0) == (d < 0))) ? q + 1 : q;
-}
-
-int64_t div_round(int64_t n, int64_t d) {
-  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
-  int64_t q = n / d, r = n % d;
-  // |2r| >= |d| rounds away from zero; compare in unsigned to avoid overflow.
-  uint64_t ar = abs_u64(r), ad = abs_u64(d);
-  if (ar >= ad - ar) q += ((n < 0) != (d < 0)) ? -1 : 1;
-  return q;
-}
-
 U128 mul_wide_u64(uint64_t a, uint64_t b) {
   uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
   uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;

@@ -74,12 +74,31 @@ inline int64_t sat_mul_i64(int64_t a, int64_t b) {
 
 // ---- division with stated rounding (d != 0; INT64_MIN / -1 saturates) --------
 
+// Inline: the sweep's row set-up and stamping call them per row and per
+// instance, where a call costs as much as the rest of the work.
+
 // floor(n / d)
-int64_t div_floor(int64_t n, int64_t d);
+inline int64_t div_floor(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  const int64_t q = n / d, r = n % d;
+  return (r != 0 && ((r < 0) != (d < 0))) ? q - 1 : q;
+}
 // ceil(n / d)
-int64_t div_ceil(int64_t n, int64_t d);
+inline int64_t div_ceil(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  const int64_t q = n / d, r = n % d;
+  return (r != 0 && ((r < 0) == (d < 0))) ? q + 1 : q;
+}
 // n / d rounded to nearest, ties away from zero.
-int64_t div_round(int64_t n, int64_t d);
+inline int64_t div_round(int64_t n, int64_t d) {
+  if (d == -1) return n == INT64_MIN ? INT64_MAX : -n;
+  int64_t q = n / d;
+  const int64_t r = n % d;
+  // |2r| >= |d| rounds away from zero; compare in unsigned to avoid overflow.
+  const uint64_t ar = abs_u64(r), ad = abs_u64(d);
+  if (ar >= ad - ar) q += ((n < 0) != (d < 0)) ? -1 : 1;
+  return q;
+}
 
 // round(a * b / c), ties away from zero, with an exact 128-bit intermediate
 // (portable: no __int128, so it runs on 32-bit CPUs). Saturates to the int64
@@ -117,6 +136,17 @@ inline int64_t mul_shift(int64_t a, int64_t b, int s) {
   if (q > INT64_MAX) return INT64_MAX;
   if (q < INT64_MIN) return INT64_MIN;
   return static_cast<int64_t>(q);
+#else
+  return mul_shift_portable(a, b, s);
+#endif
+}
+
+// mul_shift for inner loops whose caller has proved that floor(a * b / 2^s)
+// fits int64 (the product itself may not): the same bits without the
+// saturation tests. The portable path is mul_shift's.
+inline int64_t mul_shift_fit(int64_t a, int64_t b, int s) {
+#ifdef __SIZEOF_INT128__
+  return static_cast<int64_t>((static_cast<__int128>(a) * b) >> s);
 #else
   return mul_shift_portable(a, b, s);
 #endif

@@ -65,10 +65,11 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
       break;
     }
     case ToolKind::kVBit:  // k * r
-      f_u = mul_shift(static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2))), t.cot_q30, 30);
+      f_u = mul_shift_fit(static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2))), t.cot_q30, 30);
       break;
   }
-  return mul_shift(f_u, t.v_per_u_q32, 32);
+  // f_u <= 2^37 U (a V-bit's k < 2^7), v_per_u_q32 < 2^39: fits after the shift.
+  return mul_shift_fit(f_u, t.v_per_u_q32, 32);
 }
 
 // A straight move of the tool tip from a to b (any direction: lines, ramps,

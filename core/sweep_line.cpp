@@ -17,6 +17,13 @@
 // The ball's flank has a closed form needing no second root: with
 // w* = rho sin(phi), tan(phi) = m, F(w*) - m w* = R - rho (cos + m sin)
 // = R - rho sqrt(1 + m^2), so a band column costs one square root (rho).
+//
+// Ranges (why the inner loops may use mul_shift_fit, which does not
+// saturate): a piece is at most 2^29 U long and R <= 2^30 U, so |u|, |w| <
+// 2^31 U and rho <= 2^30 U; a piece steeper than 2^24:1 is a plunge, so
+// |slope| < 2^24 * 64 V/U / lsb <= 2^30 V/U and |u * slope| < 2^61 V; the
+// ball's K = sqrt(1 + m^2) < 2^25, so rho * K < 2^55 U, and such a length
+// times v_per_u_q32 (<= 2^38) shifted by 32 is below 2^61 V.
 #include "core/fixed.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
@@ -34,14 +41,14 @@ int64_t sign_of(int64_t v) { return v < 0 ? -1 : 1; }
 
 // F(w) - m*w in V for the cross-track distance v (v2 = v^2), w^2 + v^2 <= R^2.
 int64_t flank_cost_v(const SweepTool& t, const SweepLine& lp, int64_t w, int64_t v2) {
-  return sweep_profile_v(t, w * w + v2) - mul_shift(w, lp.slope_v_q32, 32);
+  return sweep_profile_v(t, w * w + v2) - mul_shift_fit(w, lp.slope_v_q32, 32);
 }
 
 // The ball's flank height F(w*) - m w* = R - rho sqrt(1 + m^2) in V (see
 // the file comment); rho <= R, so it is within [R (1 - K), R], K the slope
 // factor, and rounds like the profile (floor of rho, then of the product).
 int64_t ball_flank_v(const SweepTool& t, const SweepLine& lp, int64_t rho) {
-  return mul_shift(t.r_u - mul_shift(rho, lp.ball_k_q30, 30), t.v_per_u_q32, 32);
+  return mul_shift_fit(t.r_u - mul_shift_fit(rho, lp.ball_k_q30, 30), t.v_per_u_q32, 32);
 }
 
 // rho(v) = floor(sqrt(R^2 - v^2)): the tool's half chord at cross-track v.
@@ -53,7 +60,7 @@ int64_t rho_of(const SweepTool& t, int64_t v2) {
 // rho = rho_of(v2) (rows along x share it between pieces and neighbours).
 inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
   if (lp.level) return 0;
-  if (t.kind == ToolKind::kBall) return mul_shift(rho, lp.ball_sin_q30, 30);  // the common case first
+  if (t.kind == ToolKind::kBall) return mul_shift_fit(rho, lp.ball_sin_q30, 30);  // the common case first
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
   switch (t.kind) {
     case ToolKind::kFlat:
@@ -350,7 +357,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t flank_v =
             t.kind == ToolKind::kBall
                 ? lp.za_v + ball_flank_v(t, lp, rho)
-                : lp.za_v - mul_shift(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
+                : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
         const bool flank_reaches = ws2 <= reach2;
         // Collinear wedge: the previous piece's w* on this row, once.
         const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
@@ -379,7 +386,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           }
           const int64_t r2 = w * w + v2;
           if (r2 > reach2) return;
-          const int64_t h_v = lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+          const int64_t h_v = lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
           row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
         };
         // Only visit the ends that can cut: the start side unless the
@@ -394,8 +401,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         if (flank_reaches && f_lo <= f_hi) {
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
-          int64_t h_q16 = (flank_v + mul_shift(u0, lp.slope_v_q32, 32)) * 65536;
-          const int64_t dh_q16 = mul_shift(step, lp.slope_v_q32, 16);
+          int64_t h_q16 = (flank_v + mul_shift_fit(u0, lp.slope_v_q32, 32)) * 65536;
+          const int64_t dh_q16 = mul_shift_fit(step, lp.slope_v_q32, 16);
           const int64_t round = static_cast<int64_t>(1) << (16 + kSweepVBits - 1);
           const int64_t cb_first = (h_q16 + round) >> (16 + kSweepVBits);
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
@@ -444,8 +451,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
         const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
-                                ? lp.za_v + mul_shift(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
-                                : lp.za_v + mul_shift(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+                                ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
+                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
         row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
       }
     }
