@@ -152,11 +152,8 @@ void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int
     if (alpha < lo || alpha > hi) *i_hi = *i_lo - 1;
     return;
   }
-  int64_t a = div_ceil(lo - alpha, beta), b = div_floor(hi - alpha, beta);
-  if (beta < 0) {
-    a = div_ceil(hi - alpha, beta);
-    b = div_floor(lo - alpha, beta);
-  }
+  const int64_t a = beta > 0 ? div_ceil(lo - alpha, beta) : div_ceil(hi - alpha, beta);
+  const int64_t b = beta > 0 ? div_floor(hi - alpha, beta) : div_floor(lo - alpha, beta);
   *i_lo = max_of(*i_lo, i0 + a);
   *i_hi = min_of(*i_hi, i0 + b);
 }
@@ -183,6 +180,14 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   return diff != 0;
 }
 
+// z (nm) as V above the grid's z0, rounded to nearest. The point is clamped
+// to 2^46 nm (clamp_point) and grid_check_geometry keeps |z0| <= 10^12 nm,
+// so the offset in V is below 2^56: one inline division, no wide muldiv.
+template <class H>
+int64_t height_v(const DexelGrid<H>& g, int64_t z_nm) {
+  return div_round((z_nm - g.z0_nm) * (static_cast<int64_t>(1) << kSweepVBits), g.lsb_nm);
+}
+
 // Which columns behind the start (lowest point: the tool standing at a) a
 // piece cuts: all, none, or the chain's wedge (core/sweep.h, SweepChain).
 enum class StartCap : uint8_t { kCut, kSkip, kWedge };
@@ -191,7 +196,20 @@ struct PieceCaps {
   StartCap start;
   const SweepLine* prev;  // kWedge: the piece before, which ended at a
   bool end;               // cut the columns whose lowest point is the tool at b
+  RootMemo* roots;        // the chain's roots, or null
 };
+
+// rho(v) through the memo (core/sweep.h, RootMemo) when there is one.
+int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
+  if (!m) return rho_of(t, v2);
+  const uint64_t x = static_cast<uint64_t>(t.r2_u - v2);
+  const unsigned slot = static_cast<unsigned>((x * 0x9E3779B97F4A7C15ull) >> (64 - RootMemo::kSlotBits));
+  if (m->key[slot] != x) {
+    m->key[slot] = x;
+    m->root[slot] = isqrt_fast_u64(x);
+  }
+  return m->root[slot];
+}
 
 // A bound on |w*(v)| for any v: 0 when level; the ball's w* is
 // rho * m / sqrt(1 + m^2) <= R |sin|; other shapes may reach the rim.
@@ -241,14 +259,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
 template <class H>
 void cut_tool_at(DexelGrid<H>* g, const SweepTool& t, PointNm p, CutStats* st) {
   SweepLine unused;
-  sweep_piece(g, t, p, p, st, PieceCaps{StartCap::kCut, nullptr, true}, &unused);
+  sweep_piece(g, t, p, p, st, PieceCaps{StartCap::kCut, nullptr, true, nullptr}, &unused);
 }
 
 template <class H>
 PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
                      SweepLine* lp_out) {
-  const int64_t za_v = muldiv_round(a.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
-  const int64_t zb_v = muldiv_round(b.z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t za_v = height_v(*g, a.z_nm), zb_v = height_v(*g, b.z_nm);
   const int64_t zlow_v = min_of(za_v, zb_v);
   const int64_t hmax = height_max<H>();
   // Entirely above every top, or the whole tool (shaft top at the higher
@@ -351,7 +368,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // One square root a row: rho serves w* of this piece and of the
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
-        const int64_t rho = need_rho ? rho_of(t, v2) : 0;
+        const int64_t rho = need_rho ? rho_memo(t, v2, caps.roots) : 0;
         const int64_t ws = best_w_rho(t, lp, v, v2, rho);
         const int64_t ws2 = ws * ws + v2;
         const int64_t flank_v =
@@ -496,7 +513,7 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
   for_each_piece(clamp_point(a), clamp_point(b), [&](PointNm from, PointNm to, bool first) {
     SweepLine lp;
     const StartCap start = first && start_cap ? StartCap::kCut : StartCap::kSkip;
-    sweep_piece(g, t, from, to, st, PieceCaps{start, nullptr, true}, &lp);
+    sweep_piece(g, t, from, to, st, PieceCaps{start, nullptr, true, nullptr}, &lp);
   });
 }
 
@@ -520,7 +537,7 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
                            : c->state == SweepChain::State::kCovered ? StartCap::kSkip
                                                                      : StartCap::kWedge;
     SweepLine lp;
-    const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false}, &lp);
+    const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
     c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
                : e == PieceEnd::kCovered ? SweepChain::State::kCovered
                                          : SweepChain::State::kFresh;
