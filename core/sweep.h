@@ -100,6 +100,16 @@ struct SweepLine {
   bool plunge;               // no horizontal motion (or steeper than 2^24:1)
 };
 
+// floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
+// are those of computing it. The moves of one x-parallel stripe meet the same
+// rows at the same cross offsets v, and each row's root rho(v) is the most
+// expensive part of its set-up; the chain keeps one for its moves.
+struct RootMemo {
+  static constexpr int kSlotBits = 5;
+  uint64_t key[1 << kSlotBits] = {};   // zeroes are true entries: sqrt(0) = 0
+  uint32_t root[1 << kSlotBits] = {};
+};
+
 // A polyline of straight moves cut with one tool, move by move.
 //
 // Why: for one move, a column's lowest point is either inside the move (its
@@ -119,16 +129,6 @@ struct SweepLine {
 // then a min() per column, so leaving out dominated heights changes
 // nothing); others cut their caps at once. Call sweep_chain_end before
 // reading the grid, before changing the tool, and at the end.
-// floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
-// are those of computing it. The moves of one x-parallel stripe meet the same
-// rows at the same cross offsets v, and each row's root rho(v) is the most
-// expensive part of its set-up; the chain keeps one for its moves.
-struct RootMemo {
-  static constexpr int kSlotBits = 5;
-  uint64_t key[1 << kSlotBits] = {};   // zeroes are true entries: sqrt(0) = 0
-  uint32_t root[1 << kSlotBits] = {};
-};
-
 struct SweepChain {
   enum class State : uint8_t {
     kFresh,    // no move before: cut the whole start cap

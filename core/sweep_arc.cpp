@@ -73,7 +73,7 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
 template <class H>
 void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
                  int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
-  const int64_t z_v = muldiv_round(z_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t z_v = sweep_height_v(*g, z_nm);
   const int64_t reach2 = sweep_reach2(t);
   // Bounding box: the end points and any axis extreme inside the sector.
   int64_t x0 = min_of(ax, bx), x1 = max_of(ax, bx), y0 = min_of(ay, by), y1 = max_of(ay, by);
@@ -121,8 +121,8 @@ template <class H>
 void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
                  int64_t bx, int64_t by, int64_t ra, int dir, int64_t z0_nm, int64_t z1_nm, CutStats* st,
                  bool start_cap) {
-  const int64_t z0_v = muldiv_round(z0_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
-  const int64_t z1_v = muldiv_round(z1_nm - g->z0_nm, static_cast<int64_t>(1) << kSweepVBits, g->lsb_nm);
+  const int64_t z0_v = sweep_height_v(*g, z0_nm);
+  const int64_t z1_v = sweep_height_v(*g, z1_nm);
   const int64_t zlow = min_of(z0_v, z1_v);
   const uint32_t phi_a = atan2_bam(ay, ax);
   int64_t span = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(by, bx) - phi_a));

@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "core/fixed.h"
 #include "core/grid.h"
 #include "core/stamp.h"
 #include "core/sweep.h"
@@ -16,6 +17,18 @@ namespace dexmill {
 // rim, so that the rounding of derived coordinates never drops a column an
 // exact test keeps (r <= R).
 inline int64_t sweep_reach2(const SweepTool& t) { return t.r2_u + 4 * t.r_u + 4; }
+
+// z (nm) as V above the grid's z0, rounded to nearest, ties away from zero
+// (muldiv_round's result): one inline division while the offset fits, which
+// is always for clamped points (clamp_point: 2^46 nm) on a checked grid
+// (|z0| <= 10^12 nm), the wide muldiv beyond.
+template <class H>
+inline int64_t sweep_height_v(const DexelGrid<H>& g, int64_t z_nm) {
+  constexpr int64_t kFits = static_cast<int64_t>(1) << (62 - kSweepVBits);
+  const int64_t dz = z_nm - g.z0_nm;
+  if (dz > -kFits && dz < kFits) return div_round(dz * (static_cast<int64_t>(1) << kSweepVBits), g.lsb_nm);
+  return muldiv_round(dz, static_cast<int64_t>(1) << kSweepVBits, g.lsb_nm);
+}
 
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top, shaft_above when it is above every possible top (then only

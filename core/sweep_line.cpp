@@ -180,14 +180,6 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   return diff != 0;
 }
 
-// z (nm) as V above the grid's z0, rounded to nearest. The point is clamped
-// to 2^46 nm (clamp_point) and grid_check_geometry keeps |z0| <= 10^12 nm,
-// so the offset in V is below 2^56: one inline division, no wide muldiv.
-template <class H>
-int64_t height_v(const DexelGrid<H>& g, int64_t z_nm) {
-  return div_round((z_nm - g.z0_nm) * (static_cast<int64_t>(1) << kSweepVBits), g.lsb_nm);
-}
-
 // Which columns behind the start (lowest point: the tool standing at a) a
 // piece cuts: all, none, or the chain's wedge (core/sweep.h, SweepChain).
 enum class StartCap : uint8_t { kCut, kSkip, kWedge };
@@ -206,7 +198,7 @@ int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
   const unsigned slot = static_cast<unsigned>((x * 0x9E3779B97F4A7C15ull) >> (64 - RootMemo::kSlotBits));
   if (m->key[slot] != x) {
     m->key[slot] = x;
-    m->root[slot] = isqrt_fast_u64(x);
+    m->root[slot] = static_cast<uint32_t>(rho_of(t, v2));
   }
   return m->root[slot];
 }
@@ -265,7 +257,7 @@ void cut_tool_at(DexelGrid<H>* g, const SweepTool& t, PointNm p, CutStats* st) {
 template <class H>
 PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
                      SweepLine* lp_out) {
-  const int64_t za_v = height_v(*g, a.z_nm), zb_v = height_v(*g, b.z_nm);
+  const int64_t za_v = sweep_height_v(*g, a.z_nm), zb_v = sweep_height_v(*g, b.z_nm);
   const int64_t zlow_v = min_of(za_v, zb_v);
   const int64_t hmax = height_max<H>();
   // Entirely above every top, or the whole tool (shaft top at the higher

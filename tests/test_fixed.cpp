@@ -172,6 +172,27 @@ TEST(fixed_mul_shift_paths_agree) {
   CHECK_EQ(mul_shift_portable(INT64_MIN, -1, 0), INT64_MAX);
 }
 
+// mul_shift_fit: the same bits as mul_shift whenever the result fits, on
+// every path (the sweep's inner loops rely on it; see core/sweep_line.cpp).
+TEST(fixed_mul_shift_fit_equals_mul_shift_when_it_fits) {
+  std::mt19937_64 rng(22);
+  int checked = 0;
+  for (int it = 0; it < 200000; ++it) {
+    const int64_t a = static_cast<int64_t>(rng()) >> (rng() % 63), b = static_cast<int64_t>(rng()) >> (rng() % 63);
+    const int s = static_cast<int>(rng() % 64);
+    const int64_t want = mul_shift(a, b, s);
+    if (want == INT64_MAX || want == INT64_MIN) continue;  // saturated: outside the contract
+    ++checked;
+    if (!CHECK_EQ(mul_shift_fit(a, b, s), want)) break;
+  }
+  CHECK(checked > 100000);
+  // The sweep's extreme ranges: rho * K, u * slope, a length times v_per_u.
+  CHECK_EQ(mul_shift_fit(int64_t(1) << 30, (int64_t(1) << 55) - 1, 30), mul_shift(int64_t(1) << 30, (int64_t(1) << 55) - 1, 30));
+  CHECK_EQ(mul_shift_fit(-(int64_t(1) << 31), (int64_t(1) << 62) - 1, 32),
+           mul_shift(-(int64_t(1) << 31), (int64_t(1) << 62) - 1, 32));
+  CHECK_EQ(mul_shift_fit(-1, 1, 1), -1);  // floor, not truncation
+}
+
 TEST(fixed_isqrt_fast_matches_exact) {
   std::mt19937_64 rng(31);
   for (int it = 0; it < 300000; ++it) {
