@@ -14,6 +14,17 @@
 // tool over the move for a column displaced by at most 1 nm horizontally (a
 // backward bound: where the tool's side is vertical, at r = R, the height is
 // infinitely sensitive to position, and no finite forward bound exists).
+//
+// The shaft: where it is below some top, figure 2 needs each column's whole
+// interval, [lowest point, shaft top of the highest position over the
+// column]: the union of the tool's intervals over a piece, which is one
+// interval because the positions over a column are one run of the piece.
+// Pieces (a move's, an arc's quarter turns or chords) are applied one after
+// another, as stamping applies instances: a piece whose tool sits inside a
+// dexel with material above and below it (case d) leaves that dexel whole,
+// so a later piece's cut does not reach above it. Only a tool deeper in the
+// material than its own length meets this, and no single dexel per column
+// can hold what it leaves.
 #ifndef DEXMILL_CORE_SWEEP_H
 #define DEXMILL_CORE_SWEEP_H
 

@@ -25,17 +25,20 @@ constexpr int64_t kMaxExactRadiusNm = static_cast<int64_t>(1) << 27;
 
 int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by - ay * bx; }
 
-// What level arcs and helices share: the tip's height range against the
-// grid's, the shaft top, the dexels of a box around the centre C (U relative
-// to C, widened by the tool), and the bookkeeping (counts, span log, one
-// dirty-rectangle update a row). column(qx, qy, &h_v) gets a column's offset
-// from C (U) and gives the lowest tool height there (V above z0), or false
-// when the tool does not reach it or the column is left to another move.
+// What level arcs and helices share: the tip's height range [zlow_v,
+// zhigh_v] against the grid's, the shaft top, the dexels of a box around the
+// centre C (U relative to C, widened by the tool), and the bookkeeping
+// (counts, span log, one dirty-rectangle update a row). column(qx, qy, &h_v,
+// ct_v) gets a column's offset from C (U) and gives the lowest tool height
+// there (V above z0), or false when the tool does not reach it or the column
+// is left to another move. When the shaft is below some top, ct_v is not
+// null and holds zlow_v: a helix raises it to the tip height of the highest
+// position covering the column (figure 2's ct is that plus the length).
 template <class H, class F>
 void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
-                 int64_t y0, int64_t x1, int64_t y1, int64_t zlow_v, F column) {
+                 int64_t y0, int64_t x1, int64_t y1, int64_t zlow_v, int64_t zhigh_v, F column) {
   const int64_t hmax = height_max<H>();
-  if (zlow_v >= (hmax << kSweepVBits) || zlow_v + t.len_v <= 0) return;
+  if (zlow_v >= (hmax << kSweepVBits) || zhigh_v + t.len_v <= 0) return;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
   const bool shaft_above = ct_lsb >= g->top_bound_lsb;  // see DexelGrid::top_bound_lsb
   const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
@@ -55,9 +58,10 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
     int64_t qx = (g->x0_nm + i_first * p - cx_nm) * kSweepUnitsPerNm;
     int64_t ch0 = i_last + 1, ch1 = i_first - 1;
     for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
-      int64_t h_v;
-      if (!column(qx, qy, &h_v)) continue;
-      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above)) {
+      int64_t h_v, zct_v = zlow_v;
+      if (!column(qx, qy, &h_v, shaft_above ? nullptr : &zct_v)) continue;
+      const int64_t ct = shaft_above ? ct_lsb : (zct_v + t.len_v) >> kSweepVBits;
+      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct, shaft_above)) {
         ch0 = min_of(ch0, i);
         ch1 = i;
       }
@@ -84,7 +88,7 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
     }
   }
-  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, [&](int64_t qx, int64_t qy, int64_t* h_v) {
+  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, z_v, [&](int64_t qx, int64_t qy, int64_t* h_v, int64_t*) {
     const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
     int64_t d2;
     if (after_a && before_b) {
@@ -123,7 +127,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
                  bool start_cap) {
   const int64_t z0_v = sweep_height_v(*g, z0_nm);
   const int64_t z1_v = sweep_height_v(*g, z1_nm);
-  const int64_t zlow = min_of(z0_v, z1_v);
+  const int64_t zlow = min_of(z0_v, z1_v), zhigh = max_of(z0_v, z1_v);
   const uint32_t phi_a = atan2_bam(ay, ax);
   int64_t span = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(by, bx) - phi_a));
   if (span <= 0) span += static_cast<int64_t>(1) << 32;  // a piece is at most a quarter turn
@@ -134,7 +138,8 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   const int64_t kappa_u = muldiv_round(dz_u, static_cast<int64_t>(1) << 60, kTwoPiQ28 * span);
   const int64_t r2 = t.r2_u, reach2 = sweep_reach2(t);
   constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
-  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, [&](int64_t qx, int64_t qy, int64_t* h_v) {
+  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, zhigh, [&](int64_t qx, int64_t qy, int64_t* h_v,
+                                                                         int64_t* zct_v) {
     const int64_t rho2 = qx * qx + qy * qy;
     const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
     if (rho - ra > t.r_u || ra - rho > t.r_u) return false;  // never within R of the circle
@@ -174,6 +179,8 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
     const int64_t d2 = (rho - ra) * (rho - ra) + 4 * t1 * t2;
     if (d2 > reach2) return false;
     *h_v = z0_v + muldiv_round(dz_v, s_best, span) + sweep_profile_v(t, min_of(d2, t.r2_u));
+    // The highest position covering the column: the window's other end.
+    if (zct_v) *zct_v = z0_v + muldiv_round(dz_v, dz_v > 0 ? hi : lo, span);
     return true;
   });
 }

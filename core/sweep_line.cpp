@@ -263,6 +263,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   // Entirely above every top, or the whole tool (shaft top at the higher
   // end) below the grid's floor: nothing to cut, here or at either end.
   if (zlow_v >= (hmax << kSweepVBits) || max_of(za_v, zb_v) + t.len_v <= 0) return PieceEnd::kCovered;
+  // The shaft top of the piece's lowest position bounds every column's:
+  // when even that is above every top, figure 2 reduces to cases a, b, e.
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
   const bool shaft_above = ct_lsb >= g->top_bound_lsb;
   // Only a min() per column may leave out dominated heights (SweepChain):
@@ -280,6 +282,25 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   // A plunge is the tool at its lower end (the shaft covers the rest).
   PointNm o = a;
   if (lp.plunge && zb_v < za_v) o = b;
+  // Figure 2's ct at a column (along-track u, v2 = min(v^2, R^2)), needed
+  // only when the shaft is below some top: the union of the tool's column
+  // intervals over the positions covering the column is [lowest point,
+  // shaft top of the highest such position]. A level piece has one shaft
+  // top, a plunge its upper end's; on a ramp the column is covered for s in
+  // [u - rho, u + rho] (within [0, l]) and z is monotonic in s. Rounded
+  // down like ct_lsb (never more than the exact top: a shallower cut).
+  const int64_t ct_plunge_lsb = (max_of(za_v, zb_v) + t.len_v) >> kSweepVBits;
+  auto shaft_top_lsb = [&](int64_t u, int64_t v2) -> int64_t {
+    if (lp.level) return ct_lsb;
+    if (lp.plunge) return ct_plunge_lsb;
+    const int64_t rho = rho_of(t, v2);
+    const int64_t s = clamp(lp.zb_v > lp.za_v ? u + rho : u - rho, int64_t{0}, lp.len_u);
+    return (lp.za_v + mul_shift_fit(s, lp.slope_v_q32, 32) + t.len_v) >> kSweepVBits;
+  };
+  // Cuts dexel i of the row at wt, wb with the lowest height h_v.
+  auto cut = [&](H* wt, H* wb, int64_t i, int64_t h_v, int64_t u, int64_t v2) {
+    return sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, shaft_above ? ct_lsb : shaft_top_lsb(u, v2), shaft_above);
+  };
   const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
   const int64_t xmin = min_of(a.x_nm, b.x_nm) - r_nm, xmax = max_of(a.x_nm, b.x_nm) + r_nm;
   const int64_t ymin = min_of(a.y_nm, b.y_nm) - r_nm, ymax = max_of(a.y_nm, b.y_nm) + r_nm;
@@ -348,7 +369,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
         if (r2 > reach2) continue;
         const int64_t h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
-        row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+        row_changed |= cut(wt, wb, i, h_v, 0, 0);
       }
     } else if (dv == 0) {
       // The move runs along the row (x-parallel): v, w*(v) and the flank's
@@ -396,7 +417,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t r2 = w * w + v2;
           if (r2 > reach2) return;
           const int64_t h_v = lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
-          row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+          row_changed |= cut(wt, wb, i, h_v, u, v2);
         };
         // Only visit the ends that can cut: the start side unless the
         // previous piece's band covers it (collinear: w*_prev >= w*), the end
@@ -420,7 +441,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
             row_changed |= min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
-              row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_q16 >> 16, ct_lsb, shaft_above);
+              row_changed |= cut(wt, wb, i, h_q16 >> 16, u0 + (i - f_lo) * step, v2);
           }
         }
         if (high_side)
@@ -462,7 +483,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
                                 ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
                                 : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
-        row_changed |= sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, shaft_above);
+        row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
     }
     if (row_changed) {

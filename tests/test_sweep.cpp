@@ -154,6 +154,49 @@ TEST(sweep_never_leaves_more_than_stamping) {
   }
 }
 
+TEST(sweep_buried_shaft_cuts_to_its_highest_top) {
+  // A tool shorter than the stock is deep: its shaft top is inside the
+  // material, and figure 2 needs the top of the union of the tool's column
+  // intervals: on a ramp the shaft top of the highest position still over
+  // the column, not of the move's lower end. Ramps down, up, diagonal, a
+  // plunge, and a ramp ending more than the tool's length below the floor
+  // (which once left material stamping removes), in every case of figure 2.
+  const int64_t pitch = 250000, lsb = 500;
+  struct Move {
+    PointNm a, b;
+    int64_t len;
+  };
+  const Move moves[] = {
+      {{mm(1), mm(6), mm(25)}, {mm(15), mm(6), -mm(15)}, mm(10)},
+      {{mm(15), mm(5), -mm(12)}, {mm(1), mm(7), mm(24)}, mm(10)},
+      {{mm(2), mm(1), mm(22)}, {mm(14), mm(11), -mm(14)}, mm(12)},
+      {{mm(8), mm(6), mm(27)}, {mm(8), mm(6), -mm(8)}, mm(10)},
+      {{mm(1), mm(6), mm(20)}, {mm(15), mm(6), -mm(100)}, mm(60)},
+  };
+  int bad = 0, cases[4] = {0, 0, 0, 0};
+  for (const Move& mv : moves) {
+    for (ToolKind k : {ToolKind::kBall, ToolKind::kFlat, ToolKind::kVBit}) {
+      const Tool tool = fixtures::test_tool(k, mm(6), 0, 90000, mv.len);
+      Fixture<uint16_t> f(64, 48, pitch, lsb);
+      SweepTool swt;
+      CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &swt), Status::kOk);
+      CutStats st;
+      sweep_line(&f.g, swt, mv.a, mv.b, &st);
+      const oracle::P3 a{double(mv.a.x_nm), double(mv.a.y_nm), double(mv.a.z_nm)};
+      const oracle::P3 b{double(mv.b.x_nm), double(mv.b.y_nm), double(mv.b.z_nm)};
+      bad += oracle::check_figure2_grid(
+          64, 48, double(pitch), double(lsb), f.top.data(), f.bottom.data(), oracle::Dexel{double(f.stock_lsb), 0},
+          double(mv.len), 1.0, [&](double x, double y) { return oracle::lowest_on_line(tool, a, b, x, y); },
+          [&](double x, double y) { return oracle::highest_on_line(tool, a, b, x, y); }, cases, "buried line");
+    }
+  }
+  CHECK_EQ(bad, 0);
+  // Every case of figure 2 is met, with enough columns to mean something.
+  CHECK_GT(cases[1], 100);
+  CHECK_GT(cases[2], 100);
+  CHECK_GT(cases[3], 100);
+}
+
 TEST(sweep_equals_infinitely_fine_stamping) {
   // Stamping with exact (not nearest-neighbour) placement at a step of
   // pitch/512 approaches the swept envelope from above; the sweep must agree

@@ -63,6 +63,45 @@ double oracle_arc(const Tool& t, double cx, double cy, double ra, double a0, dou
   return std::min(bv, g((lo + hi) / 2));
 }
 
+// The XY arc about (cx, cy) of radius ra from angle a0 through sweep
+// (radians, under a turn), tip height z0 -> z1.
+CanonRecord arc_record(double cx, double cy, double ra, double a0, double sweep, double z0, double z1) {
+  CanonRecord r{};
+  r.kind = CanonKind::kArc;
+  r.start = PointNm{llround(cx + ra * std::cos(a0)), llround(cy + ra * std::sin(a0)), llround(z0)};
+  r.end = PointNm{llround(cx + ra * std::cos(a0 + sweep)), llround(cy + ra * std::sin(a0 + sweep)), llround(z1)};
+  r.arc.plane = Plane::kXY;
+  r.arc.centre = PointNm{llround(cx), llround(cy), llround(z0)};
+  r.arc.turns = sweep > 0 ? 1 : -1;
+  return r;
+}
+
+// Highest tip height over the positions of the arc that reach (px, py), nm,
+// or -HUGE_VAL: z is monotonic in the angle, so the last (or first) reaching
+// sample, refined by bisection to the edge of the reach window.
+double oracle_arc_highest(const Tool& t, double cx, double cy, double ra, double a0, double sweep, double z0,
+                          double z1, double px, double py) {
+  const double R = double(t.diameter_nm / 2);
+  auto reaches = [&](double s) {
+    const double a = a0 + s * sweep;
+    return std::hypot(px - (cx + ra * std::cos(a)), py - (cy + ra * std::sin(a))) <= R;
+  };
+  const bool rising = z1 > z0;
+  const int n = 4000;
+  for (int k = 0; k <= n; ++k) {
+    const int kk = rising ? n - k : k;
+    if (!reaches(double(kk) / n)) continue;
+    if (k == 0) return rising ? z1 : z0;
+    double in = double(kk) / n, out = double(rising ? kk + 1 : kk - 1) / n;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = (in + out) / 2;
+      (reaches(mid) ? in : out) = mid;
+    }
+    return z0 + in * (z1 - z0);
+  }
+  return -HUGE_VAL;
+}
+
 // 64 x 64 dexels of 0.25 mm, LSB 0.5 um, 30 mm of material.
 struct ArcGrid : fixtures::TestGrid<uint16_t> {
   ArcGrid() : fixtures::TestGrid<uint16_t>(64, 64, 250000, 500) { fill(mm(30)); }
@@ -75,15 +114,8 @@ int check_arc(const Tool& tool, const char* name, double cx, double cy, double r
   ArcGrid ag;
   SweepTool swt;
   sweep_tool_prepare(tool_profile(tool), 500, &swt);
-  CanonRecord r{};
-  r.kind = CanonKind::kArc;
-  r.start = PointNm{llround(cx + ra * std::cos(a0)), llround(cy + ra * std::sin(a0)), llround(z0)};
-  r.end = PointNm{llround(cx + ra * std::cos(a0 + sweep)), llround(cy + ra * std::sin(a0 + sweep)), llround(z1)};
-  r.arc.plane = Plane::kXY;
-  r.arc.centre = PointNm{llround(cx), llround(cy), llround(z0)};
-  r.arc.turns = sweep > 0 ? 1 : -1;
   CutStats st;
-  sweep_arc(&ag.g, swt, r, &st);
+  sweep_arc(&ag.g, swt, arc_record(cx, cy, ra, a0, sweep, z0, z1), &st);
   int bad = 0;
   for (int32_t j = 0; j < 64; ++j) {
     for (int32_t i = 0; i < 64; ++i) {
@@ -151,6 +183,50 @@ TEST(sweep_arc_helix_exact_against_oracle) {
     }
   }
   CHECK_EQ(bad, 0);
+}
+
+TEST(sweep_arc_helix_buried_shaft_cuts_to_its_highest_top) {
+  // A 10 mm tool spiralling down from 5 mm to 15 mm below the floor of 8 mm
+  // of stock: its shaft top passes the stock's top and its floor, and each
+  // column's interval reaches the shaft top of the highest position over it
+  // (core/sweep_arc.cpp), not of the helix's lower end. Exact helices (ball,
+  // flat): quarter-turn pieces, each cut as one union. The stock is thinner
+  // than the tool is long, so no piece's tool is buried inside a dexel
+  // (figure 2's case d, which leaves it as it was): then the pieces' cuts
+  // add up to the union of the whole helix (core/sweep.h). Chords (other
+  // shapes) are pieces too, but their cuts are figure 2 applied chord by
+  // chord, like stamping's instances, and at the rim they do not add up to
+  // this oracle's single interval. Under 3/4 of a turn, so that no column
+  // is reached twice (the oracle's one interval a column).
+  const double cx = 8e6, cy = 8e6, ra = 5e6, a0 = 0.3, len = 10e6;
+  int bad = 0, cases[4] = {0, 0, 0, 0};
+  for (ToolKind k : {ToolKind::kBall, ToolKind::kFlat}) {
+    for (double sweep : {4.5, -4.5}) {
+      const Tool tool = fixtures::test_tool(k, mm(6), 0, 90000, int64_t(len));
+      ArcGrid ag;
+      ag.fill(mm(8));
+      SweepTool swt;
+      CHECK_EQ(sweep_tool_prepare(tool_profile(tool), 500, &swt), Status::kOk);
+      CutStats st;
+      const double z0 = 5e6, z1 = -15e6;
+      sweep_arc(&ag.g, swt, arc_record(cx, cy, ra, a0, sweep, z0, z1), &st);
+      // The oracle only near the circle (the band of reach), and not within
+      // 10 nm of its rim, where sampling misses the tool's grazing touch.
+      bad += oracle::check_figure2_grid(
+          64, 64, 250000.0, 500.0, ag.top.data(), ag.bottom.data(), oracle::Dexel{double(ag.stock_lsb), 0}, len,
+          2.0, [&](double x, double y) {
+            const double d = std::fabs(std::hypot(x - cx, y - cy) - ra) - mm(3);
+            if (std::fabs(d) < 10) return std::nan("");
+            return d < 0 ? oracle_arc(tool, cx, cy, ra, a0, sweep, z0, z1, x, y) : HUGE_VAL;
+          },
+          [&](double x, double y) { return oracle_arc_highest(tool, cx, cy, ra, a0, sweep, z0, z1, x, y); }, cases,
+          k == ToolKind::kBall ? "buried helix ball" : "buried helix flat");
+    }
+  }
+  CHECK_EQ(bad, 0);
+  CHECK_GT(cases[1], 100);
+  CHECK_GT(cases[2], 100);
+  CHECK_GT(cases[3], 100);
 }
 
 TEST(sweep_arc_chorded_cases_within_bound) {
