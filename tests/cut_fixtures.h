@@ -30,6 +30,10 @@ struct TestGrid {
     stock_lsb = std::min<int64_t>(dexmill::height_max<H>(), z_nm / g.lsb_nm);
     std::fill(top.begin(), top.end(), static_cast<H>(stock_lsb));
     std::fill(bottom.begin(), bottom.end(), H(0));
+    // What the grid may assume of such material (core/grid.h): the cutters'
+    // fast paths then run as on a real block of stock.
+    g.bottoms_zero = true;
+    g.top_bound_lsb = stock_lsb;
     return *this;
   }
 };
