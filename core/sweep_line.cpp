@@ -180,6 +180,26 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   return diff != 0;
 }
 
+// min_run of a level run (dh = 0): min() of one height c, a loop compilers
+// vectorise (level moves are most of pocketing, facing and air moves).
+template <class H>
+inline H min_level_at(H* p, H c) {
+  const H old = *p, nv = old < c ? old : c;
+  *p = nv;
+  return static_cast<H>(old ^ nv);
+}
+
+template <class H>
+bool min_level(H* p, H* const end, H c) {
+  H diff = 0;
+  // Blocks of a fixed count: -O2's cost model vectorises only those.
+  constexpr int kBlock = 16;
+  for (; end - p >= kBlock; p += kBlock)
+    for (int k = 0; k < kBlock; ++k) diff = static_cast<H>(diff | min_level_at(p + k, c));
+  for (; p != end; ++p) diff = static_cast<H>(diff | min_level_at(p, c));
+  return diff != 0;
+}
+
 // Which columns behind the start (lowest point: the tool standing at a) a
 // piece cuts: all, none, or the chain's wedge (core/sweep.h, SweepChain).
 enum class StartCap : uint8_t { kCut, kSkip, kWedge };
@@ -336,7 +356,19 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   const bool along_x = !lp.plunge && lp.ey_q30 == 0;
   int64_t x_lo = i_first, x_hi = i_last;
   if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30, i_first, &x_lo, &x_hi);
+  // Along x with the move on a row or half way between two (a raster pass
+  // whose stepover the pitch divides), rows j and mirror_sum - j sit at
+  // cross offsets v and -v, where every height is the same: set each such
+  // pair up once and cut both. Not for a turning wedge, whose start side is
+  // tested in the previous piece's frame, where the two differ.
+  const bool mirrored = along_x && (caps.start != StartCap::kWedge || collinear) &&
+                        (2 * (o.y_nm - g->y0_nm)) % p == 0;
+  const int64_t mirror_sum = mirrored ? 2 * (o.y_nm - g->y0_nm) / p : -1;
   for (int64_t j = j_first; j <= j_last; ++j) {
+    // The row of the pair that comes first does both.
+    const int64_t jm = mirror_sum - j;
+    if (mirrored && jm < j && jm >= j_first) continue;
+    const bool pair = mirrored && jm > j && jm <= j_last;
     const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
     int64_t lo = i_first, hi = i_last;
     int64_t u_acc = 0, v_acc = 0, du = 0, dv = 0;
@@ -356,13 +388,16 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       }
     }
     if (lo > hi) continue;
-    st->dexel_updates += static_cast<uint64_t>(hi - lo + 1);
-    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    st->dexel_updates += static_cast<uint64_t>(hi - lo + 1) * (pair ? 2 : 1);
+    if (st->log) {
+      st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+      if (pair) st->log->add(static_cast<int32_t>(jm), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    }
     u_acc += (lo - i_first) * du;
     v_acc += (lo - i_first) * dv;
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
-    bool row_changed = false;
+    bool row_changed = false, mirror_changed = false;
     if (lp.plunge) {
       int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
       for (int64_t i = lo; i <= hi; ++i, dx_u_col += p_u) {
@@ -404,6 +439,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         f_lo = clamp(f_lo, lo, hi + 1);
         f_hi = clamp(f_hi, f_lo - 1, hi);
+        // The mirror row, when there is one, gets the same heights.
+        H* const mt = pair ? g->top + g->index(0, static_cast<int32_t>(jm)) : nullptr;
+        H* const mb = pair ? g->bottom + g->index(0, static_cast<int32_t>(jm)) : nullptr;
         auto side = [&](int64_t i) {
           const int64_t u = u_lo + (i - lo) * step;
           int64_t w;
@@ -418,6 +456,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           if (r2 > reach2) return;
           const int64_t h_v = lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
           row_changed |= cut(wt, wb, i, h_v, u, v2);
+          if (pair) mirror_changed |= cut(mt, mb, i, h_v, u, v2);
         };
         // Only visit the ends that can cut: the start side unless the
         // previous piece's band covers it (collinear: w*_prev >= w*), the end
@@ -438,10 +477,17 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
           if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
             // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
-            row_changed |= min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
+            auto run = [&](H* top) {
+              return dh_q16 == 0 ? min_level(top + f_lo, top + f_hi + 1, static_cast<H>(min_of(cb_first, hmax)))
+                                 : min_run(top + f_lo, top + f_hi + 1, h_q16 + round, dh_q16);
+            };
+            row_changed |= run(wt);
+            if (pair) mirror_changed |= run(mt);
           } else {
-            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16)
+            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) {
               row_changed |= cut(wt, wb, i, h_q16 >> 16, u0 + (i - f_lo) * step, v2);
+              if (pair) mirror_changed |= cut(mt, mb, i, h_q16 >> 16, u0 + (i - f_lo) * step, v2);
+            }
           }
         }
         if (high_side)
@@ -486,12 +532,12 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
     }
-    if (row_changed) {
+    if (row_changed || mirror_changed) {
       changed = true;
       ch_i0 = min_of(ch_i0, lo);
       ch_i1 = max_of(ch_i1, hi);
-      ch_j0 = min_of(ch_j0, j);
-      ch_j1 = max_of(ch_j1, j);
+      ch_j0 = min_of(ch_j0, row_changed ? j : jm);
+      ch_j1 = max_of(ch_j1, mirror_changed ? jm : j);
     }
   }
   if (changed)

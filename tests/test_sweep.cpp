@@ -90,6 +90,9 @@ TEST(sweep_random_moves_against_oracle) {
       if (it == 2) b = PointNm{a.x_nm, a.y_nm + mm(7), a.z_nm - mm(2)};  // ramp along y
       if (it == 3) b = a;                                              // zero length
       if (it == 4) b = PointNm{a.x_nm + mm(6), a.y_nm + 1, a.z_nm - mm(6)};  // steep ramp
+      // Along x on a row and half way between two: the mirrored rows.
+      if (it == 5) a.y_nm = b.y_nm = pitch * 23;
+      if (it == 6) a.y_nm = b.y_nm = pitch * 17 + pitch / 2;
       bad += check_move<uint16_t>(kTools[t], kToolNames[t], a, b, pitch, 500, 3);
       if (it % 4 == 0) bad += check_move<uint8_t>(kTools[t], kToolNames[t], a, b, pitch, 100000, 3);
       if (it % 4 == 1) bad += check_move<uint32_t>(kTools[t], kToolNames[t], a, b, pitch, 20, 3);
