@@ -439,9 +439,14 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         f_lo = clamp(f_lo, lo, hi + 1);
         f_hi = clamp(f_hi, f_lo - 1, hi);
-        // The mirror row, when there is one, gets the same heights.
+        // The mirror row, when there is one.
         H* const mt = pair ? g->top + g->index(0, static_cast<int32_t>(jm)) : nullptr;
         H* const mb = pair ? g->bottom + g->index(0, static_cast<int32_t>(jm)) : nullptr;
+        // Cuts column i of the row, and of its mirror, at the same height.
+        auto cut_rows = [&](int64_t i, int64_t h_v, int64_t u) {
+          row_changed |= cut(wt, wb, i, h_v, u, v2);
+          if (pair) mirror_changed |= cut(mt, mb, i, h_v, u, v2);
+        };
         auto side = [&](int64_t i) {
           const int64_t u = u_lo + (i - lo) * step;
           int64_t w;
@@ -455,8 +460,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t r2 = w * w + v2;
           if (r2 > reach2) return;
           const int64_t h_v = lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
-          row_changed |= cut(wt, wb, i, h_v, u, v2);
-          if (pair) mirror_changed |= cut(mt, mb, i, h_v, u, v2);
+          cut_rows(i, h_v, u);
         };
         // Only visit the ends that can cut: the start side unless the
         // previous piece's band covers it (collinear: w*_prev >= w*), the end
@@ -484,10 +488,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
             row_changed |= run(wt);
             if (pair) mirror_changed |= run(mt);
           } else {
-            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) {
-              row_changed |= cut(wt, wb, i, h_q16 >> 16, u0 + (i - f_lo) * step, v2);
-              if (pair) mirror_changed |= cut(mt, mb, i, h_q16 >> 16, u0 + (i - f_lo) * step, v2);
-            }
+            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) cut_rows(i, h_q16 >> 16, u0 + (i - f_lo) * step);
           }
         }
         if (high_side)

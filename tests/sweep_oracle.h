@@ -34,6 +34,10 @@ struct P3 {
   double x, y, z;
 };
 
+// The column and its four neighbours one step away (times a slack, nm):
+// where core/sweep.h's backward bound looks for the exact height.
+constexpr double kNeighbours[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+
 // The part [*s0, *s1] of the move a -> b (s in [0, 1]) where the tool
 // reaches the column (px, py); false when it never does.
 inline bool reach_on_line(const dexmill::Tool& t, P3 a, P3 b, double px, double py, double* s0, double* s1) {
@@ -127,9 +131,8 @@ int check_figure2_grid(int nx, int ny, double pitch_nm, double lsb_nm, const H* 
       Dexel lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
       bool clear = true;
       auto inside = [&] { return t >= lo.top - 1 && t <= hi.top + 1 && b >= lo.bottom - 1 && b <= hi.bottom + 1; };
-      const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-      for (auto& o : off) {
-        if (&o != &off[0] && clear && inside()) break;  // the neighbours only when the column disagrees
+      for (auto& o : kNeighbours) {
+        if (&o != &kNeighbours[0] && clear && inside()) break;  // the neighbours only when the column disagrees
         const double x = px + o[0] * slack_nm, y = py + o[1] * slack_nm;
         const double cb = lowest(x, y), ct = highest(x, y);
         Dexel e = stock;

@@ -1,4 +1,5 @@
 // core/decimal.h: decimal text straight to nanometres, exact and rounded.
+#include <cstdio>
 #include <cstring>
 
 #include "core/decimal.h"
@@ -19,6 +20,16 @@ int64_t nm(const char* s, bool inch) {
   Decimal d;
   if (!parse(s, &d)) return INT64_MIN;
   return decimal_to_nm(d, inch);
+}
+
+// k / 10^places written with exactly `places` decimals ("-0.000007").
+const char* fixed_text(int64_t k, int places, char (&buf)[32]) {
+  int64_t scale = 1;
+  for (int i = 0; i < places; ++i) scale *= 10;
+  const int64_t a = k < 0 ? -k : k;
+  std::snprintf(buf, sizeof buf, "%s%lld.%0*lld", k < 0 ? "-" : "", static_cast<long long>(a / scale), places,
+                static_cast<long long>(a % scale));
+  return buf;
 }
 
 }  // namespace
@@ -63,13 +74,9 @@ TEST(decimal_mm_exact) {
   CHECK_EQ(nm("12345.678901", false), 12345678901);
   CHECK_EQ(nm("-9999.999999", false), -9999999999);
   // Every 6-decimal value is exact: sweep a range of them.
-  for (int64_t k = -200000; k <= 200000; k += 7) {
-    char buf[32];
-    int64_t a = k < 0 ? -k : k;
-    std::snprintf(buf, sizeof buf, "%s%lld.%06lld", k < 0 ? "-" : "", static_cast<long long>(a / 1000000),
-                  static_cast<long long>(a % 1000000));
-    if (!CHECK_EQ(nm(buf, false), k)) break;
-  }
+  char buf[32];
+  for (int64_t k = -200000; k <= 200000; k += 7)
+    if (!CHECK_EQ(nm(fixed_text(k, 6, buf), false), k)) break;
 }
 
 TEST(decimal_mm_rounding) {
@@ -87,13 +94,9 @@ TEST(decimal_inch) {
   CHECK_EQ(nm("1", true), 25400000);
   CHECK_EQ(nm("0.00001", true), 254);  // 5 decimals are exact
   CHECK_EQ(nm("-2.54321", true), -64597534);
-  for (int64_t k = -100000; k <= 100000; k += 13) {
-    char buf[32];
-    int64_t a = k < 0 ? -k : k;
-    std::snprintf(buf, sizeof buf, "%s%lld.%05lld", k < 0 ? "-" : "", static_cast<long long>(a / 100000),
-                  static_cast<long long>(a % 100000));
-    if (!CHECK_EQ(nm(buf, true), k * 254)) break;
-  }
+  char buf[32];
+  for (int64_t k = -100000; k <= 100000; k += 13)
+    if (!CHECK_EQ(nm(fixed_text(k, 5, buf), true), k * 254)) break;
   // 6 decimals: nearest nm (0.000001 in = 25.4 nm -> 25).
   CHECK_EQ(nm("0.000001", true), 25);
   CHECK_EQ(nm("0.000003", true), 76);   // 76.2

@@ -54,8 +54,7 @@ int check_move(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t
     for (int32_t i = 0; i < f.g.nx; ++i) {
       const double px = double(i) * pitch, py = double(j) * pitch;
       double lo = HUGE_VAL, hi = -HUGE_VAL;
-      const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-      for (auto& o : off) {
+      for (auto& o : oracle::kNeighbours) {
         double h = oracle::lowest_on_line(tool, pa, pb, px + o[0], py + o[1]);
         double lsbs = h == HUGE_VAL ? hmax : std::min(hmax, h / lsb);
         if (lsbs < 0) lsbs = 0;  // below the floor: a hole

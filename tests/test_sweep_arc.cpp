@@ -129,9 +129,8 @@ int check_arc(const Tool& tool, const char* name, double cx, double cy, double r
         continue;
       }
       double lo = HUGE_VAL, hi = -HUGE_VAL;
-      const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-      for (auto& o : off) {
-        if (&o != &off[0] && lo - 1.0 <= got && got <= hi + 1.0) break;
+      for (auto& o : oracle::kNeighbours) {
+        if (&o != &oracle::kNeighbours[0] && lo - 1.0 <= got && got <= hi + 1.0) break;
         double h = oracle_arc(tool, cx, cy, ra, a0, sweep, z0, z1, px + o[0] * slack_nm, py + o[1] * slack_nm);
         double l = h == HUGE_VAL ? 60000.0 : std::min(60000.0, h / 500.0);
         lo = std::min(lo, l);

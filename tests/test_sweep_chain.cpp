@@ -78,8 +78,7 @@ void oracle_range(const Tool& tool, const std::vector<PointNm>& path, bool jumps
                   double stock, double* lo, double* hi) {
   *lo = HUGE_VAL;
   *hi = -HUGE_VAL;
-  const double off[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  for (auto& o : off) {
+  for (auto& o : oracle::kNeighbours) {
     double h = HUGE_VAL;
     for (size_t k = 1; k < path.size(); ++k) {
       PointNm a = path[k - 1];
