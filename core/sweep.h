@@ -116,7 +116,7 @@ struct SweepLine {
 // rows at the same cross offsets v, and each row's root rho(v) is the most
 // expensive part of its set-up; the chain keeps one for its moves.
 struct RootMemo {
-  static constexpr int kSlotBits = 5;
+  static constexpr int kSlotBits = 7;
   uint64_t key[1 << kSlotBits] = {};   // zeroes are true entries: sqrt(0) = 0
   uint32_t root[1 << kSlotBits] = {};
 };

@@ -180,6 +180,24 @@ bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   return diff != 0;
 }
 
+// min_run on a row and its mirror, which take the same heights: one DDA
+// for both. Bit 0 of the result: p changed; bit 1: q changed.
+template <class H>
+unsigned min_run_pair(H* p, H* q, int64_t n, int64_t h, int64_t dh) {
+  uint32_t dp = 0, dq = 0;
+  for (int64_t k = 0; k < n; ++k, h += dh) {
+    const int64_t cb = h >> (16 + kSweepVBits);
+    const H op = p[k], oq = q[k];
+    const H np = cb < static_cast<int64_t>(op) ? static_cast<H>(cb) : op;
+    const H nq = cb < static_cast<int64_t>(oq) ? static_cast<H>(cb) : oq;
+    p[k] = np;
+    q[k] = nq;
+    dp |= static_cast<uint32_t>(op ^ np);
+    dq |= static_cast<uint32_t>(oq ^ nq);
+  }
+  return (dp != 0 ? 1u : 0u) | (dq != 0 ? 2u : 0u);
+}
+
 // min_run of a level run (dh = 0): min() of one height c, a loop compilers
 // vectorise (level moves are most of pocketing, facing and air moves).
 template <class H>
@@ -485,8 +503,14 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
               return dh_q16 == 0 ? min_level(top + f_lo, top + f_hi + 1, static_cast<H>(min_of(cb_first, hmax)))
                                  : min_run(top + f_lo, top + f_hi + 1, h_q16 + round, dh_q16);
             };
-            row_changed |= run(wt);
-            if (pair) mirror_changed |= run(mt);
+            if (pair && dh_q16 != 0) {
+              const unsigned c2 = min_run_pair(wt + f_lo, mt + f_lo, f_hi - f_lo + 1, h_q16 + round, dh_q16);
+              row_changed |= (c2 & 1u) != 0;
+              mirror_changed |= (c2 & 2u) != 0;
+            } else {
+              row_changed |= run(wt);
+              if (pair) mirror_changed |= run(mt);
+            }
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) cut_rows(i, h_q16 >> 16, u0 + (i - f_lo) * step);
           }
