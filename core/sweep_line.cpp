@@ -118,9 +118,15 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
   // x * 2^s / l rounded: along an axis l is whole (len_q30 = len_u 2^30),
   // so the same quotient comes from 64-bit operands.
+  // Inline when x * 2^s fits 64 bits (heights of 8 and 16 bits always do):
+  // the same quotient as muldiv_round, without its call.
   auto per_len = [&](int64_t x, int s) {
-    return axis ? muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u)
-                : muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
+    if (axis) {
+      const int64_t lim = static_cast<int64_t>(1) << (62 - s);
+      return x > -lim && x < lim ? div_round(x * (static_cast<int64_t>(1) << s), lp->len_u)
+                                 : muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u);
+    }
+    return muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
   };
   lp->slope_v_q32 = per_len(zb_v - za_v, 32);
   lp->m_geo_q30 = per_len(dz_u, 30);
@@ -269,6 +275,10 @@ int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps,
   if (caps.start == StartCap::kSkip) return -w_bound - 1;
   const SweepLine& p = *caps.prev;
   const int64_t wbp = w_bound_of(t, p);
+  // Straight on (a polyline along one line: raster passes): cos = 1,
+  // sin = 0, what the general case below computes, without its products.
+  if (lp.ex_q30 == p.ex_q30 && lp.ey_q30 == p.ey_q30 && (lp.ex_q30 == 0 || lp.ey_q30 == 0))
+    return min_of(-w_bound - 1, -(wbp + 2) - 2);
   const int64_t c = mul_shift(lp.ex_q30, p.ex_q30, 30) + mul_shift(lp.ey_q30, p.ey_q30, 30);
   const int64_t sn = mul_shift(lp.ex_q30, p.ey_q30, 30) - mul_shift(lp.ey_q30, p.ex_q30, 30);
   if (c < kQ30 / 2) return whole;
