@@ -132,12 +132,19 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->m_geo_q30 = per_len(dz_u, 30);
   lp->ball_k_q30 = kQ30;
   if (lp->level) return true;
-  // sqrt(dz^2 + l^2) with a 128-bit sum.
-  U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
-  U128 l2w{0, l2};
-  U128 sum{dz2.hi + (dz2.lo + l2w.lo < dz2.lo ? 1u : 0u), dz2.lo + l2w.lo};
-  const int64_t hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
-  lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp > 0 ? hyp : 1);
+  // sqrt(dz^2 + l^2): in 64 bits when |dz| < 2^31 U (0.5 m; l^2 < 2^59),
+  // else with a 128-bit sum. The same root either way.
+  const bool short_dz = abs_u64(dz_u) < (static_cast<uint64_t>(1) << 31);
+  int64_t hyp;
+  if (short_dz) {
+    hyp = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(dz_u * dz_u) + l2));
+  } else {
+    U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
+    U128 sum{dz2.hi + (dz2.lo + l2 < dz2.lo ? 1u : 0u), dz2.lo + l2};
+    hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
+  }
+  if (hyp < 1) hyp = 1;
+  lp->ball_sin_q30 = short_dz ? div_round(dz_u * kQ30, hyp) : muldiv_round(dz_u, kQ30, hyp);
   lp->ball_k_q30 = per_len(hyp, 30);  // <= 2^54: steeper is a plunge
   if (t.kind == ToolKind::kVBit) {
     // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
