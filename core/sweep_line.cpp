@@ -267,6 +267,13 @@ int64_t w_bound_of(const SweepTool& t, const SweepLine& lp) {
 bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64_t dy) {
   const int64_t u = (dx * prev.ex_q30 + dy * prev.ey_q30 + kQ30 / 2) >> 30;  // from the joint
   const int64_t v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
+  // The ball's w* = floor(rho sin) is monotonic in rho in [0, R]: a column
+  // beyond both ends of that range needs no root.
+  if (t.kind == ToolKind::kBall && !prev.level) {
+    const int64_t w_r = mul_shift_fit(t.r_u, prev.ball_sin_q30, 30);
+    if (u >= max_of(w_r, int64_t{0})) return true;
+    if (u < min_of(w_r, int64_t{0})) return false;
+  }
   const int64_t v2 = min_of(v * v, t.r2_u);
   return u >= best_w(t, prev, v, v2);
 }
