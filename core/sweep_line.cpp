@@ -398,6 +398,11 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   const bool along_x = !lp.plunge && lp.ey_q30 == 0;
   int64_t x_lo = i_first, x_hi = i_last;
   if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30, i_first, &x_lo, &x_hi);
+  // Along x, u(i) = x_u_lo + (i - x_lo) * x_step exactly (e = (+-1, 0)) on
+  // every row, and a flank's heights step by x_dh_q16 a column.
+  const int64_t x_step = along_x ? p_u * lp.ex_q30 / kQ30 : 0;
+  const int64_t x_u_lo = along_x ? (dx0_u + (x_lo - i_first) * p_u) * lp.ex_q30 / kQ30 : 0;
+  const int64_t x_dh_q16 = along_x ? mul_shift_fit(x_step, lp.slope_v_q32, 16) : 0;
   // Along x with the move on a row or half way between two (a raster pass
   // whose stepover the pitch divides), rows j and mirror_sum - j sit at
   // cross offsets v and -v, where every height is the same: set each such
@@ -468,9 +473,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const bool flank_reaches = ws2 <= reach2;
         // Collinear wedge: the previous piece's w* on this row, once.
         const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
-        // u(i) = u_lo + (i - lo) * step exactly (e = (+-1, 0)). Split the row
-        // into the flank, where the lowest point is w = w*, and the two ends.
-        const int64_t step = du / kQ30, u_lo = u_acc / kQ30;
+        // Split the row into the flank, where the lowest point is w = w*,
+        // and the two ends.
+        const int64_t step = x_step, u_lo = x_u_lo;
         int64_t f_lo, f_hi;  // flank columns: ws <= u <= ws + l
         if (step > 0) {
           f_lo = lo + div_ceil(ws - u_lo, step);
@@ -517,7 +522,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
           int64_t h_q16 = (flank_v + mul_shift_fit(u0, lp.slope_v_q32, 32)) * 65536;
-          const int64_t dh_q16 = mul_shift_fit(step, lp.slope_v_q32, 16);
+          const int64_t dh_q16 = x_dh_q16;
           const int64_t round = static_cast<int64_t>(1) << (16 + kSweepVBits - 1);
           const int64_t cb_first = (h_q16 + round) >> (16 + kSweepVBits);
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
