@@ -92,6 +92,15 @@ TEST(sweep_random_moves_against_oracle) {
       // Along x on a row and half way between two: the mirrored rows.
       if (it == 5) a.y_nm = b.y_nm = pitch * 23;
       if (it == 6) a.y_nm = b.y_nm = pitch * 17 + pitch / 2;
+      // Level along x on a row and half way: the mirrored rows' level runs.
+      if (it == 7) {
+        a.y_nm = pitch * 21;
+        b = PointNm{a.x_nm + mm(8), a.y_nm, a.z_nm};
+      }
+      if (it == 8) {
+        a.y_nm = pitch * 26 + pitch / 2;
+        b = PointNm{a.x_nm - mm(7), a.y_nm, a.z_nm};
+      }
       bad += check_move<uint16_t>(kTools[t], kToolNames[t], a, b, pitch, 500, 3);
       if (it % 4 == 0) bad += check_move<uint8_t>(kTools[t], kToolNames[t], a, b, pitch, 100000, 3);
       if (it % 4 == 1) bad += check_move<uint32_t>(kTools[t], kToolNames[t], a, b, pitch, 20, 3);
