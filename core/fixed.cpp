@@ -4,7 +4,7 @@
 
 namespace dexmill {
 
-U128 mul_wide_u64(uint64_t a, uint64_t b) {
+U128 mul_wide_u64_portable(uint64_t a, uint64_t b) {
   uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
   uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
   uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
@@ -93,11 +93,12 @@ void divmod_u128(U128 n, uint64_t d, uint64_t* q, uint64_t* rem) {
   *rem = r;
 }
 
-int64_t muldiv(int64_t a, int64_t b, int64_t c, bool round_nearest) {
-  // Fast paths with the same results: the product fits 64 bits, or the
-  // compiler has 128-bit integers.
-  int64_t p64;
-  if (!__builtin_mul_overflow(a, b, &p64)) return round_nearest ? div_round(p64, c) : div_floor(p64, c);
+}  // namespace
+
+// The inline muldiv_round / muldiv_floor (fixed.h) handle products that fit
+// 64 bits; this is the rest: the compiler's 128-bit integers where the
+// target has them, the portable U128 division elsewhere (the same results).
+int64_t muldiv_wide(int64_t a, int64_t b, int64_t c, bool round_nearest) {
 #ifdef __SIZEOF_INT128__
   {
     const __int128 p = static_cast<__int128>(a) * b;
@@ -128,8 +129,6 @@ int64_t muldiv(int64_t a, int64_t b, int64_t c, bool round_nearest) {
   return q > static_cast<uint64_t>(INT64_MAX) ? INT64_MAX : static_cast<int64_t>(q);
 }
 
-}  // namespace
-
 int64_t mul_shift_portable(int64_t a, int64_t b, int s) {
   const bool neg = (a < 0) != (b < 0) && a != 0 && b != 0;
   U128 m = mul_wide_u64(abs_u64(a), abs_u64(b));
@@ -146,9 +145,6 @@ int64_t mul_shift_portable(int64_t a, int64_t b, int s) {
   if (hi != 0 || lo > static_cast<uint64_t>(INT64_MAX)) return INT64_MAX;
   return static_cast<int64_t>(lo);
 }
-
-int64_t muldiv_round(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, true); }
-int64_t muldiv_floor(int64_t a, int64_t b, int64_t c) { return muldiv(a, b, c, false); }
 
 uint32_t isqrt_u64(uint64_t v) {
   // Bitwise digit-by-digit root: exact, no division, 32 iterations.

@@ -100,20 +100,43 @@ inline int64_t div_round(int64_t n, int64_t d) {
   return q;
 }
 
+// a * b / c with an exact 128-bit intermediate, rounded to nearest (ties
+// away from zero) or down (fixed.cpp; portable: no __int128 needed).
+int64_t muldiv_wide(int64_t a, int64_t b, int64_t c, bool round_nearest);
 // round(a * b / c), ties away from zero, with an exact 128-bit intermediate
 // (portable: no __int128, so it runs on 32-bit CPUs). Saturates to the int64
-// range. c != 0. Not for inner loops (a 128/64 division is a loop).
-int64_t muldiv_round(int64_t a, int64_t b, int64_t c);
+// range. c != 0. Inline when a * b fits 64 bits (one division, as per-piece
+// set-up and stamping need); beyond that a 128/64 division, not for inner
+// loops.
+inline int64_t muldiv_round(int64_t a, int64_t b, int64_t c) {
+  int64_t p;
+  if (!__builtin_mul_overflow(a, b, &p)) return div_round(p, c);
+  return muldiv_wide(a, b, c, true);
+}
 // floor(a * b / c), same properties.
-int64_t muldiv_floor(int64_t a, int64_t b, int64_t c);
+inline int64_t muldiv_floor(int64_t a, int64_t b, int64_t c) {
+  int64_t p;
+  if (!__builtin_mul_overflow(a, b, &p)) return div_floor(p, c);
+  return muldiv_wide(a, b, c, false);
+}
 
 // ---- 128-bit helpers (portable; for set-up code, not inner loops) -----------
 
 struct U128 {
   uint64_t hi, lo;
 };
-// Exact a * b.
-U128 mul_wide_u64(uint64_t a, uint64_t b);
+// Exact a * b: the compiler's 128-bit product where the target has one (per
+// move set-up uses it), the portable four-product path elsewhere (always
+// built, tested equal).
+U128 mul_wide_u64_portable(uint64_t a, uint64_t b);
+inline U128 mul_wide_u64(uint64_t a, uint64_t b) {
+#ifdef __SIZEOF_INT128__
+  const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
+  return U128{static_cast<uint64_t>(p >> 64), static_cast<uint64_t>(p)};
+#else
+  return mul_wide_u64_portable(a, b);
+#endif
+}
 // a - b modulo 2^128 (callers ensure a >= b).
 U128 sub_u128(U128 a, U128 b);
 // a * 2^s for 0 <= s < 64 (bits shifted out of the top are lost).

@@ -28,6 +28,7 @@
 #include "core/stamp.h"
 #include "core/sweep.h"
 #include "core/sweep_cut.h"
+#include "core/wide_math.h"
 
 namespace dexmill {
 namespace {
@@ -118,33 +119,18 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
   // x * 2^s / l rounded: along an axis l is whole (len_q30 = len_u 2^30),
   // so the same quotient comes from 64-bit operands.
-  // Inline when x * 2^s fits 64 bits (heights of 8 and 16 bits always do):
-  // the same quotient as muldiv_round, without its call.
   auto per_len = [&](int64_t x, int s) {
-    if (axis) {
-      const int64_t lim = static_cast<int64_t>(1) << (62 - s);
-      return x > -lim && x < lim ? div_round(x * (static_cast<int64_t>(1) << s), lp->len_u)
-                                 : muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u);
-    }
-    return muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
+    return axis ? muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u)
+                : muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
   };
   lp->slope_v_q32 = per_len(zb_v - za_v, 32);
   lp->m_geo_q30 = per_len(dz_u, 30);
   lp->ball_k_q30 = kQ30;
   if (lp->level) return true;
-  // sqrt(dz^2 + l^2): in 64 bits when |dz| < 2^31 U (0.5 m; l^2 < 2^59),
-  // else with a 128-bit sum. The same root either way.
-  const bool short_dz = abs_u64(dz_u) < (static_cast<uint64_t>(1) << 31);
-  int64_t hyp;
-  if (short_dz) {
-    hyp = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(dz_u * dz_u) + l2));
-  } else {
-    U128 dz2 = mul_wide_u64(abs_u64(dz_u), abs_u64(dz_u));
-    U128 sum{dz2.hi + (dz2.lo + l2 < dz2.lo ? 1u : 0u), dz2.lo + l2};
-    hyp = static_cast<int64_t>(sum.hi ? isqrt_u128(sum) : isqrt_fast_u64(sum.lo));
-  }
-  if (hyp < 1) hyp = 1;
-  lp->ball_sin_q30 = short_dz ? div_round(dz_u * kQ30, hyp) : muldiv_round(dz_u, kQ30, hyp);
+  // sqrt(dz^2 + l^2) with a 128-bit sum; >= |dz| >= 1 (dz != 0 when not level).
+  const U128 hyp2 = u128_add(sq_u128(dz_u), U128{0, l2});
+  const int64_t hyp = static_cast<int64_t>(hyp2.hi ? isqrt_u128(hyp2) : isqrt_fast_u64(hyp2.lo));
+  lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp);
   lp->ball_k_q30 = per_len(hyp, 30);  // <= 2^54: steeper is a plunge
   if (t.kind == ToolKind::kVBit) {
     // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
@@ -199,14 +185,8 @@ template <class H>
 unsigned min_run_pair(H* p, H* q, int64_t n, int64_t h, int64_t dh) {
   uint32_t dp = 0, dq = 0;
   for (int64_t k = 0; k < n; ++k, h += dh) {
-    const int64_t cb = h >> (16 + kSweepVBits);
-    const H op = p[k], oq = q[k];
-    const H np = cb < static_cast<int64_t>(op) ? static_cast<H>(cb) : op;
-    const H nq = cb < static_cast<int64_t>(oq) ? static_cast<H>(cb) : oq;
-    p[k] = np;
-    q[k] = nq;
-    dp |= static_cast<uint32_t>(op ^ np);
-    dq |= static_cast<uint32_t>(oq ^ nq);
+    dp |= min_at(p + k, h);
+    dq |= min_at(q + k, h);
   }
   return (dp != 0 ? 1u : 0u) | (dq != 0 ? 2u : 0u);
 }
@@ -281,20 +261,25 @@ int64_t w_bound_of(const SweepTool& t, const SweepLine& lp) {
   return mul_shift(t.r_u, lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30, 30) + 2;
 }
 
+// u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
+// lowest point for the column is at that end. The ball's w* = floor(rho sin)
+// is monotonic in rho in [0, R], so a u beyond both ends of that range
+// needs no root.
+bool at_or_past_w(const SweepTool& t, const SweepLine& lp, int64_t u, int64_t v) {
+  if (t.kind == ToolKind::kBall && !lp.level) {
+    const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
+    if (u >= max_of(w_r, int64_t{0})) return true;
+    if (u < min_of(w_r, int64_t{0})) return false;
+  }
+  return u >= best_w(t, lp, v, min_of(v * v, t.r2_u));
+}
+
 // True when the previous piece, which ended at the joint, has its lowest
 // point for the column at (dx, dy) U from the joint at that end.
 bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64_t dy) {
   const int64_t u = (dx * prev.ex_q30 + dy * prev.ey_q30 + kQ30 / 2) >> 30;  // from the joint
   const int64_t v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
-  // The ball's w* = floor(rho sin) is monotonic in rho in [0, R]: a column
-  // beyond both ends of that range needs no root.
-  if (t.kind == ToolKind::kBall && !prev.level) {
-    const int64_t w_r = mul_shift_fit(t.r_u, prev.ball_sin_q30, 30);
-    if (u >= max_of(w_r, int64_t{0})) return true;
-    if (u < min_of(w_r, int64_t{0})) return false;
-  }
-  const int64_t v2 = min_of(v * v, t.r2_u);
-  return u >= best_w(t, prev, v, v2);
+  return at_or_past_w(t, prev, u, v);
 }
 
 // The least along-track u (U, from a) of a column the piece may cut: behind
@@ -407,9 +392,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                          caps.prev->ey_q30 == lp.ey_q30;
   // Start-side column at (u, v), i: cut it? (kWedge: the previous piece's
   // lowest point is at this joint too.)
-  auto start_ok = [&](int64_t u, int64_t v, int64_t v2, int64_t i, int64_t dy_row_u) {
+  auto start_ok = [&](int64_t u, int64_t v, int64_t i, int64_t dy_row_u) {
     if (caps.start != StartCap::kWedge) return caps.start == StartCap::kCut;
-    if (collinear) return u >= best_w(t, *caps.prev, v, v2);
+    if (collinear) return at_or_past_w(t, *caps.prev, u, v);
     return prev_ends_here(t, *caps.prev, dx0_u + (i - i_first) * p_u, dy_row_u);
   };
   // Along x, the along-track range of columns is the same on every row:
@@ -517,7 +502,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t u = u_lo + (i - lo) * step;
           int64_t w;
           if (u < ws) {
-            if (collinear ? u < ws_prev : !start_ok(u, v, v2, i, dy_row_u)) return;
+            if (collinear ? u < ws_prev : !start_ok(u, v, i, dy_row_u)) return;
             w = u;
           } else {
             if (!caps.end) return;
@@ -593,7 +578,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
         }
         if (side < 0) {
-          if (!start_ok(u, v, v2, i, dy_row_u)) continue;
+          if (!start_ok(u, v, i, dy_row_u)) continue;
           w = u;
         } else if (side > 0) {
           if (!caps.end) continue;

@@ -154,6 +154,18 @@ TEST(fixed_family_conversions) {
   }
 }
 
+TEST(fixed_mul_wide_paths_agree) {
+  std::mt19937_64 rng(22);
+  for (int it = 0; it < 100000; ++it) {
+    const uint64_t a = rng() >> (rng() % 64), b = rng() >> (rng() % 64);
+    const U128 fast = mul_wide_u64(a, b), portable = mul_wide_u64_portable(a, b);
+    if (!CHECK_EQ(fast.hi, portable.hi) || !CHECK_EQ(fast.lo, portable.lo)) break;
+  }
+  const U128 top = mul_wide_u64_portable(UINT64_MAX, UINT64_MAX);  // (2^64 - 1)^2 = 2^128 - 2^65 + 1
+  CHECK_EQ(top.hi, UINT64_MAX - 1);
+  CHECK_EQ(top.lo, uint64_t{1});
+}
+
 TEST(fixed_mul_shift_paths_agree) {
   std::mt19937_64 rng(21);
   for (int it = 0; it < 100000; ++it) {
