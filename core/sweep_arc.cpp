@@ -41,12 +41,12 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   if (zlow_v >= (hmax << kSweepVBits) || zhigh_v + t.len_v <= 0) return;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
   const bool shaft_above = ct_lsb >= g->top_bound_lsb;  // see DexelGrid::top_bound_lsb
-  const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
-  const int64_t i_first = max_of<int64_t>(0, div_ceil(cx_nm + x0 / kSweepUnitsPerNm - r_nm - g->x0_nm, p));
-  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(cx_nm + x1 / kSweepUnitsPerNm + r_nm - g->x0_nm, p));
-  const int64_t j_first = max_of<int64_t>(0, div_ceil(cy_nm + y0 / kSweepUnitsPerNm - r_nm - g->y0_nm, p));
-  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(cy_nm + y1 / kSweepUnitsPerNm + r_nm - g->y0_nm, p));
-  if (i_first > i_last || j_first > j_last) return;
+  SweepColumns box;
+  if (!sweep_columns(*g, t, cx_nm + x0 / kSweepUnitsPerNm, cx_nm + x1 / kSweepUnitsPerNm, cy_nm + y0 / kSweepUnitsPerNm,
+                     cy_nm + y1 / kSweepUnitsPerNm, &box))
+    return;
+  const int64_t p = g->pitch_nm;
+  const int64_t i_first = box.i_first, i_last = box.i_last, j_first = box.j_first, j_last = box.j_last;
   st->instances++;
   const int64_t p_u = p * kSweepUnitsPerNm;
   for (int64_t j = j_first; j <= j_last; ++j) {

@@ -18,6 +18,23 @@ namespace dexmill {
 // exact test keeps (r <= R).
 inline int64_t sweep_reach2(const SweepTool& t) { return t.r2_u + 4 * t.r_u + 4; }
 
+// The dexels a tool may reach from anywhere in the box [x0, x1] x [y0, y1]
+// (nm, of the tool axis): axes within its radius + 1 nm of the box, clipped
+// to the grid. False when there are none.
+struct SweepColumns {
+  int64_t i_first, i_last, j_first, j_last;
+};
+template <class H>
+inline bool sweep_columns(const DexelGrid<H>& g, const SweepTool& t, int64_t x0, int64_t x1, int64_t y0, int64_t y1,
+                          SweepColumns* c) {
+  const int64_t p = g.pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
+  c->i_first = max_of<int64_t>(0, div_ceil(x0 - r_nm - g.x0_nm, p));
+  c->i_last = min_of<int64_t>(g.nx - 1, div_floor(x1 + r_nm - g.x0_nm, p));
+  c->j_first = max_of<int64_t>(0, div_ceil(y0 - r_nm - g.y0_nm, p));
+  c->j_last = min_of<int64_t>(g.ny - 1, div_floor(y1 + r_nm - g.y0_nm, p));
+  return c->i_first <= c->i_last && c->j_first <= c->j_last;
+}
+
 // z (nm) as V above the grid's z0, rounded to nearest, ties away from zero
 // (muldiv_round's result): one inline division while the offset fits, which
 // is always for clamped points (clamp_point: 2^46 nm) on a checked grid

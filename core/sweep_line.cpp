@@ -367,14 +367,12 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   auto cut = [&](H* wt, H* wb, int64_t i, int64_t h_v, int64_t u, int64_t v2) {
     return sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, shaft_above ? ct_lsb : shaft_top_lsb(u, v2), shaft_above);
   };
-  const int64_t p = g->pitch_nm, r_nm = t.r_u / kSweepUnitsPerNm + 1;
-  const int64_t xmin = min_of(a.x_nm, b.x_nm) - r_nm, xmax = max_of(a.x_nm, b.x_nm) + r_nm;
-  const int64_t ymin = min_of(a.y_nm, b.y_nm) - r_nm, ymax = max_of(a.y_nm, b.y_nm) + r_nm;
-  const int64_t i_first = max_of<int64_t>(0, div_ceil(xmin - g->x0_nm, p));
-  const int64_t i_last = min_of<int64_t>(g->nx - 1, div_floor(xmax - g->x0_nm, p));
-  const int64_t j_first = max_of<int64_t>(0, div_ceil(ymin - g->y0_nm, p));
-  const int64_t j_last = min_of<int64_t>(g->ny - 1, div_floor(ymax - g->y0_nm, p));
-  if (i_first > i_last || j_first > j_last) return PieceEnd::kCovered;
+  SweepColumns box;
+  if (!sweep_columns(*g, t, min_of(a.x_nm, b.x_nm), max_of(a.x_nm, b.x_nm), min_of(a.y_nm, b.y_nm),
+                     max_of(a.y_nm, b.y_nm), &box))
+    return PieceEnd::kCovered;
+  const int64_t p = g->pitch_nm;
+  const int64_t i_first = box.i_first, i_last = box.i_last, j_first = box.j_first, j_last = box.j_last;
   st->instances++;
   const PieceEnd result = !shaft_above ? PieceEnd::kOpen : lp.plunge || caps.end ? PieceEnd::kCovered : PieceEnd::kPending;
 
