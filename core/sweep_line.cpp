@@ -253,24 +253,28 @@ int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
   return m->root[slot];
 }
 
-// A bound on |w*(v)| for any v: 0 when level; the ball's w* is
-// rho * m / sqrt(1 + m^2) <= R |sin|; other shapes may reach the rim.
-int64_t w_bound_of(const SweepTool& t, const SweepLine& lp) {
-  if (lp.plunge || lp.level) return 0;
-  if (t.kind != ToolKind::kBall) return t.r_u;
-  return mul_shift(t.r_u, lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30, 30) + 2;
+// The range [lo, hi] of w*(v) over every v (the file comment), signed: 0
+// when level; the ball's w* = floor(rho sin) is monotonic in rho in [0, R],
+// so it lies between 0 and w_r = floor(R sin) (behind the start on a
+// descent, ahead of it on an ascent); other shapes may reach the rim.
+// Outside it a column's side (behind the start, past the end) is decided
+// without the root that w* needs.
+struct WRange {
+  int64_t lo, hi;
+};
+WRange w_range_of(const SweepTool& t, const SweepLine& lp) {
+  if (lp.plunge || lp.level) return WRange{0, 0};
+  if (t.kind != ToolKind::kBall) return WRange{-t.r_u, t.r_u};
+  const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
+  return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
 }
 
 // u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
-// lowest point for the column is at that end. The ball's w* = floor(rho sin)
-// is monotonic in rho in [0, R], so a u beyond both ends of that range
-// needs no root.
+// lowest point for the column is at that end. Outside w_range_of no root.
 bool at_or_past_w(const SweepTool& t, const SweepLine& lp, int64_t u, int64_t v) {
-  if (t.kind == ToolKind::kBall && !lp.level) {
-    const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
-    if (u >= max_of(w_r, int64_t{0})) return true;
-    if (u < min_of(w_r, int64_t{0})) return false;
-  }
+  const WRange wr = w_range_of(t, lp);
+  if (u >= wr.hi) return true;
+  if (u < wr.lo) return false;
   return u >= best_w(t, lp, v, min_of(v * v, t.r2_u));
 }
 
@@ -284,24 +288,24 @@ bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64
 
 // The least along-track u (U, from a) of a column the piece may cut: behind
 // it the lowest point is the tool at a, and with kWedge only columns the
-// previous piece also reaches at its end count. That needs u_p >= -w_bound_p
-// in the previous frame, u_p = u cos + v' sin with |v'| <= R (turns up to
-// 60 degrees; beyond, the whole cap is a candidate).
-int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps, int64_t w_bound) {
+// previous piece also reaches at its end count. That needs u_p >= lo_p
+// (w_range_of) in the previous frame, u_p = u cos + v' sin with |v'| <= R
+// (turns up to 60 degrees; beyond, the whole cap is a candidate).
+int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps, int64_t w_lo) {
   const int64_t whole = -t.r_u - 1;
   if (caps.start == StartCap::kCut) return whole;
-  if (caps.start == StartCap::kSkip) return -w_bound - 1;
+  if (caps.start == StartCap::kSkip) return w_lo - 1;
   const SweepLine& p = *caps.prev;
-  const int64_t wbp = w_bound_of(t, p);
+  const int64_t wbp = -w_range_of(t, p).lo + 2;  // >= -lo_p, >= 2
   // Straight on (a polyline along one line: raster passes): cos = 1,
   // sin = 0, what the general case below computes, without its products.
   if (lp.ex_q30 == p.ex_q30 && lp.ey_q30 == p.ey_q30 && (lp.ex_q30 == 0 || lp.ey_q30 == 0))
-    return min_of(-w_bound - 1, -(wbp + 2) - 2);
+    return min_of(w_lo - 1, -(wbp + 2) - 2);
   const int64_t c = mul_shift(lp.ex_q30, p.ex_q30, 30) + mul_shift(lp.ey_q30, p.ey_q30, 30);
   const int64_t sn = mul_shift(lp.ex_q30, p.ey_q30, 30) - mul_shift(lp.ey_q30, p.ex_q30, 30);
   if (c < kQ30 / 2) return whole;
   const int64_t reach = wbp + mul_shift(t.r_u + 2, sn < 0 ? -sn : sn, 30) + 2;
-  return min_of(-w_bound - 1, -div_ceil(reach * kQ30, c) - 2);
+  return min_of(w_lo - 1, -div_ceil(reach * kQ30, c) - 2);
 }
 
 // What a piece left for its chain: the tool at its end cut as a min()
@@ -382,10 +386,10 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   bool changed = false;
   int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
   const int64_t r_q30 = (t.r_u + 1) * kQ30;
-  const int64_t w_bound = w_bound_of(t, lp);
+  const WRange wr = w_range_of(t, lp);
   // The along-track range of columns the caps leave (see u_min_of).
-  const int64_t u_min_q30 = lp.plunge ? 0 : u_min_of(t, lp, caps, w_bound) * kQ30;
-  const int64_t u_max_q30 = (lp.len_u + (caps.end ? t.r_u : w_bound) + 1) * kQ30;
+  const int64_t u_min_q30 = lp.plunge ? 0 : u_min_of(t, lp, caps, wr.lo) * kQ30;
+  const int64_t u_max_q30 = (lp.len_u + (caps.end ? t.r_u : wr.hi) + 1) * kQ30;
   const bool collinear = caps.start == StartCap::kWedge && caps.prev->ex_q30 == lp.ex_q30 &&
                          caps.prev->ey_q30 == lp.ey_q30;
   // Start-side column at (u, v), i: cut it? (kWedge: the previous piece's
@@ -556,15 +560,15 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
         if (v * v > reach2) continue;
         const int64_t v2 = min_of(v * v, t.r2_u);
-        // |w*| <= w_bound: outside that band the clamp is decided without
+        // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
         int64_t w = 0, rho = 0;
         int side = 0;
-        if (u < -w_bound) {
+        if (u < wr.lo) {
           side = -1;
-        } else if (u - lp.len_u > w_bound) {
+        } else if (u - lp.len_u > wr.hi) {
           side = 1;
         } else {
           if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
