@@ -145,16 +145,74 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   return true;
 }
 
+// floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
+// to start, then an add and a compare a step (a Bresenham walk).
+struct FloorWalk {
+  int64_t q, r, dq, dr, d;  // n = q d + r, 0 <= r < d; dn = dq d + dr
+  void start(int64_t n0, int64_t dn, int64_t den) {
+    d = den;
+    q = div_floor(n0, d);
+    r = n0 - q * d;
+    dq = div_floor(dn, d);
+    dr = dn - dq * d;
+  }
+  void next() {
+    r += dr;
+    const int64_t carry = r >= d ? 1 : 0;  // branch-free: rows alternate unpredictably
+    r -= carry * d;
+    q += dq + carry;
+  }
+};
+
+// The columns i of a row with lo <= alpha + (i - i0) * beta <= hi, row after
+// row as alpha grows by gamma: i0 + ceil(..) .. i0 + floor(..) with the
+// quotients walked (per row, two divisions each would cost more than a
+// short row's columns; more so where 64-bit division is a library call).
+struct NarrowRows {
+  bool flat;              // beta == 0: the whole row or none
+  int64_t alpha, gamma;   // flat: the row's alpha and its step
+  int64_t lo, hi;         // flat: the bounds
+  FloorWalk first, last;  // otherwise: i0 - first.q .. i0 + last.q
+  void start(int64_t alpha0, int64_t gamma_, int64_t beta, int64_t lo_, int64_t hi_) {
+    flat = beta == 0;
+    alpha = alpha0;
+    gamma = gamma_;
+    lo = lo_;
+    hi = hi_;
+    if (flat) return;
+    // ceil(x / b) = -floor(-x / b); for beta < 0 both sides flip sign.
+    if (beta > 0) {
+      first.start(alpha0 - lo_, gamma_, beta);
+      last.start(hi_ - alpha0, -gamma_, beta);
+    } else {
+      first.start(hi_ - alpha0, -gamma_, -beta);
+      last.start(alpha0 - lo_, gamma_, -beta);
+    }
+  }
+  // Narrows [*i_lo, *i_hi] to the current row's columns.
+  void apply(int64_t i0, int64_t* i_lo, int64_t* i_hi) const {
+    if (flat) {
+      if (alpha < lo || alpha > hi) *i_hi = *i_lo - 1;
+      return;
+    }
+    *i_lo = max_of(*i_lo, i0 - first.q);
+    *i_hi = min_of(*i_hi, i0 + last.q);
+  }
+  void next() {
+    if (flat) {
+      alpha += gamma;
+    } else {
+      first.next();
+      last.next();
+    }
+  }
+};
+
 // Narrows [*i_lo, *i_hi] to the i with lo <= alpha + (i - i0) * beta <= hi.
 void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int64_t* i_lo, int64_t* i_hi) {
-  if (beta == 0) {
-    if (alpha < lo || alpha > hi) *i_hi = *i_lo - 1;
-    return;
-  }
-  const int64_t a = beta > 0 ? div_ceil(lo - alpha, beta) : div_ceil(hi - alpha, beta);
-  const int64_t b = beta > 0 ? div_floor(hi - alpha, beta) : div_floor(lo - alpha, beta);
-  *i_lo = max_of(*i_lo, i0 + a);
-  *i_hi = min_of(*i_hi, i0 + b);
+  NarrowRows n;
+  n.start(alpha, 0, beta, lo, hi);
+  n.apply(i0, i_lo, i_hi);
 }
 
 // The flank's inner loop (figure 2 reduced to a min()): top = min(top,
@@ -417,7 +475,16 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   const bool mirrored = along_x && (caps.start != StartCap::kWedge || collinear) &&
                         (2 * (o.y_nm - g->y0_nm)) % p == 0;
   const int64_t mirror_sum = mirrored ? 2 * (o.y_nm - g->y0_nm) / p : -1;
-  for (int64_t j = j_first; j <= j_last; ++j) {
+  // Other directions: the columns within reach across (|v| <= R) and along
+  // the track, walked from row to row (u and v grow by p e_y and p e_x).
+  NarrowRows across, along;
+  const bool walk = !lp.plunge && !along_x;
+  if (walk) {
+    const int64_t dy0_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
+    across.start(dy0_u * lp.ex_q30 - dx0_u * lp.ey_q30, p_u * lp.ex_q30, -p_u * lp.ey_q30, -r_q30, r_q30);
+    along.start(dx0_u * lp.ex_q30 + dy0_u * lp.ey_q30, p_u * lp.ey_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30);
+  }
+  for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
     if (mirrored && jm < j && jm >= j_first) continue;
@@ -436,8 +503,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         lo = x_lo;
         hi = x_hi;
       } else {
-        narrow(v_acc, dv, -r_q30, r_q30, i_first, &lo, &hi);
-        narrow(u_acc, du, u_min_q30, u_max_q30, i_first, &lo, &hi);
+        across.apply(i_first, &lo, &hi);
+        along.apply(i_first, &lo, &hi);
       }
     }
     if (lo > hi) continue;
