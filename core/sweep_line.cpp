@@ -625,7 +625,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
     } else {
       for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
         const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
-        if (v * v > reach2) continue;
+        // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
         const int64_t v2 = min_of(v * v, t.r2_u);
         // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
         // computing w* (a square root for ramps).
