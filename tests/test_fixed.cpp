@@ -216,6 +216,12 @@ TEST(fixed_isqrt_fast_matches_exact) {
   const uint64_t edges[] = {UINT64_MAX, UINT64_MAX - 1, (uint64_t(1) << 62), (uint64_t(1) << 62) - 1,
                             0xfffffffe00000001ull, 0xfffffffe00000000ull, (uint64_t(1) << 32), (uint64_t(1) << 32) - 1};
   for (uint64_t v : edges) CHECK_EQ(isqrt_fast_u64(v), isqrt_u64(v));
+  // Every exponent's normalisation: around each power of 4 and each square
+  // of 2^k - 1 (the largest roots of that exponent).
+  for (int e = 1; e < 32; ++e) {
+    const uint64_t p4 = uint64_t(1) << (2 * e), top = ((uint64_t(1) << e) - 1) * ((uint64_t(1) << e) - 1);
+    for (uint64_t v : {p4 - 1, p4, p4 + 1, top - 1, top, top + 1}) CHECK_EQ(isqrt_fast_u64(v), isqrt_u64(v));
+  }
   for (uint64_t r = 1; r < (uint64_t(1) << 32); r = r * 3 + 1) {
     CHECK_EQ(isqrt_fast_u64(r * r), isqrt_u64(r * r));
     CHECK_EQ(isqrt_fast_u64(r * r - 1), isqrt_u64(r * r - 1));
