@@ -148,7 +148,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
 // floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
 // to start, then an add and a compare a step (a Bresenham walk).
 struct FloorWalk {
-  int64_t q, r, dq, dr, d;  // n = q d + r, 0 <= r < d; dn = dq d + dr
+  int64_t q = 0, r = 0, dq = 0, dr = 0, d = 1;  // n = q d + r, 0 <= r < d; dn = dq d + dr
   void start(int64_t n0, int64_t dn, int64_t den) {
     d = den;
     q = div_floor(n0, d);
@@ -169,10 +169,12 @@ struct FloorWalk {
 // quotients walked (per row, two divisions each would cost more than a
 // short row's columns; more so where 64-bit division is a library call).
 struct NarrowRows {
-  bool flat;              // beta == 0: the whole row or none
-  int64_t alpha, gamma;   // flat: the row's alpha and its step
-  int64_t lo, hi;         // flat: the bounds
-  FloorWalk first, last;  // otherwise: i0 - first.q .. i0 + last.q
+  // Initialised although start() sets every field before use: GCC -O3
+  // cannot see that a walk is only applied after its start.
+  bool flat = true;              // beta == 0: the whole row or none
+  int64_t alpha = 0, gamma = 0;  // flat: the row's alpha and its step
+  int64_t lo = 0, hi = -1;       // flat: the bounds
+  FloorWalk first, last;         // otherwise: i0 - first.q .. i0 + last.q
   void start(int64_t alpha0, int64_t gamma_, int64_t beta, int64_t lo_, int64_t hi_) {
     flat = beta == 0;
     alpha = alpha0;
