@@ -153,7 +153,7 @@ struct FloorWalk {
     d = den;
     q = div_floor(n0, d);
     r = n0 - q * d;
-    dq = div_floor(dn, d);
+    dq = dn == 0 ? 0 : div_floor(dn, d);  // a walk that stays (along x) needs no division
     dr = dn - dq * d;
   }
   void next() {
@@ -209,13 +209,6 @@ struct NarrowRows {
     }
   }
 };
-
-// Narrows [*i_lo, *i_hi] to the i with lo <= alpha + (i - i0) * beta <= hi.
-void narrow(int64_t alpha, int64_t beta, int64_t lo, int64_t hi, int64_t i0, int64_t* i_lo, int64_t* i_hi) {
-  NarrowRows n;
-  n.start(alpha, 0, beta, lo, hi);
-  n.apply(i0, i_lo, i_hi);
-}
 
 // The flank's inner loop (figure 2 reduced to a min()): top = min(top,
 // (h >> 24)) with h stepping by dh, q16 V with the rounding added. True when
@@ -459,11 +452,20 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
     if (collinear) return at_or_past_w(t, *caps.prev, u, v);
     return prev_ends_here(t, *caps.prev, dx0_u + (i - i_first) * p_u, dy_row_u);
   };
-  // Along x, the along-track range of columns is the same on every row:
-  // narrow it once (the divisions in `narrow` cost more than a short row).
+  // The columns within reach across (|v| <= R) and along the track, row
+  // after row (u and v grow by p e_y and p e_x from one row to the next).
+  // Along x the along-track range is the same on every row (e_y = 0): it is
+  // taken once, and rows test their v alone.
   const bool along_x = !lp.plunge && lp.ey_q30 == 0;
+  const bool walk = !lp.plunge && !along_x;
+  NarrowRows across, along;
+  if (!lp.plunge) {
+    const int64_t dy0_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
+    along.start(dx0_u * lp.ex_q30 + dy0_u * lp.ey_q30, p_u * lp.ey_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30);
+    if (walk) across.start(dy0_u * lp.ex_q30 - dx0_u * lp.ey_q30, p_u * lp.ex_q30, -p_u * lp.ey_q30, -r_q30, r_q30);
+  }
   int64_t x_lo = i_first, x_hi = i_last;
-  if (along_x) narrow(dx0_u * lp.ex_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30, i_first, &x_lo, &x_hi);
+  if (along_x) along.apply(i_first, &x_lo, &x_hi);
   // Along x, u(i) = x_u_lo + (i - x_lo) * x_step exactly (e = (+-1, 0)) on
   // every row, and a flank's heights step by x_dh_q16 a column.
   const int64_t x_step = along_x ? p_u * lp.ex_q30 / kQ30 : 0;
@@ -477,15 +479,6 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   const bool mirrored = along_x && (caps.start != StartCap::kWedge || collinear) &&
                         (2 * (o.y_nm - g->y0_nm)) % p == 0;
   const int64_t mirror_sum = mirrored ? 2 * (o.y_nm - g->y0_nm) / p : -1;
-  // Other directions: the columns within reach across (|v| <= R) and along
-  // the track, walked from row to row (u and v grow by p e_y and p e_x).
-  NarrowRows across, along;
-  const bool walk = !lp.plunge && !along_x;
-  if (walk) {
-    const int64_t dy0_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
-    across.start(dy0_u * lp.ex_q30 - dx0_u * lp.ey_q30, p_u * lp.ex_q30, -p_u * lp.ey_q30, -r_q30, r_q30);
-    along.start(dx0_u * lp.ex_q30 + dy0_u * lp.ey_q30, p_u * lp.ey_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30);
-  }
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
