@@ -31,6 +31,7 @@ struct SpanLog {
 struct CutStats {
   uint64_t instances = 0;      // cutter placements (stamp) or swept pieces (sweep)
   uint64_t dexel_updates = 0;  // workpiece dexels visited by the cutting loop
+  uint64_t floor_skips = 0;    // sweep: of those, left at a test of the ball's floor (no root)
   SpanLog* log = nullptr;      // optional
 };
 

@@ -52,10 +52,18 @@ struct SweepTool {
   int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
   int64_t len_v;           // shaft top above the tip, V
   int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
+  int64_t u_per_v_q30;     // V -> U: 2^30 * V / U, rounded up
+  int64_t bowl_q56;        // ball: r^2 / (2R) below the sphere, V per U^2, q56, rounded down
+  // Ball pieces in a general direction leave out the columns whose top is
+  // under every height they compute there (core/sweep_line.cpp,
+  // ball_floor_of): the same bits without most of a pocket's square roots.
+  // Tests turn it off to check exactly that.
+  bool skip_under_floor = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 
-// Fails with kBadArgument when R exceeds 2^28 nm (268 mm) or lsb < 1.
+// Fails with kBadArgument when R exceeds 2^28 nm (268 mm) or lsb is outside
+// [1, 2^30] nm.
 Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out);
 
 // Height of the tool's lower surface above its tip at r^2 (U^2, r <= R), V.

@@ -145,6 +145,39 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
   return true;
 }
 
+// A floor under every height the ball's pieces compute for a column, so
+// that a column whose top is already at or below it is left without its
+// square root (most of a pocket's band: the laps before cut it lower).
+// Heights computed for the column at (u, v) (v2 = min(v^2, R^2)) are
+//   flank: za + S(u) + floor((R - floor(rho K)) g), rho = isqrt(R^2 - v2)
+//   caps:  za + S(u - w) + floor((R - isqrt(R^2 - min(w^2 + v2, R^2))) g)
+// with S(x) = floor(x m) (m = slope_v_q32 / 2^32, V per U) and g = V per U.
+// The sphere lies above its paraboloid: R - sqrt(R^2 - r^2) >= r^2 / (2R)
+// (r <= R, and R g >= r^2 g / (2R) up to reach2 for R >= 8 U). So
+//   flank >= za + S(u) + v2 g / (2R) - R (K - 1) g - 1
+//   caps  >= za + S(u) - m w + (w^2 + v2) g / (2R) - 2
+//         >= za + S(u) + v2 g / (2R) - R m^2 / (2 g) - 2 (minimum over w),
+// and both are >= S(u) + floor(v2 bowl_q56 / 2^56) + *floor_v with
+// *floor_v = za - max(R (K - 1) g, R m^2 / (2 g)) - 3, each product rounded
+// up; a saturated product only lowers the floor. K < 1 (rounding) needs no
+// term: then R (1 - K) >= (1 - K) v2 / (2R). False: no floor (not a ball, a
+// plunge, or one too far down to matter).
+bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
+  if (t.kind != ToolKind::kBall || lp.plunge || t.r_u < 8) return false;
+  auto up = [](int64_t x) { return x < INT64_MAX ? x + 1 : x; };  // rounds a floored product up
+  const int64_t k_minus_1 = max_of(lp.ball_k_q30 - kQ30, int64_t{0});
+  const int64_t drop_flank = up(mul_shift(up(mul_shift(t.r_u, k_minus_1, 30)), t.v_per_u_q32, 32));
+  const int64_t m_abs = lp.slope_v_q32 < 0 ? -lp.slope_v_q32 : lp.slope_v_q32;
+  const int64_t m_ratio_q30 = up(mul_shift(m_abs, t.u_per_v_q30, 32));  // m / g, dimensionless
+  const int64_t m2_q30 = up(mul_shift(m_ratio_q30, m_ratio_q30, 30));
+  const int64_t drop_caps = up(mul_shift(up(mul_shift(t.r_u, m2_q30, 31)), t.v_per_u_q32, 32));
+  const int64_t drop = max_of(drop_flank, drop_caps);
+  // Far below any top (2^32 LSB): no floor worth testing, and no overflow.
+  if (drop > (static_cast<int64_t>(1) << 48)) return false;
+  *floor_v = lp.za_v - drop - 3;
+  return true;
+}
+
 // floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
 // to start, then an add and a compare a step (a Bresenham walk).
 struct FloorWalk {
@@ -479,6 +512,12 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   const bool mirrored = along_x && (caps.start != StartCap::kWedge || collinear) &&
                         (2 * (o.y_nm - g->y0_nm)) % p == 0;
   const int64_t mirror_sum = mirrored ? 2 * (o.y_nm - g->y0_nm) / p : -1;
+  // Rows in a general direction skip columns under the ball's floor. Only
+  // where a cut is a min() (with the shaft below some top, a cut column's
+  // interval reaches up to its shaft top).
+  int64_t ball_floor_v = 0;
+  const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
+  uint64_t floor_skips = 0;
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
@@ -622,6 +661,15 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
         // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
         const int64_t v2 = min_of(v * v, t.r2_u);
+        // Under the floor (ball_floor_of) the top is lower than any height
+        // this piece computes here: nothing to cut, and no root.
+        if (cull) {
+          const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + mul_shift_fit(v2, t.bowl_q56, 56);
+          if (floor_v + (static_cast<int64_t>(1) << (kSweepVBits - 1)) >= static_cast<int64_t>(wt[i]) << kSweepVBits) {
+            ++floor_skips;
+            continue;
+          }
+        }
         // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
@@ -664,6 +712,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       ch_j1 = max_of(ch_j1, mirror_changed ? jm : j);
     }
   }
+  st->floor_skips += floor_skips;
   if (changed)
     g->dirty.include(GridRect{static_cast<int32_t>(ch_i0), static_cast<int32_t>(ch_j0),
                               static_cast<int32_t>(ch_i1 + 1), static_cast<int32_t>(ch_j1 + 1)});
