@@ -151,7 +151,8 @@ uint64_t isqrt_u128_portable(U128 v);
 // uses the compiler's 128-bit integers where the target has them and the
 // portable U128 path elsewhere; both give the same bits.
 // The portable path of mul_shift, always built (tests compare the two).
-int64_t mul_shift_portable(int64_t a, int64_t b, int s);
+// A pure function: `const` lets callers' repeated products share one call.
+__attribute__((const)) int64_t mul_shift_portable(int64_t a, int64_t b, int s);
 inline int64_t mul_shift(int64_t a, int64_t b, int s) {
 #ifdef __SIZEOF_INT128__
   const __int128 p = static_cast<__int128>(a) * b;

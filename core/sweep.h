@@ -53,7 +53,10 @@ struct SweepTool {
   int64_t len_v;           // shaft top above the tip, V
   int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
   int64_t u_per_v_q30;     // V -> U: 2^30 * V / U, rounded up
-  int64_t bowl_q56;        // ball: r^2 / (2R) below the sphere, V per U^2, q56, rounded down
+  // Ball: the paraboloid r^2 / (2R) under the sphere in V, rounded down, as
+  // ((r^2 >> bowl_pre) * bowl_q) >> bowl_post: a 32 x 32-bit product.
+  uint32_t bowl_q;
+  int bowl_pre, bowl_post;
   // Ball pieces in a general direction leave out the columns whose top is
   // under every height they compute there (core/sweep_line.cpp,
   // ball_floor_of): the same bits without most of a pocket's square roots.
@@ -89,6 +92,12 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
   }
   // f_u <= 2^37 U (a V-bit's k < 2^7), v_per_u_q32 < 2^39: fits after the shift.
   return mul_shift_fit(f_u, t.v_per_u_q32, 32);
+}
+
+// The ball's paraboloid r2 / (2R) in V (r2 <= R^2 in U^2), rounded down.
+inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
+  const uint64_t r2_hi = static_cast<uint64_t>(r2) >> t.bowl_pre;  // < 2^32
+  return static_cast<int64_t>((static_cast<uint64_t>(static_cast<uint32_t>(r2_hi)) * t.bowl_q) >> t.bowl_post);
 }
 
 // A straight move of the tool tip from a to b (any direction: lines, ramps,

@@ -157,7 +157,7 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
 //   flank >= za + S(u) + v2 g / (2R) - R (K - 1) g - 1
 //   caps  >= za + S(u) - m w + (w^2 + v2) g / (2R) - 2
 //         >= za + S(u) + v2 g / (2R) - R m^2 / (2 g) - 2 (minimum over w),
-// and both are >= S(u) + floor(v2 bowl_q56 / 2^56) + *floor_v with
+// and both are >= S(u) + sweep_bowl_v(v2) + *floor_v with
 // *floor_v = za - max(R (K - 1) g, R m^2 / (2 g)) - 3, each product rounded
 // up; a saturated product only lowers the floor. K < 1 (rounding) needs no
 // term: then R (1 - K) >= (1 - K) v2 / (2R). False: no floor (not a ball, a
@@ -664,7 +664,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // Under the floor (ball_floor_of) the top is lower than any height
         // this piece computes here: nothing to cut, and no root.
         if (cull) {
-          const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + mul_shift_fit(v2, t.bowl_q56, 56);
+          const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + sweep_bowl_v(t, v2);
           if (floor_v + (static_cast<int64_t>(1) << (kSweepVBits - 1)) >= static_cast<int64_t>(wt[i]) << kSweepVBits) {
             ++floor_skips;
             continue;

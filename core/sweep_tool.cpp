@@ -22,8 +22,26 @@ Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) 
   // ceil(2^62 / v_per_u_q32): lsb <= 2^30 nm (a grid's limit is 10^9), so
   // v_per_u_q32 >= 2^8 and the quotient is below 2^54.
   t.u_per_v_q30 = (static_cast<int64_t>(1) << 62) / t.v_per_u_q32 + 1;
-  // floor(v_per_u_q32 * 2^24 / (2R)) < 2^39 * 2^24 / 8: no overflow.
-  t.bowl_q56 = p.kind == ToolKind::kBall ? muldiv_floor(t.v_per_u_q32, static_cast<int64_t>(1) << 24, 2 * t.r_u) : 0;
+  // The bowl (sweep_bowl_v): r^2 >> pre below 2^32 for r^2 <= R^2, and
+  // q = floor(g 2^(post + pre - 33) / R) (g = v_per_u_q32) with the largest
+  // post that keeps q below 2^32 (q >= 2^31). Then (r^2 >> pre) q / 2^post
+  // <= r^2 g / (2^33 R), the paraboloid in V, and below it by at most 1 V
+  // (the floor), 2^-31 of it (q) and 2^pre U^2 of r^2 (2^pre <= R^2 / 2^31):
+  // within 1 V + 2^-30 of its value at the rim, R g / 2^33.
+  t.bowl_pre = 0;
+  while ((static_cast<uint64_t>(t.r2_u) >> t.bowl_pre) >> 32) ++t.bowl_pre;
+  t.bowl_q = 0;
+  t.bowl_post = 0;
+  for (int post = 63; post >= 0; --post) {
+    const int e = post + t.bowl_pre - 33;  // in [-33, 58]: pre <= 28
+    const int64_t q = e >= 0 ? muldiv_floor(t.v_per_u_q32, static_cast<int64_t>(1) << e, t.r_u)
+                             : (t.v_per_u_q32 >> -e) / t.r_u;  // floor(floor(g / 2^-e) / R): still a floor
+    if (q >= 0 && q < (static_cast<int64_t>(1) << 32)) {
+      t.bowl_q = static_cast<uint32_t>(q);
+      t.bowl_post = post;
+      break;
+    }
+  }
   *out = t;
   return Status::kOk;
 }

@@ -140,3 +140,32 @@ TEST(sweep_floor_skip_changes_no_bit) {
   // The test means something only where the skip happens often.
   CHECK(c.skips * 10 >= c.updates);
 }
+
+TEST(sweep_bowl_against_double) {
+  // sweep_bowl_v(r2) = r^2 g / (2R) in V rounded down, g = V per U: never
+  // above the exact value, below it by at most 1 V + 2^-30 of the value at
+  // the rim (R g / 2; core/sweep_tool.cpp).
+  std::mt19937_64 rng(31);
+  int64_t cases = 0;
+  for (int64_t lsb : {1, 7, 381, 1000, 120000, 1 << 30}) {
+    for (int k = 0; k < 200; ++k) {
+      Tool tool = fixtures::test_tool(ToolKind::kBall, 2 + static_cast<int64_t>(rng() % (static_cast<uint64_t>(1) << (k % 28 + 1))), 0, 0, mm(60));
+      SweepTool t;
+      if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &t), Status::kOk)) return;
+      const double g = std::ldexp(static_cast<double>(t.v_per_u_q32), -32);
+      for (int s = 0; s < 20; ++s) {
+        const int64_t r2 = s == 0 ? t.r2_u : static_cast<int64_t>(rng() % static_cast<uint64_t>(t.r2_u + 1));
+        const double exact = static_cast<double>(r2) * g / (2.0 * static_cast<double>(t.r_u));
+        const double got = static_cast<double>(sweep_bowl_v(t, r2));
+        const double rim = static_cast<double>(t.r_u) * g / 2;
+        if (!CHECK(got <= exact * (1 + 1e-15)) || !CHECK(got >= exact - 1.0 - std::ldexp(rim, -30))) {
+          std::printf("  lsb %lld R %lld U r2 %lld: %.3f vs %.3f\n", static_cast<long long>(lsb),
+                      static_cast<long long>(t.r_u), static_cast<long long>(r2), got, exact);
+          return;
+        }
+        ++cases;
+      }
+    }
+  }
+  CHECK(cases > 20000);
+}
