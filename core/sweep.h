@@ -57,10 +57,11 @@ struct SweepTool {
   // ((r^2 >> bowl_pre) * bowl_q) >> bowl_post: a 32 x 32-bit product.
   uint32_t bowl_q;
   int bowl_pre, bowl_post;
-  // Ball pieces in a general direction leave out the columns whose top is
-  // under every height they compute there (core/sweep_line.cpp,
-  // ball_floor_of): the same bits without most of a pocket's square roots.
-  // Tests turn it off to check exactly that.
+  // Ball pieces in a general direction and level ball arcs leave out the
+  // columns whose top is under every height they compute there
+  // (core/sweep_line.cpp, ball_floor_of; core/sweep_arc.cpp, level_piece):
+  // the same bits without most of a pocket's square roots. Tests turn it
+  // off to check exactly that.
   bool skip_under_floor = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };

@@ -28,12 +28,17 @@ int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by -
 // What level arcs and helices share: the tip's height range [zlow_v,
 // zhigh_v] against the grid's, the shaft top, the dexels of a box around the
 // centre C (U relative to C, widened by the tool), and the bookkeeping
-// (counts, span log, one dirty-rectangle update a row). column(qx, qy, &h_v,
-// ct_v) gets a column's offset from C (U) and gives the lowest tool height
-// there (V above z0), or false when the tool does not reach it or the column
-// is left to another move. When the shaft is below some top, ct_v is not
-// null and holds zlow_v: a helix raises it to the tip height of the highest
-// position covering the column (figure 2's ct is that plus the length).
+// (counts, span log, one dirty-rectangle update a row). column(qx, qy,
+// keep_v, &h_v, ct_v) gets a column's offset from C (U) and gives the lowest
+// tool height there (V above z0), or kOut when the tool does not reach it or
+// the column is left to another move. keep_v: a height at or above which the
+// column would not change (INT64_MAX where that may not be assumed); a
+// column that knows its height is that high without computing it answers
+// kUnderFloor. When the shaft is below some top, ct_v is not null and holds
+// zlow_v: a helix raises it to the tip height of the highest position
+// covering the column (figure 2's ct is that plus the length).
+enum class ArcColumn : uint8_t { kOut, kCut, kUnderFloor };
+
 template <class H, class F>
 void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
                  int64_t y0, int64_t x1, int64_t y1, int64_t zlow_v, int64_t zhigh_v, F column) {
@@ -41,6 +46,10 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   if (zlow_v >= (hmax << kSweepVBits) || zhigh_v + t.len_v <= 0) return;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
   const bool shaft_above = ct_lsb >= g->top_bound_lsb;  // see DexelGrid::top_bound_lsb
+  // Only where a cut is a min() does a tool height at or above the top
+  // leave the column as it is.
+  const bool may_keep = shaft_above && t.skip_under_floor;
+  uint64_t floor_skips = 0;
   SweepColumns box;
   if (!sweep_columns(*g, t, cx_nm + x0 / kSweepUnitsPerNm, cx_nm + x1 / kSweepUnitsPerNm, cy_nm + y0 / kSweepUnitsPerNm,
                      cy_nm + y1 / kSweepUnitsPerNm, &box))
@@ -59,7 +68,14 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
     int64_t ch0 = i_last + 1, ch1 = i_first - 1;
     for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
       int64_t h_v, zct_v = zlow_v;
-      if (!column(qx, qy, &h_v, shaft_above ? nullptr : &zct_v)) continue;
+      // cb = round(h / 2^8) >= top when h >= top 2^8 - 2^7.
+      const int64_t keep_v =
+          may_keep ? (static_cast<int64_t>(wt[i]) << kSweepVBits) - (int64_t{1} << (kSweepVBits - 1)) : INT64_MAX;
+      const ArcColumn c = column(qx, qy, keep_v, &h_v, shaft_above ? nullptr : &zct_v);
+      if (c != ArcColumn::kCut) {
+        floor_skips += c == ArcColumn::kUnderFloor ? 1 : 0;
+        continue;
+      }
       const int64_t ct = shaft_above ? ct_lsb : (zct_v + t.len_v) >> kSweepVBits;
       if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct, shaft_above)) {
         ch0 = min_of(ch0, i);
@@ -70,6 +86,7 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
       g->dirty.include(GridRect{static_cast<int32_t>(ch0), static_cast<int32_t>(j), static_cast<int32_t>(ch1 + 1),
                                 static_cast<int32_t>(j + 1)});
   }
+  st->floor_skips += floor_skips;
 }
 
 // A level quarter-turn (at most) piece from A to B about C, radius ra, all in
@@ -88,7 +105,9 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
     }
   }
-  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, z_v, [&](int64_t qx, int64_t qy, int64_t* h_v, int64_t*) {
+  const bool ball = t.kind == ToolKind::kBall;
+  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, z_v,
+              [&](int64_t qx, int64_t qy, int64_t keep_v, int64_t* h_v, int64_t*) {
     const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
     int64_t d2;
     if (after_a && before_b) {
@@ -99,12 +118,15 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       const int64_t db2 = (qx - bx) * (qx - bx) + (qy - by) * (qy - by);
       // Behind the start, where the tool standing at A is lowest: already
       // cut by the move that ended there.
-      if (!start_cap && da2 < db2) return false;
+      if (!start_cap && da2 < db2) return ArcColumn::kOut;
       d2 = min_of(da2, db2);
     }
-    if (d2 > reach2) return false;
+    if (d2 > reach2) return ArcColumn::kOut;
+    // The ball's profile is at least its paraboloid less 1 V (the level case
+    // of ball_floor_of, core/sweep_line.cpp): at or above keep_v, no root.
+    if (ball && z_v + sweep_bowl_v(t, min_of(d2, t.r2_u)) - 1 >= keep_v) return ArcColumn::kUnderFloor;
     *h_v = z_v + sweep_profile_v(t, min_of(d2, t.r2_u));
-    return true;
+    return ArcColumn::kCut;
   });
 }
 
@@ -138,26 +160,26 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   const int64_t kappa_u = muldiv_round(dz_u, static_cast<int64_t>(1) << 60, kTwoPiQ28 * span);
   const int64_t r2 = t.r2_u, reach2 = sweep_reach2(t);
   constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
-  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, zhigh, [&](int64_t qx, int64_t qy, int64_t* h_v,
-                                                                         int64_t* zct_v) {
+  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, zhigh,
+              [&](int64_t qx, int64_t qy, int64_t, int64_t* h_v, int64_t* zct_v) {
     const int64_t rho2 = qx * qx + qy * qy;
     const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
-    if (rho - ra > t.r_u || ra - rho > t.r_u) return false;  // never within R of the circle
+    if (rho - ra > t.r_u || ra - rho > t.r_u) return ArcColumn::kOut;  // never within R of the circle
     // The window of reach, [lo, hi] in bam along the piece.
     const int64_t s_p = dir * static_cast<int64_t>(static_cast<int32_t>(atan2_bam(qy, qx) - phi_a));
     int64_t alpha = static_cast<int64_t>(1) << 31;
     if (rho > 0) {
       const int64_t c_q30 = muldiv_round(rho2 + ra * ra - r2, kQ30, 2 * rho * ra);
-      if (c_q30 > kQ30) return false;
+      if (c_q30 > kQ30) return ArcColumn::kOut;
       if (c_q30 > -kQ30) {
         const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
         alpha = atan2_bam(sn, c_q30);
       }
     } else if (ra > t.r_u) {
-      return false;
+      return ArcColumn::kOut;
     }
     const int64_t lo = max_of<int64_t>(0, s_p - alpha), hi = min_of(span, s_p + alpha);
-    if (lo > hi) return false;
+    if (lo > hi) return ArcColumn::kOut;
     int64_t s_best;
     if (t.kind == ToolKind::kFlat || rho == 0) {
       s_best = dz_v < 0 ? hi : lo;
@@ -172,16 +194,16 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       const int64_t u = static_cast<int64_t>(atan2_bam(sn, c));
       s_best = clamp(s_p + (dz_v > 0 ? -u : u), lo, hi);
     }
-    if (s_best == 0 && !start_cap) return false;  // the tool at A: cut by the move before
+    if (s_best == 0 && !start_cap) return ArcColumn::kOut;  // the tool at A: cut by the move before
     // r^2 at s_best = (rho - ra)^2 + 4 rho ra sin^2((s - s_P) / 2).
     const SinCosQ30 half = sincos_bam(static_cast<uint32_t>((s_best - s_p) / 2));
     const int64_t t1 = mul_shift(rho, half.sin_q30, 30), t2 = mul_shift(ra, half.sin_q30, 30);
     const int64_t d2 = (rho - ra) * (rho - ra) + 4 * t1 * t2;
-    if (d2 > reach2) return false;
+    if (d2 > reach2) return ArcColumn::kOut;
     *h_v = z0_v + muldiv_round(dz_v, s_best, span) + sweep_profile_v(t, min_of(d2, t.r2_u));
     // The highest position covering the column: the window's other end.
     if (zct_v) *zct_v = z0_v + muldiv_round(dz_v, dz_v > 0 ? hi : lo, span);
-    return true;
+    return ArcColumn::kCut;
   });
 }
 

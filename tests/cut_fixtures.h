@@ -3,9 +3,11 @@
 #define DEXMILL_TESTS_CUT_FIXTURES_H
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "core/canon.h"
 #include "core/fixed.h"
 #include "core/grid.h"
 #include "core/tool.h"
@@ -48,6 +50,21 @@ inline dexmill::Tool test_tool(dexmill::ToolKind k, int64_t d_nm, int64_t rc_nm,
   t.flute_length_nm = mm(20);
   t.length_nm = length_nm;
   return t;
+}
+
+// The XY arc about (cx, cy) of radius ra from angle a0 through sweep
+// (radians, under a turn), tip height z0 -> z1; lengths in nm.
+inline dexmill::CanonRecord arc_record(double cx, double cy, double ra, double a0, double sweep, double z0, double z1) {
+  using dexmill::PointNm;
+  dexmill::CanonRecord r{};
+  r.kind = dexmill::CanonKind::kArc;
+  r.start = PointNm{std::llround(cx + ra * std::cos(a0)), std::llround(cy + ra * std::sin(a0)), std::llround(z0)};
+  r.end = PointNm{std::llround(cx + ra * std::cos(a0 + sweep)), std::llround(cy + ra * std::sin(a0 + sweep)),
+                  std::llround(z1)};
+  r.arc.plane = dexmill::Plane::kXY;
+  r.arc.centre = PointNm{std::llround(cx), std::llround(cy), std::llround(z0)};
+  r.arc.turns = sweep > 0 ? 1 : -1;
+  return r;
 }
 
 }  // namespace fixtures

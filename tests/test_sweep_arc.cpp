@@ -21,6 +21,7 @@ using namespace dexmill;
 
 namespace {
 
+using fixtures::arc_record;
 using fixtures::mm;
 const double kPi = 3.14159265358979323846;
 
@@ -61,19 +62,6 @@ double oracle_arc(const Tool& t, double cx, double cy, double ra, double a0, dou
     if (g(m1) <= g(m2)) hi = m2; else lo = m1;
   }
   return std::min(bv, g((lo + hi) / 2));
-}
-
-// The XY arc about (cx, cy) of radius ra from angle a0 through sweep
-// (radians, under a turn), tip height z0 -> z1.
-CanonRecord arc_record(double cx, double cy, double ra, double a0, double sweep, double z0, double z1) {
-  CanonRecord r{};
-  r.kind = CanonKind::kArc;
-  r.start = PointNm{llround(cx + ra * std::cos(a0)), llround(cy + ra * std::sin(a0)), llround(z0)};
-  r.end = PointNm{llround(cx + ra * std::cos(a0 + sweep)), llround(cy + ra * std::sin(a0 + sweep)), llround(z1)};
-  r.arc.plane = Plane::kXY;
-  r.arc.centre = PointNm{llround(cx), llround(cy), llround(z0)};
-  r.arc.turns = sweep > 0 ? 1 : -1;
-  return r;
 }
 
 // Highest tip height over the positions of the arc that reach (px, py), nm,
