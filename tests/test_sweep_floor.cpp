@@ -70,9 +70,10 @@ struct Count {
   uint64_t skips = 0, updates = 0;
 };
 
-template <class H>
-void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int64_t pitch, int64_t lsb, bool chained,
-             Count* c) {
+// Cuts with cut(grid, tool, stats, chain) twice, with the skip and without,
+// and needs the same grids and visits.
+template <class H, class Cut>
+void compare_skip(const Tool& tool, int32_t n, int64_t pitch, int64_t lsb, const char* what, Count* c, Cut cut) {
   fixtures::TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
   with.fill(mm(30));
   without.fill(mm(30));
@@ -82,15 +83,8 @@ void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int6
   off.skip_under_floor = false;
   CutStats s_on, s_off;
   SweepChain c_on, c_off;
-  for (size_t k = 1; k < path.size(); ++k) {
-    if (chained) {
-      sweep_chain_line(&with.g, on, path[k - 1], path[k], &s_on, &c_on);
-      sweep_chain_line(&without.g, off, path[k - 1], path[k], &s_off, &c_off);
-    } else {
-      sweep_line(&with.g, on, path[k - 1], path[k], &s_on);
-      sweep_line(&without.g, off, path[k - 1], path[k], &s_off);
-    }
-  }
+  cut(&with.g, on, &s_on, &c_on);
+  cut(&without.g, off, &s_off, &c_off);
   sweep_chain_end(&with.g, on, &s_on, &c_on);
   sweep_chain_end(&without.g, off, &s_off, &c_off);
   ++c->runs;
@@ -99,9 +93,20 @@ void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int6
   CHECK_EQ(s_off.floor_skips, uint64_t{0});
   CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);  // skipped columns still count as visited
   if (with.top != without.top || with.bottom != without.bottom) {
-    if (++c->unequal <= 5) std::printf("  m=%d lsb %lld tool d=%lld: grids differ\n", int(sizeof(H) * 8),
+    if (++c->unequal <= 5) std::printf("  %s m=%d lsb %lld tool d=%lld: grids differ\n", what, int(sizeof(H) * 8),
                                        static_cast<long long>(lsb), static_cast<long long>(tool.diameter_nm));
   }
+}
+
+template <class H>
+void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int64_t pitch, int64_t lsb, bool chained,
+             Count* c) {
+  compare_skip<H>(tool, n, pitch, lsb, "lines", c, [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+    for (size_t k = 1; k < path.size(); ++k) {
+      if (chained) sweep_chain_line(g, t, path[k - 1], path[k], st, ch);
+      else sweep_line(g, t, path[k - 1], path[k], st);
+    }
+  });
 }
 
 template <class H>
@@ -171,32 +176,12 @@ void compare_arcs(const Tool& tool, int64_t lsb, uint64_t seed, Count* c) {
   const int32_t n = 100;
   const int64_t pitch = 250000;
   const std::vector<CanonRecord> arcs = make_arcs(double(n * pitch), double(tool.diameter_nm / 2), &rng);
-  fixtures::TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
-  with.fill(mm(30));
-  without.fill(mm(30));
-  SweepTool on, off;
-  if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-  off = on;
-  off.skip_under_floor = false;
-  CutStats s_on, s_off;
-  SweepChain c_on, c_off;
-  for (size_t k = 0; k < arcs.size(); ++k) {
-    if (k % 2) {
-      sweep_chain_arc(&with.g, on, arcs[k], &s_on, &c_on);
-      sweep_chain_arc(&without.g, off, arcs[k], &s_off, &c_off);
-    } else {
-      sweep_arc(&with.g, on, arcs[k], &s_on);
-      sweep_arc(&without.g, off, arcs[k], &s_off);
+  compare_skip<H>(tool, n, pitch, lsb, "arcs", c, [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+    for (size_t k = 0; k < arcs.size(); ++k) {
+      if (k % 2) sweep_chain_arc(g, t, arcs[k], st, ch);
+      else sweep_arc(g, t, arcs[k], st);
     }
-  }
-  ++c->runs;
-  c->skips += s_on.floor_skips;
-  c->updates += s_on.dexel_updates;
-  CHECK_EQ(s_off.floor_skips, uint64_t{0});
-  if (with.top != without.top || with.bottom != without.bottom) {
-    if (++c->unequal <= 5) std::printf("  arcs m=%d lsb %lld tool d=%lld: grids differ\n", int(sizeof(H) * 8),
-                                       static_cast<long long>(lsb), static_cast<long long>(tool.diameter_nm));
-  }
+  });
 }
 
 TEST(sweep_floor_skip_on_arcs_changes_no_bit) {
