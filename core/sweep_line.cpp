@@ -172,7 +172,7 @@ bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
   const int64_t m2_q30 = up(mul_shift(m_ratio_q30, m_ratio_q30, 30));
   const int64_t drop_caps = up(mul_shift(up(mul_shift(t.r_u, m2_q30, 31)), t.v_per_u_q32, 32));
   const int64_t drop = max_of(drop_flank, drop_caps);
-  // Far below any top (2^32 LSB): no floor worth testing, and no overflow.
+  // 2^40 LSB down, beyond any top: no floor worth testing, and no overflow.
   if (drop > (static_cast<int64_t>(1) << 48)) return false;
   *floor_v = lp.za_v - drop - 3;
   return true;

@@ -6,7 +6,8 @@ namespace dexmill {
 
 Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) {
   constexpr int64_t kMaxRadiusNm = static_cast<int64_t>(1) << 28;
-  if (lsb_nm < 1 || lsb_nm > (static_cast<int64_t>(1) << 30) || p.radius_nm < 1 || p.radius_nm > kMaxRadiusNm) return Status::kBadArgument;
+  constexpr int64_t kMaxLsbNm = static_cast<int64_t>(1) << 30;
+  if (lsb_nm < 1 || lsb_nm > kMaxLsbNm || p.radius_nm < 1 || p.radius_nm > kMaxRadiusNm) return Status::kBadArgument;
   SweepTool t;
   t.kind = p.kind;
   t.r_u = p.radius_nm * kSweepUnitsPerNm;
@@ -24,10 +25,11 @@ Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) 
   t.u_per_v_q30 = (static_cast<int64_t>(1) << 62) / t.v_per_u_q32 + 1;
   // The bowl (sweep_bowl_v): r^2 >> pre below 2^32 for r^2 <= R^2, and
   // q = floor(g 2^(post + pre - 33) / R) (g = v_per_u_q32) with the largest
-  // post that keeps q below 2^32 (q >= 2^31). Then (r^2 >> pre) q / 2^post
-  // <= r^2 g / (2^33 R), the paraboloid in V, and below it by at most 1 V
-  // (the floor), 2^-31 of it (q) and 2^pre U^2 of r^2 (2^pre <= R^2 / 2^31):
-  // within 1 V + 2^-30 of its value at the rim, R g / 2^33.
+  // post <= 63 that keeps q below 2^32. Then (r^2 >> pre) q / 2^post <= r^2
+  // g / (2^33 R), the paraboloid in V, and below it by at most 1 V (the last
+  // floor), (r^2 >> pre) / 2^post for q's floor (2^-31 of the value when q
+  // >= 2^31, else post = 63 and under 2^-31 V) and 2^pre U^2 of r^2 (2^pre
+  // <= R^2 / 2^31): within 1 V + 2^-30 of its value at the rim, R g / 2^33.
   t.bowl_pre = 0;
   while ((static_cast<uint64_t>(t.r2_u) >> t.bowl_pre) >> 32) ++t.bowl_pre;
   t.bowl_q = 0;
