@@ -68,9 +68,7 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
     int64_t ch0 = i_last + 1, ch1 = i_first - 1;
     for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
       int64_t h_v, zct_v = zlow_v;
-      // cb = round(h / 2^8) >= top when h >= top 2^8 - 2^7.
-      const int64_t keep_v =
-          may_keep ? (static_cast<int64_t>(wt[i]) << kSweepVBits) - (int64_t{1} << (kSweepVBits - 1)) : INT64_MAX;
+      const int64_t keep_v = may_keep ? sweep_keep_v(wt[i]) : INT64_MAX;
       const ArcColumn c = column(qx, qy, keep_v, &h_v, shaft_above ? nullptr : &zct_v);
       if (c != ArcColumn::kCut) {
         floor_skips += c == ArcColumn::kUnderFloor ? 1 : 0;

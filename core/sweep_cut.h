@@ -47,6 +47,14 @@ inline int64_t sweep_height_v(const DexelGrid<H>& g, int64_t z_nm) {
   return muldiv_round(dz, static_cast<int64_t>(1) << kSweepVBits, g.lsb_nm);
 }
 
+// The least height in V that sweep_cut_dexel rounds to top_lsb or above:
+// where the shaft is above every top (a min()), a tool at or above it leaves
+// the dexel as it is. The floor tests of core/sweep_line.cpp and
+// core/sweep_arc.cpp compare with it.
+inline int64_t sweep_keep_v(int64_t top_lsb) {
+  return (top_lsb << kSweepVBits) - (static_cast<int64_t>(1) << (kSweepVBits - 1));
+}
+
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top, shaft_above when it is above every possible top (then only
 // cases a, b and e remain). Returns true when the dexel changed.

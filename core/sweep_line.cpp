@@ -635,10 +635,6 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
           if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
             // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
-            auto run = [&](H* top) {
-              return dh_q16 == 0 ? min_level(top + f_lo, top + f_hi + 1, static_cast<H>(min_of(cb_first, hmax)))
-                                 : min_run(top + f_lo, top + f_hi + 1, h_q16 + round, dh_q16);
-            };
             if (pair) {
               const int64_t n = f_hi - f_lo + 1;
               const unsigned c2 = dh_q16 == 0
@@ -647,7 +643,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
               row_changed |= (c2 & 1u) != 0;
               mirror_changed |= (c2 & 2u) != 0;
             } else {
-              row_changed |= run(wt);
+              row_changed |= dh_q16 == 0 ? min_level(wt + f_lo, wt + f_hi + 1, static_cast<H>(min_of(cb_first, hmax)))
+                                         : min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
             }
           } else {
             for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) cut_rows(i, h_q16 >> 16, u0 + (i - f_lo) * step);
@@ -665,7 +662,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // this piece computes here: nothing to cut, and no root.
         if (cull) {
           const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + sweep_bowl_v(t, v2);
-          if (floor_v + (static_cast<int64_t>(1) << (kSweepVBits - 1)) >= static_cast<int64_t>(wt[i]) << kSweepVBits) {
+          if (floor_v >= sweep_keep_v(wt[i])) {
             ++floor_skips;
             continue;
           }
