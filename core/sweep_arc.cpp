@@ -28,7 +28,8 @@ int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by -
 // What level arcs and helices share: the tip's height range [zlow_v,
 // zhigh_v] against the grid's, the shaft top, the dexels of a box around the
 // centre C (U relative to C, widened by the tool), and the bookkeeping
-// (counts, span log, one dirty-rectangle update a row). column(qx, qy,
+// (counts, span log, one dirty-rectangle update a row), visiting only the
+// box's columns within the piece's ring (ring_runs). column(qx, qy,
 // keep_v, &h_v, ct_v) gets a column's offset from C (U) and gives the lowest
 // tool height there (V above z0), or kOut when the tool does not reach it or
 // the column is left to another move. keep_v: a height at or above which the
@@ -39,9 +40,55 @@ int64_t cross(int64_t ax, int64_t ay, int64_t bx, int64_t by) { return ax * by -
 // covering the column (figure 2's ct is that plus the length).
 enum class ArcColumn : uint8_t { kOut, kCut, kUnderFloor };
 
+// The ring of a piece: every column it may cut lies at a distance from the
+// centre within [ri, ro] (U); ri = 0 when there is no hole.
+struct ArcRing {
+  int64_t ri, ro;
+};
+
+// The columns of one row whose offset qx from the centre (qx0 + k p_u at
+// column i_first + k) keeps qx^2 + qy^2 within the ring: up to two runs,
+// [lo[0], hi[0]] and [lo[1], hi[1]] (empty when lo > hi), clipped to
+// [i_first, i_last]. Exact: rounding only widens the runs.
+struct RingRuns {
+  int64_t lo[2], hi[2];
+};
+RingRuns ring_runs(const ArcRing& ring, int64_t qy, int64_t qx0, int64_t p_u, int64_t i_first, int64_t i_last) {
+  RingRuns rr{{i_first, i_first}, {i_last, i_first - 1}};  // the second run empty
+  // Squares below 2^62: a ring wider than 2^31 U (a start point far off its
+  // circle) visits its whole box.
+  if (ring.ro >= (static_cast<int64_t>(1) << 31)) return rr;
+  if (qy > ring.ro || qy < -ring.ro) {
+    rr.hi[0] = i_first - 1;
+    return rr;
+  }
+  const int64_t qy2 = qy * qy, ro2 = ring.ro * ring.ro;
+  // |qx| <= xo keeps qx^2 + qy^2 <= ro^2.
+  const int64_t xo = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(ro2 - qy2)));
+  // |qx| >= xi keeps qx^2 + qy^2 >= ri^2: xi = ceil(sqrt(ri^2 - qy^2)).
+  int64_t xi = 0;
+  const int64_t hole2 = ring.ri * ring.ri - qy2;
+  if (hole2 > 0) {
+    xi = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(hole2)));
+    if (xi * xi < hole2) ++xi;
+  }
+  // Column range of qx in [a, b].
+  auto cols = [&](int64_t a, int64_t b, int k) {
+    rr.lo[k] = max_of(i_first, i_first + div_ceil(a - qx0, p_u));
+    rr.hi[k] = min_of(i_last, i_first + div_floor(b - qx0, p_u));
+  };
+  if (xi == 0) {
+    cols(-xo, xo, 0);
+  } else {
+    cols(-xo, -xi, 0);
+    cols(xi, xo, 1);
+  }
+  return rr;
+}
+
 template <class H, class F>
 void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
-                 int64_t y0, int64_t x1, int64_t y1, int64_t zlow_v, int64_t zhigh_v, F column) {
+                 int64_t y0, int64_t x1, int64_t y1, const ArcRing& ring, int64_t zlow_v, int64_t zhigh_v, F column) {
   const int64_t hmax = height_max<H>();
   if (zlow_v >= (hmax << kSweepVBits) || zhigh_v + t.len_v <= 0) return;
   const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
@@ -58,26 +105,31 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   const int64_t i_first = box.i_first, i_last = box.i_last, j_first = box.j_first, j_last = box.j_last;
   st->instances++;
   const int64_t p_u = p * kSweepUnitsPerNm;
+  const int64_t qx0 = (g->x0_nm + i_first * p - cx_nm) * kSweepUnitsPerNm;
   for (int64_t j = j_first; j <= j_last; ++j) {
     const int64_t qy = (g->y0_nm + j * p - cy_nm) * kSweepUnitsPerNm;
-    st->dexel_updates += static_cast<uint64_t>(i_last - i_first + 1);
-    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(i_first), static_cast<int32_t>(i_last));
+    const RingRuns rr = ring_runs(ring, qy, qx0, p_u, i_first, i_last);
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
-    int64_t qx = (g->x0_nm + i_first * p - cx_nm) * kSweepUnitsPerNm;
     int64_t ch0 = i_last + 1, ch1 = i_first - 1;
-    for (int64_t i = i_first; i <= i_last; ++i, qx += p_u) {
-      int64_t h_v, zct_v = zlow_v;
-      const int64_t keep_v = may_keep ? sweep_keep_v(wt[i]) : INT64_MAX;
-      const ArcColumn c = column(qx, qy, keep_v, &h_v, shaft_above ? nullptr : &zct_v);
-      if (c != ArcColumn::kCut) {
-        floor_skips += c == ArcColumn::kUnderFloor ? 1 : 0;
-        continue;
-      }
-      const int64_t ct = shaft_above ? ct_lsb : (zct_v + t.len_v) >> kSweepVBits;
-      if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct, shaft_above)) {
-        ch0 = min_of(ch0, i);
-        ch1 = i;
+    for (int k = 0; k < 2; ++k) {
+      if (rr.lo[k] > rr.hi[k]) continue;
+      st->dexel_updates += static_cast<uint64_t>(rr.hi[k] - rr.lo[k] + 1);
+      if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(rr.lo[k]), static_cast<int32_t>(rr.hi[k]));
+      int64_t qx = qx0 + (rr.lo[k] - i_first) * p_u;
+      for (int64_t i = rr.lo[k]; i <= rr.hi[k]; ++i, qx += p_u) {
+        int64_t h_v, zct_v = zlow_v;
+        const int64_t keep_v = may_keep ? sweep_keep_v(wt[i]) : INT64_MAX;
+        const ArcColumn c = column(qx, qy, keep_v, &h_v, shaft_above ? nullptr : &zct_v);
+        if (c != ArcColumn::kCut) {
+          floor_skips += c == ArcColumn::kUnderFloor ? 1 : 0;
+          continue;
+        }
+        const int64_t ct = shaft_above ? ct_lsb : (zct_v + t.len_v) >> kSweepVBits;
+        if (sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct, shaft_above)) {
+          ch0 = min_of(ch0, i);
+          ch1 = i;
+        }
       }
     }
     if (ch0 <= ch1)
@@ -87,6 +139,34 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   st->floor_skips += floor_skips;
 }
 
+// floor(|(x, y)|), U.
+int64_t radius_of(int64_t x, int64_t y) {
+  return static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(x * x + y * y)));
+}
+
+// The bounding box of a piece of at most a quarter turn from A to B about
+// the centre, radius ra (U relative to the centre, dir = +1 counterclockwise):
+// its end points and any axis extreme inside its sector, widened by how far
+// A is off the circle (the interpreter's tolerance; ra_a = floor(|A|)): the
+// arc itself starts at ra A / |A|.
+struct PieceBox {
+  int64_t x0, y0, x1, y1;
+};
+PieceBox piece_box(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t ra, int64_t ra_a, int dir) {
+  const int64_t off = (ra > ra_a ? ra - ra_a : ra_a - ra) + 2;
+  PieceBox b{min_of(ax, bx) - off, min_of(ay, by) - off, max_of(ax, bx) + off, max_of(ay, by) + off};
+  const int64_t ext[4][2] = {{ra, 0}, {0, ra}, {-ra, 0}, {0, -ra}};
+  for (const auto& e : ext) {
+    if (cross(ax, ay, e[0], e[1]) * dir >= 0 && cross(e[0], e[1], bx, by) * dir >= 0) {
+      b.x0 = min_of(b.x0, e[0]);
+      b.x1 = max_of(b.x1, e[0]);
+      b.y0 = min_of(b.y0, e[1]);
+      b.y1 = max_of(b.y1, e[1]);
+    }
+  }
+  return b;
+}
+
 // A level quarter-turn (at most) piece from A to B about C, radius ra, all in
 // U relative to C; dir = +1 counterclockwise.
 template <class H>
@@ -94,17 +174,16 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
                  int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
   const int64_t z_v = sweep_height_v(*g, z_nm);
   const int64_t reach2 = sweep_reach2(t);
-  // Bounding box: the end points and any axis extreme inside the sector.
-  int64_t x0 = min_of(ax, bx), x1 = max_of(ax, bx), y0 = min_of(ay, by), y1 = max_of(ay, by);
-  const int64_t ext[4][2] = {{ra, 0}, {0, ra}, {-ra, 0}, {0, -ra}};
-  for (const auto& e : ext) {
-    if (cross(ax, ay, e[0], e[1]) * dir >= 0 && cross(e[0], e[1], bx, by) * dir >= 0) {
-      x0 = min_of(x0, e[0]); x1 = max_of(x1, e[0]);
-      y0 = min_of(y0, e[1]); y1 = max_of(y1, e[1]);
-    }
-  }
+  // A cut column is within reach (R + 2, sweep_reach2) of the circle
+  // (rho = floor(|q|) within it of ra) or of an end: A may sit off the
+  // circle by the interpreter's tolerance (|A| in [ra_a, ra_a + 1)), B by
+  // its rounding to a nm (under 2 nm, 8 U).
+  const int64_t ra_a = radius_of(ax, ay);
+  const PieceBox box = piece_box(ax, ay, bx, by, ra, ra_a, dir);
+  const int64_t r_reach = t.r_u + 2, slack = 8;
+  const ArcRing ring{max_of<int64_t>(0, min_of(ra, ra_a) - r_reach - slack), max_of(ra, ra_a + 1) + r_reach + 1 + slack};
   const bool ball = t.kind == ToolKind::kBall;
-  cut_arc_box(g, t, st, cx_nm, cy_nm, x0, y0, x1, y1, z_v, z_v,
+  cut_arc_box(g, t, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, z_v, z_v,
               [&](int64_t qx, int64_t qy, int64_t keep_v, int64_t* h_v, int64_t*) {
     const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
     int64_t d2;
@@ -158,7 +237,10 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   const int64_t kappa_u = muldiv_round(dz_u, static_cast<int64_t>(1) << 60, kTwoPiQ28 * span);
   const int64_t r2 = t.r2_u, reach2 = sweep_reach2(t);
   constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
-  cut_arc_box(g, t, st, cx_nm, cy_nm, -ra, -ra, ra, ra, zlow, zhigh,
+  // Columns within R of the circle (rho = floor(|q|), the test below).
+  const PieceBox box = piece_box(ax, ay, bx, by, ra, radius_of(ax, ay), dir);
+  const ArcRing ring{max_of<int64_t>(0, ra - t.r_u - 1), ra + t.r_u + 1};
+  cut_arc_box(g, t, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, zlow, zhigh,
               [&](int64_t qx, int64_t qy, int64_t, int64_t* h_v, int64_t* zct_v) {
     const int64_t rho2 = qx * qx + qy * qy;
     const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
