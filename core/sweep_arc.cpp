@@ -252,7 +252,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       const int64_t c_q30 = muldiv_round(rho2 + ra * ra - r2, kQ30, 2 * rho * ra);
       if (c_q30 > kQ30) return ArcColumn::kOut;
       if (c_q30 > -kQ30) {
-        const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
+        const int64_t sn = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(kQ30 * kQ30 - c_q30 * c_q30)));
         alpha = atan2_bam(sn, c_q30);
       }
     } else if (ra > t.r_u) {
@@ -270,7 +270,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       const int64_t disc = mul_shift(kk, kk, 30) - mul_shift(kk, qq, 30) + kQ30;
       const int64_t root = disc > 0 ? static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, static_cast<uint64_t>(disc)}, 30))) : 0;
       const int64_t c = clamp(root - kk, -kQ30, kQ30);
-      const int64_t sn = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));
+      const int64_t sn = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));
       const int64_t u = static_cast<int64_t>(atan2_bam(sn, c));
       s_best = clamp(s_p + (dz_v > 0 ? -u : u), lo, hi);
     }

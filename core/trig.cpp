@@ -37,16 +37,14 @@ SinCosQ30 sincos_bam(uint32_t angle_bam) {
   int64_t z = static_cast<int64_t>(static_cast<int32_t>(a)) * 256;  // signed residual, bam q8
   int64_t x = kInvGainQ60, y = 0;
   for (int i = 0; i <= kSteps; ++i) {
-    int64_t dx = x >> i, dy = y >> i;
-    if (z >= 0) {
-      x -= dy;
-      y += dx;
-      z -= kAtanBamQ8[i];
-    } else {
-      x += dy;
-      y -= dx;
-      z += kAtanBamQ8[i];
-    }
+    // Turn by +atan(2^-i) when z >= 0, else by -atan(2^-i): flip = -1 or 0
+    // negates the terms without a branch (the sign pattern is data, and a
+    // mispredicted step costs more than the step).
+    const int64_t flip = -static_cast<int64_t>(z < 0);
+    const int64_t dx = ((x >> i) ^ flip) - flip, dy = ((y >> i) ^ flip) - flip;
+    x -= dy;
+    y += dx;
+    z -= (kAtanBamQ8[i] ^ flip) - flip;
   }
   // q60 -> q30, rounded to nearest.
   const int64_t half = static_cast<int64_t>(1) << 29;
@@ -60,17 +58,17 @@ uint32_t atan2_bam(int64_t y, int64_t x) {
   if (x == 0 && y == 0) return 0;
   // Normalise so that the larger component lies in [2^55, 2^56): enough bits
   // for the last CORDIC step, headroom for the gain (1.65) and the sign.
-  uint64_t m = abs_u64(x) | abs_u64(y);
+  // (One shift by the distance to bit 55: the same as shifting a bit at a
+  // time, since arithmetic shifts compose: (v >> 1) >> 1 == v >> 2.)
+  const uint64_t m = abs_u64(x) | abs_u64(y);
+  const int msb = 63 - __builtin_clzll(m);
   int64_t vx = x, vy = y;
-  while (m >= (static_cast<uint64_t>(1) << 56)) {
-    m >>= 1;
-    vx >>= 1;
-    vy >>= 1;
-  }
-  while (m < (static_cast<uint64_t>(1) << 55)) {
-    m <<= 1;
-    vx *= 2;
-    vy *= 2;
+  if (msb > 55) {
+    vx >>= msb - 55;
+    vy >>= msb - 55;
+  } else {
+    vx *= static_cast<int64_t>(1) << (55 - msb);  // |v| < 2^56 after: no overflow
+    vy *= static_cast<int64_t>(1) << (55 - msb);
   }
   uint32_t base = 0;
   if (vx < 0) {  // rotate by 180 degrees into the right half-plane
@@ -80,16 +78,13 @@ uint32_t atan2_bam(int64_t y, int64_t x) {
   }
   int64_t z = 0;
   for (int i = 0; i <= kSteps; ++i) {
-    int64_t dx = vx >> i, dy = vy >> i;
-    if (vy > 0) {
-      vx += dy;
-      vy -= dx;
-      z += kAtanBamQ8[i];
-    } else {
-      vx -= dy;
-      vy += dx;
-      z -= kAtanBamQ8[i];
-    }
+    // Turn towards the x axis: by -atan(2^-i) when vy > 0, else by +; flip
+    // as in sincos_bam.
+    const int64_t flip = -static_cast<int64_t>(vy <= 0);
+    const int64_t dx = ((vx >> i) ^ flip) - flip, dy = ((vy >> i) ^ flip) - flip;
+    vx += dy;
+    vy -= dx;
+    z += (kAtanBamQ8[i] ^ flip) - flip;
   }
   return base + static_cast<uint32_t>(static_cast<int32_t>(div_round(z, 256)));
 }
