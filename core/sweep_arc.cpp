@@ -188,7 +188,7 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
     const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
     int64_t d2;
     if (after_a && before_b) {
-      const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(qx * qx + qy * qy)));
+      const int64_t rho = radius_of(qx, qy);
       d2 = (rho - ra) * (rho - ra);
     } else {
       const int64_t da2 = (qx - ax) * (qx - ax) + (qy - ay) * (qy - ay);

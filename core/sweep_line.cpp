@@ -499,7 +499,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
     // 3 mm ball on a 0.1 mm grid), and the walk below spends a row's set-up
     // on each. dy = u e_y + v e_x, widened for |e| = 1 +- 2^-29 and the
     // rounding; the rows left out are those NarrowRows would find empty.
-    const int64_t u_lo = u_min_q30 >> 30, u_hi = -((-u_max_q30) >> 30), r_v = t.r_u + 1;
+    // (u_min_q30 and u_max_q30 are whole U: exact shifts.)
+    const int64_t u_lo = u_min_q30 >> 30, u_hi = u_max_q30 >> 30, r_v = t.r_u + 1;
     const int64_t ey = lp.ey_q30, ex_abs = lp.ex_q30 < 0 ? -lp.ex_q30 : lp.ex_q30;
     const int64_t lo_q30 = min_of(u_lo * ey, u_hi * ey) - r_v * ex_abs;
     const int64_t hi_q30 = max_of(u_lo * ey, u_hi * ey) + r_v * ex_abs;

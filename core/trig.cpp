@@ -24,6 +24,10 @@ constexpr int64_t kAtanBamQ8[kSteps + 1] = {
 // step): 0.607252935008881256257... * 2^60.
 constexpr int64_t kInvGainQ60 = 700114967507363239LL;
 
+// v, or -v when flip = -1 (flip = 0 or -1): a CORDIC step's turn direction
+// is data, and as a branch about half of them mispredict.
+inline int64_t negate_if(int64_t v, int64_t flip) { return (v ^ flip) - flip; }
+
 }  // namespace
 
 SinCosQ30 sincos_bam(uint32_t angle_bam) {
@@ -37,14 +41,12 @@ SinCosQ30 sincos_bam(uint32_t angle_bam) {
   int64_t z = static_cast<int64_t>(static_cast<int32_t>(a)) * 256;  // signed residual, bam q8
   int64_t x = kInvGainQ60, y = 0;
   for (int i = 0; i <= kSteps; ++i) {
-    // Turn by +atan(2^-i) when z >= 0, else by -atan(2^-i): flip = -1 or 0
-    // negates the terms without a branch (the sign pattern is data, and a
-    // mispredicted step costs more than the step).
+    // Turn by +atan(2^-i) when z >= 0, else by -atan(2^-i).
     const int64_t flip = -static_cast<int64_t>(z < 0);
-    const int64_t dx = ((x >> i) ^ flip) - flip, dy = ((y >> i) ^ flip) - flip;
+    const int64_t dx = negate_if(x >> i, flip), dy = negate_if(y >> i, flip);
     x -= dy;
     y += dx;
-    z -= (kAtanBamQ8[i] ^ flip) - flip;
+    z -= negate_if(kAtanBamQ8[i], flip);
   }
   // q60 -> q30, rounded to nearest.
   const int64_t half = static_cast<int64_t>(1) << 29;
@@ -78,13 +80,12 @@ uint32_t atan2_bam(int64_t y, int64_t x) {
   }
   int64_t z = 0;
   for (int i = 0; i <= kSteps; ++i) {
-    // Turn towards the x axis: by -atan(2^-i) when vy > 0, else by +; flip
-    // as in sincos_bam.
+    // Turn towards the x axis: by -atan(2^-i) when vy > 0, else by +.
     const int64_t flip = -static_cast<int64_t>(vy <= 0);
-    const int64_t dx = ((vx >> i) ^ flip) - flip, dy = ((vy >> i) ^ flip) - flip;
+    const int64_t dx = negate_if(vx >> i, flip), dy = negate_if(vy >> i, flip);
     vx += dy;
     vy -= dx;
-    z += (kAtanBamQ8[i] ^ flip) - flip;
+    z += negate_if(kAtanBamQ8[i], flip);
   }
   return base + static_cast<uint32_t>(static_cast<int32_t>(div_round(z, 256)));
 }
