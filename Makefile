@@ -9,7 +9,8 @@
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (DESIGN.md
 # invariant 1). `make test` also proves that the poison works and that every
-# header of core/ and display/ compiles on its own under those rules.
+# header of core/ and display/ compiles on its own under those rules, and that
+# the stage folders include one way (tests/check_layers.sh).
 
 CXX      ?= g++
 SAN      ?=
@@ -36,12 +37,14 @@ HOSTFLAGS += -DDEXMILL_GLFW $(shell pkg-config --cflags glfw3 gl)
 LDLIBS   += $(shell pkg-config --libs glfw3 gl)
 endif
 
-CORE_SRC     := $(sort $(wildcard core/*.cpp))
+# core/ has one folder per pipeline stage (README: "Where things live").
+rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
+CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
 DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))
 PLATFORM_SRC := $(sort $(wildcard platform/*.cpp))
 TOOLS_SRC    := $(sort $(filter-out tools/main.cpp,$(wildcard tools/*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
-INT_HEADERS  := $(sort $(wildcard core/*.h display/*.h))
+INT_HEADERS  := $(sort $(call rwildcard,core display,*.h))
 
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
 INT_OBJ  := $(call obj,$(CORE_SRC) $(DISPLAY_SRC))
@@ -58,7 +61,7 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-headers check-poison clean
+.PHONY: all run test test-unit check-headers check-poison check-layers clean
 all: $(BIN)
 
 $(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
@@ -84,10 +87,14 @@ check-poison:
 	  echo "FAIL: tests/negative/float_in_core.cc compiled; float/double are not poisoned"; exit 1; \
 	else echo "ok: float/double are rejected in core/ and display/"; fi
 
+# The pipeline runs one way: each stage folder includes only those below it.
+check-layers:
+	@tests/check_layers.sh
+
 test-unit: $(TEST_BIN) $(BIN)
 	DEXMILL=$(abspath $(BIN)) $(TEST_BIN)
 
-test: check-headers check-poison test-unit
+test: check-headers check-poison check-layers test-unit
 
 run: $(BIN)
 	$(BIN) run

@@ -4,7 +4,7 @@
 
 #include <stdint.h>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 
 namespace dexmill {
 

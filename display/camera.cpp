@@ -3,8 +3,8 @@
 
 #include <string.h>
 
-#include "core/fixed.h"
-#include "core/trig.h"
+#include "core/math/fixed.h"
+#include "core/math/trig.h"
 
 namespace dexmill {
 namespace {

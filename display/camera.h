@@ -3,7 +3,7 @@
 // per-frame maps from grid and machine coordinates to clip space
 // (display/clip.h).
 //
-// Angles are binary angles (core/trig.h). The eye sits in the direction
+// Angles are binary angles (core/math/trig.h). The eye sits in the direction
 //   d = (cos e cos a, cos e sin a, sin e)
 // from the target; screen right is r = (-sin a, cos a, 0) and screen up
 // u = d x r, so world z stays vertical on the screen. azimuth -90 deg,

@@ -1,7 +1,7 @@
 // Projection and near / guard-band clipping.
 #include "display/clip.h"
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 
 namespace dexmill {
 namespace {

@@ -1,8 +1,8 @@
 // The cutter as a lit solid of revolution (see cutter_draw.h).
 #include "display/cutter_draw.h"
 
-#include "core/fixed.h"
-#include "core/trig.h"
+#include "core/math/fixed.h"
+#include "core/math/trig.h"
 
 namespace dexmill {
 namespace {

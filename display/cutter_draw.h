@@ -1,4 +1,4 @@
-// The cutter drawn as a shaded solid of its real shape (core/tool.h): the
+// The cutter drawn as a shaded solid of its real shape (core/tool/tool.h): the
 // lower surface of revolution sampled from the ToolProfile on rings, the
 // shaft of the same diameter up to the tool's length, and a cap.
 //
@@ -15,7 +15,7 @@
 #include <stdint.h>
 
 #include "core/point.h"
-#include "core/tool.h"
+#include "core/tool/tool.h"
 #include "display/camera.h"
 #include "display/raster.h"
 #include "display/shade.h"

@@ -1,8 +1,8 @@
 // Framebuffer view: pixel formats, fills and the frame hash.
 #include "display/framebuffer.h"
 
-#include "core/fixed.h"
-#include "core/hash.h"
+#include "core/math/fixed.h"
+#include "core/math/hash.h"
 
 namespace dexmill {
 

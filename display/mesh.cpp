@@ -1,7 +1,7 @@
 // Cell classification and triangle streaming (see mesh.h).
 #include "display/mesh.h"
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "display/clip.h"
 
 namespace dexmill {

@@ -22,7 +22,7 @@
 
 #include <stdint.h>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "display/camera.h"
 #include "display/raster.h"
 #include "display/shade.h"

@@ -1,7 +1,7 @@
 // Span rasterizer: coverage set-up, the depth-tested Gouraud span filler.
 #include "display/raster.h"
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 
 namespace dexmill {
 namespace {

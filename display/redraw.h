@@ -17,7 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "display/camera.h"
 #include "display/framebuffer.h"
 #include "display/mesh.h"

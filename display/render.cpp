@@ -1,7 +1,7 @@
 // The renderer: full frames and incremental updates (see render.h).
 #include "display/render.h"
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "display/clip.h"
 #include "display/mesh.h"
 

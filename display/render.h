@@ -36,10 +36,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "core/point.h"
 #include "core/status.h"
-#include "core/tool.h"
+#include "core/tool/tool.h"
 #include "display/camera.h"
 #include "display/cutter_draw.h"
 #include "display/framebuffer.h"

@@ -1,7 +1,7 @@
 // Normals, light and colour ramps (see shade.h).
 #include "display/shade.h"
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 
 namespace dexmill {
 namespace {

@@ -2,7 +2,7 @@
 // ramps the rasterizer indexes.
 //
 // Normals (paper §2.1 eq. 1, §2.4.2): the height gradient of every dexel by
-// central differences (core/grid.h grid_gradient, one-sided at the grid's
+// central differences (core/grid/grid.h grid_gradient, one-sided at the grid's
 // edge), blurred with the 3x3 kernel [1 2 1; 2 4 2; 1 2 1] so that the
 // staircase of vertical side faces shades smoothly (the paper's figure 7).
 // A top vertex uses the blurred normal (-gx, -gy, 16 dz); a side-face vertex
@@ -27,7 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "display/approx.h"
 #include "display/framebuffer.h"
 

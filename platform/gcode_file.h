@@ -1,5 +1,5 @@
 // The hosted G-code reader: reads a file (or stdin, "-") line by line into a
-// fixed buffer, feeds the interpreter (core/interp.h), and reports errors as
+// fixed buffer, feeds the interpreter (core/motion/interp.h), and reports errors as
 // `FILE:LINE:COL: error: MESSAGE` and warnings as `FILE:LINE:COL: warning:
 // MESSAGE` (../shared/CLI.md). Memory is fixed: a 64 KiB read buffer and one
 // line of kGcodeMaxLine bytes, whatever the length of the file.
@@ -21,9 +21,9 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "core/gcode_block.h"
-#include "core/gcode_error.h"
-#include "core/interp.h"
+#include "core/gcode/block.h"
+#include "core/gcode/error.h"
+#include "core/motion/interp.h"
 
 namespace dexmill {
 

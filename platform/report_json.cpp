@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "platform/atomic_file.h"
 
 namespace dexmill {

@@ -19,7 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 
 namespace dexmill {
 

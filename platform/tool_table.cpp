@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "core/decimal.h"
-#include "core/tool_spec.h"
+#include "core/math/decimal.h"
+#include "core/tool/spec.h"
 
 namespace dexmill {
 namespace {

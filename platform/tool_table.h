@@ -27,9 +27,9 @@
 #include <string>
 #include <vector>
 
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/motion/interp.h"
+#include "core/tool/tool.h"
 
 namespace dexmill {
 

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/canon.h"
-#include "core/fixed.h"
-#include "core/grid.h"
-#include "core/tool.h"
+#include "core/grid/grid.h"
+#include "core/math/fixed.h"
+#include "core/motion/canon.h"
+#include "core/tool/tool.h"
 
 namespace fixtures {
 
@@ -32,7 +32,7 @@ struct TestGrid {
     stock_lsb = std::min<int64_t>(dexmill::height_max<H>(), z_nm / g.lsb_nm);
     std::fill(top.begin(), top.end(), static_cast<H>(stock_lsb));
     std::fill(bottom.begin(), bottom.end(), H(0));
-    // What the grid may assume of such material (core/grid.h): the cutters'
+    // What the grid may assume of such material (core/grid/grid.h): the cutters'
     // fast paths then run as on a real block of stock.
     g.bottoms_zero = true;
     g.top_bound_lsb = stock_lsb;

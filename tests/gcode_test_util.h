@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/canon.h"
-#include "core/interp.h"
+#include "core/motion/canon.h"
+#include "core/motion/interp.h"
 
 namespace t {
 

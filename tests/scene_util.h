@@ -1,5 +1,5 @@
 // Test scenes for the display: grids milled with the project's own cutting
-// code (core/stamp.h), renderers over std::vector memory, and PPM dumps of
+// code (core/cut/stamp.h), renderers over std::vector memory, and PPM dumps of
 // frames for looking at (DEXMILL_TEST_IMAGES=DIR; tests/ppm2png.py turns them
 // into PNG).
 #ifndef DEXMILL_TESTS_SCENE_UTIL_H
@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/tool.h"
+#include "core/cut/stamp.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 
 namespace t {

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/tool.h"
+#include "core/tool/tool.h"
 
 namespace oracle {
 
@@ -35,7 +35,7 @@ struct P3 {
 };
 
 // The column and its four neighbours one step away (times a slack, nm):
-// where core/sweep.h's backward bound looks for the exact height.
+// where core/cut/sweep.h's backward bound looks for the exact height.
 constexpr double kNeighbours[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 // The part [*s0, *s1] of the move a -> b (s in [0, 1]) where the tool
@@ -94,7 +94,7 @@ struct Dexel {
   double top, bottom;
 };
 
-// Figure 2 (core/stamp.h) in doubles: what the tool interval [cb, ct] (LSB)
+// Figure 2 (core/cut/stamp.h) in doubles: what the tool interval [cb, ct] (LSB)
 // leaves of the material w. False when the case is ambiguous: an end of the
 // tool within tol of an end of the material, where 1 LSB of rounding may
 // pick either case.
@@ -115,7 +115,7 @@ inline bool figure2(Dexel w, double cb, double ct, double tol, Dexel* out) {
 // Checks every dexel of an nx x ny grid (dexel (0, 0) at the origin, z0 =
 // 0) that held `stock` before one move against figure 2 applied to the
 // oracle's interval: lowest(px, py) to highest(px, py) + len_nm, nm, with the
-// backward bound of core/sweep.h (1 LSB, the column or its neighbours
+// backward bound of core/cut/sweep.h (1 LSB, the column or its neighbours
 // slack_nm away). Columns where the case is ambiguous, or where lowest()
 // gives NaN (the oracle cannot tell), are skipped; *cases
 // counts the others by the case their material shows (index 0: untouched,

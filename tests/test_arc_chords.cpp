@@ -1,10 +1,10 @@
-// core/arc_chords.h against a double-precision oracle: every chord point on
+// core/motion/arc_chords.h against a double-precision oracle: every chord point on
 // the exact arc within the stated bound, every chord's sagitta within the
 // requested tolerance plus that bound, the last point exact.
 #include <cmath>
 #include <random>
 
-#include "core/arc_chords.h"
+#include "core/motion/arc_chords.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "core/trig.h"
+#include "core/math/trig.h"
 #include "display/camera.h"
 #include "tests/rng.h"
 #include "tests/runner.h"

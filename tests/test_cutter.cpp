@@ -1,12 +1,12 @@
-// core/tool.h and core/cutter.h: each cutter shape's dexel set against a
+// core/tool/tool.h and core/tool/cutter.h: each cutter shape's dexel set against a
 // double-precision ray-cast oracle, every dexel within 1 LSB (the stated
 // bound is 0.5 LSB + 1 nm).
 #include <cmath>
 #include <vector>
 
-#include "core/cutter.h"
-#include "core/fixed.h"
-#include "core/tool.h"
+#include "core/math/fixed.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

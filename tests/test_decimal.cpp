@@ -1,8 +1,8 @@
-// core/decimal.h: decimal text straight to nanometres, exact and rounded.
+// core/math/decimal.h: decimal text straight to nanometres, exact and rounded.
 #include <cstdio>
 #include <cstring>
 
-#include "core/decimal.h"
+#include "core/math/decimal.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

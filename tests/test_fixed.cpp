@@ -1,10 +1,10 @@
-// core/fixed.h: saturation, rounding divisions, wide muldiv, square roots,
+// core/math/fixed.h: saturation, rounding divisions, wide muldiv, square roots,
 // against exact or double-precision oracles.
 #include <cmath>
 #include <cstdint>
 #include <random>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -185,7 +185,7 @@ TEST(fixed_mul_shift_paths_agree) {
 }
 
 // mul_shift_fit: the same bits as mul_shift whenever the result fits, on
-// every path (the sweep's inner loops rely on it; see core/sweep_line.cpp).
+// every path (the sweep's inner loops rely on it; see core/cut/sweep_line.cpp).
 TEST(fixed_mul_shift_fit_equals_mul_shift_when_it_fits) {
   std::mt19937_64 rng(22);
   int checked = 0;

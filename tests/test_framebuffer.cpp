@@ -3,7 +3,7 @@
 #include <initializer_list>
 #include <vector>
 
-#include "core/hash.h"
+#include "core/math/hash.h"
 #include "display/framebuffer.h"
 #include "tests/runner.h"
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/interp.h"
+#include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "tests/alloc_count.h"
 #include "tests/runner.h"

@@ -1,8 +1,8 @@
-// core/gcode_lex.h and core/gcode_block.h: the forms of words and lines that
+// core/gcode/lex.h and core/gcode/block.h: the forms of words and lines that
 // real programs use, and the errors of malformed ones.
 #include <cstring>
 
-#include "core/gcode_block.h"
+#include "core/gcode/block.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

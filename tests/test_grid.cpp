@@ -1,8 +1,8 @@
-// core/grid.h: dexel set set-up (paper §2.2.1), gradient (§2.1 eq. 1), LSB.
+// core/grid/grid.h: dexel set set-up (paper §2.2.1), gradient (§2.1 eq. 1), LSB.
 #include <cstdint>
 #include <vector>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -1,9 +1,9 @@
-// core/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
+// core/motion/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
 // tolerances, warnings, and the no-heap streaming guarantee.
 #include <cstdio>
 #include <cstring>
 
-#include "core/interp.h"
+#include "core/motion/interp.h"
 #include "tests/alloc_count.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"

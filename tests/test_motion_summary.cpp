@@ -1,9 +1,9 @@
 // Motion counts, boxes and the time model.
 #include <cstring>
 
-#include "core/fixed.h"
-#include "core/interp.h"
-#include "core/motion_summary.h"
+#include "core/math/fixed.h"
+#include "core/motion/interp.h"
+#include "core/motion/summary.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

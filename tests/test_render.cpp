@@ -7,7 +7,7 @@
 #include <initializer_list>
 #include <vector>
 
-#include "core/trig.h"
+#include "core/math/trig.h"
 #include "display/render.h"
 #include "tests/alloc_count.h"
 #include "tests/rng.h"

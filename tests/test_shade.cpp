@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "display/shade.h"
 #include "tests/rng.h"
 #include "tests/runner.h"

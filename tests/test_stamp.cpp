@@ -1,14 +1,14 @@
-// core/stamp.h: the five cases of figure 2, straight pocketing passes with
+// core/cut/stamp.h: the five cases of figure 2, straight pocketing passes with
 // every cutter against an analytic expectation, golden grid hashes for
 // m = 8, 16, 32, hostile moves, and zero heap use while cutting.
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/tool.h"
+#include "core/cut/stamp.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/alloc_count.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"

@@ -11,8 +11,8 @@
 #include <tuple>
 #include <vector>
 
-#include "core/fixed.h"
-#include "core/grid.h"
+#include "core/grid/grid.h"
+#include "core/math/fixed.h"
 #include "platform/stl.h"
 #include "tests/runner.h"
 

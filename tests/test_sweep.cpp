@@ -1,4 +1,4 @@
-// core/sweep.h: the swept envelope of straight moves against a double
+// core/cut/sweep.h: the swept envelope of straight moves against a double
 // oracle (random moves, every shape), against stamping, ramps at the right
 // depth along their whole length, golden hashes, no heap.
 #include <cmath>
@@ -6,11 +6,11 @@
 #include <random>
 #include <vector>
 
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/sweep.h"
-#include "core/tool.h"
+#include "core/cut/stamp.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/alloc_count.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"
@@ -38,7 +38,7 @@ const Tool kTools[] = {make_tool(ToolKind::kBall, mm(6)),         make_tool(Tool
 const char* const kToolNames[] = {"ball6", "flat5", "bull8r2", "vbit90", "vbit30", "ball3.175"};
 
 // Checks every dexel of the grid after one move against the oracle with the
-// backward bound of core/sweep.h: within 1 LSB of the exact height at the
+// backward bound of core/cut/sweep.h: within 1 LSB of the exact height at the
 // column or at the column moved by 1 nm in x or y.
 template <class H>
 int check_move(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t pitch, int64_t lsb, int report) {

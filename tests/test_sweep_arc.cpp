@@ -1,4 +1,4 @@
-// core/sweep_arc.cpp and core/mill.h: arcs against a double oracle, and the
+// core/cut/sweep_arc.cpp and core/cut/mill.h: arcs against a double oracle, and the
 // golden grid hashes of a G-code program of lines, ramps, arcs and helices
 // cut through the interpreter and the Mill in both modes.
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <random>
 #include <vector>
 
-#include "core/grid.h"
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/sweep.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/motion/interp.h"
+#include "core/tool/tool.h"
 #include "tests/alloc_count.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"
@@ -238,11 +238,11 @@ TEST(sweep_arc_helix_buried_shaft_cuts_to_its_highest_top) {
   // A 10 mm tool spiralling down from 5 mm to 15 mm below the floor of 8 mm
   // of stock: its shaft top passes the stock's top and its floor, and each
   // column's interval reaches the shaft top of the highest position over it
-  // (core/sweep_arc.cpp), not of the helix's lower end. Exact helices (ball,
+  // (core/cut/sweep_arc.cpp), not of the helix's lower end. Exact helices (ball,
   // flat): quarter-turn pieces, each cut as one union. The stock is thinner
   // than the tool is long, so no piece's tool is buried inside a dexel
   // (figure 2's case d, which leaves it as it was): then the pieces' cuts
-  // add up to the union of the whole helix (core/sweep.h). Chords (other
+  // add up to the union of the whole helix (core/cut/sweep.h). Chords (other
   // shapes) are pieces too, but their cuts are figure 2 applied chord by
   // chord, like stamping's instances, and at the rim they do not add up to
   // this oracle's single interval. Under 3/4 of a turn, so that no column

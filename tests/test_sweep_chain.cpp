@@ -1,4 +1,4 @@
-// core/sweep.h, SweepChain: a polyline cut with deferred end caps and
+// core/cut/sweep.h, SweepChain: a polyline cut with deferred end caps and
 // wedge-only start caps leaves the same grid as cutting every move with both
 // caps in full (sweep_line), which the oracle tests of test_sweep.cpp pin.
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
-#include "core/grid.h"
-#include "core/sweep.h"
-#include "core/tool.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"
 #include "tests/sweep_oracle.h"
@@ -73,7 +73,7 @@ struct Diff {
 };
 
 // Oracle heights (LSB, clamped to the stock) of the polyline at a column
-// and at the column moved 1 nm in x or y: the backward bound of core/sweep.h.
+// and at the column moved 1 nm in x or y: the backward bound of core/cut/sweep.h.
 void oracle_range(const Tool& tool, const std::vector<PointNm>& path, bool jumps, double px, double py, double lsb,
                   double stock, double* lo, double* hi) {
   *lo = HUGE_VAL;
@@ -178,7 +178,7 @@ void run_all(int64_t lsb, uint64_t seed, Diff* total) {
 }  // namespace
 
 TEST(sweep_chain_equals_full_caps) {
-  // In exact arithmetic the grids are equal (the argument in core/sweep.h).
+  // In exact arithmetic the grids are equal (the argument in core/cut/sweep.h).
   // The integer heights of a band and of a cap at the same column may round
   // apart, so where a dominated cap is left out (or the whole tool is cut at
   // the chain's end) a dexel may differ: rarely, and always within the

@@ -1,4 +1,4 @@
-// core/sweep_line.cpp, ball_floor_of: leaving out the columns whose top is
+// core/cut/sweep_line.cpp, ball_floor_of: leaving out the columns whose top is
 // under the ball's floor changes no bit. Each path is cut twice, with the
 // skip and without (SweepTool::skip_under_floor), chained and move by move,
 // and the grids must be equal; the skip must also have happened.
@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "core/canon.h"
-#include "core/grid.h"
-#include "core/sweep.h"
-#include "core/tool.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/motion/canon.h"
+#include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"
 
@@ -205,7 +205,7 @@ TEST(sweep_floor_skip_on_arcs_changes_no_bit) {
 TEST(sweep_bowl_against_double) {
   // sweep_bowl_v(r2) = r^2 g / (2R) in V rounded down, g = V per U: never
   // above the exact value, below it by at most 1 V + 2^-30 of the value at
-  // the rim (R g / 2; core/sweep_tool.cpp).
+  // the rim (R g / 2; core/cut/sweep_tool.cpp).
   std::mt19937_64 rng(31);
   int64_t cases = 0;
   for (int64_t lsb : {1, 7, 381, 1000, 120000, 1 << 30}) {

@@ -2,8 +2,8 @@
 #include <cstring>
 #include <string>
 
-#include "core/fixed.h"
-#include "core/tool_spec.h"
+#include "core/math/fixed.h"
+#include "core/tool/spec.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

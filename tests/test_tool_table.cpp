@@ -2,7 +2,7 @@
 #include <cstring>
 #include <string>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "platform/tool_table.h"
 #include "tests/runner.h"
 

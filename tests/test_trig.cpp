@@ -1,8 +1,8 @@
-// core/trig.h against double precision: the bounds stated in trig.h.
+// core/math/trig.h against double precision: the bounds stated in trig.h.
 #include <cmath>
 #include <random>
 
-#include "core/trig.h"
+#include "core/math/trig.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "core/config.h"
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/sweep.h"
+#include "core/cut/stamp.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
 #include "tools/bench.h"
 #include "tools/workloads.h"
 
@@ -58,7 +58,7 @@ void reset(Job* j) {
   j->g.dirty = GridRect::none();
 }
 
-// The path as one polyline, as core/mill.h cuts a program: stamping leaves
+// The path as one polyline, as core/cut/mill.h cuts a program: stamping leaves
 // out each joint's repeated instance, sweeping chains the moves.
 void cut(Job* j, bool sweep, CutStats* st) {
   const std::vector<PointNm>& path = j->w.path;

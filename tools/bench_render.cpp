@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "core/config.h"
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/tool.h"
+#include "core/cut/stamp.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 #include "tools/bench.h"
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "core/interp.h"
+#include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
 

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <cstring>
 
-#include "core/arc_chords.h"
-#include "core/decimal.h"
-#include "core/fixed.h"
-#include "core/interp.h"
+#include "core/math/decimal.h"
+#include "core/math/fixed.h"
+#include "core/motion/arc_chords.h"
+#include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
 

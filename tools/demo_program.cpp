@@ -1,5 +1,5 @@
 // Generator of the built-in demo program; see demo_program.h. All geometry is
-// in integer micrometres and the sines come from core/trig.h, so the text is
+// in integer micrometres and the sines come from core/math/trig.h, so the text is
 // the same on every machine.
 #include "tools/demo_program.h"
 
@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/fixed.h"
-#include "core/trig.h"
+#include "core/math/fixed.h"
+#include "core/math/trig.h"
 
 namespace dexmill {
 namespace cli {

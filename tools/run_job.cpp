@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "core/cutter.h"
-#include "core/grid_volume.h"
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/motion_summary.h"
-#include "core/sweep.h"
-#include "core/tool_spec.h"
-#include "core/trig.h"
+#include "core/cut/mill.h"
+#include "core/cut/sweep.h"
+#include "core/grid/volume.h"
+#include "core/math/trig.h"
+#include "core/motion/interp.h"
+#include "core/motion/summary.h"
+#include "core/tool/cutter.h"
+#include "core/tool/spec.h"
 #include "platform/atomic_file.h"
 #include "platform/clock.h"
 #include "platform/gcode_file.h"

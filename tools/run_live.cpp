@@ -3,12 +3,12 @@
 
 #include <cstdio>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "display/font.h"
 #include "platform/clock.h"
 #include "platform/fbdev.h"
-#include "platform/window.h"
 #include "platform/report_json.h"
+#include "platform/window.h"
 #include "tools/cli.h"
 
 namespace dexmill {

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "core/config.h"
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "display/render.h"
 #include "tools/run_options.h"
 #include "tools/run_render.h"

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <cstring>
 
-#include "core/decimal.h"
-#include "core/fixed.h"
-#include "core/interp.h"
-#include "core/tool_spec.h"
+#include "core/math/decimal.h"
+#include "core/math/fixed.h"
+#include "core/motion/interp.h"
+#include "core/tool/spec.h"
 #include "display/framebuffer.h"
 #include "tools/cli.h"
 

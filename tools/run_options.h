@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/mill.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/tool/tool.h"
 #include "display/camera.h"
 
 namespace dexmill {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/config.h"
-#include "core/grid.h"
-#include "core/tool.h"
+#include "core/grid/grid.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 
 namespace dexmill {

@@ -4,7 +4,7 @@
 #include "core/config.h"
 #include <cstdio>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 
 namespace dexmill {
 namespace cli {

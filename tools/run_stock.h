@@ -1,7 +1,7 @@
 // The stock and the dexel grid of `dexmill run`.
 //
 // Default stock (no --stock), from a first pass over the program
-// (core/motion_summary.h), for programs that put Z0 on the stock top as CAM
+// (core/motion/summary.h), for programs that put Z0 on the stock top as CAM
 // programs do:
 //   top    Z = 0 when any feed reaches below 0; otherwise (a program zeroed on
 //          the table) the highest level a feed reaches: the highest of the
@@ -18,17 +18,17 @@
 // or --pitch MM), one pitch for x and y. Dexel axes run from the stock's
 // X0, Y0 in steps of the pitch, so the stock is rounded up to whole pitches
 // (by less than one); one ring of hole dexels around it makes its side
-// walls (core/grid.h). With --grid, dexels past the stock are holes too.
+// walls (core/grid/grid.h). With --grid, dexels past the stock are holes too.
 // Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
-// the stock height in 16 bits (core/grid.h lsb_for_range).
+// the stock height in 16 bits (core/grid/grid.h lsb_for_range).
 #ifndef DEXMILL_TOOLS_RUN_STOCK_H
 #define DEXMILL_TOOLS_RUN_STOCK_H
 
 #include <cstdint>
 #include <string>
 
-#include "core/grid.h"
-#include "core/motion_summary.h"
+#include "core/grid/grid.h"
+#include "core/motion/summary.h"
 
 namespace dexmill {
 namespace cli {

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/grid.h"
+#include "core/grid/grid.h"
 #include "core/point.h"
-#include "core/tool.h"
+#include "core/tool/tool.h"
 
 namespace dexmill {
 

@@ -7,10 +7,10 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/grid.h"
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/grid/grid.h"
+#include "core/motion/interp.h"
+#include "core/tool/tool.h"
 #include "tests/fuzz/fuzz_render.h"
 
 using namespace dexmill;

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "core/grid.h"
-#include "core/tool.h"
+#include "core/grid/grid.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 
 inline void fuzz_render(dexmill::DexelGrid<uint16_t>& g, const dexmill::ToolProfile& tool, dexmill::PointNm tip,

@@ -5,9 +5,9 @@
 // (display's frame_hash: pixel values as little-endian bytes, any stride).
 #include <stdint.h>
 
-#include "core/grid.h"
-#include "core/sweep.h"
-#include "core/tool.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 #include "tests/golden/golden.h"
 

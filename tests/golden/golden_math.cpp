@@ -1,13 +1,13 @@
-// Golden section "math": core/fixed.h and core/trig.h at their edges and at
+// Golden section "math": core/math/fixed.h and core/math/trig.h at their edges and at
 // sampled inputs. Edge cases print one value each (readable in a diff);
 // sampled inputs print one hash over all results (compact, and any single
 // differing bit changes it).
 #include <stdint.h>
 
-#include "core/fixed.h"
-#include "core/grid.h"
-#include "core/hash.h"
-#include "core/trig.h"
+#include "core/grid/grid.h"
+#include "core/math/fixed.h"
+#include "core/math/hash.h"
+#include "core/math/trig.h"
 #include "tests/golden/golden.h"
 
 using namespace dexmill;

@@ -1,17 +1,17 @@
 // Golden sections "mill" and "path": a G-code program stored as text (as a
-// panel would keep it in flash) read by the interpreter (core/interp.h) and
-// (mill) cut by core/mill.h in sweep and stamp mode into m = 8, 16, 32 grids,
+// panel would keep it in flash) read by the interpreter (core/motion/interp.h) and
+// (mill) cut by core/cut/mill.h in sweep and stamp mode into m = 8, 16, 32 grids,
 // one grid hash per mode and m; (path) every canonical record and arc chord
 // point hashed in order, the same trace `dexmill path` prints.
 #include <stdint.h>
 #include <string.h>
 
-#include "core/arc_chords.h"
-#include "core/grid.h"
-#include "core/hash.h"
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/grid/grid.h"
+#include "core/math/hash.h"
+#include "core/motion/arc_chords.h"
+#include "core/motion/interp.h"
+#include "core/tool/tool.h"
 #include "tests/golden/golden.h"
 
 using namespace dexmill;

@@ -14,9 +14,9 @@
 
 #include <stdint.h>
 
-#include "core/fixed.h"
+#include "core/math/fixed.h"
 #include "core/point.h"
-#include "core/tool.h"
+#include "core/tool/tool.h"
 
 namespace golden {
 

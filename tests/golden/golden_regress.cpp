@@ -3,10 +3,10 @@
 // runs under the sanitizer targets of xcheck, where the bug was found.
 #include <stdint.h>
 
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/stamp.h"
-#include "core/tool.h"
+#include "core/cut/stamp.h"
+#include "core/grid/grid.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/golden/golden.h"
 #include "tests/golden/golden_programs.h"
 
@@ -19,7 +19,7 @@ namespace {
 // g->top + index(ci - K, j); when the cutter overhangs the grid's left edge
 // (ci < K) on row 0 that points before the array, which is undefined even
 // though only in-grid dexels are touched (clang -fsanitize=pointer-overflow,
-// xcheck target ubsan-clang, core/stamp.cpp). Instances at every corner and
+// xcheck target ubsan-clang, core/cut/stamp.cpp). Instances at every corner and
 // edge, overhanging by less than, exactly and more than K.
 template <class H>
 void stamp_overhang_left_edge(Out& out) {

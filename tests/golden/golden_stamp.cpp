@@ -1,5 +1,5 @@
 // Golden section "stamp": the programs of golden_programs.h cut by instances
-// of motion (core/stamp.h, paper §2.3) into grids of m = 8, 16 and 32 bits.
+// of motion (core/cut/stamp.h, paper §2.3) into grids of m = 8, 16 and 32 bits.
 // Per program and m, one line: the grid hash (core grid_hash, little-endian
 // bytes by construction), a hash of the per-move trace (instances, dexel
 // updates, dirty rectangle after each move, which pins down a diverging move
@@ -7,12 +7,12 @@
 // height-gradient normals (paper §2.1 eq. 1) over every dexel.
 #include <stdint.h>
 
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/hash.h"
-#include "core/stamp.h"
+#include "core/cut/stamp.h"
+#include "core/grid/grid.h"
+#include "core/math/hash.h"
 #include "core/status.h"
-#include "core/tool.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/golden/golden.h"
 #include "tests/golden/golden_programs.h"
 

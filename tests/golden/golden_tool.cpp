@@ -1,12 +1,12 @@
-// Golden section "tool": tool checks, profile heights (core/tool.h) and
-// cutter dexel sets (core/cutter.h, paper §2.2.2) for every cutter shape at
+// Golden section "tool": tool checks, profile heights (core/tool/tool.h) and
+// cutter dexel sets (core/tool/cutter.h, paper §2.2.2) for every cutter shape at
 // a few pitches and LSBs, plus the status messages.
 #include <stdint.h>
 
-#include "core/cutter.h"
-#include "core/hash.h"
+#include "core/math/hash.h"
 #include "core/status.h"
-#include "core/tool.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "tests/golden/golden.h"
 #include "tests/golden/golden_programs.h"
 

@@ -5,7 +5,7 @@
 // not start with "info" to be identical.
 //
 // Pipeline (DESIGN.md "One pipeline"): G-code text in flash -> interpreter
-// (core/interp.h) -> canonical records -> Mill (core/mill.h, exact sweeps)
+// (core/motion/interp.h) -> canonical records -> Mill (core/cut/mill.h, exact sweeps)
 // -> static dexel grid -> renderer (display/render.h) -> a 480x272 RGB565
 // frame in a static framebuffer -> its hash.
 //
@@ -16,11 +16,11 @@
 #include <string.h>
 
 #include "core/config.h"
-#include "core/cutter.h"
-#include "core/grid.h"
-#include "core/interp.h"
-#include "core/mill.h"
-#include "core/tool.h"
+#include "core/cut/mill.h"
+#include "core/grid/grid.h"
+#include "core/motion/interp.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
 #include "display/render.h"
 #include "tests/golden/board.h"
 #include "tests/golden/golden_out.h"
@@ -55,7 +55,7 @@ constexpr PanelTool kTools[] = {
 constexpr int kToolCount = static_cast<int>(sizeof kTools / sizeof kTools[0]);
 constexpr int64_t kToolLengthNm = mm(40);
 
-// Cutter dexel sets need (2K+1)^2 * 2 + ... words each (core/cutter.h), K =
+// Cutter dexel sets need (2K+1)^2 * 2 + ... words each (core/tool/cutter.h), K =
 // R / pitch: all of them sized here, at compile time.
 constexpr size_t cutter_words_for(int i) {
   return i == kToolCount ? 0

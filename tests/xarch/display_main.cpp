@@ -3,12 +3,12 @@
 // require the same output from every CPU and compiler:
 //
 //   bash /work/shared/tools/xarch-check.sh -j 2 -I . -m tests/xarch/display_main.cpp \
-//       tests/scene_util.cpp core/*.cpp display/*.cpp
+//       tests/scene_util.cpp $(find core display -name "*.cpp")
 //
 // (Not part of `make test`: the Makefile builds tests/*.cpp only.)
 #include <cstdio>
 
-#include "core/trig.h"
+#include "core/math/trig.h"
 #include "display/render.h"
 #include "tests/scene_util.h"
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # cortexm.sh - proves that core/ and display/ build freestanding for Cortex-M
-# (`make cortexm`): compiles core/*.cpp and display/*.cpp (globs) with
+# (`make cortexm`): compiles every .cpp under core/ and display/ (found, not listed) with
 # arm-none-eabi-g++ for each CPU with the project's integer-only flags,
 # links them with the bare start-up of tests/golden/cm/startup.c (vectors,
 # .data/.bss, nothing else; no heap set-up), reports flash and RAM per CPU,
@@ -51,7 +51,7 @@ done
 [ $INSTALL = 1 ] && { tools/scripts/install-deps.sh cross || echo "cortexm: installing the toolchain failed" >&2; }
 P=arm-none-eabi
 command -v $P-g++ >/dev/null || { echo "cortexm: $P-g++ missing (tools/scripts/install-deps.sh cross)" >&2; exit 2; }
-SRC=$(ls core/*.cpp display/*.cpp 2>/dev/null | sort)
+SRC=$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort)
 [ -n "$SRC" ] || { echo "cortexm: no sources in core/ or display/" >&2; exit 2; }
 mkdir -p "$WORK"; WORK=$(cd "$WORK" && pwd)
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # panel.sh - the Cortex-M panel demo (`make panel`): builds
-# tests/golden/panel_main.cpp with core/*.cpp and display/*.cpp (globs) for
+# tests/golden/panel_main.cpp with every .cpp under core/ and display/ (found, not listed) for
 # the host and, freestanding, for a Cortex-M4F on qemu's MPS2 AN386 board
 # (semihosting for output only), runs both, and requires every output line
 # that does not start with "info" (instruction counts exist only on the
@@ -24,7 +24,7 @@ WARN=${DEXMILL_WARN:--Wall -Wextra -Werror -Wshadow -Wvla -Wundef}
 INTFLAGS=${DEXMILL_INTFLAGS:--fno-exceptions -fno-rtti -include core/integer_only.h}
 [ $INSTALL = 1 ] && { tools/scripts/install-deps.sh cross || echo "panel: installing the toolchain failed" >&2; }
 for c in g++ arm-none-eabi-g++ qemu-system-arm; do command -v $c >/dev/null || { echo "panel: $c missing (tools/scripts/install-deps.sh cross)" >&2; exit 2; }; done
-INT_SRC="$(ls core/*.cpp display/*.cpp 2>/dev/null | sort) tests/golden/panel_main.cpp tests/golden/golden_out.cpp"
+INT_SRC="$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort) tests/golden/panel_main.cpp tests/golden/golden_out.cpp"
 rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
 
 # build KIND CXX FLAGS BOARD_SOURCES... -> $WORK/KIND/obj list in $objs

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # xcheck.sh - bit-exactness across compilers, optimisation levels and CPUs
 # (`make xcheck`). Builds the golden-output program (tests/golden/golden*.cpp
-# with core/*.cpp and display/*.cpp) for every target below, runs it natively,
+# with every .cpp under core/ and display/) for every target below, runs it natively,
 # under qemu-user, or on an emulated Cortex-M board with semihosting, and
 # requires every stdout to be byte-identical to the others and to the pinned
 # tests/golden/golden.out.
@@ -64,7 +64,7 @@ while [ $# -gt 0 ]; do
 done
 
 # ---- sources (globs: new core/ and display/ files and golden sections join by themselves)
-INT_SRC=$(ls core/*.cpp display/*.cpp tests/golden/golden*.cpp 2>/dev/null | sort)
+INT_SRC=$( (find core display -name "*.cpp"; ls tests/golden/golden*.cpp) 2>/dev/null | LC_ALL=C sort)
 HOST_BOARD=tests/golden/board_host.cpp
 CM_BOARD="tests/golden/cm/board_semihost.cpp"
 CM_STARTUP=tests/golden/cm/startup.c

@@ -1,0 +1,94 @@
+// The cutting stage (DESIGN.md pipeline: motion -> cut -> grid): a CanonSink
+// that cuts every traverse, feed and arc into the dexel grid with the tool in
+// the spindle, by instances of motion (stamp, the paper's §2.3) or by exact
+// swept envelopes (sweep, core/cut/sweep.h). Tool changes (M6) switch cutters
+// through a ToolLibrary the caller provides. No heap: the stamp cutter's
+// dexel set lives in caller memory.
+//
+// Rapid traverses cut too: a simulator must show a crash through the stock,
+// not hide it. Arcs: sweep mode cuts them with sweep_arc (exact for level XY
+// arcs with ball and flat ends, else 1 um chords); stamp mode places
+// instances along chords of sagitta <= kArcChordSagittaNm (1 um), so the path
+// stays within 1 um + 7 nm of the exact arc (core/motion/arc_chords.h).
+#ifndef DEXMILL_CORE_CUT_MILL_H
+#define DEXMILL_CORE_CUT_MILL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/cut/stats.h"
+#include "core/cut/sweep.h"
+#include "core/grid/grid.h"
+#include "core/motion/canon.h"
+#include "core/status.h"
+#include "core/tool/cutter.h"
+#include "core/tool/tool.h"
+
+namespace dexmill {
+
+enum class CutMode : uint8_t { kSweep = 0, kStamp = 1 };
+
+// Maps tool numbers (T words) to shapes.
+class ToolLibrary {
+ public:
+  // The tool numbered `number`; false if there is none.
+  virtual bool tool(int32_t number, Tool* out) const = 0;
+
+ protected:
+  ~ToolLibrary() = default;
+};
+
+template <class H>
+class Mill : public CanonSink {
+ public:
+  // `words` is memory for the stamp cutter (cutter_storage_words of the
+  // largest tool's reach); unused in sweep mode (may be null).
+  Mill(DexelGrid<H>* grid, CutMode mode, const ToolLibrary* tools, int32_t* words, size_t nwords);
+
+  // Selects the tool to cut with before any M6 (e.g. the --tool default).
+  Status set_tool(const Tool& t);
+
+  void emit(const CanonRecord& r) override;
+
+  // Sweep mode defers the end cap of the last straight move until the next
+  // move shows how much of it is needed (core/cut/sweep.h, SweepChain). Call
+  // flush before reading the grid (a frame, the end); a program end (M2/M30)
+  // and a tool change flush by themselves. Cheap when nothing is pending.
+  void flush();
+
+  // First failure (a tool the library lacks, a tool too large for the
+  // stamp memory); cutting goes on with the previous tool.
+  Status status() const { return status_; }
+  int32_t failed_tool() const { return failed_tool_; }
+  const CutStats& stats() const { return stats_; }
+  const Tool& tool() const { return tool_; }
+  // The tool tip after the last record.
+  PointNm position() const { return last_; }
+
+ private:
+  void cut_line(PointNm a, PointNm b);
+
+  DexelGrid<H>* grid_;
+  CutMode mode_;
+  const ToolLibrary* tools_;
+  int32_t* words_;
+  size_t nwords_;
+  Tool tool_;
+  bool have_tool_ = false;
+  CutterDexels cutter_;
+  SweepTool sweep_;
+  CutStats stats_;
+  Status status_ = Status::kOk;
+  int32_t failed_tool_ = -1;
+  PointNm last_{0, 0, 0};
+  bool chained_ = false;  // stamp: the next move starts where the last cut ended
+  SweepChain chain_;      // sweep: the polyline so far
+};
+
+extern template class Mill<uint8_t>;
+extern template class Mill<uint16_t>;
+extern template class Mill<uint32_t>;
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,210 @@
+// Exact swept-envelope cutting: past the paper's instances of motion (§2.3).
+//
+// For every dexel column within reach of a move, the lowest point of the
+// tool anywhere along the move is found in closed form and applied once, with
+// the figure-2 cases (core/cut/stamp.h). No scallops between instances, and each
+// dexel is touched once per move (or per piece of a long move or an arc).
+//
+// Working units: horizontal lengths in U = 1/4 nm (so tool radii up to 2^28
+// nm square within int64), heights in V = lsb / 256 of the grid. A column's
+// height is rounded to the nearest LSB at the end.
+//
+// Error bound (tests/test_sweep.cpp checks it against a dense double-precision
+// oracle): the height written is within 1 LSB of the exact lowest point of the
+// tool over the move for a column displaced by at most 1 nm horizontally (a
+// backward bound: where the tool's side is vertical, at r = R, the height is
+// infinitely sensitive to position, and no finite forward bound exists).
+//
+// The shaft: where it is below some top, figure 2 needs each column's whole
+// interval, [lowest point, shaft top of the highest position over the
+// column]: the union of the tool's intervals over a piece, which is one
+// interval because the positions over a column are one run of the piece.
+// Pieces (a move's, an arc's quarter turns or chords) are applied one after
+// another, as stamping applies instances: a piece whose tool sits inside a
+// dexel with material above and below it (case d) leaves that dexel whole,
+// so a later piece's cut does not reach above it. Only a tool deeper in the
+// material than its own length meets this, and no single dexel per column
+// can hold what it leaves.
+#ifndef DEXMILL_CORE_CUT_SWEEP_H
+#define DEXMILL_CORE_CUT_SWEEP_H
+
+#include <stdint.h>
+
+#include "core/cut/stats.h"
+#include "core/grid/grid.h"
+#include "core/math/fixed.h"
+#include "core/motion/canon.h"
+#include "core/point.h"
+#include "core/status.h"
+#include "core/tool/tool.h"
+
+namespace dexmill {
+
+constexpr int64_t kSweepUnitsPerNm = 4;  // U per nm
+constexpr int kSweepVBits = 8;           // V = LSB / 2^8
+
+// A tool prepared for sweeping on grids with a given LSB.
+struct SweepTool {
+  ToolKind kind;
+  int64_t r_u, r2_u;       // R in U, R^2 in U^2
+  int64_t a_u, rc_u;       // bull nose: flat radius a = R - rc, corner radius rc
+  int64_t rc2_u;           // rc^2
+  int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
+  int64_t len_v;           // shaft top above the tip, V
+  int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
+  int64_t u_per_v_q30;     // V -> U: 2^30 * V / U, rounded up
+  // Ball: the paraboloid r^2 / (2R) under the sphere in V, rounded down, as
+  // ((r^2 >> bowl_pre) * bowl_q) >> bowl_post: a 32 x 32-bit product.
+  uint32_t bowl_q;
+  int bowl_pre, bowl_post;
+  // Ball pieces in a general direction and level ball arcs leave out the
+  // columns whose top is under every height they compute there
+  // (core/cut/sweep_line.cpp, ball_floor_of; core/cut/sweep_arc.cpp, level_piece):
+  // the same bits without most of a pocket's square roots. Tests turn it
+  // off to check exactly that.
+  bool skip_under_floor = true;
+  int64_t lsb_nm;          // the LSB this was prepared for
+};
+
+// Fails with kBadArgument when R exceeds 2^28 nm (268 mm) or lsb is outside
+// [1, 2^30] nm.
+Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out);
+
+// Height of the tool's lower surface above its tip at r^2 (U^2, r <= R), V.
+// Inline: it is the inner loop of every sweep.
+inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
+  int64_t f_u = 0;
+  switch (t.kind) {
+    case ToolKind::kFlat:
+      return 0;
+    case ToolKind::kBall:  // R - sqrt(R^2 - r^2)
+      f_u = t.r_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - r2)));
+      break;
+    case ToolKind::kBullNose: {  // flat to a, then the torus of radius rc
+      const int64_t r = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2)));
+      if (r <= t.a_u) return 0;
+      const int64_t d = min_of(r - t.a_u, t.rc_u);
+      f_u = t.rc_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.rc2_u - d * d)));
+      break;
+    }
+    case ToolKind::kVBit:  // k * r
+      f_u = mul_shift_fit(static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2))), t.cot_q30, 30);
+      break;
+  }
+  // f_u <= 2^37 U (a V-bit's k < 2^7), v_per_u_q32 < 2^39: fits after the shift.
+  return mul_shift_fit(f_u, t.v_per_u_q32, 32);
+}
+
+// The ball's paraboloid r2 / (2R) in V (r2 <= R^2 in U^2), rounded down.
+inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
+  const uint64_t r2_hi = static_cast<uint64_t>(r2) >> t.bowl_pre;  // < 2^32
+  return static_cast<int64_t>((static_cast<uint64_t>(static_cast<uint32_t>(r2_hi)) * t.bowl_q) >> t.bowl_post);
+}
+
+// A straight move of the tool tip from a to b (any direction: lines, ramps,
+// plunges). Moves longer than 2^27 nm are cut as consecutive pieces.
+//
+// start_cap = false leaves out the columns where the lowest point is the
+// tool standing at a (behind the move's start). Pass it when the previous
+// move, cut with the same tool, ended at a: its sweep holds the whole tool
+// at a already (every column of it is either in that move's sweep at the
+// tool's own height or lower), so the union is unchanged and the work at
+// polyline joints is done once.
+template <class H>
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
+
+// A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
+// declared here so that a SweepChain can hold the last one).
+struct SweepLine {
+  int64_t len_u;             // horizontal length l, U
+  int64_t ex_q30, ey_q30;    // unit direction e
+  int64_t za_v, zb_v;        // tip heights above the grid's z0, V
+  int64_t slope_v_q32;       // dz/ds in V per U, q32
+  int64_t m_geo_q30;         // dz/ds, dimensionless, q30
+  int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
+  int64_t ball_k_q30;        // ball: sqrt(1 + m^2)
+  int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
+  bool vbit_inside;          // V-bit: |m| < k
+  bool level;                // dz == 0
+  bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+};
+
+// floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
+// are those of computing it. The moves of one x-parallel stripe meet the same
+// rows at the same cross offsets v, and each row's root rho(v) is the most
+// expensive part of its set-up; the chain keeps one for its moves. 128
+// slots (1.5 KB): a tool 30 rows wide meets 31 offsets, which 32 slots
+// hashed into with about half of them colliding.
+struct RootMemo {
+  static constexpr int kSlotBits = 7;
+  uint64_t key[1 << kSlotBits] = {};   // zeroes are true entries: sqrt(0) = 0
+  uint32_t root[1 << kSlotBits] = {};
+};
+
+// A polyline of straight moves cut with one tool, move by move.
+//
+// Why: for one move, a column's lowest point is either inside the move (its
+// band) or the tool standing at an end (a cap). Along a polyline of short
+// moves the caps are most of the work (a 0.3 mm move of a 3 mm ball: the
+// band is 30x3 dexels, each cap a half disc of 350). But the union of the
+// moves' sweeps needs the tool standing at an inner vertex B only on the
+// columns where both moves meeting at B have their lowest point at B: where
+// one of them has it inside, its band is at least as low (it includes B);
+// where the next has it at its own far end, that cap is lower still. So a
+// chained move cuts its band, its start cap only on that wedge (tested in
+// the previous move's frame), and leaves its end cap pending until the next
+// move or sweep_chain_end. The result is the same union as move-by-move
+// sweep_line with full caps.
+//
+// Only moves whose shaft reaches above every top are chained (their cut is
+// then a min() per column, so leaving out dominated heights changes
+// nothing); others cut their caps at once. Call sweep_chain_end before
+// reading the grid, before changing the tool, and at the end.
+struct SweepChain {
+  enum class State : uint8_t {
+    kFresh,    // no move before: cut the whole start cap
+    kCovered,  // the tool at `end` is cut already: skip the start cap
+    kPending,  // the end cap of `last` at `end` is pending
+  };
+  State state = State::kFresh;
+  PointNm end{0, 0, 0};
+  SweepLine last{};
+  RootMemo roots;
+};
+
+// Cuts a -> b as the next move of chain c (a move that does not start at
+// c->end first ends the chain).
+template <class H>
+void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, SweepChain* c);
+// Cuts the pending end cap, if any; the chain stays joined at c->end.
+template <class H>
+void sweep_chain_end(DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* c);
+// Cuts an arc (sweep_arc) as the next move of chain c. Arcs cut both their
+// caps: the pending line cap goes first, and the arc's start cap only when
+// nothing ended at its start; the chain goes on covered at the arc's end.
+template <class H>
+void sweep_chain_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, SweepChain* c);
+
+// An arc or helix (a kArc record). Exact per column for level XY arcs with a
+// ball or flat end and radius <= 2^27 nm; otherwise chords of sagitta <=
+// kArcChordSagittaNm, each swept exactly (see core/cut/sweep_arc.cpp).
+// start_cap as for sweep_line.
+template <class H>
+void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap = true);
+
+#define DEXMILL_SWEEP_EXTERN(H)                                                                             \
+  extern template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool); \
+  extern template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool); \
+  extern template void sweep_chain_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*,    \
+                                           SweepChain*);                                                     \
+  extern template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);          \
+  extern template void sweep_chain_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*,  \
+                                          SweepChain*);
+DEXMILL_SWEEP_EXTERN(uint8_t)
+DEXMILL_SWEEP_EXTERN(uint16_t)
+DEXMILL_SWEEP_EXTERN(uint32_t)
+#undef DEXMILL_SWEEP_EXTERN
+
+}  // namespace dexmill
+
+#endif

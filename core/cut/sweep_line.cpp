@@ -1,0 +1,805 @@
+// Swept envelope of a straight move (core/cut/sweep.h).
+//
+// Geometry. Let the move go from A to B, horizontal length l, unit direction
+// e, and let a column P sit at along-track u and cross-track v from A. With
+// the tool at along-track s in [0, l], the column meets the tool's lower
+// surface at height z(s) + f(sqrt((u - s)^2 + v^2)), z(s) = zA + m*s. With
+// w = u - s this is zA + m*u + [F(w) - m*w], F(w) = f(sqrt(w^2 + v^2)), which
+// is convex in w for every cutter here (f convex and increasing in r). So the
+// lowest point is at w = clamp(w*(v), u - l, u), where w*(v) minimises
+// F(w) - m*w without the clamp, and it depends on v only:
+//   flat:   m = 0: 0; else sign(m) * rho, rho = sqrt(R^2 - v^2) (the rim)
+//   ball:   rho * m / sqrt(1 + m^2) (where the sphere's slope equals m)
+//   V-bit:  m*|v| / sqrt(k^2 - m^2) while inside the cone, else the rim
+//   bull:   no closed form: a ternary search of the convex F(w) - m*w
+// An error in w* changes the height only to second order (w* is a minimum),
+// while the height itself is always evaluated exactly at the clamped w.
+// The ball's flank has a closed form needing no second root: with
+// w* = rho sin(phi), tan(phi) = m, F(w*) - m w* = R - rho (cos + m sin)
+// = R - rho sqrt(1 + m^2), so a band column costs one square root (rho).
+//
+// Ranges (why the inner loops may use mul_shift_fit, which does not
+// saturate): a piece is at most 2^29 U long and R <= 2^30 U, so |u|, |w| <
+// 2^31 U and rho <= 2^30 U; a piece steeper than 2^24:1 is a plunge, so
+// |slope| < 2^24 * 64 V/U / lsb <= 2^30 V/U and |u * slope| < 2^61 V; the
+// ball's K = sqrt(1 + m^2) < 2^25, so rho * K < 2^55 U, and such a length
+// times v_per_u_q32 (<= 2^38) shifted by 32 is below 2^61 V.
+#include "core/cut/stamp.h"
+#include "core/cut/sweep.h"
+#include "core/cut/sweep_cut.h"
+#include "core/math/fixed.h"
+#include "core/math/wide.h"
+
+namespace dexmill {
+namespace {
+
+constexpr int64_t kQ30 = static_cast<int64_t>(1) << 30;
+// Pieces of at most 2^27 nm keep every product below 2^63 (see sweep.h).
+constexpr int64_t kMaxPieceNm = static_cast<int64_t>(1) << 27;
+
+
+int64_t sign_of(int64_t v) { return v < 0 ? -1 : 1; }
+
+// F(w) - m*w in V for the cross-track distance v (v2 = v^2), w^2 + v^2 <= R^2.
+int64_t flank_cost_v(const SweepTool& t, const SweepLine& lp, int64_t w, int64_t v2) {
+  return sweep_profile_v(t, w * w + v2) - mul_shift_fit(w, lp.slope_v_q32, 32);
+}
+
+// The ball's flank height F(w*) - m w* = R - rho sqrt(1 + m^2) in V (see
+// the file comment); rho <= R, so it is within [R (1 - K), R], K the slope
+// factor, and rounds like the profile (floor of rho, then of the product).
+int64_t ball_flank_v(const SweepTool& t, const SweepLine& lp, int64_t rho) {
+  return mul_shift_fit(t.r_u - mul_shift_fit(rho, lp.ball_k_q30, 30), t.v_per_u_q32, 32);
+}
+
+// rho(v) = floor(sqrt(R^2 - v^2)): the tool's half chord at cross-track v.
+int64_t rho_of(const SweepTool& t, int64_t v2) {
+  return static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - v2)));
+}
+
+// w*(v): the unclamped minimiser of F(w) - m*w (see the file comment), given
+// rho = rho_of(v2) (rows along x share it between pieces and neighbours).
+inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
+  if (lp.level) return 0;
+  if (t.kind == ToolKind::kBall) return mul_shift_fit(rho, lp.ball_sin_q30, 30);  // the common case first
+  const int64_t rim = sign_of(lp.m_geo_q30) * rho;
+  switch (t.kind) {
+    case ToolKind::kFlat:
+      return rim;
+    case ToolKind::kBall:
+      return mul_shift(rho, lp.ball_sin_q30, 30);
+    case ToolKind::kVBit: {
+      if (!lp.vbit_inside) return rim;
+      const int64_t w = mul_shift(v < 0 ? -v : v, lp.vbit_c1_q30, 30);
+      return w * w + v2 <= t.r2_u ? w : rim;
+    }
+    case ToolKind::kBullNose: {
+      int64_t lo = -rho, hi = rho;
+      while (hi - lo > 2) {
+        const int64_t third = (hi - lo) / 3;
+        const int64_t m1 = lo + third, m2 = hi - third;
+        if (flank_cost_v(t, lp, m1, v2) <= flank_cost_v(t, lp, m2, v2)) hi = m2; else lo = m1;
+      }
+      int64_t best = lo, best_cost = flank_cost_v(t, lp, lo, v2);
+      for (int64_t w = lo + 1; w <= hi; ++w) {
+        const int64_t c = flank_cost_v(t, lp, w, v2);
+        if (c < best_cost) { best = w; best_cost = c; }
+      }
+      return best;
+    }
+  }
+  return 0;
+}
+
+int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
+  return lp.level ? 0 : best_w_rho(t, lp, v, v2, rho_of(t, v2));
+}
+
+bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
+                 SweepLine* lp) {
+  lp->za_v = za_v;
+  lp->zb_v = zb_v;
+  lp->level = za_v == zb_v;
+  const uint64_t l2 = static_cast<uint64_t>(dx_u * dx_u) + static_cast<uint64_t>(dy_u * dy_u);
+  // The length with 30 fraction bits: the direction must be a unit vector
+  // to 2^-30 even for a move a few U long (a 1 nm segment far from a column).
+  // Along an axis (the common case) e is exactly (+-1, 0) or (0, +-1) and
+  // the root is |d|: skip it.
+  const bool axis = dx_u == 0 || dy_u == 0;
+  const int64_t len_q30 = axis ? static_cast<int64_t>((abs_u64(dx_u) + abs_u64(dy_u)) << 30)
+                               : static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, l2}, 60)));
+  lp->len_u = (len_q30 + (kQ30 >> 1)) >> 30;
+  const int64_t dz_u = dz_nm * kSweepUnitsPerNm;
+  // Steeper than 2^24:1 is cut as a plunge at the lower end: the horizontal
+  // error is below |dz| / 2^24 (60 nm per metre of descent).
+  lp->plunge = len_q30 == 0 || abs_u64(dz_u) >= (static_cast<uint64_t>(len_q30) >> 6);
+  if (lp->plunge) return true;
+  constexpr int64_t kQ60 = static_cast<int64_t>(1) << 60;
+  lp->ex_q30 = axis ? (dx_u > 0 ? kQ30 : dx_u < 0 ? -kQ30 : 0) : muldiv_round(dx_u, kQ60, len_q30);
+  lp->ey_q30 = axis ? (dy_u > 0 ? kQ30 : dy_u < 0 ? -kQ30 : 0) : muldiv_round(dy_u, kQ60, len_q30);
+  // x * 2^s / l rounded: along an axis l is whole (len_q30 = len_u 2^30),
+  // so the same quotient comes from 64-bit operands.
+  auto per_len = [&](int64_t x, int s) {
+    return axis ? muldiv_round(x, static_cast<int64_t>(1) << s, lp->len_u)
+                : muldiv_round(x, static_cast<int64_t>(1) << (s + 30), len_q30);
+  };
+  lp->slope_v_q32 = per_len(zb_v - za_v, 32);
+  lp->m_geo_q30 = per_len(dz_u, 30);
+  lp->ball_k_q30 = kQ30;
+  if (lp->level) return true;
+  // sqrt(dz^2 + l^2) with a 128-bit sum; >= |dz| >= 1 (dz != 0 when not level).
+  const U128 hyp2 = u128_add(sq_u128(dz_u), U128{0, l2});
+  const int64_t hyp = static_cast<int64_t>(hyp2.hi ? isqrt_u128(hyp2) : isqrt_fast_u64(hyp2.lo));
+  lp->ball_sin_q30 = muldiv_round(dz_u, kQ30, hyp);
+  lp->ball_k_q30 = per_len(hyp, 30);  // <= 2^54: steeper is a plunge
+  if (t.kind == ToolKind::kVBit) {
+    // In q20 so that k^2 - m^2 stays in 64 bits (k <= cot(0.5 deg) < 2^7).
+    const int64_t k20 = t.cot_q30 >> 10, m20 = lp->m_geo_q30 / 1024;
+    lp->vbit_inside = (m20 < 0 ? -m20 : m20) < k20;
+    if (lp->vbit_inside) {
+      const int64_t den = static_cast<int64_t>(isqrt_u64(static_cast<uint64_t>(k20 * k20 - m20 * m20)));
+      lp->vbit_inside = den > 0;
+      if (den > 0) lp->vbit_c1_q30 = muldiv_round(m20, kQ30, den);
+    }
+  }
+  return true;
+}
+
+// A floor under every height the ball's pieces compute for a column, so
+// that a column whose top is already at or below it is left without its
+// square root (most of a pocket's band: the laps before cut it lower).
+// Heights computed for the column at (u, v) (v2 = min(v^2, R^2)) are
+//   flank: za + S(u) + floor((R - floor(rho K)) g), rho = isqrt(R^2 - v2)
+//   caps:  za + S(u - w) + floor((R - isqrt(R^2 - min(w^2 + v2, R^2))) g)
+// with S(x) = floor(x m) (m = slope_v_q32 / 2^32, V per U) and g = V per U.
+// The sphere lies above its paraboloid: R - sqrt(R^2 - r^2) >= r^2 / (2R)
+// (r <= R, and R g >= r^2 g / (2R) up to reach2 for R >= 8 U). So
+//   flank >= za + S(u) + v2 g / (2R) - R (K - 1) g - 1
+//   caps  >= za + S(u) - m w + (w^2 + v2) g / (2R) - 2
+//         >= za + S(u) + v2 g / (2R) - R m^2 / (2 g) - 2 (minimum over w),
+// and both are >= S(u) + sweep_bowl_v(v2) + *floor_v with
+// *floor_v = za - max(R (K - 1) g, R m^2 / (2 g)) - 3, each product rounded
+// up; a saturated product only lowers the floor. K < 1 (rounding) needs no
+// term: then R (1 - K) >= (1 - K) v2 / (2R). False: no floor (not a ball, a
+// plunge, or one too far down to matter).
+bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
+  if (t.kind != ToolKind::kBall || lp.plunge || t.r_u < 8) return false;
+  auto up = [](int64_t x) { return x < INT64_MAX ? x + 1 : x; };  // rounds a floored product up
+  const int64_t k_minus_1 = max_of(lp.ball_k_q30 - kQ30, int64_t{0});
+  const int64_t drop_flank = up(mul_shift(up(mul_shift(t.r_u, k_minus_1, 30)), t.v_per_u_q32, 32));
+  const int64_t m_abs = lp.slope_v_q32 < 0 ? -lp.slope_v_q32 : lp.slope_v_q32;
+  const int64_t m_ratio_q30 = up(mul_shift(m_abs, t.u_per_v_q30, 32));  // m / g, dimensionless
+  const int64_t m2_q30 = up(mul_shift(m_ratio_q30, m_ratio_q30, 30));
+  const int64_t drop_caps = up(mul_shift(up(mul_shift(t.r_u, m2_q30, 31)), t.v_per_u_q32, 32));
+  const int64_t drop = max_of(drop_flank, drop_caps);
+  // 2^40 LSB down, beyond any top: no floor worth testing, and no overflow.
+  if (drop > (static_cast<int64_t>(1) << 48)) return false;
+  *floor_v = lp.za_v - drop - 3;
+  return true;
+}
+
+// floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
+// to start, then an add and a compare a step (a Bresenham walk).
+struct FloorWalk {
+  int64_t q = 0, r = 0, dq = 0, dr = 0, d = 1;  // n = q d + r, 0 <= r < d; dn = dq d + dr
+  void start(int64_t n0, int64_t dn, int64_t den) {
+    d = den;
+    q = div_floor(n0, d);
+    r = n0 - q * d;
+    dq = dn == 0 ? 0 : div_floor(dn, d);  // a walk that stays (along x) needs no division
+    dr = dn - dq * d;
+  }
+  void next() {
+    r += dr;
+    const int64_t carry = r >= d ? 1 : 0;  // branch-free: rows alternate unpredictably
+    r -= carry * d;
+    q += dq + carry;
+  }
+};
+
+// The columns i of a row with lo <= alpha + (i - i0) * beta <= hi, row after
+// row as alpha grows by gamma: i0 + ceil(..) .. i0 + floor(..) with the
+// quotients walked (per row, two divisions each would cost more than a
+// short row's columns; more so where 64-bit division is a library call).
+struct NarrowRows {
+  // Initialised although start() sets every field before use: GCC -O3
+  // cannot see that a walk is only applied after its start.
+  bool flat = true;              // beta == 0: the whole row or none
+  int64_t alpha = 0, gamma = 0;  // flat: the row's alpha and its step
+  int64_t lo = 0, hi = -1;       // flat: the bounds
+  FloorWalk first, last;         // otherwise: i0 - first.q .. i0 + last.q
+  void start(int64_t alpha0, int64_t gamma_, int64_t beta, int64_t lo_, int64_t hi_) {
+    flat = beta == 0;
+    alpha = alpha0;
+    gamma = gamma_;
+    lo = lo_;
+    hi = hi_;
+    if (flat) return;
+    // ceil(x / b) = -floor(-x / b); for beta < 0 both sides flip sign.
+    if (beta > 0) {
+      first.start(alpha0 - lo_, gamma_, beta);
+      last.start(hi_ - alpha0, -gamma_, beta);
+    } else {
+      first.start(hi_ - alpha0, -gamma_, -beta);
+      last.start(alpha0 - lo_, gamma_, -beta);
+    }
+  }
+  // Narrows [*i_lo, *i_hi] to the current row's columns.
+  void apply(int64_t i0, int64_t* i_lo, int64_t* i_hi) const {
+    if (flat) {
+      if (alpha < lo || alpha > hi) *i_hi = *i_lo - 1;
+      return;
+    }
+    *i_lo = max_of(*i_lo, i0 - first.q);
+    *i_hi = min_of(*i_hi, i0 + last.q);
+  }
+  void next() {
+    if (flat) {
+      alpha += gamma;
+    } else {
+      first.next();
+      last.next();
+    }
+  }
+};
+
+// The flank's inner loop (figure 2 reduced to a min()): top = min(top,
+// (h >> 24)) with h stepping by dh, q16 V with the rounding added. True when
+// a top changed. Branch-free, the changed flag folded from old ^ new.
+template <class H>
+inline uint32_t min_at(H* p, int64_t h) {
+  const H old = *p;
+  const int64_t cb = h >> (16 + kSweepVBits);
+  const H nv = cb < static_cast<int64_t>(old) ? static_cast<H>(cb) : old;
+  *p = nv;
+  return static_cast<uint32_t>(old ^ nv);
+}
+
+template <class H>
+bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
+  uint32_t diff = 0;
+  // Four columns a step: the loop's own bookkeeping is a third of a column.
+  for (const int64_t dh4 = 4 * dh; end - p >= 4; p += 4, h += dh4)
+    diff |= min_at(p, h) | min_at(p + 1, h + dh) | min_at(p + 2, h + 2 * dh) | min_at(p + 3, h + 3 * dh);
+  for (; p != end; ++p, h += dh) diff |= min_at(p, h);
+  return diff != 0;
+}
+
+// min_run on a row and its mirror, which take the same heights: one DDA
+// for both. Bit 0 of the result: p changed; bit 1: q changed.
+template <class H>
+unsigned min_run_pair(H* p, H* q, int64_t n, int64_t h, int64_t dh) {
+  uint32_t dp = 0, dq = 0;
+  for (int64_t k = 0; k < n; ++k, h += dh) {
+    dp |= min_at(p + k, h);
+    dq |= min_at(q + k, h);
+  }
+  return (dp != 0 ? 1u : 0u) | (dq != 0 ? 2u : 0u);
+}
+
+// min_run of a level run (dh = 0): min() of one height c, a loop compilers
+// vectorise (level moves are most of pocketing, facing and air moves).
+template <class H>
+inline H min_level_at(H* p, H c) {
+  const H old = *p, nv = old < c ? old : c;
+  *p = nv;
+  return static_cast<H>(old ^ nv);
+}
+
+template <class H>
+bool min_level(H* p, H* const end, H c) {
+  H diff = 0;
+  // Blocks of a fixed count: -O2's cost model vectorises only those.
+  constexpr int kBlock = 16;
+  for (; end - p >= kBlock; p += kBlock)
+    for (int k = 0; k < kBlock; ++k) diff = static_cast<H>(diff | min_level_at(p + k, c));
+  for (; p != end; ++p) diff = static_cast<H>(diff | min_level_at(p, c));
+  return diff != 0;
+}
+
+// min_level on a row and its mirror (distinct rows: restrict lets -O2
+// vectorise both in one loop). Bits as min_run_pair's result.
+template <class H>
+unsigned min_level_pair(H* __restrict p, H* __restrict q, int64_t n, H c) {
+  H dp = 0, dq = 0;
+  constexpr int kBlock = 16;
+  int64_t k = 0;
+  for (; n - k >= kBlock; k += kBlock)
+    for (int e = 0; e < kBlock; ++e) {
+      dp = static_cast<H>(dp | min_level_at(p + k + e, c));
+      dq = static_cast<H>(dq | min_level_at(q + k + e, c));
+    }
+  for (; k < n; ++k) {
+    dp = static_cast<H>(dp | min_level_at(p + k, c));
+    dq = static_cast<H>(dq | min_level_at(q + k, c));
+  }
+  return (dp != 0 ? 1u : 0u) | (dq != 0 ? 2u : 0u);
+}
+
+// Which columns behind the start (lowest point: the tool standing at a) a
+// piece cuts: all, none, or the chain's wedge (core/cut/sweep.h, SweepChain).
+enum class StartCap : uint8_t { kCut, kSkip, kWedge };
+
+struct PieceCaps {
+  StartCap start;
+  const SweepLine* prev;  // kWedge: the piece before, which ended at a
+  bool end;               // cut the columns whose lowest point is the tool at b
+  RootMemo* roots;        // the chain's roots, or null
+};
+
+// rho(v) through the memo (core/cut/sweep.h, RootMemo) when there is one.
+int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
+  if (!m) return rho_of(t, v2);
+  const uint64_t x = static_cast<uint64_t>(t.r2_u - v2);
+  const unsigned slot = static_cast<unsigned>((x * 0x9E3779B97F4A7C15ull) >> (64 - RootMemo::kSlotBits));
+  if (m->key[slot] != x) {
+    m->key[slot] = x;
+    m->root[slot] = static_cast<uint32_t>(rho_of(t, v2));
+  }
+  return m->root[slot];
+}
+
+// The range [lo, hi] of w*(v) over every v (the file comment), signed: 0
+// when level; the ball's w* = floor(rho sin) is monotonic in rho in [0, R],
+// so it lies between 0 and w_r = floor(R sin) (behind the start on a
+// descent, ahead of it on an ascent); other shapes may reach the rim.
+// Outside it a column's side (behind the start, past the end) is decided
+// without the root that w* needs.
+struct WRange {
+  int64_t lo, hi;
+};
+WRange w_range_of(const SweepTool& t, const SweepLine& lp) {
+  if (lp.plunge || lp.level) return WRange{0, 0};
+  if (t.kind != ToolKind::kBall) return WRange{-t.r_u, t.r_u};
+  const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
+  return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
+}
+
+// u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
+// lowest point for the column is at that end. Outside w_range_of no root.
+bool at_or_past_w(const SweepTool& t, const SweepLine& lp, int64_t u, int64_t v) {
+  const WRange wr = w_range_of(t, lp);
+  if (u >= wr.hi) return true;
+  if (u < wr.lo) return false;
+  return u >= best_w(t, lp, v, min_of(v * v, t.r2_u));
+}
+
+// True when the previous piece, which ended at the joint, has its lowest
+// point for the column at (dx, dy) U from the joint at that end.
+bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64_t dy) {
+  const int64_t u = (dx * prev.ex_q30 + dy * prev.ey_q30 + kQ30 / 2) >> 30;  // from the joint
+  const int64_t v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
+  return at_or_past_w(t, prev, u, v);
+}
+
+// The least along-track u (U, from a) of a column the piece may cut: behind
+// it the lowest point is the tool at a, and with kWedge only columns the
+// previous piece also reaches at its end count. That needs u_p >= lo_p
+// (w_range_of) in the previous frame, u_p = u cos + v' sin with |v'| <= R
+// (turns up to 60 degrees; beyond, the whole cap is a candidate).
+int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps, int64_t w_lo) {
+  const int64_t whole = -t.r_u - 1;
+  if (caps.start == StartCap::kCut) return whole;
+  if (caps.start == StartCap::kSkip) return w_lo - 1;
+  const SweepLine& p = *caps.prev;
+  const int64_t wbp = -w_range_of(t, p).lo + 2;  // >= -lo_p, >= 2
+  // Straight on (a polyline along one line: raster passes): cos = 1,
+  // sin = 0, what the general case below computes, without its products.
+  if (lp.ex_q30 == p.ex_q30 && lp.ey_q30 == p.ey_q30 && (lp.ex_q30 == 0 || lp.ey_q30 == 0))
+    return min_of(w_lo - 1, -(wbp + 2) - 2);
+  const int64_t c = mul_shift(lp.ex_q30, p.ex_q30, 30) + mul_shift(lp.ey_q30, p.ey_q30, 30);
+  const int64_t sn = mul_shift(lp.ex_q30, p.ey_q30, 30) - mul_shift(lp.ey_q30, p.ex_q30, 30);
+  if (c < kQ30 / 2) return whole;
+  const int64_t reach = wbp + mul_shift(t.r_u + 2, sn < 0 ? -sn : sn, 30) + 2;
+  return min_of(w_lo - 1, -div_ceil(reach * kQ30, c) - 2);
+}
+
+// What a piece left for its chain: the tool at its end cut as a min()
+// (covered), pending, or cut with a shaft below some top (open: the next
+// move's start cap reaches higher and is cut again).
+enum class PieceEnd : uint8_t { kCovered, kPending, kOpen };
+
+template <class H>
+PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
+                     SweepLine* lp_out);
+
+// The tool standing at p, whole.
+template <class H>
+void cut_tool_at(DexelGrid<H>* g, const SweepTool& t, PointNm p, CutStats* st) {
+  SweepLine unused;
+  sweep_piece(g, t, p, p, st, PieceCaps{StartCap::kCut, nullptr, true, nullptr}, &unused);
+}
+
+template <class H>
+PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, PieceCaps caps,
+                     SweepLine* lp_out) {
+  const int64_t za_v = sweep_height_v(*g, a.z_nm), zb_v = sweep_height_v(*g, b.z_nm);
+  const int64_t zlow_v = min_of(za_v, zb_v);
+  const int64_t hmax = height_max<H>();
+  // Entirely above every top, or the whole tool (shaft top at the higher
+  // end) below the grid's floor: nothing to cut, here or at either end.
+  if (zlow_v >= (hmax << kSweepVBits) || max_of(za_v, zb_v) + t.len_v <= 0) return PieceEnd::kCovered;
+  // The shaft top of the piece's lowest position bounds every column's:
+  // when even that is above every top, figure 2 reduces to cases a, b, e.
+  const int64_t ct_lsb = (zlow_v + t.len_v) >> kSweepVBits;
+  const bool shaft_above = ct_lsb >= g->top_bound_lsb;
+  // Only a min() per column may leave out dominated heights (SweepChain):
+  // otherwise cut the previous end cap now, with its own shaft, and this
+  // piece's caps in full.
+  if (!shaft_above) {
+    if (caps.start == StartCap::kWedge) cut_tool_at(g, t, a, st);
+    if (caps.start != StartCap::kSkip) caps.start = StartCap::kCut;
+    caps.end = true;
+  }
+
+  SweepLine& lp = *lp_out;
+  const int64_t dx_u = (b.x_nm - a.x_nm) * kSweepUnitsPerNm, dy_u = (b.y_nm - a.y_nm) * kSweepUnitsPerNm;
+  setup_piece(t, za_v, zb_v, dx_u, dy_u, b.z_nm - a.z_nm, &lp);
+  // A plunge is the tool at its lower end (the shaft covers the rest).
+  PointNm o = a;
+  if (lp.plunge && zb_v < za_v) o = b;
+  // Figure 2's ct at a column (along-track u, v2 = min(v^2, R^2)), needed
+  // only when the shaft is below some top: the union of the tool's column
+  // intervals over the positions covering the column is [lowest point,
+  // shaft top of the highest such position]. A level piece has one shaft
+  // top, a plunge its upper end's; on a ramp the column is covered for s in
+  // [u - rho, u + rho] (within [0, l]) and z is monotonic in s. Rounded
+  // down like ct_lsb (never more than the exact top: a shallower cut).
+  const int64_t ct_plunge_lsb = (max_of(za_v, zb_v) + t.len_v) >> kSweepVBits;
+  auto shaft_top_lsb = [&](int64_t u, int64_t v2) -> int64_t {
+    if (lp.level) return ct_lsb;
+    if (lp.plunge) return ct_plunge_lsb;
+    const int64_t rho = rho_of(t, v2);
+    const int64_t s = clamp(lp.zb_v > lp.za_v ? u + rho : u - rho, int64_t{0}, lp.len_u);
+    return (lp.za_v + mul_shift_fit(s, lp.slope_v_q32, 32) + t.len_v) >> kSweepVBits;
+  };
+  // Cuts dexel i of the row at wt, wb with the lowest height h_v.
+  auto cut = [&](H* wt, H* wb, int64_t i, int64_t h_v, int64_t u, int64_t v2) {
+    return sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, shaft_above ? ct_lsb : shaft_top_lsb(u, v2), shaft_above);
+  };
+  SweepColumns box;
+  if (!sweep_columns(*g, t, min_of(a.x_nm, b.x_nm), max_of(a.x_nm, b.x_nm), min_of(a.y_nm, b.y_nm),
+                     max_of(a.y_nm, b.y_nm), &box))
+    return PieceEnd::kCovered;
+  const int64_t p = g->pitch_nm;
+  const int64_t i_first = box.i_first, i_last = box.i_last;
+  int64_t j_first = box.j_first, j_last = box.j_last;
+  st->instances++;
+  const PieceEnd result = !shaft_above ? PieceEnd::kOpen : lp.plunge || caps.end ? PieceEnd::kCovered : PieceEnd::kPending;
+
+  const int64_t p_u = p * kSweepUnitsPerNm;
+  const int64_t reach2 = sweep_reach2(t);
+  const int64_t dx0_u = (g->x0_nm + i_first * p - o.x_nm) * kSweepUnitsPerNm;  // column i_first - origin
+  bool changed = false;
+  int64_t ch_i0 = g->nx, ch_i1 = -1, ch_j0 = g->ny, ch_j1 = -1;
+  const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  const WRange wr = w_range_of(t, lp);
+  // The along-track range of columns the caps leave (see u_min_of).
+  const int64_t u_min_q30 = lp.plunge ? 0 : u_min_of(t, lp, caps, wr.lo) * kQ30;
+  const int64_t u_max_q30 = (lp.len_u + (caps.end ? t.r_u : wr.hi) + 1) * kQ30;
+  const bool collinear = caps.start == StartCap::kWedge && caps.prev->ex_q30 == lp.ex_q30 &&
+                         caps.prev->ey_q30 == lp.ey_q30;
+  // Start-side column at (u, v), i: cut it? (kWedge: the previous piece's
+  // lowest point is at this joint too.)
+  auto start_ok = [&](int64_t u, int64_t v, int64_t i, int64_t dy_row_u) {
+    if (caps.start != StartCap::kWedge) return caps.start == StartCap::kCut;
+    if (collinear) return at_or_past_w(t, *caps.prev, u, v);
+    return prev_ends_here(t, *caps.prev, dx0_u + (i - i_first) * p_u, dy_row_u);
+  };
+  // The columns within reach across (|v| <= R) and along the track, row
+  // after row (u and v grow by p e_y and p e_x from one row to the next).
+  // Along x the along-track range is the same on every row (e_y = 0): it is
+  // taken once, and rows test their v alone.
+  const bool along_x = !lp.plunge && lp.ey_q30 == 0;
+  const bool walk = !lp.plunge && !along_x;
+  if (walk) {
+    // The rows of the box that meet the piece's rectangle of columns (u in
+    // [u_min, u_max], |v| <= R + 1): a move at an angle crosses fewer rows
+    // than its box holds (one along y, 5 rows, in a box 63 rows tall for a
+    // 3 mm ball on a 0.1 mm grid), and the walk below spends a row's set-up
+    // on each. dy = u e_y + v e_x, widened for |e| = 1 +- 2^-29 and the
+    // rounding; the rows left out are those NarrowRows would find empty.
+    // (u_min_q30 and u_max_q30 are whole U: exact shifts.)
+    const int64_t u_lo = u_min_q30 >> 30, u_hi = u_max_q30 >> 30, r_v = t.r_u + 1;
+    const int64_t ey = lp.ey_q30, ex_abs = lp.ex_q30 < 0 ? -lp.ex_q30 : lp.ex_q30;
+    const int64_t lo_q30 = min_of(u_lo * ey, u_hi * ey) - r_v * ex_abs;
+    const int64_t hi_q30 = max_of(u_lo * ey, u_hi * ey) + r_v * ex_abs;
+    const int64_t y_lo_u = (lo_q30 >> 30) - ((lo_q30 < 0 ? -lo_q30 : lo_q30) >> 56) - 4;
+    const int64_t y_hi_u = -((-hi_q30) >> 30) + ((hi_q30 < 0 ? -hi_q30 : hi_q30) >> 56) + 4;
+    const int64_t oy_u = (o.y_nm - g->y0_nm) * kSweepUnitsPerNm;
+    j_first = max_of(j_first, div_ceil(oy_u + y_lo_u, p_u));
+    j_last = min_of(j_last, div_floor(oy_u + y_hi_u, p_u));
+  }
+  NarrowRows across, along;
+  if (!lp.plunge) {
+    const int64_t dy0_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
+    along.start(dx0_u * lp.ex_q30 + dy0_u * lp.ey_q30, p_u * lp.ey_q30, p_u * lp.ex_q30, u_min_q30, u_max_q30);
+    if (walk) across.start(dy0_u * lp.ex_q30 - dx0_u * lp.ey_q30, p_u * lp.ex_q30, -p_u * lp.ey_q30, -r_q30, r_q30);
+  }
+  int64_t x_lo = i_first, x_hi = i_last;
+  if (along_x) along.apply(i_first, &x_lo, &x_hi);
+  // Along x, u(i) = x_u_lo + (i - x_lo) * x_step exactly (e = (+-1, 0)) on
+  // every row, and a flank's heights step by x_dh_q16 a column.
+  const int64_t x_step = along_x ? p_u * lp.ex_q30 / kQ30 : 0;
+  const int64_t x_u_lo = along_x ? (dx0_u + (x_lo - i_first) * p_u) * lp.ex_q30 / kQ30 : 0;
+  const int64_t x_dh_q16 = along_x ? mul_shift_fit(x_step, lp.slope_v_q32, 16) : 0;
+  // Along x with the move on a row or half way between two (a raster pass
+  // whose stepover the pitch divides), rows j and mirror_sum - j sit at
+  // cross offsets v and -v, where every height is the same: set each such
+  // pair up once and cut both. Not for a turning wedge, whose start side is
+  // tested in the previous piece's frame, where the two differ.
+  const bool mirrored = along_x && (caps.start != StartCap::kWedge || collinear) &&
+                        (2 * (o.y_nm - g->y0_nm)) % p == 0;
+  const int64_t mirror_sum = mirrored ? 2 * (o.y_nm - g->y0_nm) / p : -1;
+  // Rows in a general direction skip columns under the ball's floor. Only
+  // where a cut is a min() (with the shaft below some top, a cut column's
+  // interval reaches up to its shaft top).
+  int64_t ball_floor_v = 0;
+  const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
+  uint64_t floor_skips = 0;
+  for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
+    // The row of the pair that comes first does both.
+    const int64_t jm = mirror_sum - j;
+    if (mirrored && jm < j && jm >= j_first) continue;
+    const bool pair = mirrored && jm > j && jm <= j_last;
+    const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
+    int64_t lo = i_first, hi = i_last;
+    int64_t u_acc = 0, v_acc = 0, du = 0, dv = 0;
+    if (!lp.plunge) {
+      // u = (P - A) . e and v = (P - A) x e, in U * 2^30, exact increments.
+      u_acc = dx0_u * lp.ex_q30 + dy_row_u * lp.ey_q30;
+      v_acc = dy_row_u * lp.ex_q30 - dx0_u * lp.ey_q30;
+      du = p_u * lp.ex_q30;
+      dv = -p_u * lp.ey_q30;
+      if (along_x) {
+        if (v_acc < -r_q30 || v_acc > r_q30) continue;
+        lo = x_lo;
+        hi = x_hi;
+      } else {
+        across.apply(i_first, &lo, &hi);
+        along.apply(i_first, &lo, &hi);
+      }
+    }
+    if (lo > hi) continue;
+    st->dexel_updates += static_cast<uint64_t>(hi - lo + 1) * (pair ? 2 : 1);
+    if (st->log) {
+      st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+      if (pair) st->log->add(static_cast<int32_t>(jm), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    }
+    u_acc += (lo - i_first) * du;
+    v_acc += (lo - i_first) * dv;
+    H* wt = g->top + g->index(0, static_cast<int32_t>(j));
+    H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
+    bool row_changed = false, mirror_changed = false;
+    if (lp.plunge) {
+      int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
+      for (int64_t i = lo; i <= hi; ++i, dx_u_col += p_u) {
+        const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
+        if (r2 > reach2) continue;
+        const int64_t h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut(wt, wb, i, h_v, 0, 0);
+      }
+    } else if (dv == 0) {
+      // The move runs along the row (x-parallel): v, w*(v) and the flank's
+      // height F(w*) - m*w* are constants of the row; only the ends of the
+      // row need the profile per column.
+      const int64_t v = (v_acc + kQ30 / 2) >> 30;
+      if (v * v <= reach2) {
+        const int64_t v2 = min_of(v * v, t.r2_u);
+        // One square root a row: rho serves w* of this piece and of the
+        // previous one, and the ball's flank.
+        const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
+        const int64_t rho = need_rho ? rho_memo(t, v2, caps.roots) : 0;
+        const int64_t ws = best_w_rho(t, lp, v, v2, rho);
+        const int64_t ws2 = ws * ws + v2;
+        const int64_t flank_v =
+            t.kind == ToolKind::kBall
+                ? lp.za_v + ball_flank_v(t, lp, rho)
+                : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
+        const bool flank_reaches = ws2 <= reach2;
+        // Collinear wedge: the previous piece's w* on this row, once.
+        const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
+        // Split the row into the flank, where the lowest point is w = w*,
+        // and the two ends.
+        const int64_t step = x_step, u_lo = x_u_lo;
+        int64_t f_lo, f_hi;  // flank columns: ws <= u <= ws + l
+        if (step > 0) {
+          f_lo = lo + div_ceil(ws - u_lo, step);
+          f_hi = lo + div_floor(ws + lp.len_u - u_lo, step);
+        } else {
+          f_lo = lo + div_ceil(ws + lp.len_u - u_lo, step);
+          f_hi = lo + div_floor(ws - u_lo, step);
+        }
+        f_lo = clamp(f_lo, lo, hi + 1);
+        f_hi = clamp(f_hi, f_lo - 1, hi);
+        // The mirror row, when there is one.
+        H* const mt = pair ? g->top + g->index(0, static_cast<int32_t>(jm)) : nullptr;
+        H* const mb = pair ? g->bottom + g->index(0, static_cast<int32_t>(jm)) : nullptr;
+        // Cuts column i of the row, and of its mirror, at the same height.
+        auto cut_rows = [&](int64_t i, int64_t h_v, int64_t u) {
+          row_changed |= cut(wt, wb, i, h_v, u, v2);
+          if (pair) mirror_changed |= cut(mt, mb, i, h_v, u, v2);
+        };
+        auto side = [&](int64_t i) {
+          const int64_t u = u_lo + (i - lo) * step;
+          int64_t w;
+          if (u < ws) {
+            if (collinear ? u < ws_prev : !start_ok(u, v, i, dy_row_u)) return;
+            w = u;
+          } else {
+            if (!caps.end) return;
+            w = u - lp.len_u;
+          }
+          const int64_t r2 = w * w + v2;
+          if (r2 > reach2) return;
+          const int64_t h_v = lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+          cut_rows(i, h_v, u);
+        };
+        // Only visit the ends that can cut: the start side unless the
+        // previous piece's band covers it (collinear: w*_prev >= w*), the end
+        // side only with the end cap.
+        const bool start_side = caps.start == StartCap::kCut ||
+                                (caps.start == StartCap::kWedge && (!collinear || ws_prev < ws));
+        const bool low_side = step > 0 ? start_side : caps.end;  // columns lo .. f_lo - 1
+        const bool high_side = step > 0 ? caps.end : start_side;  // columns f_hi + 1 .. hi
+        if (low_side)
+          for (int64_t i = lo; i < f_lo; ++i) side(i);
+        if (flank_reaches && f_lo <= f_hi) {
+          // Linear heights: a q16 DDA (drift below 2^-16 V a column).
+          const int64_t u0 = u_lo + (f_lo - lo) * step;
+          int64_t h_q16 = (flank_v + mul_shift_fit(u0, lp.slope_v_q32, 32)) * 65536;
+          const int64_t dh_q16 = x_dh_q16;
+          const int64_t round = static_cast<int64_t>(1) << (16 + kSweepVBits - 1);
+          const int64_t cb_first = (h_q16 + round) >> (16 + kSweepVBits);
+          const int64_t cb_last = (h_q16 + (f_hi - f_lo) * dh_q16 + round) >> (16 + kSweepVBits);
+          if (g->bottoms_zero && shaft_above && min_of(cb_first, cb_last) >= 1) {
+            // Every bottom is 0 and every cb >= 1: figure 2 reduces to min().
+            if (pair) {
+              const int64_t n = f_hi - f_lo + 1;
+              const unsigned c2 = dh_q16 == 0
+                                      ? min_level_pair(wt + f_lo, mt + f_lo, n, static_cast<H>(min_of(cb_first, hmax)))
+                                      : min_run_pair(wt + f_lo, mt + f_lo, n, h_q16 + round, dh_q16);
+              row_changed |= (c2 & 1u) != 0;
+              mirror_changed |= (c2 & 2u) != 0;
+            } else {
+              row_changed |= dh_q16 == 0 ? min_level(wt + f_lo, wt + f_hi + 1, static_cast<H>(min_of(cb_first, hmax)))
+                                         : min_run(wt + f_lo, wt + f_hi + 1, h_q16 + round, dh_q16);
+            }
+          } else {
+            for (int64_t i = f_lo; i <= f_hi; ++i, h_q16 += dh_q16) cut_rows(i, h_q16 >> 16, u0 + (i - f_lo) * step);
+          }
+        }
+        if (high_side)
+          for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
+      }
+    } else {
+      for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
+        const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
+        // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
+        const int64_t v2 = min_of(v * v, t.r2_u);
+        // Under the floor (ball_floor_of) the top is lower than any height
+        // this piece computes here: nothing to cut, and no root.
+        if (cull) {
+          const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + sweep_bowl_v(t, v2);
+          if (floor_v >= sweep_keep_v(wt[i])) {
+            ++floor_skips;
+            continue;
+          }
+        }
+        // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
+        // computing w* (a square root for ramps).
+        // The lowest point: behind the start (w = u), beyond the end
+        // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
+        int64_t w = 0, rho = 0;
+        int side = 0;
+        if (u < wr.lo) {
+          side = -1;
+        } else if (u - lp.len_u > wr.hi) {
+          side = 1;
+        } else {
+          if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
+            rho = rho_of(t, v2);
+            w = best_w_rho(t, lp, v, v2, rho);
+          } else {
+            w = best_w(t, lp, v, v2);
+          }
+          side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
+        }
+        if (side < 0) {
+          if (!start_ok(u, v, i, dy_row_u)) continue;
+          w = u;
+        } else if (side > 0) {
+          if (!caps.end) continue;
+          w = u - lp.len_u;
+        }
+        const int64_t r2 = w * w + v2;
+        if (r2 > reach2) continue;
+        const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
+                                ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
+                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut(wt, wb, i, h_v, u, v2);
+      }
+    }
+    if (row_changed || mirror_changed) {
+      changed = true;
+      ch_i0 = min_of(ch_i0, lo);
+      ch_i1 = max_of(ch_i1, hi);
+      ch_j0 = min_of(ch_j0, row_changed ? j : jm);
+      ch_j1 = max_of(ch_j1, mirror_changed ? jm : j);
+    }
+  }
+  st->floor_skips += floor_skips;
+  if (changed)
+    g->dirty.include(GridRect{static_cast<int32_t>(ch_i0), static_cast<int32_t>(ch_j0),
+                              static_cast<int32_t>(ch_i1 + 1), static_cast<int32_t>(ch_j1 + 1)});
+  return result;
+}
+
+// Splits a -> b so that no piece is longer than kMaxPieceNm horizontally
+// and calls piece(from, to, first) for each.
+template <class F>
+void for_each_piece(PointNm a, PointNm b, F piece) {
+  const uint64_t span = max_of(abs_u64(b.x_nm - a.x_nm), abs_u64(b.y_nm - a.y_nm));
+  const int64_t pieces = static_cast<int64_t>(span / static_cast<uint64_t>(kMaxPieceNm)) + 1;
+  PointNm from = a;
+  for (int64_t k = 1; k <= pieces; ++k) {
+    PointNm to = b;
+    if (k < pieces) {
+      to.x_nm = a.x_nm + muldiv_floor(b.x_nm - a.x_nm, k, pieces);
+      to.y_nm = a.y_nm + muldiv_floor(b.y_nm - a.y_nm, k, pieces);
+      to.z_nm = a.z_nm + muldiv_floor(b.z_nm - a.z_nm, k, pieces);
+    }
+    piece(from, to, k == 1);
+    from = to;
+  }
+}
+
+}  // namespace
+
+template <class H>
+void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap) {
+  for_each_piece(clamp_point(a), clamp_point(b), [&](PointNm from, PointNm to, bool first) {
+    SweepLine lp;
+    const StartCap start = first && start_cap ? StartCap::kCut : StartCap::kSkip;
+    sweep_piece(g, t, from, to, st, PieceCaps{start, nullptr, true, nullptr}, &lp);
+  });
+}
+
+template <class H>
+void sweep_chain_end(DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* c) {
+  if (c->state != SweepChain::State::kPending) return;
+  cut_tool_at(g, t, c->end, st);
+  c->state = SweepChain::State::kCovered;
+}
+
+template <class H>
+void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, SweepChain* c) {
+  a = clamp_point(a);
+  b = clamp_point(b);
+  if (!(c->end == a)) {
+    sweep_chain_end(g, t, st, c);
+    c->state = SweepChain::State::kFresh;
+  }
+  for_each_piece(a, b, [&](PointNm from, PointNm to, bool) {
+    const StartCap start = c->state == SweepChain::State::kFresh     ? StartCap::kCut
+                           : c->state == SweepChain::State::kCovered ? StartCap::kSkip
+                                                                     : StartCap::kWedge;
+    SweepLine lp;
+    const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
+    c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
+               : e == PieceEnd::kCovered ? SweepChain::State::kCovered
+                                         : SweepChain::State::kFresh;
+    c->last = lp;
+    c->end = to;
+  });
+}
+
+#define DEXMILL_SWEEP_INSTANTIATE(H)                                                                         \
+  template void sweep_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, bool);          \
+  template void sweep_chain_line<H>(DexelGrid<H>*, const SweepTool&, PointNm, PointNm, CutStats*, SweepChain*); \
+  template void sweep_chain_end<H>(DexelGrid<H>*, const SweepTool&, CutStats*, SweepChain*);
+DEXMILL_SWEEP_INSTANTIATE(uint8_t)
+DEXMILL_SWEEP_INSTANTIATE(uint16_t)
+DEXMILL_SWEEP_INSTANTIATE(uint32_t)
+
+}  // namespace dexmill

@@ -1,0 +1,94 @@
+// One block (line) of G-code, read and sorted but not yet interpreted
+// (grbl's and LinuxCNC's first step: read words, then check, then commit).
+//
+// G and M codes are integers in tenths (G38.2 = 382, M6 = 60), like
+// LinuxCNC. Each G code belongs to one modal group, and a block holds at
+// most one code per group; value words (X, F, P, ...) appear at most once.
+#ifndef DEXMILL_CORE_GCODE_BLOCK_H
+#define DEXMILL_CORE_GCODE_BLOCK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/gcode/error.h"
+#include "core/math/decimal.h"
+
+namespace dexmill {
+
+// Longest line accepted, in bytes without the line end (LinuxCNC: 256).
+constexpr size_t kGcodeMaxLine = 256;
+
+// Modal groups of G codes (numbers as in RS274/NGC and LinuxCNC).
+enum GGroup : uint8_t {
+  kGNonModal = 0,     // G4 G10 G28 G28.1 G30 G30.1 G53 G92 G92.1 G92.2 G92.3
+  kGMotion = 1,       // G0 G1 G2 G3 G73 G80 G81 G82 G83 G85 G89 (and the unsupported ones)
+  kGPlane = 2,        // G17 G18 G19
+  kGDistance = 3,     // G90 G91
+  kGArcDistance = 4,  // G90.1 G91.1
+  kGFeedMode = 5,     // G93 G94
+  kGUnits = 6,        // G20 G21
+  kGCutterComp = 7,   // G40
+  kGToolLength = 8,   // G43 G43.1 G49
+  kGRetract = 9,      // G98 G99 (RS274/NGC group 10)
+  kGCoordSystem = 10, // G54..G59.3 (group 12)
+  kGPathControl = 11, // G61 G61.1 G64 (group 13)
+  kGSpindleMode = 12, // G97 (group 14)
+  kGGroupCount = 13,
+};
+
+// Groups of M codes we keep apart (LinuxCNC numbering in comments).
+enum MGroup : uint8_t {
+  kMStop = 0,      // group 4: M0 M1 M2 M30 M60
+  kMToolChange,    // group 6: M6 M61
+  kMSpindle,       // group 7: M3 M4 M5 M19
+  kMCoolant,       // group 8: M7 M8 M9 (M7 and M8 may share a block)
+  kMOverride,      // group 9: M48..M53
+  kMIo,            // group 5: M62..M68
+  kMUser,          // group 10: M100..M199
+  kMGroupCount,
+};
+
+struct GcodeBlock {
+  uint32_t line;
+  bool block_delete;           // leading '/' (the switch is off: the block runs)
+  // Value words, indexed by letter - 'A'.
+  uint32_t has;                // bit i set: letter 'A' + i present
+  Decimal value[26];
+  uint16_t col[26];
+  // G codes in tenths, one per group; -1 when absent.
+  int16_t g[kGGroupCount];
+  uint16_t g_col[kGGroupCount];
+  // M codes in tenths, one per group; -1 when absent. Coolant may hold both
+  // M7 and M8: coolant_bits has bit 0 for M7, bit 1 for M8, bit 2 for M9.
+  int16_t m[kMGroupCount];
+  uint16_t m_col[kMGroupCount];
+  uint8_t coolant_bits;
+  uint8_t m_count;
+  uint16_t first_col;          // column of the first word (1 if none)
+
+  bool has_word(char letter) const { return (has >> (letter - 'A')) & 1u; }
+  uint16_t col_of(char letter) const { return col[letter - 'A']; }
+  const Decimal& val(char letter) const { return value[letter - 'A']; }
+  bool has_axis() const { return (has & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')))) != 0; }
+};
+
+// What a line is, besides a block of words.
+enum class GcodeLineKind : uint8_t {
+  kBlock = 0,          // words (possibly none: blank or comment-only line)
+  kPercent = 1,        // a '%' delimiter line
+  kProgramNumber = 2,  // `O1234` alone (Fanuc program number): nothing to do
+  kGrblCommand = 3,    // a grbl `$...` system command (diag.word holds it)
+};
+
+// Reads one line (without its line end; a trailing '\r' is fine) into *b.
+// On an error, fills *d (code, col, word) and returns the code; *b is then
+// unspecified. `line` is stored in b->line and d->line.
+[[nodiscard]] GcodeError gcode_read_block(const char* text, size_t len, uint32_t line, GcodeBlock* b,
+                                          GcodeLineKind* kind, GcodeDiag* d);
+
+// Text of a code for diagnostics: "G38.2", "M6".
+void gcode_code_text(char letter, int32_t tenths, char* buf16);
+
+}  // namespace dexmill
+
+#endif

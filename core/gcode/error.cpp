@@ -1,0 +1,137 @@
+// The message table of G-code input errors, and the formatter that fills in
+// a diagnostic's word and lengths (no stdio: this runs on a controller too).
+#include "core/gcode/error.h"
+
+#include "core/math/fixed.h"
+
+namespace dexmill {
+
+const char* gcode_error_template(GcodeError e) {
+  switch (e) {
+    case GcodeError::kOk: return "no error";
+    case GcodeError::kLineTooLong: return "line is longer than {a} characters";
+    case GcodeError::kBadCharacter: return "unexpected character '{w}' (not part of any G-code word)";
+    case GcodeError::kUnknownWord: return "unknown word starting with '{w}'";
+    case GcodeError::kMissingNumber: return "'{w}' is not followed by a number";
+    case GcodeError::kBadNumber: return "bad number format after '{w}'";
+    case GcodeError::kNumberTooLarge: return "number too large for '{w}'";
+    case GcodeError::kUnterminatedComment: return "comment is not closed: '(' without ')' on the same line";
+    case GcodeError::kNestedComment: return "nested comment: '(' inside a comment";
+    case GcodeError::kNotInteger: return "{w}: the value must be an integer";
+    case GcodeError::kNegativeValue: return "{w}: the value must not be negative";
+    case GcodeError::kCodeNotInTenths: return "{w}: G and M codes have at most one decimal (like G38.2)";
+    case GcodeError::kUnknownGcode: return "unknown G code {w}";
+    case GcodeError::kUnknownMcode: return "unknown M code {w}";
+    case GcodeError::kModalGroupConflict: return "{w}: two codes of the same modal group in one block";
+    case GcodeError::kDuplicateWord: return "word '{w}' appears twice in one block";
+    case GcodeError::kLineNumberNotFirst: return "line number {w} must be the first word of the line";
+    case GcodeError::kTooManyMcodes: return "{w}: more than 4 M codes in one block";
+    case GcodeError::kStrayCloseParen: return "')' without '(' (malformed comment)";
+    case GcodeError::kFeedZero: return "{w}: feed move with zero feed rate (set F first; G93 and G94 set F to 0)";
+    case GcodeError::kInverseTimeNoF: return "{w}: F word missing in inverse time mode (G93 needs F on every feed move)";
+    case GcodeError::kArcNoCentre: return "{w}: R, I, J and K words all missing for arc";
+    case GcodeError::kArcRadiusMismatch:
+      return "{w}: radius to end of arc ({b} mm) differs from radius to start ({a} mm) by more than "
+             "LinuxCNC's tolerance";
+    case GcodeError::kArcZeroRadius: return "{w}: zero-radius arc (radius {a} mm)";
+    case GcodeError::kArcRSameEnds: return "{w}: R-format arc whose end is its start (a full circle needs I/J/K)";
+    case GcodeError::kArcRTooSmall:
+      return "{w}: arc radius {a} mm is too small to reach the end point (half the distance is {b} mm)";
+    case GcodeError::kArcWordWrongPlane: return "{w} word given for an arc in a plane that does not use it";
+    case GcodeError::kArcRAndIjk: return "{w}: arc with both R and I/J/K words";
+    case GcodeError::kAxisWordsWithG80: return "{w}: cannot use axis values with G80";
+    case GcodeError::kAxisWordsUnused: return "{w}: axis value with no motion mode to use it (G80 in effect)";
+    case GcodeError::kTwoAxisUsers: return "{w}: two G codes in one block both use the axis values";
+    case GcodeError::kG53BadMotion: return "{w}: G53 needs G0 or G1";
+    case GcodeError::kCycleNoR: return "{w}: R clearance plane missing in canned cycle";
+    case GcodeError::kCycleNoZ: return "{w}: Z (bottom) missing in canned cycle";
+    case GcodeError::kCycleRBelowZ: return "{w}: R clearance plane ({a} mm) below the bottom ({b} mm) of the canned cycle";
+    case GcodeError::kCycleNoP: return "{w}: dwell time P missing in canned cycle";
+    case GcodeError::kCycleNoQ: return "{w}: peck increment Q missing in canned cycle";
+    case GcodeError::kCycleQNotPositive: return "{w}: peck increment Q must be positive";
+    case GcodeError::kCycleZeroRepeats: return "{w}: cannot do zero repeats of a canned cycle";
+    case GcodeError::kCycleInverseTime: return "{w}: cannot use inverse time feed (G93) with canned cycles";
+    case GcodeError::kG10NoL: return "{w}: G10 needs an L word";
+    case GcodeError::kG10BadL: return "{w}: G10 supports L2 and L20 here (L1, L10, L11 change the tool table)";
+    case GcodeError::kG10BadP: return "{w}: G10 L2/L20 needs P0 to P9 (coordinate system)";
+    case GcodeError::kG92NoAxis: return "{w}: G92 needs at least one axis word";
+    case GcodeError::kDwellNoP: return "{w}: G4 needs a P word (seconds)";
+    case GcodeError::kWordUnused: return "{w} word with no G or M code that uses it";
+    case GcodeError::kPositionOutOfRange: return "{w}: position beyond the +-10 m range (would be {a} mm)";
+    case GcodeError::kTurnsNotPositive: return "{w}: P (number of turns) must be a positive integer";
+    case GcodeError::kG43NoTool: return "{w}: G43 without H uses the tool in the spindle, and there is none";
+    case GcodeError::kToolUnknown: return "{w}: tool is not in the tool table";
+    case GcodeError::kG10PNeeded: return "{w}: G10 L2/L20 needs a P word";
+    case GcodeError::kLineNumberTooLarge: return "line number {w} is too large";
+    case GcodeError::kG53Incremental: return "{w}: G53 cannot be used in incremental distance mode (G91)";
+    case GcodeError::kUnsupportedOword: return "o-word subroutines and control flow ('{w}') are not supported";
+    case GcodeError::kUnsupportedParameter: return "# parameters are not supported";
+    case GcodeError::kUnsupportedExpression: return "[ ] expressions are not supported";
+    case GcodeError::kUnsupportedAxis: return "{w} axis is not supported (dexmill simulates X, Y and Z)";
+    case GcodeError::kUnsupportedGcode: return "{w} is not supported";
+    case GcodeError::kUnsupportedMcode: return "{w} is not supported";
+    case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
+    case GcodeError::kUnsupportedPolar: return "polar coordinates ('{w}') are not supported";
+    case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems (G10 L2 R) are not supported";
+    case GcodeError::kWarnMcodeIgnored: return "{w} ignored (it does not move the tool)";
+    case GcodeError::kWarnGrblCommand: return "grbl command '{w}' skipped (the position is assumed unchanged)";
+    case GcodeError::kWarnG10ToolTable: return "{w}: tool table change ignored (tool lengths are not applied to the path)";
+    case GcodeError::kWarnAfterEnd: return "text after the end of the program (M2/M30 or %) ignored";
+  }
+  return "unknown error";
+}
+
+namespace {
+
+struct Out {
+  char* buf;
+  size_t n, len;
+  void put(char c) {
+    if (len + 1 < n) buf[len] = c;
+    ++len;
+  }
+  void puts(const char* s) {
+    while (*s) put(*s++);
+  }
+};
+
+// nm as mm with 4 decimals, rounded to nearest (ties away from zero).
+void put_mm4(Out* o, int64_t nm) {
+  int64_t tenth_um = div_round(nm, 100);
+  uint64_t a = abs_u64(tenth_um);
+  if (tenth_um < 0) o->put('-');
+  char digits[24];
+  int k = 0;
+  uint64_t ip = a / 10000, fp = a % 10000;
+  do { digits[k++] = static_cast<char>('0' + ip % 10); ip /= 10; } while (ip);
+  while (k) o->put(digits[--k]);
+  o->put('.');
+  for (uint64_t d = 1000; d; d /= 10) o->put(static_cast<char>('0' + (fp / d) % 10));
+}
+
+}  // namespace
+
+size_t gcode_format_message(const GcodeDiag& d, char* buf, size_t n) {
+  Out o{buf, n, 0};
+  const char* t = gcode_error_template(d.code);
+  for (; *t; ++t) {
+    if (t[0] == '{' && t[1] && t[2] == '}') {
+      if (t[1] == 'w') o.puts(d.word);
+      else if (t[1] == 'a' && d.code == GcodeError::kLineTooLong) {
+        char digits[24];
+        int k = 0;
+        uint64_t v = abs_u64(d.a_nm);
+        do { digits[k++] = static_cast<char>('0' + v % 10); v /= 10; } while (v);
+        while (k) o.put(digits[--k]);
+      } else if (t[1] == 'a') put_mm4(&o, d.a_nm);
+      else if (t[1] == 'b') put_mm4(&o, d.b_nm);
+      t += 2;
+      continue;
+    }
+    o.put(*t);
+  }
+  if (n) buf[o.len < n ? o.len : n - 1] = 0;
+  return o.len < n ? o.len : (n ? n - 1 : 0);
+}
+
+}  // namespace dexmill

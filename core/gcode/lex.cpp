@@ -1,0 +1,133 @@
+// The word scanner; see lex.h.
+#include "core/gcode/lex.h"
+
+namespace dexmill {
+
+namespace {
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+void set_diag(GcodeDiag* d, GcodeError e, size_t pos) {
+  d->code = e;
+  d->col = static_cast<uint16_t>(pos + 1);
+}
+
+}  // namespace
+
+void gcode_set_word(GcodeDiag* d, const char* text, size_t len) {
+  static const char kHex[] = "0123456789ABCDEF";
+  size_t k = 0;
+  for (size_t i = 0; i < len && k < sizeof d->word - 1; ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      d->word[k++] = upper(static_cast<char>(c));
+    } else {
+      if (k + 4 >= sizeof d->word) break;
+      d->word[k++] = '\\';
+      d->word[k++] = 'x';
+      d->word[k++] = kHex[c >> 4];
+      d->word[k++] = kHex[c & 15];
+    }
+  }
+  d->word[k] = 0;
+}
+
+GcodeError GcodeScanner::skip_blank_and_comments(GcodeDiag* d) {
+  while (pos_ < n_) {
+    char c = s_[pos_];
+    if (is_blank(c)) {
+      ++pos_;
+    } else if (c == ';') {
+      pos_ = n_;  // the rest of the line is a comment
+    } else if (c == '(') {
+      // RS274/NGC: a comment ends at the first ')'; a '(' inside is an error.
+      size_t open = pos_;
+      size_t i = pos_ + 1;
+      for (; i < n_ && s_[i] != ')'; ++i) {
+        if (s_[i] == '(') {
+          set_diag(d, GcodeError::kNestedComment, i);
+          gcode_set_word(d, "(", 1);
+          return GcodeError::kNestedComment;
+        }
+      }
+      if (i >= n_) {
+        set_diag(d, GcodeError::kUnterminatedComment, open);
+        gcode_set_word(d, "(", 1);
+        return GcodeError::kUnterminatedComment;
+      }
+      pos_ = i + 1;
+    } else {
+      break;
+    }
+  }
+  return GcodeError::kOk;
+}
+
+bool GcodeScanner::at_end() {
+  GcodeDiag d{};
+  GcodeError e = skip_blank_and_comments(&d);
+  if (e != GcodeError::kOk) {
+    pending_ = e;
+    pending_col_ = d.col;
+    return false;
+  }
+  return pos_ >= n_;
+}
+
+GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
+  w->letter = 0;
+  GcodeError e = skip_blank_and_comments(d);
+  if (e != GcodeError::kOk) return e;
+  if (pos_ >= n_) return GcodeError::kOk;
+  const size_t start = pos_;
+  const char c = upper(s_[pos_]);
+  GcodeError bad = GcodeError::kOk;
+  if (c >= 'A' && c <= 'Z') {
+    if (c == 'E') bad = GcodeError::kUnknownWord;
+    if (c == 'O') bad = GcodeError::kUnsupportedOword;
+  } else if (c == '#') {
+    bad = GcodeError::kUnsupportedParameter;
+  } else if (c == '[') {
+    bad = GcodeError::kUnsupportedExpression;
+  } else if (c == '@' || c == '^') {
+    bad = GcodeError::kUnsupportedPolar;
+  } else if (c == ')') {
+    bad = GcodeError::kStrayCloseParen;
+  } else {
+    bad = GcodeError::kBadCharacter;
+  }
+  if (bad != GcodeError::kOk) {
+    set_diag(d, bad, start);
+    gcode_set_word(d, s_ + start, 1);
+    return bad;
+  }
+  pos_ = start + 1;
+  Decimal v{0, 0};
+  DecimalParse r = decimal_parse(s_, n_, &pos_, &v);
+  if (r != DecimalParse::kOk) {
+    // "X" followed by nothing numeric is a missing number; "X-" or "X." a bad one.
+    size_t i = start + 1;
+    while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
+    if (i < n_ && (s_[i] == '[' || s_[i] == '#')) {
+      GcodeError err = s_[i] == '[' ? GcodeError::kUnsupportedExpression : GcodeError::kUnsupportedParameter;
+      set_diag(d, err, i);
+      gcode_set_word(d, s_ + i, 1);
+      return err;
+    }
+    bool started = i < n_ && (s_[i] == '-' || s_[i] == '+' || s_[i] == '.');
+    GcodeError err = r == DecimalParse::kTooLarge ? GcodeError::kNumberTooLarge
+                     : started                    ? GcodeError::kBadNumber
+                                                  : GcodeError::kMissingNumber;
+    set_diag(d, err, start);
+    gcode_set_word(d, &c, 1);
+    pos_ = start;
+    return err;
+  }
+  w->letter = c;
+  w->value = v;
+  w->col = static_cast<uint16_t>(start + 1);
+  return GcodeError::kOk;
+}
+
+}  // namespace dexmill

@@ -1,0 +1,133 @@
+// The RS274/NGC interpreter: streaming, integer-only, no heap, no I/O.
+//
+// Feed it one line at a time; it emits canonical records (core/motion/canon.h) to
+// a CanonSink and returns an error code for a bad line. Each block is read,
+// checked completely, then committed (STYLE.md habit 3): a block with an
+// error emits nothing and changes nothing, so the caller may report it and
+// go on with the next line (`dexmill check`) or stop (`dexmill path`, `run`).
+//
+// Frames: positions in records are the controlled point in machine
+// coordinates with work offsets (G54..G59.3, G10) and G92 applied, and the
+// tool length offset NOT applied (it is carried in every record instead).
+// This is LinuxCNC's canonical position plus its G5x and G92 offsets: the
+// tool tip when the tool is as long as its offset says, i.e. the machine
+// (spindle) position minus the offset. So G53 Z0 puts the tip at Z = -TLO,
+// and a change of offset (G43, G49) moves the point without a move. The
+// program starts at the machine origin (0, 0, 0), in mm (G21) unless
+// InterpOptions says inch, G17, G90, G91.1, G94, G54, G40, G49, G80, G98.
+//
+// Limits (checked where numbers come in; "number too large" or "position
+// beyond the +-10 m range", never wrap-around):
+//   every length word and every resulting position: |v| <= 10 m (1e10 nm),
+//   except arc centres (I, J, K, absolute or not) and R: <= 100 m;
+//   F <= 1e6 units/min; S <= 1e6 rpm; G4 P <= 1e6 s; L <= 1e6 repeats;
+//   arc P (turns) <= 10000; T, H <= 1e9 (integers >= 0).
+#ifndef DEXMILL_CORE_MOTION_INTERP_H
+#define DEXMILL_CORE_MOTION_INTERP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/gcode/block.h"
+#include "core/gcode/error.h"
+#include "core/math/decimal.h"
+#include "core/motion/canon.h"
+#include "core/point.h"
+
+namespace dexmill {
+
+constexpr int64_t kGcodeMaxCoordNm = 10000000000;  // 10 m
+// Arc centres (I, J, K) and radii (R) may lie further out: CAM programs
+// write nearly straight arcs with centres tens of metres away.
+constexpr int64_t kGcodeMaxArcNm = 100000000000;   // 100 m
+
+// Tool lengths for G43 H (the consumer's tool table; none: every length 0).
+class ToolTable {
+ public:
+  // Length offset (Z) of tool `tool`, nm; false if the table has no such tool.
+  virtual bool tool_length_nm(int32_t tool, int64_t* z_nm) const = 0;
+
+ protected:
+  ~ToolTable() = default;
+};
+
+struct InterpOptions {
+  bool inch = false;                  // units before any G20/G21
+  const ToolTable* tools = nullptr;   // for G43 H; null: lengths are 0
+  GcodeDiagSink* warnings = nullptr;  // null: warnings are dropped
+};
+
+// The modal machine state; plain data, copied whole to make a block atomic.
+struct InterpState {
+  PointNm pos;              // controlled point, path frame (see above), nm
+  int16_t motion;           // modal motion code in tenths (G0 = 0 ... G89 = 890; G80 = 800)
+  Plane plane;
+  bool inch;                // G20
+  bool incremental;         // G91
+  bool arc_absolute;        // G90.1
+  bool inverse_time;        // G93
+  bool retract_to_r;        // G99
+  uint8_t coord_system;     // 0..8 = G54, G55, ..., G59, G59.1, G59.2, G59.3
+  int16_t path_mode;        // G61 = 610, G61.1 = 611, G64 = 640
+  int64_t feed_nm_per_min;  // F in G94 (0 = never set)
+  int32_t spindle_rpm;      // S, >= 0
+  int8_t spindle_dir;       // M3 +1, M4 -1, M5 0
+  uint8_t coolant;          // bit 0 mist (M7), bit 1 flood (M8)
+  int32_t tool;             // in the spindle (after M6)
+  int32_t selected_tool;    // T
+  int64_t tlo_nm;           // G43/G43.1 Z offset in force (0 after G49)
+  PointNm work_offset[9];   // G54..G59.3, machine frame, nm
+  PointNm g92;              // G92 offset in force
+  PointNm g92_saved;        // G92 offset kept by G92.2 for G92.3
+  PointNm g28_home, g30_home;  // machine positions stored by G28.1/G30.1
+  // Canned cycles (RS274/NGC: R and Z are sticky while the cycle repeats).
+  bool cycle_level_set;     // the initial level (G98) is remembered
+  int64_t cycle_level_nm;   // that level on the plane's axis, path frame
+  int64_t cycle_r_nm, cycle_z_nm, cycle_q_nm;  // last R, Z, Q as written (nm)
+  int64_t cycle_p_ms;       // last P (dwell) of G82/G89
+  bool ended;               // after M2/M30 or a closing %
+  bool percent_open;        // a first % line was seen
+};
+
+class Interp {
+ public:
+  Interp(CanonSink* sink, const InterpOptions& options);
+
+  // Back to the start-of-program state (machine origin, defaults).
+  void reset();
+
+  // Interprets one line (no line end; a trailing '\r' is fine). `line` is
+  // 1-based. Returns kOk, or an error with *diag filled in (code, line, col
+  // of the offending word); then nothing was emitted and no state changed.
+  // Warnings go to options.warnings. After the program ended (M2, M30, %),
+  // further lines are ignored (one warning if they hold words).
+  [[nodiscard]] GcodeError execute_line(const char* text, size_t len, uint32_t line, GcodeDiag* diag);
+
+  bool ended() const { return state_.ended; }
+  const InterpState& state() const { return state_; }
+  PointNm position() const { return state_.pos; }
+  // Records emitted so far (moves and others).
+  uint64_t records_emitted() const { return records_; }
+
+ private:
+  void emit(CanonRecord* r);
+  void warn(GcodeError code, uint32_t line, uint16_t col, const char* word);
+
+  CanonSink* sink_;
+  InterpOptions options_;
+  InterpState state_;
+  uint64_t records_ = 0;
+  bool warned_after_end_ = false;
+
+  friend struct BlockRunner;
+};
+
+// Runs a whole program held in memory (a panel keeps it in flash): the
+// lines of text[0, len) split at '\n', numbered from 1. Returns the number
+// of lines in error (each skipped, as `dexmill check` does); *first gets the
+// first error when not null.
+uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first);
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,162 @@
+// Tool specification text <-> Tool; see spec.h.
+#include "core/tool/spec.h"
+
+#include "core/math/decimal.h"
+#include "core/math/fixed.h"
+
+namespace dexmill {
+namespace {
+
+bool same_word(const char* s, size_t n, const char* w) {
+  size_t k = 0;
+  for (; k < n && w[k]; ++k) {
+    char c = s[k];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != w[k]) return false;
+  }
+  return k == n && !w[k];
+}
+
+// One decimal field s[0, n) scaled by `scale` (nm per mm, or mdeg per deg);
+// positive values only.
+bool parse_field(const char* s, size_t n, int64_t scale, int64_t* out) {
+  if (n == 0) return false;
+  Decimal d;
+  size_t pos = 0;
+  if (decimal_parse(s, n, &pos, &d) != DecimalParse::kOk || pos != n || d.mant <= 0) return false;
+  *out = decimal_scale(d, scale);
+  return true;
+}
+
+// Appends v / 10^6 with the decimals it needs (at most 6) to buf.
+size_t put_millis(char* buf, size_t at, size_t n, int64_t v) {
+  char tmp[40];
+  size_t k = 0;
+  uint64_t a = abs_u64(v);
+  uint64_t ip = a / 1000000, fp = a % 1000000;
+  char digits[24];
+  int nd = 0;
+  do { digits[nd++] = static_cast<char>('0' + ip % 10); ip /= 10; } while (ip);
+  if (v < 0) tmp[k++] = '-';
+  while (nd) tmp[k++] = digits[--nd];
+  if (fp) {
+    tmp[k++] = '.';
+    for (uint64_t p = 100000; p && fp; p /= 10) {
+      tmp[k++] = static_cast<char>('0' + fp / p);
+      fp %= p;
+    }
+  }
+  for (size_t i = 0; i < k && at + 1 < n; ++i) buf[at++] = tmp[i];
+  return at;
+}
+
+size_t put_text(char* buf, size_t at, size_t n, const char* s) {
+  while (*s && at + 1 < n) buf[at++] = *s++;
+  return at;
+}
+
+}  // namespace
+
+const char* tool_spec_message(ToolSpecError e) {
+  switch (e) {
+    case ToolSpecError::kOk: return "ok";
+    case ToolSpecError::kUnknownShape: return "unknown tool shape (use ball:D, flat:D, bull:D:R or vbit:D:ANGLE)";
+    case ToolSpecError::kBadNumber: return "tool sizes must be positive numbers (mm, degrees)";
+    case ToolSpecError::kFieldCount: return "wrong number of fields (ball:D, flat:D, bull:D:R, vbit:D:ANGLE)";
+    case ToolSpecError::kBadOption: return "only ',len=L' may follow the shape";
+    case ToolSpecError::kOutOfRange:
+      return "tool out of range (diameter 0.001..1000 mm, corner radius <= D/2, angle below 180 degrees)";
+  }
+  return "unknown tool spec error";
+}
+
+int64_t tool_default_length_nm(const Tool& t) {
+  Tool probe = t;
+  probe.length_nm = 0;
+  const int64_t full = profile_full_height_nm(tool_profile(probe));
+  int64_t len = max_of<int64_t>(30 * kNmPerMm, sat_mul_i64(t.diameter_nm, 2));
+  len = max_of(len, full);
+  return max_of(len, t.flute_length_nm);
+}
+
+ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
+  // Split off ",len=L".
+  size_t comma = n;
+  for (size_t k = 0; k < n; ++k) {
+    if (s[k] == ',') { comma = k; break; }
+  }
+  int64_t flute_nm = 0;
+  if (comma < n) {
+    const char* o = s + comma + 1;
+    const size_t on = n - comma - 1;
+    if (on < 4 || !same_word(o, 4, "len=")) return ToolSpecError::kBadOption;
+    if (!parse_field(o + 4, on - 4, kNmPerMm, &flute_nm)) return ToolSpecError::kBadNumber;
+  }
+  // Fields separated by ':'.
+  size_t start[4], len[4];
+  int nf = 0;
+  size_t b = 0;
+  for (size_t k = 0; k <= comma; ++k) {
+    if (k == comma || s[k] == ':') {
+      if (nf == 4) return ToolSpecError::kFieldCount;
+      start[nf] = b;
+      len[nf] = k - b;
+      ++nf;
+      b = k + 1;
+    }
+  }
+  Tool t;
+  int want;
+  const char* name = s + start[0];
+  if (same_word(name, len[0], "ball")) { t.kind = ToolKind::kBall; want = 2; }
+  else if (same_word(name, len[0], "flat")) { t.kind = ToolKind::kFlat; want = 2; }
+  else if (same_word(name, len[0], "bull")) { t.kind = ToolKind::kBullNose; want = 3; }
+  else if (same_word(name, len[0], "vbit")) { t.kind = ToolKind::kVBit; want = 3; }
+  else return ToolSpecError::kUnknownShape;
+  if (nf != want) return ToolSpecError::kFieldCount;
+  if (!parse_field(s + start[1], len[1], kNmPerMm, &t.diameter_nm)) return ToolSpecError::kBadNumber;
+  if (t.kind == ToolKind::kBullNose && !parse_field(s + start[2], len[2], kNmPerMm, &t.corner_radius_nm))
+    return ToolSpecError::kBadNumber;
+  if (t.kind == ToolKind::kVBit) {
+    int64_t mdeg = 0;
+    if (!parse_field(s + start[2], len[2], 1000, &mdeg)) return ToolSpecError::kBadNumber;
+    if (mdeg >= 180000) return ToolSpecError::kOutOfRange;
+    t.tip_angle_mdeg = static_cast<int32_t>(mdeg);
+  }
+  // Range checks before the length rule, which evaluates the profile.
+  if (t.diameter_nm < kNmPerUm || t.diameter_nm > 1000 * kNmPerMm || flute_nm > 10000 * kNmPerMm)
+    return ToolSpecError::kOutOfRange;
+  if (t.kind == ToolKind::kBullNose && t.corner_radius_nm > t.diameter_nm / 2) return ToolSpecError::kOutOfRange;
+  t.flute_length_nm = flute_nm;
+  t.length_nm = tool_default_length_nm(t);
+  if (!ok(tool_check(t))) return ToolSpecError::kOutOfRange;
+  *out = t;
+  return ToolSpecError::kOk;
+}
+
+size_t tool_spec_format(const Tool& t, char* buf, size_t n) {
+  if (n == 0) return 0;
+  size_t at = 0;
+  switch (t.kind) {
+    case ToolKind::kFlat: at = put_text(buf, at, n, "flat:"); break;
+    case ToolKind::kBall: at = put_text(buf, at, n, "ball:"); break;
+    case ToolKind::kBullNose: at = put_text(buf, at, n, "bull:"); break;
+    case ToolKind::kVBit: at = put_text(buf, at, n, "vbit:"); break;
+  }
+  at = put_millis(buf, at, n, t.diameter_nm);
+  if (t.kind == ToolKind::kBullNose) {
+    at = put_text(buf, at, n, ":");
+    at = put_millis(buf, at, n, t.corner_radius_nm);
+  } else if (t.kind == ToolKind::kVBit) {
+    at = put_text(buf, at, n, ":");
+    at = put_millis(buf, at, n, static_cast<int64_t>(t.tip_angle_mdeg) * 1000);
+  }
+  if (t.flute_length_nm) {
+    at = put_text(buf, at, n, ",len=");
+    at = put_millis(buf, at, n, t.flute_length_nm);
+  }
+  buf[at] = 0;
+  return at;
+}
+
+}  // namespace dexmill

@@ -1,0 +1,68 @@
+// Cutter shapes and their profiles (paper §2.2.2, and past it: flat end,
+// bull nose, V-bit besides the paper's ball end).
+//
+// Every tool is a solid of revolution about the spindle axis: a cutting part
+// whose lower surface is the profile height(r) above the tip, for radial
+// distance r in [0, R], then a shaft of the same diameter up to length_nm
+// above the tip. The profile is what the exact sweeps use; the cutter dexel
+// set (core/tool/cutter.h) samples it along vertical rays.
+#ifndef DEXMILL_CORE_TOOL_TOOL_H
+#define DEXMILL_CORE_TOOL_TOOL_H
+
+#include <stdint.h>
+
+#include "core/status.h"
+
+namespace dexmill {
+
+enum class ToolKind : uint8_t {
+  kFlat = 0,      // flat end mill: height(r) = 0
+  kBall = 1,      // ball end: height(r) = R - sqrt(R^2 - r^2)
+  kBullNose = 2,  // corner radius rc: flat to R - rc, then a torus
+  kVBit = 3,      // cone with included tip angle a: height(r) = r / tan(a/2)
+};
+
+struct Tool {
+  ToolKind kind = ToolKind::kFlat;
+  int64_t diameter_nm = 0;        // cutting diameter, 2R
+  int64_t corner_radius_nm = 0;   // kBullNose only: 0 < rc <= R
+  int32_t tip_angle_mdeg = 0;     // kVBit only: included angle, (0, 180) degrees
+  int64_t flute_length_nm = 0;    // cutting length above the tip (0: as long as the tool)
+  int64_t length_nm = 0;          // stick-out: tip to the top of the shaft
+};
+
+// Limits: 1 um <= diameter <= 1 m, length >= the profile's full height and
+// <= 10 m, corner radius and tip angle in the ranges above.
+Status tool_check(const Tool& t);
+
+// Precomputed profile of a checked tool: height above the tip of the tool's
+// lower surface at radial distance r, in nm, rounded to nearest. Error bound
+// against the exact profile: 0.5 nm (flat, ball: exact integer root of
+// R^2 - r^2), 1 nm (bull nose: r carried with 16 fraction bits), and
+// 0.5 nm + 1e-8 * h (V-bit: q30 cotangent).
+struct ToolProfile {
+  ToolKind kind;
+  int64_t radius_nm;       // R
+  int64_t corner_nm;       // bull nose corner radius rc
+  int32_t cone_cos_q30;    // V-bit: cos(a/2) and sin(a/2)
+  int32_t cone_sin_q30;
+  int64_t length_nm;       // top of the shaft above the tip
+};
+
+ToolProfile tool_profile(const Tool& t);
+
+// height(r) in nm for 0 <= r <= R; for r > R the tool has no lower surface
+// there and the result is the tool length (the shaft top).
+int64_t profile_height_nm(const ToolProfile& p, int64_t r_nm);
+// The same from r^2 (nm^2), exact input: what ray casts at irrational r use,
+// since near r = R the profile is steep and rounding r first would cost up to
+// sqrt(R) nm.
+int64_t profile_height_r2_nm(const ToolProfile& p, uint64_t r2_nm2);
+
+// Height of the profile at r = R (the top of the cutting shape's curve):
+// R for a ball, rc for a bull nose, R / tan(a/2) for a V-bit, 0 for flat.
+int64_t profile_full_height_nm(const ToolProfile& p);
+
+}  // namespace dexmill
+
+#endif
