@@ -1,0 +1,136 @@
+// The interpreter's block runner, shared by the files that implement it
+// (not a public header: embedders read core/motion/interp.h). A block is
+// checked against a copy of the state (BlockRunner::run and the run_*
+// steps), then committed (BlockRunner::commit), so a bad block changes
+// nothing (STYLE.md habit 3). The steps live by phase, after LinuxCNC's
+// interp_convert: interp.cpp (order of execution, unused words, commit),
+// interp_modes.cpp (modal groups, G4, G10/G28/G30/G92), interp_moves.cpp
+// (G0/G1, G2/G3, canned cycles).
+#ifndef DEXMILL_CORE_MOTION_BLOCK_RUNNER_H
+#define DEXMILL_CORE_MOTION_BLOCK_RUNNER_H
+
+#include <stdint.h>
+
+#include "core/motion/canon.h"
+#include "core/motion/cycles.h"
+#include "core/motion/interp.h"
+#include "core/point.h"
+
+namespace dexmill {
+namespace interp_detail {
+
+
+constexpr int64_t kMaxFeedUnitsPerMin = 1000000;
+constexpr int64_t kMaxSpindleRpm = 1000000;
+constexpr int64_t kMaxDwellS = 1000000;
+constexpr int64_t kMaxRepeats = 1000000;
+constexpr int64_t kMaxTurns = 10000;
+constexpr int64_t kMaxToolNumber = 1000000000;
+constexpr int64_t kMaxCycleMoves = 10000000;
+
+inline int64_t& axis_ref(PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
+inline int64_t axis_val(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
+inline bool is_cycle(int m) { return m == 730 || m == 810 || m == 820 || m == 830 || m == 850 || m == 890; }
+// |v|, saturating: INT64_MIN (a saturated huge number) stays beyond every limit.
+inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : (v < 0 ? -v : v); }
+constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
+inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
+inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
+inline int plane_axis_c(Plane p) { return p == Plane::kXY ? 2 : p == Plane::kZX ? 1 : 0; }
+
+}  // namespace interp_detail
+// Only the interpreter's own files include this header.
+using namespace interp_detail;
+
+// What a checked block will do when committed.
+struct Plan {
+  bool tool_change = false;
+  bool spindle = false;
+  bool coolant = false;
+  bool dwell = false;
+  int64_t dwell_ms = 0;
+  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome } motion = kNone;
+  CanonKind straight_kind = CanonKind::kTraverse;
+  PointNm target{0, 0, 0};
+  CanonArc arc{Plane::kXY, {0, 0, 0}, 1};
+  bool inverse_time = false;
+  Decimal inverse_f{0, 0};
+  PointNm home_via{0, 0, 0};
+  CyclePlan cycle{};
+  int16_t stop = -1;  // M0/M1/M2/M30/M60 in tenths
+};
+
+// Checks one block against a copy of the state; commit() applies it.
+struct BlockRunner {
+  Interp& in;
+  const InterpState& cur;
+  const GcodeBlock& b;
+  GcodeDiag* d;
+  InterpState nx;
+  Plan plan;
+
+  BlockRunner(Interp& interp, const GcodeBlock& block, GcodeDiag* diag)
+      : in(interp), cur(interp.state_), b(block), d(diag), nx(interp.state_) {}
+
+  GcodeError fail(GcodeError e, uint16_t col, const char* word) {
+    d->code = e;
+    d->col = col ? col : 1;
+    int i = 0;
+    for (; word[i] && i < 15; ++i) d->word[i] = word[i];
+    d->word[i] = 0;
+    return e;
+  }
+  GcodeError fail_letter(GcodeError e, char letter) {
+    const char w[2] = {letter, 0};
+    return fail(e, b.col_of(letter), w);
+  }
+  GcodeError fail_code(GcodeError e, char letter, int16_t tenths, uint16_t col) {
+    char w[16];
+    gcode_code_text(letter, tenths, w);
+    return fail(e, col, w);
+  }
+
+  // A length word in the block's units, range-checked against `limit`.
+  GcodeError length(char letter, int64_t* nm, int64_t limit = kGcodeMaxCoordNm) {
+    const Decimal& v = b.val(letter);
+    *nm = decimal_to_nm(v, nx.inch);
+    if (abs64(*nm) > limit) return fail_letter(GcodeError::kNumberTooLarge, letter);
+    return GcodeError::kOk;
+  }
+  GcodeError integer(char letter, int64_t lo, int64_t hi, int64_t* out) {
+    if (!decimal_to_int(b.val(letter), out)) return fail_letter(GcodeError::kNotInteger, letter);
+    if (*out < lo) return fail_letter(lo >= 0 ? GcodeError::kNegativeValue : GcodeError::kNumberTooLarge, letter);
+    if (*out > hi) return fail_letter(GcodeError::kNumberTooLarge, letter);
+    return GcodeError::kOk;
+  }
+  GcodeError check_pos(const PointNm& p, uint16_t col, const char* word) {
+    for (int ax = 0; ax < 3; ++ax) {
+      int64_t v = axis_val(p, ax);
+      if (abs64(v) > kGcodeMaxCoordNm) {
+        d->a_nm = v;
+        return fail(GcodeError::kPositionOutOfRange, col, word);
+      }
+    }
+    return GcodeError::kOk;
+  }
+  // Offsets from program to path frame after this block's modal changes.
+  int64_t offset(int axis) const {
+    return axis_val(nx.work_offset[nx.coord_system], axis) + axis_val(nx.g92, axis);
+  }
+  uint16_t motion_col() const { return b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.first_col; }
+
+  GcodeError run();
+  GcodeError run_modes();
+  GcodeError run_group0(int g0);
+  GcodeError run_motion(int motion);
+  GcodeError run_straight(int motion, bool g53);
+  GcodeError run_arc(int motion);
+  GcodeError run_cycle(int motion);
+  GcodeError run_home(int g0);
+  GcodeError check_unused(int g0, int motion);
+  void commit();
+};
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,216 @@
+// The interpreter's modal steps: feed mode, F, S, T, M6/M61, spindle,
+// coolant, G4, plane, tool length offset, coordinate system, path and
+// distance modes (run_modes, in LinuxCNC's order of execution), and group 0:
+// G10 L2/L20, G28/G30 (with run_home), G28.1/G30.1, G92 and its variants.
+#include "core/motion/block_runner.h"
+
+namespace dexmill {
+
+GcodeError BlockRunner::run_modes() {
+  GcodeError e;
+  // Units first: every length of the block is in the units the block sets.
+  if (b.g[kGUnits] >= 0) nx.inch = b.g[kGUnits] == 200;
+  if (b.g[kGFeedMode] >= 0) {
+    // LinuxCNC sets F to 0 on every G93 or G94 (the block's own F comes after).
+    nx.inverse_time = b.g[kGFeedMode] == 930;
+    nx.feed_nm_per_min = 0;
+  }
+  if (b.has_word('F')) {
+    const Decimal& f = b.val('F');
+    if (decimal_is_negative(f)) return fail_letter(GcodeError::kNegativeValue, 'F');
+    if (decimal_scale(f, 1) > kMaxFeedUnitsPerMin) return fail_letter(GcodeError::kNumberTooLarge, 'F');
+    if (nx.inverse_time) {
+      plan.inverse_f = f;
+    } else {
+      nx.feed_nm_per_min = decimal_to_nm(f, nx.inch);
+    }
+  }
+  if (b.has_word('S')) {
+    const Decimal& s = b.val('S');
+    if (decimal_is_negative(s)) return fail_letter(GcodeError::kNegativeValue, 'S');
+    int64_t rpm = decimal_scale(s, 1);
+    if (rpm > kMaxSpindleRpm) return fail_letter(GcodeError::kNumberTooLarge, 'S');
+    nx.spindle_rpm = static_cast<int32_t>(rpm);
+  }
+  if (b.has_word('T')) {
+    int64_t t;
+    if ((e = integer('T', 0, kMaxToolNumber, &t)) != GcodeError::kOk) return e;
+    nx.selected_tool = static_cast<int32_t>(t);
+  }
+  if (b.m[kMToolChange] == 60) {
+    nx.tool = nx.selected_tool;
+    plan.tool_change = true;
+  } else if (b.m[kMToolChange] == 610) {  // M61 Q: set the tool number without a change
+    if (!b.has_word('Q')) return fail_code(GcodeError::kWordUnused, 'M', 610, b.m_col[kMToolChange]);
+    int64_t t;
+    if ((e = integer('Q', 0, kMaxToolNumber, &t)) != GcodeError::kOk) return e;
+    nx.tool = nx.selected_tool = static_cast<int32_t>(t);
+    plan.tool_change = true;
+  }
+  if (b.m[kMSpindle] >= 0 && b.m[kMSpindle] != 190)
+    nx.spindle_dir = static_cast<int8_t>(b.m[kMSpindle] == 30 ? 1 : b.m[kMSpindle] == 40 ? -1 : 0);
+  const int32_t old_rpm = cur.spindle_dir * cur.spindle_rpm, new_rpm = nx.spindle_dir * nx.spindle_rpm;
+  plan.spindle = old_rpm != new_rpm;
+  if (b.coolant_bits) {
+    nx.coolant = (b.coolant_bits & 4) ? 0 : static_cast<uint8_t>(nx.coolant | (b.coolant_bits & 3));
+    plan.coolant = true;
+  }
+  if (b.g[kGNonModal] == 40) {
+    if (!b.has_word('P')) return fail_code(GcodeError::kDwellNoP, 'G', 40, b.g_col[kGNonModal]);
+    const Decimal& p = b.val('P');
+    if (decimal_is_negative(p)) return fail_letter(GcodeError::kNegativeValue, 'P');
+    int64_t ms = decimal_scale(p, 1000);
+    if (ms > kMaxDwellS * 1000) return fail_letter(GcodeError::kNumberTooLarge, 'P');
+    plan.dwell = true;
+    plan.dwell_ms = ms;
+  }
+  if (b.g[kGPlane] >= 0) nx.plane = b.g[kGPlane] == 170 ? Plane::kXY : b.g[kGPlane] == 180 ? Plane::kZX : Plane::kYZ;
+  if (b.g[kGToolLength] == 490) {
+    nx.tlo_nm = 0;
+  } else if (b.g[kGToolLength] == 430) {
+    int64_t t = nx.tool;
+    if (b.has_word('H')) {
+      if ((e = integer('H', 0, kMaxToolNumber, &t)) != GcodeError::kOk) return e;
+    }
+    int64_t len = 0;
+    if (in.options_.tools && t != 0 && !in.options_.tools->tool_length_nm(static_cast<int32_t>(t), &len))
+      return b.has_word('H') ? fail_letter(GcodeError::kToolUnknown, 'H')
+                             : fail_code(GcodeError::kToolUnknown, 'G', 430, b.g_col[kGToolLength]);
+    if (abs64(len) > kGcodeMaxCoordNm) return fail_code(GcodeError::kNumberTooLarge, 'G', 430, b.g_col[kGToolLength]);
+    nx.tlo_nm = len;
+  } else if (b.g[kGToolLength] == 431) {
+    // G43.1: the axis words are the offset; only Z is kept (X/Y offsets are
+    // for lathes and are not carried by the canonical record).
+    int64_t z = 0;
+    if (b.has_word('X')) return fail_letter(GcodeError::kUnsupportedAxis, 'X');
+    if (b.has_word('Y')) return fail_letter(GcodeError::kUnsupportedAxis, 'Y');
+    if (b.has_word('Z') && (e = length('Z', &z)) != GcodeError::kOk) return e;
+    nx.tlo_nm = z;
+  }
+  if (nx.tlo_nm != cur.tlo_nm) {
+    // The spindle stays where it is, so the controlled point (the tool tip,
+    // machine position minus the offset) moves by the change, as in LinuxCNC.
+    nx.pos.z_nm = cur.pos.z_nm - (nx.tlo_nm - cur.tlo_nm);
+    char w[16];
+    gcode_code_text('G', b.g[kGToolLength], w);
+    if ((e = check_pos(nx.pos, b.g_col[kGToolLength], w)) != GcodeError::kOk) return e;
+  }
+  if (b.g[kGCoordSystem] >= 0) {
+    const int g = b.g[kGCoordSystem];
+    nx.coord_system = static_cast<uint8_t>(g <= 590 ? (g - 540) / 10 : 6 + (g - 591));
+  }
+  if (b.g[kGPathControl] >= 0) nx.path_mode = b.g[kGPathControl];
+  if (b.g[kGDistance] >= 0) nx.incremental = b.g[kGDistance] == 910;
+  if (b.g[kGArcDistance] >= 0) nx.arc_absolute = b.g[kGArcDistance] == 901;
+  if (b.g[kGRetract] >= 0) nx.retract_to_r = b.g[kGRetract] == 990;
+  return GcodeError::kOk;
+}
+
+GcodeError BlockRunner::run_group0(int g0) {
+  GcodeError e;
+  const uint16_t col = b.g_col[kGNonModal];
+  switch (g0) {
+    case 100: {  // G10 L2 / L20: set a work offset
+      if (!b.has_word('L')) return fail_code(GcodeError::kG10NoL, 'G', 100, col);
+      int64_t l;
+      if ((e = integer('L', 0, 100, &l)) != GcodeError::kOk) return e;
+      if (l == 1 || l == 10 || l == 11) {
+        char w[16];
+        gcode_code_text('G', 100, w);
+        in.warn(GcodeError::kWarnG10ToolTable, b.line, col, w);
+        return GcodeError::kOk;
+      }
+      if (l != 2 && l != 20) return fail_letter(GcodeError::kG10BadL, 'L');
+      if (!b.has_word('P')) return fail_code(GcodeError::kG10PNeeded, 'G', 100, col);
+      int64_t p;
+      if (!decimal_to_int(b.val('P'), &p) || p < 0 || p > 9) return fail_letter(GcodeError::kG10BadP, 'P');
+      if (b.has_word('R') && !decimal_is_zero(b.val('R')))
+        return fail_letter(GcodeError::kUnsupportedRotation, 'R');
+      const int sys = p == 0 ? nx.coord_system : static_cast<int>(p - 1);
+      for (int ax = 0; ax < 3; ++ax) {
+        const char c = kAxisLetter[ax];
+        if (!b.has_word(c)) continue;
+        int64_t v;
+        if ((e = length(c, &v)) != GcodeError::kOk) return e;
+        // L2: the offset itself; L20: the offset that makes the current
+        // position read v in that system.
+        int64_t off = l == 2 ? v : axis_val(cur.pos, ax) - axis_val(nx.g92, ax) - v;
+        if (abs64(off) > kGcodeMaxCoordNm) {
+          d->a_nm = off;
+          return fail_letter(GcodeError::kPositionOutOfRange, c);
+        }
+        axis_ref(nx.work_offset[sys], ax) = off;
+      }
+      return GcodeError::kOk;
+    }
+    case 280:
+    case 300:
+      return run_home(g0);
+    case 281:
+      nx.g28_home = PointNm{cur.pos.x_nm, cur.pos.y_nm, cur.pos.z_nm + nx.tlo_nm};
+      return GcodeError::kOk;
+    case 301:
+      nx.g30_home = PointNm{cur.pos.x_nm, cur.pos.y_nm, cur.pos.z_nm + nx.tlo_nm};
+      return GcodeError::kOk;
+    case 920: {  // G92: the current point reads the given values
+      if (!b.has_axis()) return fail_code(GcodeError::kG92NoAxis, 'G', 920, col);
+      for (int ax = 0; ax < 3; ++ax) {
+        const char c = kAxisLetter[ax];
+        if (!b.has_word(c)) continue;
+        int64_t v;
+        if ((e = length(c, &v)) != GcodeError::kOk) return e;
+        int64_t off = axis_val(cur.pos, ax) - axis_val(nx.work_offset[nx.coord_system], ax) - v;
+        if (abs64(off) > kGcodeMaxCoordNm) {
+          d->a_nm = off;
+          return fail_letter(GcodeError::kPositionOutOfRange, c);
+        }
+        axis_ref(nx.g92, ax) = off;
+      }
+      nx.g92_saved = nx.g92;
+      return GcodeError::kOk;
+    }
+    case 921:
+      nx.g92 = nx.g92_saved = PointNm{0, 0, 0};
+      return GcodeError::kOk;
+    case 922:
+      nx.g92 = PointNm{0, 0, 0};
+      return GcodeError::kOk;
+    case 923:
+      nx.g92 = nx.g92_saved;
+      return GcodeError::kOk;
+    default:
+      return GcodeError::kOk;
+  }
+}
+
+// G28/G30: rapid to the given point (if any axis is given), then rapid the
+// given axes (all when none is given) to the stored machine position.
+GcodeError BlockRunner::run_home(int g0) {
+  GcodeError e;
+  const PointNm home = g0 == 280 ? nx.g28_home : nx.g30_home;
+  PointNm via = cur.pos, to = cur.pos;
+  for (int ax = 0; ax < 3; ++ax) {
+    const char c = kAxisLetter[ax];
+    const int64_t home_path = axis_val(home, ax) - (ax == 2 ? nx.tlo_nm : 0);
+    if (!b.has_axis()) {
+      axis_ref(to, ax) = home_path;
+      continue;
+    }
+    if (!b.has_word(c)) continue;
+    int64_t v;
+    if ((e = length(c, &v)) != GcodeError::kOk) return e;
+    axis_ref(via, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
+    axis_ref(to, ax) = home_path;
+  }
+  char w[16];
+  gcode_code_text('G', static_cast<int16_t>(g0), w);
+  if ((e = check_pos(via, b.g_col[kGNonModal], w)) != GcodeError::kOk) return e;
+  if ((e = check_pos(to, b.g_col[kGNonModal], w)) != GcodeError::kOk) return e;
+  plan.motion = Plan::kHome;
+  plan.home_via = via;
+  plan.target = to;
+  nx.pos = to;
+  return GcodeError::kOk;
+}
+
+}  // namespace dexmill
