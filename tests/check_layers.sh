@@ -19,6 +19,8 @@ allowed() {
     core/grid) echo "core/math";;
     core/tool) echo "core/math";;
     core/cut) echo "core/motion core/grid core/tool core/math";;
+    core/design) echo "core/grid core/math";;
+    core/assess) echo "core/design core/grid core/math";;
     display) echo "core/grid core/tool core/math";;
     *) echo "?";;
   esac

@@ -1,0 +1,124 @@
+// core/assess/assess.h: the paper's E and E_rel (§2.5.2) and the figures
+// beside them, against a computation in double on random grids.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "core/assess/assess.h"
+#include "tests/rng.h"
+#include "tests/runner.h"
+
+using namespace dexmill;
+
+namespace {
+
+double u128_to_double(U128 v) { return static_cast<double>(v.hi) * 18446744073709551616.0 + static_cast<double>(v.lo); }
+
+struct Scene {
+  GridGeometry geo{};
+  std::vector<uint16_t> top, bottom;
+  std::vector<int32_t> design;
+  DexelGrid<uint16_t> g;
+  DesignGrid d;
+};
+
+void make_scene(t::Rng& r, Scene* s) {
+  s->geo = GridGeometry{static_cast<int32_t>(r.range(2, 70)), static_cast<int32_t>(r.range(2, 70)), -1000000, 2000000,
+                        r.range(10000, 500000), -30000000, r.range(1, 2000)};
+  const size_t n = static_cast<size_t>(s->geo.nx) * s->geo.ny;
+  s->top.assign(n, 0);
+  s->bottom.assign(n, 0);
+  s->design.assign(n, 0);
+  CHECK_EQ(grid_init(&s->g, s->geo, s->top.data(), s->bottom.data(), n), Status::kOk);
+  CHECK_EQ(design_init(&s->d, s->geo, s->design.data(), n), Status::kOk);
+  for (size_t k = 0; k < n; ++k) {
+    const int kind = static_cast<int>(r.range(0, 9));
+    s->top[k] = static_cast<uint16_t>(r.range(0, 65535));
+    if (kind == 0) s->top[k] = 0;  // a hole (bottom 0 too)
+    // The design near the top mostly (small d, both signs), sometimes far, sometimes absent or below z0.
+    const int64_t near = static_cast<int64_t>(s->top[k]) + r.range(-300, 300);
+    s->design[k] = kind == 1 ? kNoDesign : kind == 2 ? static_cast<int32_t>(r.range(-500, 70000)) : static_cast<int32_t>(near);
+  }
+}
+
+}  // namespace
+
+TEST(assess_matches_a_double_computation) {
+  t::Rng r(25);
+  for (int run = 0; run < 60; ++run) {
+    Scene s;
+    make_scene(r, &s);
+    AssessOptions o;
+    o.tol_nm = r.range(0, 400000);
+    ToleranceBox box{s.geo.x0_nm, s.geo.y0_nm, s.geo.x0_nm + 5 * s.geo.pitch_nm, s.geo.y0_nm + 3 * s.geo.pitch_nm, r.range(0, 100000)};
+    if (run % 2) {
+      o.boxes = &box;
+      o.nboxes = 1;
+    }
+    AssessResult res;
+    CHECK_EQ(assess(s.g, s.d, o, &res), Status::kOk);
+    double e = 0, sum_d = 0, gouge = 0, left = 0, max_g = 0, max_l = 0, outside = 0;
+    uint64_t cols = 0, within = 0, gc = 0, lc = 0, oc = 0;
+    uint64_t hist[kAssessBins] = {};
+    for (int32_t j = 0; j < s.geo.ny; ++j)
+      for (int32_t i = 0; i < s.geo.nx; ++i) {
+        const size_t k = static_cast<size_t>(j) * s.geo.nx + i;
+        const double w = s.top[k];
+        const double lsb = static_cast<double>(s.geo.lsb_nm);
+        if (s.design[k] == kNoDesign) {
+          if (w > 0) { ++oc; outside += w; }
+          continue;
+        }
+        ++cols;
+        const double dd = w - s.design[k];
+        e += dd * dd;
+        sum_d += s.design[k] > 0 ? s.design[k] : 0;
+        const double x = static_cast<double>(s.geo.x0_nm + i * s.geo.pitch_nm), y = static_cast<double>(s.geo.y0_nm + j * s.geo.pitch_nm);
+        const bool in_box = o.nboxes && x >= box.x0_nm && x <= box.x1_nm && y >= box.y0_nm && y <= box.y1_nm;
+        const double tol = static_cast<double>(in_box ? box.tol_nm : o.tol_nm);
+        int b = 0;
+        while (b < kAssessEdges && dd * lsb > static_cast<double>(kAssessBinEdgesNm[b])) ++b;
+        ++hist[b];
+        if (std::fabs(dd) * lsb <= tol) ++within;
+        else if (dd < 0) { ++gc; gouge += -dd; max_g = std::fmax(max_g, -dd); }
+        else { ++lc; left += dd; max_l = std::fmax(max_l, dd); }
+      }
+    CHECK_EQ(res.design_columns, cols);
+    CHECK_EQ(res.within_tol_columns, within);
+    CHECK_EQ(u128_to_double(res.e_lsb2), e);
+    CHECK_EQ(static_cast<double>(res.sum_design_top_lsb), sum_d);
+    CHECK_EQ(res.gouge_columns, gc);
+    CHECK_EQ(res.leftover_columns, lc);
+    CHECK_EQ(static_cast<double>(res.gouge_lsb), gouge);
+    CHECK_EQ(static_cast<double>(res.leftover_lsb), left);
+    CHECK_EQ(static_cast<double>(res.max_gouge_lsb), max_g);
+    CHECK_EQ(static_cast<double>(res.max_leftover_lsb), max_l);
+    CHECK_EQ(res.outside_columns, oc);
+    CHECK_EQ(static_cast<double>(res.outside_lsb), outside);
+    for (int b = 0; b < kAssessBins; ++b) CHECK_EQ(res.histogram[b], hist[b]);
+    if (res.max_gouge_lsb > 0) {
+      const size_t k = static_cast<size_t>(res.max_gouge_j) * s.geo.nx + res.max_gouge_i;
+      CHECK_EQ(static_cast<int64_t>(s.design[k]) - s.top[k], res.max_gouge_lsb);
+    }
+  }
+}
+
+TEST(assess_a_perfect_cut_has_no_error_and_rejects_another_grid) {
+  t::Rng r(7);
+  Scene s;
+  make_scene(r, &s);
+  for (size_t k = 0; k < s.top.size(); ++k) {
+    if (s.top[k] == 0) s.top[k] = 1;  // no holes: a hole reads as height 0
+    s.design[k] = s.top[k];
+  }
+  AssessOptions o;
+  o.tol_nm = 0;
+  AssessResult res;
+  CHECK_EQ(assess(s.g, s.d, o, &res), Status::kOk);
+  CHECK(res.e_lsb2.lo == 0 && res.e_lsb2.hi == 0);
+  CHECK_EQ(res.within_tol_columns, res.design_columns);
+  CHECK_EQ(res.gouge_columns + res.leftover_columns, uint64_t{0});
+  CHECK_EQ(res.max_gouge_i, -1);
+  s.d.geo.pitch_nm += 1;
+  CHECK_EQ(assess(s.g, s.d, o, &res), Status::kBadArgument);
+}
