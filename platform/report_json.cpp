@@ -46,6 +46,63 @@ void diags(std::string* o, const char* key, const std::vector<ReportDiag>& v) {
   *o += v.empty() ? "],\n" : "\n  ],\n";
 }
 
+// A 128-bit count of 10^-d units as "I.FFF" (d <= 18).
+std::string fixed_text_u128(unsigned __int128 units, int decimals) {
+  std::string digits;
+  do {
+    digits.insert(digits.begin(), static_cast<char>('0' + static_cast<int>(units % 10)));
+    units /= 10;
+  } while (units);
+  while (static_cast<int>(digits.size()) <= decimals) digits.insert(digits.begin(), '0');
+  if (!decimals) return digits;
+  return digits.substr(0, digits.size() - decimals) + "." + digits.substr(digits.size() - decimals);
+}
+
+unsigned __int128 round_div(unsigned __int128 n, unsigned __int128 d) { return (n + d / 2) / d; }
+
+std::string assessment_text(const RunReport& rep) {
+  const ReportAssessment& a = rep.assessment;
+  const AssessResult& r = a.result;
+  const unsigned __int128 lsb = static_cast<uint64_t>(rep.lsb_nm);
+  const unsigned __int128 e_nm2 = ((static_cast<unsigned __int128>(r.e_lsb2.hi) << 64) | r.e_lsb2.lo) * lsb * lsb;
+  const unsigned __int128 top_nm = static_cast<unsigned __int128>(r.sum_design_top_lsb) * lsb;
+  // E_rel in 1e-9 mm (pm): E nm^2 / sum nm = nm; x 1000 = pm.
+  const std::string e_rel = top_nm ? fixed_text_u128(round_div(e_nm2 * 1000, top_nm), 9) : std::string("null");
+  const uint64_t n = r.design_columns;
+  const int64_t rms_nm = n ? static_cast<int64_t>(isqrt_u128(U128{static_cast<uint64_t>(e_nm2 / n >> 64),
+                                                                   static_cast<uint64_t>(e_nm2 / n)}))
+                           : 0;
+  auto area = [&](uint64_t columns) { return volume_mm3_text(columns, kNmPerMm, rep.pitch_nm); };
+  auto volume = [&](uint64_t lsb_columns) { return volume_mm3_text(lsb_columns, rep.lsb_nm, rep.pitch_nm); };
+  auto extreme = [&](int64_t d_lsb, const PointNm& at) {
+    if (d_lsb <= 0) return std::string("null");
+    return "{\"mm\": " + nm_to_mm_text(d_lsb * rep.lsb_nm, 4) + ", \"x_mm\": " + nm_to_mm_text(at.x_nm, 4) +
+           ", \"y_mm\": " + nm_to_mm_text(at.y_nm, 4) + "}";
+  };
+  std::string o = "  \"assessment\": {\"design\": {\"file\": " + quoted(a.file) + ", \"kind\": " + quoted(a.kind) +
+                  ", \"triangles\": " + u64(a.triangles) + ", \"columns\": " + u64(n) + "},\n";
+  o += "    \"tolerance_mm\": " + nm_to_mm_text(a.tolerance_nm, 4) + ", \"tolerance_boxes\": " + u64(a.tolerance_boxes) +
+       ",\n";
+  o += "    \"E_mm2\": " + fixed_text_u128(round_div(e_nm2, 1000000), 6) + ", \"E_rel\": " + e_rel +
+       ", \"rms_mm\": " + nm_to_mm_text(rms_nm, 4) + ",\n";
+  o += "    \"max_gouge\": " + extreme(r.max_gouge_lsb, a.max_gouge_at) + ", \"max_leftover\": " +
+       extreme(r.max_leftover_lsb, a.max_leftover_at) + ",\n";
+  o += "    \"gouged\": {\"area_mm2\": " + area(r.gouge_columns) + ", \"volume_mm3\": " + volume(r.gouge_lsb) +
+       "}, \"leftover\": {\"area_mm2\": " + area(r.leftover_columns) + ", \"volume_mm3\": " + volume(r.leftover_lsb) +
+       "},\n";
+  o += "    \"within_tolerance_percent\": " +
+       (n ? fixed_text(static_cast<uint64_t>(round_div(static_cast<unsigned __int128>(r.within_tol_columns) * 10000, n)), 2, false)
+          : std::string("null")) +
+       ", \"outside_design\": {\"area_mm2\": " + area(r.outside_columns) + ", \"volume_mm3\": " +
+       volume(r.outside_lsb) + "},\n";
+  o += "    \"histogram\": {\"edges_mm\": [";
+  for (int k = 0; k < kAssessEdges; ++k) o += std::string(k ? ", " : "") + nm_to_mm_text(kAssessBinEdgesNm[k], 2);
+  o += "], \"columns\": [";
+  for (int k = 0; k < kAssessBins; ++k) o += std::string(k ? ", " : "") + u64(r.histogram[k]);
+  o += "]}},\n";
+  return o;
+}
+
 }  // namespace
 
 std::string nm_to_mm_text(int64_t nm, int decimals) {
@@ -116,6 +173,7 @@ std::string report_json_text(const RunReport& r) {
   else
     o += "  \"bounds_mm\": null,\n";
   o += "  \"cut\": {\"instances\": " + u64(r.instances) + ", \"dexel_updates\": " + u64(r.dexel_updates) + "},\n";
+  o += r.have_assessment ? assessment_text(r) : std::string("  \"assessment\": null,\n");
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

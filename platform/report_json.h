@@ -20,6 +20,18 @@
 //   time_model      {rapid_mm_per_min, feed_s, rapid_s, dwell_s}
 //   bounds_mm       {min [x,y,z], max [x,y,z]} of all motion (null: none)
 //   cut             {instances, dexel_updates}
+//   assessment      null without --design; else (paper §2.5; d = cut top -
+//                   design top, > 0 material left, < 0 a gouge):
+//                   design {file, kind "stl"|"pgm", triangles, columns},
+//                   tolerance_mm, tolerance_boxes, E_mm2 (sum d^2 x pitch^0:
+//                   eq. 2, mm^2 with 6 decimals), E_rel (E / sum of design
+//                   tops above the stock bottom, eq. 3, mm, 9 decimals),
+//                   rms_mm, max_gouge and max_leftover ({mm, x_mm, y_mm}
+//                   or null), gouged and leftover ({area_mm2, volume_mm3}
+//                   beyond tolerance), within_tolerance_percent (of the
+//                   design's columns), outside_design ({area_mm2,
+//                   volume_mm3}: material where the design has none), and
+//                   histogram {edges_mm [14], columns [15]} of d
 //   timing          {STAGE_s: seconds, ...}
 #ifndef DEXMILL_PLATFORM_REPORT_JSON_H
 #define DEXMILL_PLATFORM_REPORT_JSON_H
@@ -30,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/assess/assess.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -42,6 +55,16 @@ struct ReportDiag {
 struct ReportToolUse {
   int32_t number;
   std::string spec;
+};
+
+// The assessment against a design part (report key `assessment`).
+struct ReportAssessment {
+  std::string file, kind;      // the design file, "stl" or "pgm"
+  uint64_t triangles = 0;      // STL: facets read
+  int64_t tolerance_nm = 0;
+  uint64_t tolerance_boxes = 0;
+  AssessResult result;
+  PointNm max_gouge_at{0, 0, 0}, max_leftover_at{0, 0, 0};  // machine x, y of those columns
 };
 
 struct RunReport {
@@ -66,6 +89,8 @@ struct RunReport {
   bool have_bounds = false;
   PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
   uint64_t instances = 0, dexel_updates = 0;
+  bool have_assessment = false;
+  ReportAssessment assessment;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
 };
 

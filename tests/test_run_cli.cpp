@@ -9,7 +9,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "tests/runner.h"
 
@@ -252,6 +254,189 @@ TEST(run_window_needs_glfw_or_a_display) {
   if (r.code == 2) CHECK(has(r.err, "built without GLFW"));
   else if (r.code == 3) CHECK(has(r.err, "cannot open a window"));
   else CHECK(r.code == 2 || r.code == 3);
+}
+
+namespace {
+
+// The design of pocket.ngc's part as the project draws it: the stock's top
+// at Z0 with a 26 x 16 mm pocket 3 mm deep, square cornered (the 6 mm flat
+// end leaves 3 mm radii: leftover), as ten facets of a top surface.
+struct Facet {
+  float v[3][3];
+};
+std::vector<Facet> pocket_design() {
+  const float z0 = 0, zp = -3, P[4] = {2, 2, 28, 18}, O[4] = {-10, -10, 45, 35};
+  std::vector<Facet> f;
+  auto quad = [&](float ax, float ay, float bx, float by, float z) {
+    f.push_back(Facet{{{ax, ay, z}, {bx, ay, z}, {bx, by, z}}});
+    f.push_back(Facet{{{ax, ay, z}, {bx, by, z}, {ax, by, z}}});
+  };
+  quad(P[0], P[1], P[2], P[3], zp);
+  quad(O[0], O[1], O[2], P[1], z0);
+  quad(O[0], P[3], O[2], O[3], z0);
+  quad(O[0], P[1], P[0], P[3], z0);
+  quad(P[2], P[1], O[2], P[3], z0);
+  return f;
+}
+
+void write_file(const std::string& path, const std::string& bytes) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fwrite(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+}
+
+std::string ascii_stl(const std::vector<Facet>& fs) {
+  std::string o = "solid pocket\n";
+  char b[200];
+  for (const Facet& f : fs) {
+    o += "  facet normal 0 0 1\n    outer loop\n";
+    for (const auto& v : f.v) {
+      std::snprintf(b, sizeof b, "      vertex %g %g %g\n", v[0], v[1], v[2]);
+      o += b;
+    }
+    o += "    endloop\n  endfacet\n";
+  }
+  return o + "endsolid pocket\n";
+}
+
+std::string binary_stl(const std::vector<Facet>& fs) {
+  std::string o(80, ' ');
+  o.replace(0, 5, "solid");  // many binary files start so; the size decides
+  const uint32_t n = static_cast<uint32_t>(fs.size());
+  o.append(reinterpret_cast<const char*>(&n), 4);  // little-endian hosts
+  for (const Facet& f : fs) {
+    const float normal[3] = {0, 0, 1};
+    o.append(reinterpret_cast<const char*>(normal), 12);
+    o.append(reinterpret_cast<const char*>(f.v), 36);
+    o.append(2, '\0');
+  }
+  return o;
+}
+
+// The report's assessment object, from its key to the line before timing.
+std::string assessment_of(const std::string& report) {
+  const size_t a = report.find("  \"assessment\""), b = report.find("  \"timing\"");
+  return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
+}
+
+}  // namespace
+
+TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
+  if (skip()) return;
+  const std::string d = tmp_dir() + "/";
+  write_file(d + "pd.stl", ascii_stl(pocket_design()));
+  write_file(d + "pdb.stl", binary_stl(pocket_design()));
+  Result r = run("pocket.ngc -q --design %/pd.stl --report %/pd.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(r.err.empty());
+  const std::string a = assessment_of(slurp(d + "pd.json"));
+  // The G81 hole (flat 6 mm to Z-8 at X28 Y18) goes 8 mm below the design's
+  // top beside the pocket; the pocket's four corners keep 3 mm of material.
+  CHECK(has(a, ("\"design\": {\"file\": \"" + d + "pd.stl\", \"kind\": \"stl\", \"triangles\": 10, \"columns\": 45212}").c_str()));
+  CHECK(has(a, "\"max_gouge\": {\"mm\": 8.0000, \"x_mm\": 28.0435, \"y_mm\": 15.1305}"));
+  CHECK(has(a, "\"max_leftover\": {\"mm\": 3.0000, \"x_mm\": 2.0870, \"y_mm\": 2.0870}"));
+  // The hole's area beyond tolerance: the 6 mm circle (28.27 mm^2) to the grid's resolution.
+  CHECK(has(a, "\"gouged\": {\"area_mm2\": 28.174,"));
+  CHECK(has(a, "\"E_mm2\": 104005.000000, \"E_rel\": 0.274212599, \"rms_mm\": 1.5167"));
+  CHECK(has(a, "\"within_tolerance_percent\": 88.55"));
+  // The same mesh as binary STL: the same assessment but for the file's name.
+  r = run("pocket.ngc -q --design %/pdb.stl --report %/pdb.json");
+  CHECK_EQ(r.code, 0);
+  std::string b = assessment_of(slurp(d + "pdb.json"));
+  const size_t at = b.find("pdb.stl");
+  if (at != std::string::npos) b.replace(at, 7, "pd.stl");
+  CHECK(a == b);
+  // A tolerance of 3 mm inside a box over the pocket's corner at (2, 2) forgives its leftover.
+  r = run("pocket.ngc -q --design %/pd.stl --tolerance-box 0,0,6,6,3 --report %/pdt.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(assessment_of(slurp(d + "pdt.json")), "\"tolerance_boxes\": 1"));
+  CHECK(assessment_of(slurp(d + "pdt.json")).find("\"x_mm\": 2.0870, \"y_mm\": 2.0870") == std::string::npos);
+}
+
+TEST(run_design_from_a_height_image) {
+  if (skip()) return;
+  // A 2 x 1 image: the left half of the stock is to stay at Z0 (white), the
+  // right half may go to Z-3 (black): the pocket's left part is a 3 mm
+  // gouge, the G81 hole on the right 5 mm.
+  write_file(tmp_dir() + "/half.pgm", std::string("P5\n# design\n2 1\n255\n") + '\xff' + '\x00');
+  Result r = run("pocket.ngc -q --design %/half.pgm --design-z -3,0 --report %/half.json");
+  CHECK_EQ(r.code, 0);
+  const std::string a = assessment_of(slurp(tmp_dir() + "/half.json"));
+  CHECK(has(a, "\"kind\": \"pgm\", \"triangles\": 0"));
+  CHECK(has(a, "\"max_gouge\": {\"mm\": 5.0000, \"x_mm\": 27.1305, \"y_mm\": 15.1305}"));
+  CHECK(has(a, "\"gouged\": {\"area_mm2\": 239.037,"));
+  write_file(tmp_dir() + "/half2.pgm", "P2\n2 1\n255\n255 0\n");
+  r = run("pocket.ngc -q --design %/half2.pgm --design-z -3,0 --report %/half2.json");
+  CHECK_EQ(r.code, 0);
+  std::string b = assessment_of(slurp(tmp_dir() + "/half2.json"));
+  const size_t at = b.find("half2.pgm");
+  if (at != std::string::npos) b.replace(at, 9, "half.pgm");
+  CHECK(a == b);
+}
+
+TEST(run_design_bad_files_exit_1_with_the_reason) {
+  if (skip()) return;
+  const std::string d = tmp_dir() + "/";
+  std::string bin = binary_stl(pocket_design());
+  write_file(d + "trunc.stl", bin.substr(0, bin.size() - 10));
+  std::string nan_text = ascii_stl(pocket_design());
+  nan_text.replace(nan_text.find("vertex") + 7, 2, "x1");
+  write_file(d + "nan.stl", nan_text);
+  std::string nan_bin = bin;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(&nan_bin[84 + 50 * 6 + 12 + 12 + 4], &nan, 4);  // facet 7, vertex 2, y
+  write_file(d + "nanb.stl", nan_bin);
+  write_file(d + "empty.stl", "solid nothing\nendsolid nothing\n");
+  const std::string text = ascii_stl(pocket_design());
+  const size_t second_vertex = text.find("vertex", text.find("facet", text.find("endfacet")));
+  write_file(d + "cut.stl", text.substr(0, text.find('\n', second_vertex) + 1));
+  std::vector<Facet> far = pocket_design();
+  for (Facet& f : far)
+    for (auto& v : f.v) v[0] += 500;
+  write_file(d + "far.stl", ascii_stl(far));
+  write_file(d + "typo.stl", "solid a\n facet normal 0 0 1\n  outer loop\n   vertx 0 0 0\n");
+  write_file(d + "bad.pgm", "P5\n2\n255\n");
+  write_file(d + "short.pgm", "P5\n4 4\n255\nabc");
+  write_file(d + "big.pgm", "P2\n2 1\n255\n255 256\n");
+  struct Case {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {"--design %/trunc.stl", "trunc.stl: error: not an STL file: binary STL of 10 triangles needs 584 bytes, the file has 574 (truncated?)"},
+      {"--design %/nan.stl", "nan.stl: error: triangle 1: vertex is not a number (line 4)"},
+      {"--design %/nanb.stl", "nanb.stl: error: triangle 7: vertex is not a number"},
+      {"--design %/empty.stl", "empty.stl: error: the mesh has no triangles"},
+      {"--design %/cut.stl", "cut.stl:12: error: the file ends inside a facet (truncated?)"},
+      {"--design %/far.stl", "far.stl: error: the design lies entirely outside the stock"},
+      {"--design %/typo.stl", "typo.stl:4: error: expected 'vertex', found 'vertx'"},
+      {"--design %/bad.pgm --design-z 0,1", "bad.pgm: error: bad PGM header"},
+      {"--design %/short.pgm --design-z 0,1", "short.pgm: error: too few samples: 4x4 needs 16 bytes of data, the file has 3"},
+      {"--design %/big.pgm --design-z 0,1", "big.pgm: error: sample 2 is above maxval"},
+  };
+  for (const Case& c : cases) {
+    const Result r = run(std::string("pocket.ngc -q --report %/bad_design.json ") + c.args);
+    if (r.code != 1) std::printf("  %s: exit %d\n", c.args, r.code);
+    CHECK_EQ(r.code, 1);
+    CHECK(has(r.err, c.message));
+  }
+  // Usage: the option's own checks.
+  const char* usage[][2] = {
+      {"--design %/x.obj", "--design needs an .stl mesh or a .pgm height image"},
+      {"--design %/bad.pgm", "a PGM design needs --design-z"},
+      {"--design %/pd.stl --design-z 0,1", "--design-z is for PGM designs"},
+      {"--tolerance-box 0,0,1,1,0.1", "--tolerance-box needs --design"},
+      {"--design %/pd.stl --tolerance -1", "--tolerance needs mm from 0 to 100"},
+      {"--design %/bad.pgm --design-z 1,0", "--design-z needs ZLOW,ZHIGH"},
+  };
+  for (const auto& u : usage) {
+    const Result r = run(std::string("pocket.ngc -q ") + u[0]);
+    CHECK_EQ(r.code, 2);
+    CHECK(has(r.err, u[1]));
+  }
+  const Result r = run("pocket.ngc -q --design %/none.stl");
+  CHECK_EQ(r.code, 3);
+  CHECK(has(r.err, "dexmill: error: cannot read '"));
 }
 
 TEST(run_zz_cleanup) {

@@ -32,6 +32,7 @@
 #include "platform/tool_table.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
+#include "tools/run_assess.h"
 #include "tools/run_live.h"
 #include "tools/run_render.h"
 #include "tools/run_stock.h"
@@ -407,6 +408,12 @@ int run_job(RunOptions o) {
     return fail(kExitUsage, "the stock and grid give a geometry the dexel grid cannot hold");
   fill_stock(&grid, plan);
   const uint64_t material_before = grid_material_lsb(grid);
+  // -- the design part, before the cut: a bad file costs no simulation
+  RunDesign design;
+  if (!o.design.empty()) {
+    const int code = load_design(o, plan, &design);
+    if (code != kExitOk) return code;
+  }
 
   // -- the cutter's memory: the stamp set of the largest tool used
   size_t words = 0;
@@ -519,6 +526,13 @@ int run_job(RunOptions o) {
   rep.instances = mill.stats().instances;
   rep.dexel_updates = mill.stats().dexel_updates;
   rep.removed_lsb_dexels = material_before - grid_material_lsb(grid);
+  if (!o.design.empty()) {
+    const double t0 = clock_now_s();
+    assess_design(o, plan, grid, &design);
+    rep.have_assessment = true;
+    rep.assessment = design.report;
+    rep.timing.emplace_back("assess", clock_now_s() - t0);
+  }
 
   // -- final frame and files
   double render_s = cut.render_s, write_s = cut.write_s;

@@ -1,6 +1,8 @@
 // `dexmill run` option parsing; see run_options.h.
 #include "tools/run_options.h"
 
+#include <strings.h>
+
 #include <cstdio>
 #include <cstring>
 
@@ -40,19 +42,29 @@ bool parse_pair(const char* s, int64_t lo, int64_t hi, int32_t* a, int32_t* b) {
   return true;
 }
 
-bool parse_stock(const char* s, int64_t* v) {
+// "A,B,C..." with exactly n numbers in mm (each within the G-code range).
+bool parse_mm_list(const char* s, int n, int64_t* v) {
   int k = 0;
   const char* p = s;
   for (;;) {
     const char* c = std::strchr(p, ',');
-    const std::size_t n = c ? static_cast<std::size_t>(c - p) : std::strlen(p);
-    if (k == 6 || !parse_scaled(p, n, kNmPerMm, &v[k])) return false;
+    const std::size_t len = c ? static_cast<std::size_t>(c - p) : std::strlen(p);
+    if (k == n || !parse_scaled(p, len, kNmPerMm, &v[k])) return false;
     if (v[k] > kGcodeMaxCoordNm || v[k] < -kGcodeMaxCoordNm) return false;
     ++k;
     if (!c) break;
     p = c + 1;
   }
-  return k == 6 && v[0] < v[3] && v[1] < v[4] && v[2] < v[5];
+  return k == n;
+}
+
+bool parse_stock(const char* s, int64_t* v) {
+  return parse_mm_list(s, 6, v) && v[0] < v[3] && v[1] < v[4] && v[2] < v[5];
+}
+
+bool ends_with(const char* s, const char* ext) {
+  const std::size_t n = std::strlen(s), e = std::strlen(ext);
+  return n > e && strcasecmp(s + n - e, ext) == 0;
 }
 
 }  // namespace
@@ -80,6 +92,11 @@ void run_usage(std::FILE* f) {
                "  --fbdev DEV                draw live into a Linux framebuffer (/dev/fb0)\n"
                "  --speed X                  live: simulated seconds per second (default: ~20 s per job)\n"
                "  --exit-when-done [--hold S]  live: close after the program (after S seconds)\n"
+               "  --design FILE.stl|FILE.pgm the design part: the report gains an assessment (paper 2.5)\n"
+               "  --design-offset X,Y,Z      mm added to every vertex of an STL design\n"
+               "  --design-z ZLOW,ZHIGH      a PGM design's black and white, mm (it spans the stock's XY)\n"
+               "  --tolerance MM             |cut - design| within it is not an error (default 0.05)\n"
+               "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
                "  -q                         no progress bar\n\n"
                "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, r resets\n"
                "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O.\n");
@@ -111,7 +128,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
                                              "--mode", "--image", "--frames", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
-                                             "--fbdev", "--hold", "--speed"};
+                                             "--fbdev", "--hold", "--speed", "--design", "--design-z",
+                                             "--design-offset", "--tolerance", "--tolerance-box"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -179,6 +197,26 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     } else if (name == "--hold") {
       if (!parse_scaled(v, 1000, &o->hold_ms) || o->hold_ms < 0 || o->hold_ms > 3600000)
         return fail(kExitUsage, "--hold needs seconds from 0 to 3600, not '%s'", v);
+    } else if (name == "--design") {
+      if (!ends_with(v, ".stl") && !ends_with(v, ".pgm"))
+        return fail(kExitUsage, "--design needs an .stl mesh or a .pgm height image, not '%s'", v);
+      o->design = v;
+      o->design_pgm = ends_with(v, ".pgm");
+    } else if (name == "--design-z") {
+      if (!parse_mm_list(v, 2, o->design_z_nm) || o->design_z_nm[0] >= o->design_z_nm[1])
+        return fail(kExitUsage, "--design-z needs ZLOW,ZHIGH in mm with ZLOW < ZHIGH, not '%s'", v);
+      o->have_design_z = true;
+    } else if (name == "--design-offset") {
+      if (!parse_mm_list(v, 3, o->design_offset_nm))
+        return fail(kExitUsage, "--design-offset needs X,Y,Z in mm, not '%s'", v);
+    } else if (name == "--tolerance") {
+      if (!parse_scaled(v, kNmPerMm, &o->tolerance_nm) || o->tolerance_nm < 0 || o->tolerance_nm > 100 * kNmPerMm)
+        return fail(kExitUsage, "--tolerance needs mm from 0 to 100, not '%s'", v);
+    } else if (name == "--tolerance-box") {
+      int64_t b[5];
+      if (!parse_mm_list(v, 5, b) || b[0] > b[2] || b[1] > b[3] || b[4] < 0 || b[4] > 100 * kNmPerMm)
+        return fail(kExitUsage, "--tolerance-box needs X0,Y0,X1,Y1,TOL in mm with X0 <= X1, Y0 <= Y1, 0 <= TOL <= 100, not '%s'", v);
+      o->tolerance_boxes.push_back(ToleranceBox{b[0], b[1], b[2], b[3], b[4]});
     } else if (name == "--speed") {
       if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
         return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
@@ -189,6 +227,12 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     return fail(kExitUsage, "give --view or --azimuth/--elevation, not both");
   if (have_every && o->frames_dir.empty()) return fail(kExitUsage, "--every needs --frames DIR");
   if (o->window && !o->fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
+  if (o->design.empty() && (o->have_design_z || !o->tolerance_boxes.empty()))
+    return fail(kExitUsage, "%s needs --design", o->have_design_z ? "--design-z" : "--tolerance-box");
+  if (o->design_pgm && !o->have_design_z)
+    return fail(kExitUsage, "a PGM design needs --design-z ZLOW,ZHIGH (the heights of black and white)");
+  if (!o->design.empty() && !o->design_pgm && o->have_design_z)
+    return fail(kExitUsage, "--design-z is for PGM designs; place an STL design with --design-offset");
   return kExitOk;
 }
 

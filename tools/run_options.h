@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
+#include "core/assess/assess.h"
 #include "core/cut/mill.h"
 #include "core/tool/tool.h"
 #include "display/camera.h"
@@ -41,6 +43,14 @@ struct RunOptions {
   bool exit_when_done = false;   // close the window after the program (fbdev always does)
   int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
   int64_t speed_milli = 0;       // --speed X: simulated seconds per second, x1000; 0: auto
+  // The design part to assess against (paper §2.5).
+  std::string design;            // --design FILE.stl|FILE.pgm
+  bool design_pgm = false;       // by the extension
+  bool have_design_z = false;
+  int64_t design_z_nm[2] = {};   // --design-z ZLOW,ZHIGH (PGM: black, white)
+  int64_t design_offset_nm[3] = {};  // --design-offset X,Y,Z (STL)
+  int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
+  std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
 };
 
 // Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the

@@ -41,8 +41,10 @@ Status assess(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o
   const bool boxes = o.nboxes > 0;
   // Without boxes every column has the same tolerance: one division.
   const int64_t tol_lsb_all = o.tol_nm / g.lsb_nm;
-  for (int32_t j = 0; j < g.ny; ++j) {
-    for (int32_t i = 0; i < g.nx; ++i) {
+  const int32_t i0 = max_of(o.region.i0, int32_t{0}), i1 = min_of(o.region.i1, g.nx);
+  const int32_t j0 = max_of(o.region.j0, int32_t{0}), j1 = min_of(o.region.j1, g.ny);
+  for (int32_t j = j0; j < j1; ++j) {
+    for (int32_t i = i0; i < i1; ++i) {
       const size_t k = g.index(i, j);
       const int64_t w = (g.top[k] == 0 && g.bottom[k] == 0) ? 0 : static_cast<int64_t>(g.top[k]);
       const int32_t dt = d.top_lsb[k];

@@ -31,6 +31,10 @@ struct ToleranceBox {
 };
 
 struct AssessOptions {
+  // The columns assessed (clipped to the grid): a run passes its stock's,
+  // leaving out the ring of holes around it (paper §2.2.1), which is no
+  // material and no cut.
+  GridRect region{0, 0, INT32_MAX, INT32_MAX};
   int64_t tol_nm = 50000;               // |d| <= tol is "within tolerance" (0.05 mm)
   const ToleranceBox* boxes = nullptr;  // per-region overrides
   size_t nboxes = 0;

@@ -1,0 +1,77 @@
+// `dexmill run --design`; see run_assess.h.
+#include "tools/run_assess.h"
+
+#include <cstdio>
+#include <string>
+
+#include "core/assess/assess.h"
+#include "platform/pgm.h"
+#include "platform/stl_read.h"
+#include "tools/cli.h"
+
+namespace dexmill {
+namespace cli {
+
+int load_design(const RunOptions& o, const GridPlan& plan, RunDesign* d) {
+  const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
+  d->tops.assign(cells, kNoDesign);
+  if (!ok(design_init(&d->grid, plan.geo, d->tops.data(), cells)))
+    return fail(kExitUsage, "the grid is wider than %.2f m: --design needs a smaller stock",
+                static_cast<double>(kDesignRangeNm) * 1e-9);
+  d->report.file = o.design;
+  d->report.kind = o.design_pgm ? "pgm" : "stl";
+  d->report.tolerance_nm = o.tolerance_nm;
+  d->report.tolerance_boxes = o.tolerance_boxes.size();
+  std::string err;
+  if (o.design_pgm) {
+    PgmImage img;
+    const PgmRead r = read_pgm(o.design, &img, &err);
+    if (r != PgmRead::kOk) {
+      std::fprintf(stderr, "%s\n", err.c_str());
+      return r == PgmRead::kIoError ? kExitIo : kExitInput;
+    }
+    // Stretched over the stock as given (not the grid's rounding up).
+    const HeightImage h{img.samples.data(), img.width, img.height, img.maxval};
+    const StockBox& s = plan.stock;
+    if (!ok(design_from_image(&d->grid, h, s.lo.x_nm, s.lo.y_nm, s.hi.x_nm, s.hi.y_nm, o.design_z_nm[0], o.design_z_nm[1])))
+      return fail(kExitUsage, "--design-z lies more than %.2f m from the stock's bottom",
+                  static_cast<double>(kDesignRangeNm) * 1e-9);
+  } else {
+    const PointNm off{o.design_offset_nm[0], o.design_offset_nm[1], o.design_offset_nm[2]};
+    StlReadInfo info;
+    const StlRead r = stl_read(o.design, off,
+                               [d](const PointNm* v, std::string* m) {
+                                 if (ok(design_add_triangle(&d->grid, TriangleNm{{v[0], v[1], v[2]}}))) return true;
+                                 *m = "vertex more than 1.07 m from the stock's corner (see --design-offset)";
+                                 return false;
+                               },
+                               &info, &err);
+    if (r != StlRead::kOk) {
+      std::fprintf(stderr, "%s\n", err.c_str());
+      return r == StlRead::kIoError ? kExitIo : kExitInput;
+    }
+    d->report.triangles = info.triangles;
+  }
+  if (design_columns(d->grid) == 0) {
+    std::fprintf(stderr, "%s: error: the design lies entirely outside the stock%s\n", o.design.c_str(),
+                 o.design_pgm ? "" : " (units are mm, machine coordinates; see --design-offset)");
+    return kExitInput;
+  }
+  return kExitOk;
+}
+
+void assess_design(const RunOptions& o, const GridPlan& plan, const DexelGrid<height_t>& g, RunDesign* d) {
+  AssessOptions opt;
+  opt.region = GridRect{1, 1, plan.stock_nx + 1, plan.stock_ny + 1};
+  opt.tol_nm = o.tolerance_nm;
+  opt.boxes = o.tolerance_boxes.data();
+  opt.nboxes = o.tolerance_boxes.size();
+  AssessResult& r = d->report.result;
+  (void)assess(g, d->grid, opt, &r);  // same geometry by construction
+  auto at = [&g](int32_t i, int32_t j) { return PointNm{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, 0}; };
+  if (r.max_gouge_lsb > 0) d->report.max_gouge_at = at(r.max_gouge_i, r.max_gouge_j);
+  if (r.max_leftover_lsb > 0) d->report.max_leftover_at = at(r.max_leftover_i, r.max_leftover_j);
+}
+
+}  // namespace cli
+}  // namespace dexmill
