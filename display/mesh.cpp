@@ -241,12 +241,30 @@ class CellDrawer {
     return r;
   }
 
+  // With a colour mode, the ramp of corner c's class.
+  void use_class_of(const Corner* c) {
+    if (colours_) p_.target->lut = colours_->luts + static_cast<size_t>(colours_->cls[c->k]) * kShadeLevels;
+  }
+
+  // A top triangle's class: its lowest corner's (the first of equals), so a
+  // slope takes the colour of the floor it drops to: a gouge's walls show
+  // red, a ridge left standing keeps its green on top and white flanks.
+  void use_class_of_top(const Corner* a, const Corner* b, const Corner* c) {
+    if (!colours_) return;
+    const Corner* lo = g_.top[b->k] < g_.top[a->k] ? b : a;
+    use_class_of(g_.top[c->k] < g_.top[lo->k] ? c : lo);
+  }
+
   void cell(Corner* q[4], const CellCase& cc) {
-    for (int t = 0; t < cc.ntop; ++t) tri(q[cc.top[t][0]]->top, q[cc.top[t][1]]->top, q[cc.top[t][2]]->top);
+    for (int t = 0; t < cc.ntop; ++t) {
+      use_class_of_top(q[cc.top[t][0]], q[cc.top[t][1]], q[cc.top[t][2]]);
+      tri(q[cc.top[t][0]]->top, q[cc.top[t][1]]->top, q[cc.top[t][2]]->top);
+    }
     if (cc.has_wall) {
       // Left (P) and right (Q) seen from the hole: P top, P bottom, Q bottom, Q top.
       Corner* P = q[cc.wall[0]];
       Corner* Q = q[cc.wall[1]];
+      use_class_of(P);
       const int32_t sp = p_.shades->wall[P->k], sq = p_.shades->wall[Q->k];
       const MeshVertex pt = shaded(P->top, sp), pb = shaded(bottom(P), sp);
       const MeshVertex qt = shaded(Q->top, sq), qb = shaded(bottom(Q), sq);
@@ -256,6 +274,7 @@ class CellDrawer {
     if (p_.bottoms) {
       const int32_t s = p_.bottom_shade;
       for (int t = 0; t < cc.ntop; ++t) {  // turned over: seen from below
+        use_class_of_top(q[cc.top[t][0]], q[cc.top[t][1]], q[cc.top[t][2]]);
         const MeshVertex a = shaded(bottom(q[cc.top[t][0]]), s);
         const MeshVertex b = shaded(bottom(q[cc.top[t][1]]), s);
         const MeshVertex c = shaded(bottom(q[cc.top[t][2]]), s);
@@ -268,6 +287,7 @@ class CellDrawer {
   const DexelGrid<H>& g_;
   const View& v_;
   const uint8_t* top_shade_;
+  const SurfaceColours* colours_ = p_.colours;
   // Orthographic guard band in q4: planes x + e0 >= 0, -x + e1 >= 0, ...
   // (clip_set_planes).
   const int32_t gx0_ = static_cast<int32_t>(-v_.proj.plane[0].e), gx1_ = static_cast<int32_t>(v_.proj.plane[1].e);

@@ -26,6 +26,7 @@
 #include "display/camera.h"
 #include "display/raster.h"
 #include "display/shade.h"
+#include "display/surface_colours.h"
 
 namespace dexmill {
 
@@ -49,6 +50,7 @@ struct MeshPass {
   int32_t bottom_shade = 0;  // faces pointing down
   bool bottoms = false;      // draw bottom faces
   RasterTarget* target = nullptr;
+  const SurfaceColours* colours = nullptr;  // per-dexel classes, or null: target's lut throughout
 };
 
 // Block size in cells: the unit of incremental redraw (display/redraw.h).

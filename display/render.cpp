@@ -74,6 +74,7 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
   pass.bottom_shade = r->bottom_shade;
   pass.bottoms = r->view.sees_below;
   pass.target = t;
+  pass.colours = r->colours;
   for (int32_t n = 0; n < r->bny; ++n) {
     const int32_t by = r->j_desc ? r->bny - 1 - n : n;
     for (int32_t m = 0; m < r->bnx; ++m) {
@@ -119,6 +120,8 @@ void prepare_view(Renderer<H>* r) {
   shade_ramp(r->fb.format, r->opt.workpiece, base, r->lut_work);
   shade_ramp(r->fb.format, r->opt.cutter, base, r->lut_cutter);
   shade_ramp(r->fb.format, r->opt.table_colour, base, r->lut_table);
+  if (const SurfaceColours* c = r->colours)
+    for (int32_t k = 0; k < c->nclasses; ++k) shade_ramp(r->fb.format, c->colour[k], base, c->luts + static_cast<size_t>(k) * kShadeLevels);
   r->bottom_shade = shade_of_normal(r->light, UnitQ14{0, 0, -16384});
   cutter_light(r->tool, r->light, &r->cutter);
   r->i_desc = v.eye_q30[0] > 0;  // nearer cells first: fewer pixels shaded twice
@@ -235,11 +238,26 @@ void renderer_set_tool(Renderer<H>* r, const ToolProfile* p) {
 }
 
 template <class H>
+void renderer_set_colours(Renderer<H>* r, const SurfaceColours* c) {
+  r->colours = c && c->cls && c->luts && c->nclasses > 0 && c->nclasses <= kMaxColourClasses ? c : nullptr;
+  r->need_full = true;
+}
+
+namespace {
+// A colour mode's classes over r, before r is drawn.
+template <class H>
+void classify(const Renderer<H>* r, GridRect g) {
+  if (r->colours && r->colours->classify) r->colours->classify(r->colours->ctx, g, r->colours->cls);
+}
+}  // namespace
+
+template <class H>
 RenderResult render_full(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutter) {
   RenderResult res;
   if (g->nx != r->nx || g->ny != r->ny) return res;
   prepare_view(r);
   shade_grid(*g, r->light, g->bounds(), &r->shades);
+  classify(r, g->bounds());
   for (int32_t by = 0; by < r->bny; ++by)
     for (int32_t bx = 0; bx < r->bnx; ++bx) block_update(r, *g, bx, by);
   place_cutter(r, cutter);
@@ -271,6 +289,7 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
     const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
                      min_of<int32_t>(d.j1 + 2, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
+    classify(r, d);  // a class depends on its own dexel's top alone
     const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
                          min_of<int32_t>(s.j1, g->ny - 1)};
     const int32_t bx0 = cells.i0 / kBlockCells, bx1 = (cells.i1 - 1) / kBlockCells;
@@ -315,6 +334,7 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   template Camera renderer_fit<H>(const Renderer<H>&, ViewPreset);                                          \
   template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
+  template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
   template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
 DEXMILL_RENDER_INSTANTIATE(uint8_t)

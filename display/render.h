@@ -46,6 +46,7 @@
 #include "display/raster.h"
 #include "display/redraw.h"
 #include "display/shade.h"
+#include "display/surface_colours.h"
 
 namespace dexmill {
 
@@ -105,6 +106,7 @@ struct Renderer {
   bool i_desc = false, j_desc = false;
   int32_t bottom_shade = 0;
   RasterTarget target;
+  const SurfaceColours* colours = nullptr;
 };
 
 // Scratch bytes for a grid's size, a frame size and a z format.
@@ -134,6 +136,11 @@ void renderer_set_camera(Renderer<H>* r, const Camera& c);
 template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p);
 
+// A colour mode (null: off, the workpiece colour throughout). Its ramps are
+// built with the next frame, which is drawn whole.
+template <class H>
+void renderer_set_colours(Renderer<H>* r, const SurfaceColours* c);
+
 // Draws everything. Clears the grid's dirty rectangle.
 template <class H>
 RenderResult render_full(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutter);
@@ -149,6 +156,7 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   extern template Camera renderer_fit<H>(const Renderer<H>&, ViewPreset);                                          \
   extern template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   extern template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
+  extern template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
   extern template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
 DEXMILL_RENDER_EXTERN(uint8_t)

@@ -122,3 +122,40 @@ TEST(assess_a_perfect_cut_has_no_error_and_rejects_another_grid) {
   s.d.geo.pitch_nm += 1;
   CHECK_EQ(assess(s.g, s.d, o, &res), Status::kBadArgument);
 }
+
+TEST(assess_bands_follow_the_transfer_function) {
+  // The band limits: within +-tol white, then beyond 1, 4 and 16 tolerances.
+  CHECK_EQ(error_band(0, 10), kBandWithin);
+  CHECK_EQ(error_band(10, 10), kBandWithin);
+  CHECK_EQ(error_band(-10, 10), kBandWithin);
+  CHECK_EQ(error_band(11, 10), kBandLeft1);
+  CHECK_EQ(error_band(40, 10), kBandLeft1);
+  CHECK_EQ(error_band(41, 10), kBandLeft2);
+  CHECK_EQ(error_band(160, 10), kBandLeft2);
+  CHECK_EQ(error_band(161, 10), kBandLeft3);
+  CHECK_EQ(error_band(-11, 10), kBandGouge1);
+  CHECK_EQ(error_band(-41, 10), kBandGouge2);
+  CHECK_EQ(error_band(-161, 10), kBandGouge3);
+  CHECK_EQ(error_band(1, 0), kBandLeft3);  // a zero tolerance: any error is the darkest band
+  // Over random grids, the bands agree with assess()'s counts.
+  t::Rng r(19);
+  for (int run = 0; run < 20; ++run) {
+    Scene s;
+    make_scene(r, &s);
+    AssessOptions o;
+    o.tol_nm = r.range(0, 300000);
+    std::vector<uint8_t> band(s.top.size(), 99);
+    assess_bands(s.g, s.d, o, s.g.bounds(), band.data());
+    AssessResult res;
+    CHECK_EQ(assess(s.g, s.d, o, &res), Status::kOk);
+    uint64_t count[kErrorBands] = {};
+    for (uint8_t b : band) {
+      CHECK(b < kErrorBands);
+      if (b < kErrorBands) ++count[b];
+    }
+    CHECK_EQ(count[kBandWithin], res.within_tol_columns);
+    CHECK_EQ(count[kBandGouge1] + count[kBandGouge2] + count[kBandGouge3], res.gouge_columns);
+    CHECK_EQ(count[kBandLeft1] + count[kBandLeft2] + count[kBandLeft3], res.leftover_columns);
+    CHECK_EQ(count[kBandNone], static_cast<uint64_t>(band.size()) - res.design_columns);
+  }
+}

@@ -36,6 +36,35 @@ struct IncCase {
   Projection projection;
   int32_t az_mdeg, el_mdeg;
   int tool;  // drawn tool: 0 ball, 1 flat, 2 bull, 3 vbit
+  bool colours = false;  // a colour mode: classes from the tops' heights
+};
+
+// A colour mode for the test: eight classes by height (1 mm bands), so a cut
+// changes classes, and the incremental classification must keep up.
+template <class H>
+struct HeightClasses {
+  const DexelGrid<H>* g = nullptr;
+  std::vector<uint8_t> cls;
+  std::vector<uint32_t> luts;
+  SurfaceColours sc;
+  void init(const DexelGrid<H>& grid) {
+    g = &grid;
+    cls.assign(size_t(grid.nx) * grid.ny, 0);
+    luts.assign(size_t(8) * kShadeLevels, 0);
+    sc.cls = cls.data();
+    sc.luts = luts.data();
+    sc.nclasses = 8;
+    for (int k = 0; k < 8; ++k) sc.colour[k] = Rgb{uint8_t(30 * k), uint8_t(200 - 20 * k), uint8_t(90 + 15 * k)};
+    sc.ctx = this;
+    sc.classify = [](void* ctx, GridRect r, uint8_t* c) {
+      const HeightClasses* h = static_cast<const HeightClasses*>(ctx);
+      for (int32_t j = max_of(r.j0, 0); j < min_of(r.j1, h->g->ny); ++j)
+        for (int32_t i = max_of(r.i0, 0); i < min_of(r.i1, h->g->nx); ++i) {
+          const size_t k = h->g->index(i, j);
+          c[k] = uint8_t((int64_t(h->g->top[k]) * h->g->lsb_nm / 1000000) % 8);
+        }
+    };
+  }
 };
 
 template <class H>
@@ -62,6 +91,15 @@ void incremental_run(const IncCase& ic, uint64_t seed, int steps) {
   for (Renderer<H>* r : {&ra, &rb}) {
     renderer_set_camera(r, cam);
     renderer_set_tool(r, &tools[ic.tool].profile);
+  }
+  // Each renderer its own classes: the full redraw's must not hide the
+  // incremental one's.
+  HeightClasses<H> ca, cb;
+  if (ic.colours) {
+    ca.init(tg.g);
+    cb.init(tg.g);
+    renderer_set_colours(&ra, &ca.sc);
+    renderer_set_colours(&rb, &cb.sc);
   }
   Rng rng(seed);
   CutterPose pose{true, PointNm{10 * mm, 10 * mm, 30 * mm}};
@@ -125,6 +163,8 @@ TEST(incremental_equals_full_redraw) {
       {"persp", PixelFormat::kXrgb8888, ZFormat::kZ16, Projection::kPerspective, 30000, 40000, 2},
       {"below", PixelFormat::kRgb565, ZFormat::kZ32, Projection::kOrthographic, 120000, -30000, 3},
       {"low", PixelFormat::kXrgb8888, ZFormat::kZ32, Projection::kPerspective, 200000, 8000, 0},
+      {"iso-colours", PixelFormat::kXrgb8888, ZFormat::kZ32, Projection::kOrthographic, -45000, 35264, 0, true},
+      {"persp-colours", PixelFormat::kRgb565, ZFormat::kZ16, Projection::kPerspective, 30000, 40000, 2, true},
   };
   uint64_t seed = 11;
   for (const IncCase& ic : cases) incremental_run<uint16_t>(ic, seed++, 100);

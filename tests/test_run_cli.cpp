@@ -327,6 +327,8 @@ TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
   const std::string d = tmp_dir() + "/";
   write_file(d + "pd.stl", ascii_stl(pocket_design()));
   write_file(d + "pdb.stl", binary_stl(pocket_design()));
+  // tests/run/pocket_design.stl, the README's example, is this mesh.
+  CHECK(slurp(std::string(t::tests_dir()) + "/run/pocket_design.stl") == ascii_stl(pocket_design()));
   Result r = run("pocket.ngc -q --design %/pd.stl --report %/pd.json");
   CHECK_EQ(r.code, 0);
   CHECK(r.err.empty());
@@ -352,6 +354,23 @@ TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
   CHECK_EQ(r.code, 0);
   CHECK(has(assessment_of(slurp(d + "pdt.json")), "\"tolerance_boxes\": 1"));
   CHECK(assessment_of(slurp(d + "pdt.json")).find("\"x_mm\": 2.0870, \"y_mm\": 2.0870") == std::string::npos);
+}
+
+TEST(run_color_error_frames_and_image) {
+  if (skip()) return;
+  const std::string d = tmp_dir() + "/";
+  write_file(d + "pde.stl", ascii_stl(pocket_design()));
+  const Result r = run("pocket.ngc -q --size 160x120 --design %/pde.stl --color error --image %/e.ppm --frames %/ef --every 4");
+  CHECK_EQ(r.code, 0);
+  // The error view drawn frame by frame (incremental bands) ends as the
+  // final image; pinned (paper figure 10's view: a red G81 hole, green
+  // corners and island, white elsewhere, and the legend).
+  CHECK_EQ(file_hash(d + "ef/frame-000007.ppm"), file_hash(d + "e.ppm"));
+  check_hash(d + "e.ppm", 0xc3b87e9568e95a16ULL);
+  CHECK(file_hash(d + "e.ppm") != file_hash(d + "ef/frame-000001.ppm"));
+  const Result u = run("pocket.ngc -q --color error");
+  CHECK_EQ(u.code, 2);
+  CHECK(has(u.err, "--color error needs --design"));
 }
 
 TEST(run_design_from_a_height_image) {

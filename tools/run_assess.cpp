@@ -18,6 +18,11 @@ int load_design(const RunOptions& o, const GridPlan& plan, RunDesign* d) {
   if (!ok(design_init(&d->grid, plan.geo, d->tops.data(), cells)))
     return fail(kExitUsage, "the grid is wider than %.2f m: --design needs a smaller stock",
                 static_cast<double>(kDesignRangeNm) * 1e-9);
+  // Only the stock's columns count (not the grid's ring of holes).
+  d->opt.region = GridRect{1, 1, plan.stock_nx + 1, plan.stock_ny + 1};
+  d->opt.tol_nm = o.tolerance_nm;
+  d->opt.boxes = o.tolerance_boxes.data();
+  d->opt.nboxes = o.tolerance_boxes.size();
   d->report.file = o.design;
   d->report.kind = o.design_pgm ? "pgm" : "stl";
   d->report.tolerance_nm = o.tolerance_nm;
@@ -60,17 +65,51 @@ int load_design(const RunOptions& o, const GridPlan& plan, RunDesign* d) {
   return kExitOk;
 }
 
-void assess_design(const RunOptions& o, const GridPlan& plan, const DexelGrid<height_t>& g, RunDesign* d) {
-  AssessOptions opt;
-  opt.region = GridRect{1, 1, plan.stock_nx + 1, plan.stock_ny + 1};
-  opt.tol_nm = o.tolerance_nm;
-  opt.boxes = o.tolerance_boxes.data();
-  opt.nboxes = o.tolerance_boxes.size();
+void assess_design(const DexelGrid<height_t>& g, RunDesign* d) {
   AssessResult& r = d->report.result;
-  (void)assess(g, d->grid, opt, &r);  // same geometry by construction
+  (void)assess(g, d->grid, d->opt, &r);  // same geometry by construction
   auto at = [&g](int32_t i, int32_t j) { return PointNm{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, 0}; };
   if (r.max_gouge_lsb > 0) d->report.max_gouge_at = at(r.max_gouge_i, r.max_gouge_j);
   if (r.max_leftover_lsb > 0) d->report.max_leftover_at = at(r.max_leftover_i, r.max_leftover_j);
+}
+
+namespace {
+
+// The bands' colours, by ErrorBand: the workpiece's grey where there is no
+// design, greens for material left, white within tolerance, reds for gouges,
+// light to dark.
+const Rgb kBandColour[kErrorBands] = {{196, 204, 214}, {160, 222, 160}, {70, 180, 80},  {20, 110, 40},
+                                      {248, 248, 248}, {250, 160, 150}, {228, 72, 60},  {140, 20, 20}};
+
+void classify_bands(void* ctx, GridRect r, uint8_t* cls) {
+  const RunDesign* d = static_cast<const RunDesign*>(ctx);
+  assess_bands(*d->cut, d->grid, d->opt, r, cls);
+}
+
+std::string signed_mm(int64_t nm) { return (nm > 0 ? "+" : "") + nm_to_mm_text(nm, 2); }
+
+}  // namespace
+
+void error_view_init(const DexelGrid<height_t>& g, RunDesign* d) {
+  d->cut = &g;
+  d->bands.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), kBandNone);
+  d->luts.assign(static_cast<size_t>(kErrorBands) * kShadeLevels, 0);
+  d->colours.cls = d->bands.data();
+  d->colours.luts = d->luts.data();
+  d->colours.nclasses = kErrorBands;
+  for (int k = 0; k < kErrorBands; ++k) d->colours.colour[k] = kBandColour[k];
+  d->colours.classify = classify_bands;
+  d->colours.ctx = d;
+  // Gouges on the left, dark to light, white, then material left; the
+  // limits are the general tolerance's (boxes have their own).
+  const uint8_t order[7] = {kBandGouge3, kBandGouge2, kBandGouge1, kBandWithin, kBandLeft1, kBandLeft2, kBandLeft3};
+  RenderOutput::Legend& l = d->legend;
+  l.n = 7;
+  for (int k = 0; k < 7; ++k) l.colour[k] = kBandColour[order[k]];
+  const int64_t t = d->opt.tol_nm;
+  const int64_t limits[6] = {-kBandStep3 * t, -kBandStep2 * t, -t, t, kBandStep2 * t, kBandStep3 * t};
+  for (int k = 0; k < 6; ++k) l.labels[k] = signed_mm(limits[k]);
+  l.title = "MM";
 }
 
 }  // namespace cli

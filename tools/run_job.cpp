@@ -485,6 +485,13 @@ int run_job(RunOptions o) {
     image_src = image_out.get();
   }
   for (RenderOutput* out : w.outputs) out->set_tool(o.tool);
+  if (o.color == RunOptions::Color::kError) {
+    error_view_init(grid, &design);
+    for (RenderOutput* out : w.outputs) {
+      out->set_colours(&design.colours);
+      out->set_legend(&design.legend);
+    }
+  }
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 
@@ -528,7 +535,7 @@ int run_job(RunOptions o) {
   rep.removed_lsb_dexels = material_before - grid_material_lsb(grid);
   if (!o.design.empty()) {
     const double t0 = clock_now_s();
-    assess_design(o, plan, grid, &design);
+    assess_design(grid, &design);
     rep.have_assessment = true;
     rep.assessment = design.report;
     rep.timing.emplace_back("assess", clock_now_s() - t0);

@@ -97,6 +97,8 @@ void run_usage(std::FILE* f) {
                "  --design-z ZLOW,ZHIGH      a PGM design's black and white, mm (it spans the stock's XY)\n"
                "  --tolerance MM             |cut - design| within it is not an error (default 0.05)\n"
                "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
+               "  --color plain|error        what colours the surface: one colour, or cut - design in\n"
+               "                             bands (white within tolerance, greens left, reds gouged)\n"
                "  -q                         no progress bar\n\n"
                "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, r resets\n"
                "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O.\n");
@@ -129,7 +131,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--image", "--frames", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -217,6 +219,10 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!parse_mm_list(v, 5, b) || b[0] > b[2] || b[1] > b[3] || b[4] < 0 || b[4] > 100 * kNmPerMm)
         return fail(kExitUsage, "--tolerance-box needs X0,Y0,X1,Y1,TOL in mm with X0 <= X1, Y0 <= Y1, 0 <= TOL <= 100, not '%s'", v);
       o->tolerance_boxes.push_back(ToleranceBox{b[0], b[1], b[2], b[3], b[4]});
+    } else if (name == "--color") {
+      if (!std::strcmp(v, "plain")) o->color = RunOptions::Color::kPlain;
+      else if (!std::strcmp(v, "error")) o->color = RunOptions::Color::kError;
+      else return fail(kExitUsage, "--color must be plain or error, not '%s'", v);
     } else if (name == "--speed") {
       if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
         return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
@@ -229,6 +235,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   if (o->window && !o->fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
   if (o->design.empty() && (o->have_design_z || !o->tolerance_boxes.empty()))
     return fail(kExitUsage, "%s needs --design", o->have_design_z ? "--design-z" : "--tolerance-box");
+  if (o->color == RunOptions::Color::kError && o->design.empty())
+    return fail(kExitUsage, "--color error needs --design (the part to compare the cut with)");
   if (o->design_pgm && !o->have_design_z)
     return fail(kExitUsage, "a PGM design needs --design-z ZLOW,ZHIGH (the heights of black and white)");
   if (!o->design.empty() && !o->design_pgm && o->have_design_z)

@@ -51,6 +51,7 @@ struct RunOptions {
   int64_t design_offset_nm[3] = {};  // --design-offset X,Y,Z (STL)
   int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
   std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
+  enum class Color : uint8_t { kPlain, kError } color = Color::kPlain;  // --color
 };
 
 // Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the

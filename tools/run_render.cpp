@@ -32,7 +32,13 @@ bool RenderOutput::resize(const DexelGrid<height_t>& g, const FrameView& fb, std
     renderer_set_camera(r_.get(), c);
   }
   if (have_tool_) renderer_set_tool(r_.get(), &profile_);
+  renderer_set_colours(r_.get(), colours_);
   return true;
+}
+
+void RenderOutput::set_colours(const SurfaceColours* c) {
+  colours_ = c;
+  renderer_set_colours(r_.get(), c);
 }
 
 void RenderOutput::set_tool(const Tool& t) {
@@ -47,6 +53,14 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
   pending_ = GridRect::none();
   RenderResult res = render_update(r_.get(), g, pose);
   g->dirty = saved;
+  if (legend_) {
+    const char* labels[kLegendMaxSwatches - 1];
+    for (int32_t k = 0; k + 1 < legend_->n; ++k) labels[k] = legend_->labels[k].c_str();
+    legend_draw(fb_, legend_->colour, legend_->n, labels, legend_->title.c_str());
+    const ScreenRect l = legend_rect(fb_);
+    if (res.nrects < kMaxDirtyRects) res.rects[res.nrects++] = l;
+    else res.rects[res.nrects - 1] = rect_union(res.rects[res.nrects - 1], l);
+  }
   return res;
 }
 

@@ -14,6 +14,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/legend.h"
 #include "display/render.h"
 
 namespace dexmill {
@@ -38,6 +39,16 @@ class RenderOutput {
   // A new frame size (a window resized), keeping the camera and tool.
   bool resize(const DexelGrid<height_t>& g, const FrameView& fb, std::string* err);
   void set_tool(const Tool& t);
+  // A colour mode (null: the workpiece colour), kept across resizes.
+  void set_colours(const SurfaceColours* c);
+  // A legend drawn over every frame (null: none).
+  struct Legend {
+    Rgb colour[kLegendMaxSwatches];
+    int32_t n = 0;
+    std::string labels[kLegendMaxSwatches - 1];
+    std::string title;
+  };
+  void set_legend(const Legend* l) { legend_ = l; }
 
   // Grid changes since the last call of take_dirty (every output gets them).
   void note_dirty(const GridRect& r) { pending_.include(r); }
@@ -58,6 +69,8 @@ class RenderOutput {
   bool have_tool_ = false;
   ToolProfile profile_{};
   GridRect pending_ = GridRect::none();
+  const SurfaceColours* colours_ = nullptr;
+  const Legend* legend_ = nullptr;
 };
 
 // Moves the grid's dirty rectangle into every output (then clears it).

@@ -18,6 +18,32 @@ int64_t assess_tolerance_nm(const AssessOptions& o, const GridGeometry& geo, int
   return tol;
 }
 
+ErrorBand error_band(int64_t d_lsb, int64_t tol_lsb) {
+  if (d_lsb > tol_lsb) return d_lsb > kBandStep3 * tol_lsb ? kBandLeft3 : d_lsb > kBandStep2 * tol_lsb ? kBandLeft2 : kBandLeft1;
+  if (d_lsb < -tol_lsb) return -d_lsb > kBandStep3 * tol_lsb ? kBandGouge3 : -d_lsb > kBandStep2 * tol_lsb ? kBandGouge2 : kBandGouge1;
+  return kBandWithin;
+}
+
+template <class H>
+void assess_bands(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, GridRect r, uint8_t* band) {
+  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+  const int64_t tol_all = o.tol_nm / g.lsb_nm;
+  const int32_t i0 = max_of(r.i0, int32_t{0}), i1 = min_of(r.i1, g.nx);
+  const int32_t j0 = max_of(r.j0, int32_t{0}), j1 = min_of(r.j1, g.ny);
+  for (int32_t j = j0; j < j1; ++j)
+    for (int32_t i = i0; i < i1; ++i) {
+      const size_t k = g.index(i, j);
+      const int32_t dt = d.top_lsb[k];
+      if (dt == kNoDesign) {
+        band[k] = kBandNone;
+        continue;
+      }
+      const int64_t w = (g.top[k] == 0 && g.bottom[k] == 0) ? 0 : static_cast<int64_t>(g.top[k]);
+      const int64_t tol = o.nboxes ? assess_tolerance_nm(o, geo, i, j) / g.lsb_nm : tol_all;
+      band[k] = error_band(w - dt, tol);
+    }
+}
+
 namespace {
 
 bool same_geometry(const GridGeometry& a, const GridGeometry& b) {
@@ -86,6 +112,9 @@ Status assess(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o
   return Status::kOk;
 }
 
+template void assess_bands<uint8_t>(const DexelGrid<uint8_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
+template void assess_bands<uint16_t>(const DexelGrid<uint16_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
+template void assess_bands<uint32_t>(const DexelGrid<uint32_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
 template Status assess<uint8_t>(const DexelGrid<uint8_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);
 template Status assess<uint16_t>(const DexelGrid<uint16_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);
 template Status assess<uint32_t>(const DexelGrid<uint32_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);

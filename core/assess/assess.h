@@ -62,6 +62,29 @@ struct AssessResult {
   uint64_t histogram[kAssessBins] = {};
 };
 
+// Paper §2.5.1's second view: d through a transfer function to a colour
+// class per column (figure 10). White within the tolerance, then three bands
+// each way: beyond tol, beyond 4 tol, beyond 16 tol (light to dark), green
+// for material left, red for a gouge. Columns with no design, and holes where
+// the design has none, are kBandNone.
+enum ErrorBand : uint8_t {
+  kBandNone = 0,
+  kBandLeft1 = 1, kBandLeft2 = 2, kBandLeft3 = 3,  // d > tol, > 4 tol, > 16 tol
+  kBandWithin = 4,                                   // |d| <= tol
+  kBandGouge1 = 5, kBandGouge2 = 6, kBandGouge3 = 7,  // d < -tol, < -4 tol, < -16 tol
+};
+constexpr int kErrorBands = 8;
+// The band limits in multiples of the tolerance.
+constexpr int64_t kBandStep2 = 4, kBandStep3 = 16;
+
+// The band of a difference d against a tolerance, both LSB.
+ErrorBand error_band(int64_t d_lsb, int64_t tol_lsb);
+
+// The bands of the columns in r (clipped to the grid) into band[] (nx*ny,
+// row-major like the grid).
+template <class H>
+void assess_bands(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, GridRect r, uint8_t* band);
+
 // The tolerance of column (i, j), nm.
 int64_t assess_tolerance_nm(const AssessOptions& o, const GridGeometry& geo, int32_t i, int32_t j);
 
@@ -69,6 +92,9 @@ int64_t assess_tolerance_nm(const AssessOptions& o, const GridGeometry& geo, int
 template <class H>
 Status assess(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, AssessResult* r);
 
+extern template void assess_bands<uint8_t>(const DexelGrid<uint8_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
+extern template void assess_bands<uint16_t>(const DexelGrid<uint16_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
+extern template void assess_bands<uint32_t>(const DexelGrid<uint32_t>&, const DesignGrid&, const AssessOptions&, GridRect, uint8_t*);
 extern template Status assess<uint8_t>(const DexelGrid<uint8_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);
 extern template Status assess<uint16_t>(const DexelGrid<uint16_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);
 extern template Status assess<uint32_t>(const DexelGrid<uint32_t>&, const DesignGrid&, const AssessOptions&, AssessResult*);

@@ -3,9 +3,14 @@
 // 120x90 in both pixel formats and both z formats, in the iso and top views,
 // plus one incremental update after a further cut; one frame hash a line
 // (display's frame_hash: pixel values as little-endian bytes, any stride).
+// The same scene against a design part (a plane 6 mm below the top with a
+// pyramid on it) in the error view (paper §2.5, figure 10), with the
+// assessment's figures: E, sum of design tops, the band counts.
 #include <stdint.h>
 
+#include "core/assess/assess.h"
 #include "core/cut/sweep.h"
+#include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "display/render.h"
@@ -27,7 +32,54 @@ Tool ball6() {
   return t;
 }
 
-void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view) {
+// The error view's state: the design, the bands and their ramps.
+struct ErrorView {
+  const DexelGrid<uint16_t>* g;
+  DesignGrid design;
+  AssessOptions opt;
+  SurfaceColours colours;
+};
+
+void classify_bands(void* ctx, GridRect r, uint8_t* cls) {
+  const ErrorView* e = static_cast<const ErrorView*>(ctx);
+  assess_bands(*e->g, e->design, e->opt, r, cls);
+}
+
+// Sets up the design and the error colours for grid g; false when the arena is short.
+bool error_view(Arena& a, const DexelGrid<uint16_t>& g, ErrorView* e, Out& out) {
+  const size_t cells = static_cast<size_t>(g.nx) * g.ny;
+  int32_t* tops = a.take<int32_t>(cells);
+  e->colours.cls = a.take<uint8_t>(cells);
+  e->colours.luts = a.take<uint32_t>(static_cast<size_t>(kErrorBands) * kShadeLevels);
+  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+  if (!tops || !e->colours.cls || !e->colours.luts || !ok(design_init(&e->design, geo, tops, cells))) return false;
+  e->g = &g;
+  const int64_t mm = kNmPerMm, z = 14 * mm;
+  const PointNm c0{0, 0, z}, c1{24 * mm, 0, z}, c2{24 * mm, 20 * mm, z}, c3{0, 20 * mm, z}, apex{16 * mm, 12 * mm, 19 * mm};
+  const TriangleNm tris[6] = {{{c0, c1, c2}}, {{c0, c2, c3}},
+                              {{PointNm{12 * mm, 8 * mm, z}, PointNm{20 * mm, 8 * mm, z}, apex}},
+                              {{PointNm{20 * mm, 8 * mm, z}, PointNm{20 * mm, 16 * mm, z}, apex}},
+                              {{PointNm{20 * mm, 16 * mm, z}, PointNm{12 * mm, 16 * mm, z}, apex}},
+                              {{PointNm{12 * mm, 16 * mm, z}, PointNm{12 * mm, 8 * mm, z}, apex}}};
+  for (const TriangleNm& t : tris) (void)design_add_triangle(&e->design, t);
+  e->opt.region = GridRect{1, 1, g.nx - 1, g.ny - 1};
+  e->opt.tol_nm = 100000;
+  e->colours.nclasses = kErrorBands;
+  const Rgb band[kErrorBands] = {{196, 204, 214}, {160, 222, 160}, {70, 180, 80},  {20, 110, 40},
+                                 {248, 248, 248}, {250, 160, 150}, {228, 72, 60},  {140, 20, 20}};
+  for (int k = 0; k < kErrorBands; ++k) e->colours.colour[k] = band[k];
+  e->colours.classify = classify_bands;
+  e->colours.ctx = e;
+  AssessResult res;
+  if (!ok(assess(g, e->design, e->opt, &res))) return false;
+  out.str("assess").kx("E_lsb2_lo", res.e_lsb2.lo).kx("E_lsb2_hi", res.e_lsb2.hi).kv("sum_top", static_cast<int64_t>(res.sum_design_top_lsb));
+  out.kv("within", static_cast<int64_t>(res.within_tol_columns)).kv("gouge", static_cast<int64_t>(res.gouge_columns));
+  out.kv("max_gouge", res.max_gouge_lsb).kv("left", static_cast<int64_t>(res.leftover_columns));
+  out.kv("max_left", res.max_leftover_lsb).end();
+  return true;
+}
+
+void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false) {
   Arena& a = arena();
   a.reset();
   const size_t cells = static_cast<size_t>(kNx) * kNy;
@@ -63,8 +115,18 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view) {
   }
   renderer_set_tool(&r, &prof);
   renderer_set_camera(&r, renderer_fit(r, view));
+  static ErrorView ev;
+  renderer_set_colours(&r, nullptr);
+  if (with_error_view) {
+    if (!error_view(a, g, &ev, out)) {
+      fail(out, "frame: error view");
+      return;
+    }
+    renderer_set_colours(&r, &ev.colours);
+  }
   render_full(&r, &g, CutterPose{true, PointNm{18 * mm, 14 * mm, 12 * mm}});
-  out.str("frame").kv("view", static_cast<int64_t>(view)).str(pf == PixelFormat::kRgb565 ? " rgb565" : " xrgb8888");
+  out.str(with_error_view ? "frame-error" : "frame").kv("view", static_cast<int64_t>(view));
+  out.str(pf == PixelFormat::kRgb565 ? " rgb565" : " xrgb8888");
   out.str(zf == ZFormat::kZ16 ? " z16" : " z32").kx("full", frame_hash(fb));
   sweep_line(&g, st_tool, PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, &st, false);
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
@@ -78,6 +140,8 @@ void golden_frame(Out& out) {
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso);
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kTop);
   one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, true);
+  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, true);
 }
 
 }  // namespace golden
