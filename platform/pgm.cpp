@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "platform/atomic_file.h"
+#include "platform/read_file.h"
 
 namespace dexmill {
 
@@ -61,21 +62,11 @@ class PgmHeader {
 }  // namespace
 
 PgmRead read_pgm(const std::string& path, PgmImage* img, std::string* err) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    *err = "dexmill: error: cannot read '" + path + "': " + std::strerror(errno);
-    return PgmRead::kIoError;
-  }
   std::vector<unsigned char> b;
-  unsigned char chunk[65536];
-  size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0 && b.size() < (static_cast<size_t>(1) << 30))
-    b.insert(b.end(), chunk, chunk + n);
-  const bool bad = std::ferror(f);
-  std::fclose(f);
-  if (bad) {
-    *err = "dexmill: error: cannot read '" + path + "'";
-    return PgmRead::kIoError;
+  switch (read_whole_file(path, static_cast<size_t>(1) << 30, &b, err)) {
+    case ReadFile::kOk: break;
+    case ReadFile::kTooLarge: return PgmRead::kInputError;
+    case ReadFile::kIoError: return PgmRead::kIoError;
   }
   auto input_error = [&](const std::string& what) {
     *err = path + ": error: " + what;

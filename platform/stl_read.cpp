@@ -11,6 +11,8 @@
 #include <cstring>
 #include <vector>
 
+#include "platform/read_file.h"
+
 namespace dexmill {
 
 namespace {
@@ -155,28 +157,12 @@ StlRead stl_read(const std::string& path, const PointNm& offset,
                  const std::function<bool(const PointNm*, std::string*)>& on_triangle, StlReadInfo* info,
                  std::string* err) {
   *info = StlReadInfo{};
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    *err = "dexmill: error: cannot read '" + path + "': " + std::strerror(errno);
-    return StlRead::kIoError;
-  }
-  // Design meshes are read whole (a few hundred MB at most); 2 GB is refused.
+  // Design meshes are read whole (a few hundred MB at most).
   std::vector<unsigned char> b;
-  unsigned char chunk[65536];
-  size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) {
-    if (b.size() + n > (static_cast<size_t>(1) << 31)) {
-      std::fclose(f);
-      *err = path + ": error: larger than 2 GB";
-      return StlRead::kInputError;
-    }
-    b.insert(b.end(), chunk, chunk + n);
-  }
-  const bool bad = std::ferror(f);
-  std::fclose(f);
-  if (bad) {
-    *err = "dexmill: error: cannot read '" + path + "'";
-    return StlRead::kIoError;
+  switch (read_whole_file(path, static_cast<size_t>(1) << 31, &b, err)) {
+    case ReadFile::kOk: break;
+    case ReadFile::kTooLarge: return StlRead::kInputError;
+    case ReadFile::kIoError: return StlRead::kIoError;
   }
   StlRead r;
   if (b.size() >= 84 && b.size() == 84 + 50 * static_cast<uint64_t>(le32(&b[80]))) {

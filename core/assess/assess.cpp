@@ -18,33 +18,18 @@ int64_t assess_tolerance_nm(const AssessOptions& o, const GridGeometry& geo, int
   return tol;
 }
 
-ErrorBand error_band(int64_t d_lsb, int64_t tol_lsb) {
-  if (d_lsb > tol_lsb) return d_lsb > kBandStep3 * tol_lsb ? kBandLeft3 : d_lsb > kBandStep2 * tol_lsb ? kBandLeft2 : kBandLeft1;
-  if (d_lsb < -tol_lsb) return -d_lsb > kBandStep3 * tol_lsb ? kBandGouge3 : -d_lsb > kBandStep2 * tol_lsb ? kBandGouge2 : kBandGouge1;
-  return kBandWithin;
+namespace {
+
+// The tolerance of column (i, j) in LSB: |d| <= tol_nm <=> |d| <= floor(tol_nm
+// / lsb) for integer d. Without boxes every column has tol_all_lsb.
+int64_t column_tol_lsb(const AssessOptions& o, const GridGeometry& geo, int32_t i, int32_t j, int64_t tol_all_lsb) {
+  return o.nboxes ? assess_tolerance_nm(o, geo, i, j) / geo.lsb_nm : tol_all_lsb;
 }
 
 template <class H>
-void assess_bands(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, GridRect r, uint8_t* band) {
-  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
-  const int64_t tol_all = o.tol_nm / g.lsb_nm;
-  const int32_t i0 = max_of(r.i0, int32_t{0}), i1 = min_of(r.i1, g.nx);
-  const int32_t j0 = max_of(r.j0, int32_t{0}), j1 = min_of(r.j1, g.ny);
-  for (int32_t j = j0; j < j1; ++j)
-    for (int32_t i = i0; i < i1; ++i) {
-      const size_t k = g.index(i, j);
-      const int32_t dt = d.top_lsb[k];
-      if (dt == kNoDesign) {
-        band[k] = kBandNone;
-        continue;
-      }
-      const int64_t w = (g.top[k] == 0 && g.bottom[k] == 0) ? 0 : static_cast<int64_t>(g.top[k]);
-      const int64_t tol = o.nboxes ? assess_tolerance_nm(o, geo, i, j) / g.lsb_nm : tol_all;
-      band[k] = error_band(w - dt, tol);
-    }
+GridGeometry geometry_of(const DexelGrid<H>& g) {
+  return GridGeometry{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
 }
-
-namespace {
 
 bool same_geometry(const GridGeometry& a, const GridGeometry& b) {
   return a.nx == b.nx && a.ny == b.ny && a.x0_nm == b.x0_nm && a.y0_nm == b.y0_nm && a.pitch_nm == b.pitch_nm &&
@@ -59,20 +44,43 @@ int histogram_bin(int64_t d_nm) {
 
 }  // namespace
 
+ErrorBand error_band(int64_t d_lsb, int64_t tol_lsb) {
+  if (d_lsb > tol_lsb) return d_lsb > kBandStep3 * tol_lsb ? kBandLeft3 : d_lsb > kBandStep2 * tol_lsb ? kBandLeft2 : kBandLeft1;
+  if (d_lsb < -tol_lsb) return -d_lsb > kBandStep3 * tol_lsb ? kBandGouge3 : -d_lsb > kBandStep2 * tol_lsb ? kBandGouge2 : kBandGouge1;
+  return kBandWithin;
+}
+
+template <class H>
+void assess_bands(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, GridRect r, uint8_t* band) {
+  const GridGeometry geo = geometry_of(g);
+  const int64_t tol_all = o.tol_nm / g.lsb_nm;
+  const int32_t i0 = max_of(r.i0, int32_t{0}), i1 = min_of(r.i1, g.nx);
+  const int32_t j0 = max_of(r.j0, int32_t{0}), j1 = min_of(r.j1, g.ny);
+  for (int32_t j = j0; j < j1; ++j)
+    for (int32_t i = i0; i < i1; ++i) {
+      const size_t k = g.index(i, j);
+      const int32_t dt = d.top_lsb[k];
+      if (dt == kNoDesign) {
+        band[k] = kBandNone;
+        continue;
+      }
+      band[k] = error_band(static_cast<int64_t>(g.top[k]) - dt, column_tol_lsb(o, geo, i, j, tol_all));
+    }
+}
+
+
 template <class H>
 Status assess(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o, AssessResult* r) {
-  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+  const GridGeometry geo = geometry_of(g);
   if (!d.top_lsb || !same_geometry(geo, d.geo) || o.tol_nm < 0) return Status::kBadArgument;
   *r = AssessResult{};
-  const bool boxes = o.nboxes > 0;
-  // Without boxes every column has the same tolerance: one division.
   const int64_t tol_lsb_all = o.tol_nm / g.lsb_nm;
   const int32_t i0 = max_of(o.region.i0, int32_t{0}), i1 = min_of(o.region.i1, g.nx);
   const int32_t j0 = max_of(o.region.j0, int32_t{0}), j1 = min_of(o.region.j1, g.ny);
   for (int32_t j = j0; j < j1; ++j) {
     for (int32_t i = i0; i < i1; ++i) {
       const size_t k = g.index(i, j);
-      const int64_t w = (g.top[k] == 0 && g.bottom[k] == 0) ? 0 : static_cast<int64_t>(g.top[k]);
+      const int64_t w = g.top[k];  // a hole's top is 0: the grid's floor
       const int32_t dt = d.top_lsb[k];
       if (dt == kNoDesign) {
         if (w > 0) {
@@ -86,8 +94,7 @@ Status assess(const DexelGrid<H>& g, const DesignGrid& d, const AssessOptions& o
       const int64_t dl = w - dt;  // |dl| < 2^33
       r->e_lsb2 = u128_add(r->e_lsb2, sq_u128(dl));
       ++r->histogram[histogram_bin(dl * g.lsb_nm)];
-      // |d| * lsb <= tol  <=>  |d| <= floor(tol / lsb) (integers).
-      const int64_t tol_lsb = boxes ? assess_tolerance_nm(o, geo, i, j) / g.lsb_nm : tol_lsb_all;
+      const int64_t tol_lsb = column_tol_lsb(o, geo, i, j, tol_lsb_all);
       if (dl >= -tol_lsb && dl <= tol_lsb) {
         ++r->within_tol_columns;
       } else if (dl < 0) {
