@@ -99,7 +99,15 @@ std::string assessment_text(const RunReport& rep) {
   for (int k = 0; k < kAssessEdges; ++k) o += std::string(k ? ", " : "") + nm_to_mm_text(kAssessBinEdgesNm[k], 2);
   o += "], \"columns\": [";
   for (int k = 0; k < kAssessBins; ++k) o += std::string(k ? ", " : "") + u64(r.histogram[k]);
-  o += "]}},\n";
+  o += "]},\n    \"gouges\": [";
+  for (size_t k = 0; k < a.gouges.size(); ++k) {
+    const ReportGouge& g = a.gouges[k];
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"line\": " + u64(g.line) + ", \"x_mm\": " + nm_to_mm_text(g.at.x_nm, 4) +
+         ", \"y_mm\": " + nm_to_mm_text(g.at.y_nm, 4) + ", \"depth_mm\": " + nm_to_mm_text(g.depth_nm, 4) +
+         ", \"design_z_mm\": " + nm_to_mm_text(g.at.z_nm, 4) + ", \"cut_z_mm\": " + nm_to_mm_text(g.at.z_nm - g.depth_nm, 4) +
+         ", \"tool_mm\": " + point_mm(g.tool) + ", \"columns\": " + u64(g.columns) + "}";
+  }
+  o += std::string(a.gouges.empty() ? "" : "\n    ") + "], \"gouges_total\": " + u64(a.gouges_total) + "},\n";
   return o;
 }
 
@@ -142,6 +150,10 @@ std::string report_json_text(const RunReport& r) {
   o += "    \"moves\": {\"rapid\": " + u64(r.rapid) + ", \"feed\": " + u64(r.feed) + ", \"arc\": " + u64(r.arc) +
        ", \"dwell\": " + u64(r.dwell) + ", \"tool_change\": " + u64(r.tool_change) + "}},\n";
   o += "  \"status\": " + quoted(r.errors.empty() ? "ok" : "errors") + ",\n";
+  o += "  \"stopped\": " +
+       (r.stopped_reason.empty() ? std::string("null")
+                                 : "{\"reason\": " + quoted(r.stopped_reason) + ", \"line\": " + u64(r.stopped_line) + "}") +
+       ",\n";
   diags(&o, "errors", r.errors);
   diags(&o, "warnings", r.warnings);
   o += "  \"warnings_total\": " + u64(r.warnings_total) + ",\n";

@@ -8,6 +8,7 @@
 //   program         file, lines (read), units (default: mm|inch),
 //                   moves {rapid, feed, arc, dwell, tool_change}
 //   status          "ok" or "errors"
+//   stopped         null, or {reason "gouge", line} where --stop-at stopped the cut
 //   errors          [{line, column, message}]          input errors
 //   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept)
 //   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
@@ -31,7 +32,11 @@
 //                   beyond tolerance), within_tolerance_percent (of the
 //                   design's columns), outside_design ({area_mm2,
 //                   volume_mm3}: material where the design has none), and
-//                   histogram {edges_mm [14], columns [15]} of d
+//                   histogram {edges_mm [14], columns [15]} of d,
+//                   gouges [{line, x_mm, y_mm, depth_mm, design_z_mm,
+//                   cut_z_mm, tool_mm [x,y,z], columns}] (one per line that
+//                   first took a column below its tolerance; the first 64),
+//                   gouges_total
 //   timing          {STAGE_s: seconds, ...}
 #ifndef DEXMILL_PLATFORM_REPORT_JSON_H
 #define DEXMILL_PLATFORM_REPORT_JSON_H
@@ -57,6 +62,15 @@ struct ReportToolUse {
   std::string spec;
 };
 
+// A gouge charged to the line that made it.
+struct ReportGouge {
+  uint32_t line = 0;
+  PointNm at{0, 0, 0};     // the deepest column's x, y and its design z
+  int64_t depth_nm = 0;
+  PointNm tool{0, 0, 0};   // the tool tip at the end of that line's move
+  uint64_t columns = 0;    // columns it gouged first
+};
+
 // The assessment against a design part (report key `assessment`).
 struct ReportAssessment {
   std::string file, kind;      // the design file, "stl" or "pgm"
@@ -65,6 +79,8 @@ struct ReportAssessment {
   uint64_t tolerance_boxes = 0;
   AssessResult result;
   PointNm max_gouge_at{0, 0, 0}, max_leftover_at{0, 0, 0};  // machine x, y of those columns
+  std::vector<ReportGouge> gouges;  // the first kept (core/assess/gouge_watch.h)
+  uint64_t gouges_total = 0;        // all of them
 };
 
 struct RunReport {
@@ -89,6 +105,8 @@ struct RunReport {
   bool have_bounds = false;
   PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
   uint64_t instances = 0, dexel_updates = 0;
+  std::string stopped_reason;  // empty: ran to the end
+  uint32_t stopped_line = 0;
   bool have_assessment = false;
   ReportAssessment assessment;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds

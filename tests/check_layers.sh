@@ -20,7 +20,7 @@ allowed() {
     core/tool) echo "core/math";;
     core/cut) echo "core/motion core/grid core/tool core/math";;
     core/design) echo "core/grid core/math";;
-    core/assess) echo "core/design core/grid core/math";;
+    core/assess) echo "core/design core/grid core/tool core/math";;
     display) echo "core/grid core/tool core/math";;
     *) echo "?";;
   esac

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/assess/assess.h"
+#include "core/assess/gouge_watch.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 
@@ -158,4 +159,64 @@ TEST(assess_bands_follow_the_transfer_function) {
     CHECK_EQ(count[kBandLeft1] + count[kBandLeft2] + count[kBandLeft3], res.leftover_columns);
     CHECK_EQ(count[kBandNone], static_cast<uint64_t>(band.size()) - res.design_columns);
   }
+}
+
+TEST(gouge_watch_charges_each_column_once_to_its_line) {
+  // A 40 x 30 grid, 1 mm pitch, 1 um LSB, all tops 10 mm; the design 9 mm everywhere.
+  const GridGeometry geo{40, 30, 0, 0, 1000000, 0, 1000};
+  std::vector<uint16_t> top(1200, 10000), bottom(1200, 0);
+  std::vector<int32_t> design(1200);
+  DexelGrid<uint16_t> g;
+  DesignGrid d;
+  CHECK_EQ(grid_init(&g, geo, top.data(), bottom.data(), top.size()), Status::kOk);
+  CHECK_EQ(design_init(&d, geo, design.data(), design.size()), Status::kOk);
+  for (int32_t& v : design) v = 9000;
+  std::vector<uint8_t> seen(gouge_watch_seen_bytes(40, 30));
+  GougeWatch w;
+  AssessOptions o;
+  o.tol_nm = 50000;
+  CHECK_EQ(gouge_watch_init(&w, &d, o, seen.data(), seen.size() - 1), Status::kBufferTooSmall);
+  CHECK_EQ(gouge_watch_init(&w, &d, o, seen.data(), seen.size()), Status::kOk);
+  const PointNm tool{5000000, 5000000, 8000000};
+  // Within tolerance: nothing. 60 um below: a gouge of line 3 at its deepest column.
+  top[g.index(5, 5)] = 8950;
+  CHECK(!gouge_watch_check(&w, g, GridRect{0, 0, 40, 30}, 2, tool, nullptr));
+  top[g.index(6, 5)] = 8940;
+  top[g.index(7, 5)] = 8700;
+  CHECK(gouge_watch_check(&w, g, GridRect{0, 0, 40, 30}, 3, tool, nullptr));
+  CHECK_EQ(w.nevents, size_t{1});
+  CHECK_EQ(w.events[0].line, 3u);
+  CHECK_EQ(w.events[0].depth_lsb, 300);
+  CHECK_EQ(w.events[0].i, 7);
+  CHECK_EQ(w.events[0].columns, uint64_t{2});
+  // Deeper later at the same columns: already reported, nothing new.
+  top[g.index(7, 5)] = 5000;
+  CHECK(!gouge_watch_check(&w, g, GridRect{0, 0, 40, 30}, 4, tool, nullptr));
+  // Outside the changed rectangle or the region: not looked at.
+  top[g.index(20, 20)] = 1000;
+  CHECK(!gouge_watch_check(&w, g, GridRect{0, 0, 10, 10}, 5, tool, nullptr));
+  // A flat 4 mm tool left at (20, 20, 1 mm) by line 6 explains column (20,
+  // 20) at 1 mm: charged to line 6, not to the record of line 7.
+  Tool flat;
+  flat.kind = ToolKind::kFlat;
+  flat.diameter_nm = 4000000;
+  flat.length_nm = 30000000;
+  const ToolProfile prof = tool_profile(flat);
+  const GougeOrigin origin{6, PointNm{20000000, 20000000, 1000000}, &prof};
+  top[g.index(30, 20)] = 2000;  // out of that tool's reach: line 7's
+  CHECK(gouge_watch_check(&w, g, GridRect{0, 0, 40, 30}, 7, tool, &origin));
+  CHECK_EQ(w.nevents, size_t{3});
+  CHECK_EQ(w.events[1].line, 6u);
+  CHECK_EQ(w.events[1].i, 20);
+  CHECK(w.events[1].tool == origin.end);
+  CHECK_EQ(w.events[2].line, 7u);
+  CHECK_EQ(w.events[2].i, 30);
+  // Bounded: past kGougeEventsMax events are counted, not kept.
+  for (uint32_t k = 0; k < 100; ++k) {
+    const int32_t i = static_cast<int32_t>(k % 40), j = static_cast<int32_t>(25 + k / 40);
+    top[g.index(i, j)] = 100;
+    CHECK(gouge_watch_check(&w, g, GridRect{i, j, i + 1, j + 1}, 100 + k, tool, nullptr));
+  }
+  CHECK_EQ(w.nevents, kGougeEventsMax);
+  CHECK_EQ(w.total, uint64_t{103});
 }

@@ -331,7 +331,8 @@ TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
   CHECK(slurp(std::string(t::tests_dir()) + "/run/pocket_design.stl") == ascii_stl(pocket_design()));
   Result r = run("pocket.ngc -q --design %/pd.stl --report %/pd.json");
   CHECK_EQ(r.code, 0);
-  CHECK(r.err.empty());
+  // The one gouge, charged to the G81 line while cutting.
+  CHECK(r.err == "pocket.ngc:20:1: warning: gouge 8.000 mm at X28.044 Y15.130 (design Z0.000, cut Z-8.000)\n");
   const std::string a = assessment_of(slurp(d + "pd.json"));
   // The G81 hole (flat 6 mm to Z-8 at X28 Y18) goes 8 mm below the design's
   // top beside the pocket; the pocket's four corners keep 3 mm of material.
@@ -371,6 +372,52 @@ TEST(run_color_error_frames_and_image) {
   const Result u = run("pocket.ngc -q --color error");
   CHECK_EQ(u.code, 2);
   CHECK(has(u.err, "--color error needs --design"));
+}
+
+TEST(run_gouges_are_traced_to_their_line) {
+  if (skip()) return;
+  const std::string d = tmp_dir() + "/";
+  const char* common = "-q --design pocket_design.stl --stock 0,0,-10,33,23,0";
+  // One line gouges: one warning, on that line, as deep as the ramp's end
+  // below the floor (0.4 mm; the grid's LSB is 0.2 um); the end cap the Mill
+  // cuts with the next record (G0 Z5) is charged to line 7 too.
+  Result r = run(std::string("gouge_one.ngc ") + common + " --report %/g1.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(r.err == "gouge_one.ngc:7:1: warning: gouge 0.400 mm at X21.522 Y7.043 (design Z-3.000, cut Z-3.400)\n");
+  const std::string a = assessment_of(slurp(d + "g1.json"));
+  CHECK(has(a, "\"gouges\": [\n      {\"line\": 7, \"x_mm\": 21.5218, \"y_mm\": 7.0435, \"depth_mm\": 0.4000, \"design_z_mm\": -3.0000, \"cut_z_mm\": -3.4000, \"tool_mm\": [22.0000, 10.0000, -3.4000],"));
+  CHECK(has(a, "\"gouges_total\": 1"));
+  // The same exit 4 for a CI gate: at the end, or at the gouge.
+  r = run(std::string("gouge_one.ngc ") + common + " --fail-on-gouge --report %/g2.json");
+  CHECK_EQ(r.code, 4);
+  r = run(std::string("gouge_one.ngc ") + common + " --stop-at gouge --report %/g3.json");
+  CHECK_EQ(r.code, 4);
+  CHECK(has(r.err, "gouge_one.ngc:7:1: warning: gouge"));
+  // Stopped at line 7: the report says so, and the cut of lines 11-12 is
+  // not in it (less material removed than the whole run).
+  const std::string full = slurp(d + "g1.json"), stopped = slurp(d + "g3.json");
+  CHECK(has(full, "\"stopped\": null,"));
+  CHECK(has(stopped, "\"stopped\": {\"reason\": \"gouge\", \"line\": 7},"));
+  auto removed = [](const std::string& rep) {
+    const size_t k = rep.find("\"removed_mm3\": ");
+    return k == std::string::npos ? -1.0 : std::atof(rep.c_str() + k + 15);
+  };
+  CHECK(removed(stopped) > 0 && removed(stopped) < removed(full));
+  // Stopping short of the floor leaves material and no gouge; reaching it
+  // exactly is no gouge either (within the 0.05 mm tolerance).
+  std::string text = slurp(std::string(t::tests_dir()) + "/run/gouge_one.ngc");
+  for (const char* z : {"Z-2.5", "Z-3.0"}) {
+    std::string t2 = text;
+    t2.replace(t2.find("Z-3.4"), 5, z);
+    write_file(d + "nog.ngc", t2);
+    r = run(std::string("%/nog.ngc ") + common + " --fail-on-gouge --report %/nog.json");
+    CHECK_EQ(r.code, 0);
+    CHECK(r.err.empty());
+    CHECK(has(assessment_of(slurp(d + "nog.json")), "\"gouges\": [], \"gouges_total\": 0"));
+  }
+  const Result u = run("pocket.ngc -q --fail-on-gouge");
+  CHECK_EQ(u.code, 2);
+  CHECK(has(u.err, "--fail-on-gouge needs --design"));
 }
 
 TEST(run_design_from_a_height_image) {

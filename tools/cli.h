@@ -5,8 +5,9 @@
 namespace dexmill {
 namespace cli {
 
-// Exit status, CLI.md: 0 success, 1 input errors, 2 usage, 3 I/O.
-enum Exit : int { kExitOk = 0, kExitInput = 1, kExitUsage = 2, kExitIo = 3 };
+// Exit status, CLI.md: 0 success, 1 input errors, 2 usage, 3 I/O, 4 the
+// program ran and failed a check the user asked for (--stop-at, --fail-on-*).
+enum Exit : int { kExitOk = 0, kExitInput = 1, kExitUsage = 2, kExitIo = 3, kExitCheck = 4 };
 
 int main(int argc, char** argv);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/assess/gouge_watch.h"
 #include "core/design/design.h"
 #include "display/surface_colours.h"
 #include "platform/report_json.h"
@@ -28,15 +29,30 @@ struct RunDesign {
   std::vector<uint32_t> luts;
   SurfaceColours colours;
   RenderOutput::Legend legend;
+  // Gouges charged to their lines while cutting.
+  std::vector<uint8_t> seen;
+  GougeWatch watch;
+  std::string file;           // the program, for the warnings
+  size_t printed = 0;         // events whose warning is out
 };
 
 // Reads o.design onto the grid of `plan`. Returns kExitOk, or the exit code
 // after printing the error (input errors: the file's own message).
-int load_design(const RunOptions& o, const GridPlan& plan, RunDesign* d);
+int load_design(const RunOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d);
 
 // The error view (paper §2.5.1, figure 10) of grid g against the design:
 // d->colours and d->legend for the outputs to draw with.
 void error_view_init(const DexelGrid<height_t>& g, RunDesign* d);
+
+// After a record of the cut: checks the columns it changed and returns true
+// when there was a new gouge. A line's warning (`FILE:LINE:1: warning:
+// gouge 0.31 mm at X.. Y.. (design Z.., cut Z..)`, its deepest column) is
+// printed once the line is done: when a record of another line has been
+// checked, or by print_gouges.
+bool watch_gouges(const DexelGrid<height_t>& g, GridRect changed, uint32_t line, const PointNm& tool,
+                  const GougeOrigin* prev, RunDesign* d);
+// Prints the warnings not printed yet (the end of the run, or a stop).
+void print_gouges(const DexelGrid<height_t>& g, RunDesign* d);
 
 // Compares the cut with the design into d->report.
 void assess_design(const DexelGrid<height_t>& g, RunDesign* d);

@@ -120,10 +120,19 @@ struct Watchers {
 // The cut pass: records into the Mill, then frames.
 class CutSink final : public CanonSink {
  public:
-  CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib)
-      : mill_(mill), g_(g), w_(w), lib_(lib) {}
+  CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib, RunDesign* design,
+          const Tool& initial)
+      : mill_(mill), g_(g), w_(w), lib_(lib), design_(design), profile_(tool_profile(initial)) {}
   void emit(const CanonRecord& r) override {
+    // Where the line before left the tool: a deferred end cap cut now is its.
+    const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
+    if (move && r.line != last_line_) {
+      origin_ = GougeOrigin{last_line_, mill_->position(), &profile_};
+      have_origin_ = last_line_ != 0;
+    }
     mill_->emit(r);
+    last_line_ = r.line;
+    watch();
     time.emit(r);
     status.line = r.line;
     status.pos = mill_->position();
@@ -132,6 +141,7 @@ class CutSink final : public CanonSink {
       status.tool = r.tool;
       Tool t;
       if (lib_->tool(r.tool, &t)) {
+        profile_ = tool_profile(t);
         char spec[64];
         tool_spec_format(t, spec, sizeof spec);
         status.tool_spec = spec;
@@ -148,6 +158,7 @@ class CutSink final : public CanonSink {
   // its dirty rectangle on: before anything reads the grid.
   void sync() {
     mill_->flush();
+    watch();
     fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
   }
   // One frame of the sequence; false (and frame_error set) on failure.
@@ -167,6 +178,7 @@ class CutSink final : public CanonSink {
 
   MotionSummary time;
   LiveStatus status;
+  bool gouged = false;  // a gouge was found (the watch's warnings are printed)
   uint64_t moves = 0, last_frame_moves = 0;
   std::string frame_error;
   double render_s = 0, write_s = 0;
@@ -176,6 +188,18 @@ class CutSink final : public CanonSink {
   DexelGrid<height_t>* g_;
   Watchers* w_;
   const ToolLibrary* lib_;
+  RunDesign* design_;  // null: no gouge watch
+  uint32_t last_line_ = 0;
+  ToolProfile profile_{};  // the tool in the spindle
+  GougeOrigin origin_{0, PointNm{0, 0, 0}, nullptr};
+  bool have_origin_ = false;
+
+  // The columns the last record changed (the grid's dirty rectangle, which
+  // fan_out_dirty clears after every record) against the design.
+  void watch() {
+    if (design_ && watch_gouges(*g_, g_->dirty, last_line_, mill_->position(), have_origin_ ? &origin_ : nullptr, design_))
+      gouged = true;
+  }
 };
 
 std::string dir_of(const std::string& path) {
@@ -411,7 +435,7 @@ int run_job(RunOptions o) {
   // -- the design part, before the cut: a bad file costs no simulation
   RunDesign design;
   if (!o.design.empty()) {
-    const int code = load_design(o, plan, &design);
+    const int code = load_design(o, plan, shown_name, &design);
     if (code != kExitOk) return code;
   }
 
@@ -496,7 +520,7 @@ int run_job(RunOptions o) {
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 
   // -- cut pass
-  CutSink cut(&mill, &grid, &w, lib);
+  CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, o.tool);
   if (is_live) live.set_before_draw([&cut] { cut.sync(); });
   cut.status.inch = o.inch;
   cut.status.tool_spec = o.tool_text;
@@ -516,6 +540,11 @@ int run_job(RunOptions o) {
     while (runner.step()) {
       progress.update(in.bytes_read(), in.total_bytes(), cut.moves);
       if (!cut.frame_error.empty()) break;
+      if (o.stop_at_gouge && cut.gouged) {
+        rep.stopped_reason = "gouge";
+        rep.stopped_line = cut.status.line;
+        break;
+      }
       if (is_live && !live.tick(&grid, cut.pose(), cut.status)) {
         user_quit = !live.failed();
         break;
@@ -523,6 +552,7 @@ int run_job(RunOptions o) {
     }
     progress.finish();
     cut.sync();
+    if (!o.design.empty()) print_gouges(grid, &design);
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());
     if (live.failed()) return fail(kExitIo, "%s", live.error().c_str());
@@ -563,6 +593,7 @@ int run_job(RunOptions o) {
   if (!write_report()) return kExitIo;
   if (is_live && !user_quit && !live.wait_done(&grid, cut.pose(), cut.status))
     return fail(kExitIo, "%s", live.error().c_str());
+  if (cut.gouged && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
   if (!o.quiet && demo)
     std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, frames/%s)\n",
                  frames ? "frame-*.ppm" : "");

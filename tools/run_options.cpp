@@ -99,9 +99,12 @@ void run_usage(std::FILE* f) {
                "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
                "  --color plain|error        what colours the surface: one colour, or cut - design in\n"
                "                             bands (white within tolerance, greens left, reds gouged)\n"
+               "  --stop-at gouge            stop at the first gouge (outputs show that state), exit 4\n"
+               "  --fail-on-gouge            run to the end, exit 4 if the cut gouged the design\n"
                "  -q                         no progress bar\n\n"
                "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, r resets\n"
-               "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O.\n");
+               "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O, 4 a check\n"
+               "asked for failed (--stop-at, --fail-on-gouge).\n");
 }
 
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
@@ -121,6 +124,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     if (!std::strcmp(a, "-q") || !std::strcmp(a, "--quiet")) { o->quiet = true; continue; }
     if (!std::strcmp(a, "--window")) { o->window = true; continue; }
     if (!std::strcmp(a, "--exit-when-done")) { o->exit_when_done = true; continue; }
+    if (!std::strcmp(a, "--fail-on-gouge")) { o->fail_on_gouge = true; continue; }
     if (a[0] != '-' || !a[1]) {
       if (have_file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", o->file.c_str(), a);
       o->file = a;
@@ -131,7 +135,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--image", "--frames", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -223,6 +227,9 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!std::strcmp(v, "plain")) o->color = RunOptions::Color::kPlain;
       else if (!std::strcmp(v, "error")) o->color = RunOptions::Color::kError;
       else return fail(kExitUsage, "--color must be plain or error, not '%s'", v);
+    } else if (name == "--stop-at") {
+      if (std::strcmp(v, "gouge")) return fail(kExitUsage, "--stop-at must be gouge, not '%s'", v);
+      o->stop_at_gouge = true;
     } else if (name == "--speed") {
       if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
         return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
@@ -235,6 +242,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   if (o->window && !o->fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
   if (o->design.empty() && (o->have_design_z || !o->tolerance_boxes.empty()))
     return fail(kExitUsage, "%s needs --design", o->have_design_z ? "--design-z" : "--tolerance-box");
+  if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
+    return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())
     return fail(kExitUsage, "--color error needs --design (the part to compare the cut with)");
   if (o->design_pgm && !o->have_design_z)

@@ -52,6 +52,8 @@ struct RunOptions {
   int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
   std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
   enum class Color : uint8_t { kPlain, kError } color = Color::kPlain;  // --color
+  bool stop_at_gouge = false;    // --stop-at gouge: stop at the first gouge, exit 4
+  bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
 };
 
 // Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the
