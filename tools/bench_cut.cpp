@@ -9,6 +9,7 @@
 #include <cstring>
 #include <vector>
 
+#include "core/assess/gouge_watch.h"
 #include "core/config.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
@@ -155,9 +156,63 @@ void run(const char* name) {
   }
 }
 
+// assess-*: what the gouge watch of `dexmill run --design` costs: the sweep
+// of a workload with gouge_watch_check over each move's changed columns (as
+// the run's cut sink does), against the same sweep without, in the same
+// rounds. The design is a plane 0.1 mm under the path's lowest point, so
+// nothing gouges and every changed column is compared (the usual case).
+void run_assess(const char* name) {
+  const char* workload = !std::strcmp(name, "assess-w3") ? "paper-w3" : "scale-1k";
+  Job j;
+  if (!setup(workload, &j)) {
+    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
+    return;
+  }
+  const size_t n = static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny;
+  std::vector<int32_t> tops(n);
+  std::vector<uint8_t> seen(gouge_watch_seen_bytes(j.w.geo.nx, j.w.geo.ny));
+  DesignGrid d;
+  int64_t zmin = j.w.path[0].z_nm;
+  for (const PointNm& p : j.w.path) zmin = std::min(zmin, p.z_nm);
+  if (!ok(design_init(&d, j.w.geo, tops.data(), n))) return;
+  std::fill(tops.begin(), tops.end(), static_cast<int32_t>(grid_height_of_z(j.g, zmin - kNmPerMm / 10)));
+  GougeWatch watch;
+  const auto timed = [&](bool watched) {
+    reset(&j);
+    AssessOptions opt;
+    opt.region = GridRect{1, 1, j.w.geo.nx - 1, j.w.geo.ny - 1};  // not the ring of holes
+    (void)gouge_watch_init(&watch, &d, opt, seen.data(), seen.size());
+    CutStats st;
+    SweepChain chain;
+    const std::vector<PointNm>& path = j.w.path;
+    const double t0 = bench::now_s();
+    for (size_t k = 1; k < path.size(); ++k) {
+      sweep_chain_line(&j.g, j.sweep_tool, path[k - 1], path[k], &st, &chain);
+      if (watched) {
+        gouge_watch_check(&watch, j.g, j.g.dirty, static_cast<uint32_t>(k), path[k], nullptr);
+        j.g.dirty = GridRect::none();
+      }
+    }
+    sweep_chain_end(&j.g, j.sweep_tool, &st, &chain);
+    if (watched) gouge_watch_check(&watch, j.g, j.g.dirty, static_cast<uint32_t>(path.size()), path.back(), nullptr);
+    return bench::now_s() - t0;
+  };
+  double plain = 1e300, watched = 1e300;
+  bench::best_time_s([&] {
+    plain = std::min(plain, timed(false));
+    watched = std::min(watched, timed(true));
+    return 0.0;
+  }, bench::single_run() ? 0.0 : 0.6);
+  bench::result(name, "workload=%s grid=%dx%d moves=%zu seconds=%.6f plain_seconds=%.6f watch_ratio=%.3f gouges=%llu",
+                workload, j.w.geo.nx, j.w.geo.ny, j.w.path.size() - 1, watched, plain, watched / plain,
+                static_cast<unsigned long long>(watch.total));
+}
+
 }  // namespace
 }  // namespace dexmill
 
+BENCH(assess_w3, "assess-w3", dexmill::run_assess);
+BENCH(assess_1k, "assess-1k", dexmill::run_assess);
 BENCH(paper_w1, "paper-w1", dexmill::run);
 BENCH(paper_w2, "paper-w2", dexmill::run);
 BENCH(paper_w3, "paper-w3", dexmill::run);

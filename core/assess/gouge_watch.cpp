@@ -54,16 +54,21 @@ bool gouge_watch_check(GougeWatch* w, const DexelGrid<H>& g, GridRect changed, u
   const GridRect& reg = w->opt.region;
   const int32_t i0 = max_of(max_of(changed.i0, reg.i0), int32_t{0}), i1 = min_of(min_of(changed.i1, reg.i1), g.nx);
   const int32_t j0 = max_of(max_of(changed.j0, reg.j0), int32_t{0}), j1 = min_of(min_of(changed.j1, reg.j1), g.ny);
-  const int64_t tol_all = w->opt.tol_nm / g.lsb_nm;
+  // No column with depth <= the least tolerance of any box can gouge: one
+  // subtraction and a compare a column (kNoDesign, INT32_MIN, never passes).
+  int64_t tol_min_nm = w->opt.tol_nm;
+  for (size_t b = 0; b < w->opt.nboxes; ++b) tol_min_nm = min_of(tol_min_nm, w->opt.boxes[b].tol_nm);
+  const int64_t tol_min = tol_min_nm / g.lsb_nm, tol_all = w->opt.tol_nm / g.lsb_nm;
   const size_t first = w->nevents;
   bool found = false;
   for (int32_t j = j0; j < j1; ++j) {
+    const size_t row = g.index(0, j);
+    const int32_t* dr = d.top_lsb + row;
+    const H* tr = g.top + row;
     for (int32_t i = i0; i < i1; ++i) {
-      const size_t k = g.index(i, j);
-      const int32_t dt = d.top_lsb[k];
-      if (dt == kNoDesign) continue;
-      const int64_t depth = static_cast<int64_t>(dt) - g.top[k];
-      if (depth <= tol_all && !w->opt.nboxes) continue;  // the common case: no division
+      if (static_cast<int64_t>(dr[i]) - tr[i] <= tol_min) continue;
+      const size_t k = row + static_cast<size_t>(i);
+      const int64_t depth = static_cast<int64_t>(dr[i]) - tr[i];
       if ((w->seen[k >> 3] >> (k & 7)) & 1) continue;
       const int64_t tol = w->opt.nboxes ? assess_tolerance_nm(w->opt, d.geo, i, j) / g.lsb_nm : tol_all;
       if (depth <= tol) continue;
@@ -71,7 +76,7 @@ bool gouge_watch_check(GougeWatch* w, const DexelGrid<H>& g, GridRect changed, u
       ++w->columns;
       found = true;
       const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
-      const bool before = prev && prev->tool && origin_explains(*prev, x, y, g.z0_nm + g.top[k] * g.lsb_nm, g.lsb_nm);
+      const bool before = prev && prev->tool && origin_explains(*prev, x, y, g.z0_nm + tr[i] * g.lsb_nm, g.lsb_nm);
       bool is_new = false;
       GougeEvent* e = event_for(w, first, before ? prev->line : line, &is_new);
       if (!e) continue;
@@ -80,7 +85,7 @@ bool gouge_watch_check(GougeWatch* w, const DexelGrid<H>& g, GridRect changed, u
       ++e->columns;
       if (depth > e->depth_lsb) {
         e->depth_lsb = depth;
-        e->design_lsb = dt;
+        e->design_lsb = dr[i];
         e->i = i;
         e->j = j;
       }
