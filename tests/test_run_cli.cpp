@@ -93,6 +93,12 @@ bool skip() {
   return true;
 }
 
+// The report's assessment object, from its key to the line before timing.
+std::string assessment_of(const std::string& report) {
+  const size_t a = report.find("  \"assessment\""), b = report.find("  \"timing\"");
+  return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
+}
+
 void check_hash(const std::string& path, uint64_t want) {
   const uint64_t got = file_hash(path);
   if (got != want) std::printf("  %s: hash 0x%016llxULL\n", path.c_str(), static_cast<unsigned long long>(got));
@@ -150,13 +156,20 @@ TEST(run_stdin_and_demo) {
   r = run("pocket.ngc -q --size 160x120 --image %/f.ppm");
   CHECK_EQ(file_hash(tmp_dir() + "/s.ppm"), file_hash(tmp_dir() + "/f.ppm"));
   // The demo: its program, final image and frames in out/.
-  r = run("-q --size 80x60", nullptr, true);
+  r = run("-q --size 80x60 --report out/demo.json", nullptr, true);
   CHECK_EQ(r.code, 0);
+  CHECK(r.err.empty());  // no gouge of the demo's own part
   struct stat st;
   CHECK_EQ(stat((tmp_dir() + "/out/demo.ngc").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.ppm").c_str(), &st), 0);
   check_hash(tmp_dir() + "/out/final.ppm", 0x7866d9c24ba7c719ULL);
+  // And the error view of its own part (tools/demo_program.h): the corners
+  // the roughing rows stop short of and the dome's base are left green.
+  check_hash(tmp_dir() + "/out/error.ppm", 0xf8092d6d6966333dULL);
+  const std::string a = assessment_of(slurp(tmp_dir() + "/out/demo.json"));
+  CHECK(has(a, "\"kind\": \"demo\""));
+  CHECK(has(a, "\"max_gouge\": null"));
 }
 
 TEST(run_usage_errors_exit_2) {
@@ -314,11 +327,6 @@ std::string binary_stl(const std::vector<Facet>& fs) {
   return o;
 }
 
-// The report's assessment object, from its key to the line before timing.
-std::string assessment_of(const std::string& report) {
-  const size_t a = report.find("  \"assessment\""), b = report.find("  \"timing\"");
-  return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
-}
 
 }  // namespace
 

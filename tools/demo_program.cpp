@@ -93,6 +93,34 @@ constexpr int32_t kSafe = 5000;
 
 }  // namespace
 
+bool demo_design_top_um(int32_t x, int32_t y, int32_t* z) {
+  auto within = [](int64_t dx, int64_t dy, int64_t r) { return dx * dx + dy * dy <= r * r; };
+  const int32_t holes[4][2] = {{7000, 7000}, {93000, 7000}, {93000, 63000}, {7000, 63000}};
+  for (const auto& h : holes)
+    if (within(x - h[0], y - h[1], 2500)) return false;  // the spot drill's 5 mm shaft, through
+  for (int32_t cx : {8000, 92000})
+    if (within(x - cx, y - 35000, 5000)) {
+      *z = -8000;
+      return true;
+    }
+  // The pocket: the roughing passes run to 3 mm from its walls, so its
+  // corners are the 6 mm tool's, 3 mm radii.
+  const int32_t rc = kToolR;
+  if (x >= kPx0 && x <= kPx1 && y >= kPy0 && y <= kPy1) {
+    const int32_t qx = x < kPx0 + rc ? kPx0 + rc : x > kPx1 - rc ? kPx1 - rc : x;
+    const int32_t qy = y < kPy0 + rc ? kPy0 + rc : y > kPy1 - rc ? kPy1 - rc : y;
+    if (within(x - qx, y - qy, rc)) {
+      // The contour passes at each level leave a flat band one tool wide
+      // along the walls at the floor; the relief rises inside it.
+      const bool band = x < kPx0 + 2 * kToolR || x > kPx1 - 2 * kToolR || y < kPy0 + 2 * kToolR || y > kPy1 - 2 * kToolR;
+      *z = band ? kFloor : relief(x, y);
+      return true;
+    }
+  }
+  *z = 0;
+  return true;
+}
+
 const char* demo_tool_table() {
   return "; dexmill demo tool table (LinuxCNC format; the shape comes from the comment)\n"
          "T1 P1 D6.0 Z+30.0 ;flat end mill 6 mm\n"

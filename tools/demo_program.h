@@ -12,6 +12,7 @@
 #ifndef DEXMILL_TOOLS_DEMO_PROGRAM_H
 #define DEXMILL_TOOLS_DEMO_PROGRAM_H
 
+#include <cstdint>
 #include <string>
 
 namespace dexmill {
@@ -19,6 +20,12 @@ namespace cli {
 
 // The program text (about 7000 lines).
 std::string demo_program();
+// The part the demo is meant to make, for its error view (paper §2.5): the
+// design's top at (x, y) in um, false where it has no material (the four
+// through holes): the block's top at Z0, the two 10 mm bores 8 mm deep, and
+// the 60 x 40 mm pocket (3 mm corner radii) with a 6 mm floor band along
+// its walls (the contour passes') and the relief inside it.
+bool demo_design_top_um(int32_t x_um, int32_t y_um, int32_t* z_um);
 // Its tool table, LinuxCNC format.
 const char* demo_tool_table();
 // The stock the demo is written for: X0,Y0,Z0,X1,Y1,Z1 in mm (the program's

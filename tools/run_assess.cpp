@@ -8,6 +8,7 @@
 #include "platform/pgm.h"
 #include "platform/stl_read.h"
 #include "tools/cli.h"
+#include "tools/demo_program.h"
 
 namespace dexmill {
 namespace cli {
@@ -25,11 +26,20 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
   d->opt.boxes = o.tolerance_boxes.data();
   d->opt.nboxes = o.tolerance_boxes.size();
   d->report.file = o.design;
-  d->report.kind = o.design_pgm ? "pgm" : "stl";
+  d->report.kind = o.demo_design ? "demo" : o.design_pgm ? "pgm" : "stl";
   d->report.tolerance_nm = o.tolerance_nm;
   d->report.tolerance_boxes = o.tolerance_boxes.size();
   std::string err;
-  if (o.design_pgm) {
+  if (o.demo_design) {
+    // The demo's part, sampled on every dexel axis (um).
+    for (int32_t j = 0; j < plan.geo.ny; ++j)
+      for (int32_t i = 0; i < plan.geo.nx; ++i) {
+        const int64_t x = plan.geo.x0_nm + i * plan.geo.pitch_nm, y = plan.geo.y0_nm + j * plan.geo.pitch_nm;
+        int32_t z_um;
+        if (demo_design_top_um(static_cast<int32_t>(div_round(x, 1000)), static_cast<int32_t>(div_round(y, 1000)), &z_um))
+          d->tops[d->grid.index(i, j)] = static_cast<int32_t>(div_round(z_um * int64_t{1000} - plan.geo.z0_nm, plan.geo.lsb_nm));
+      }
+  } else if (o.design_pgm) {
     PgmImage img;
     const PgmRead r = read_pgm(o.design, &img, &err);
     if (r != PgmRead::kOk) {

@@ -295,6 +295,11 @@ int run_job(RunOptions o) {
   // -- inputs and output folders, before anything long happens
   if (demo) {
     if (o.image.empty()) o.image = "out/final.ppm";
+    if (o.design.empty()) {  // the demo's own part: its report has an assessment, and out/error.ppm
+      o.design = "(the demo's part)";
+      o.demo_design = true;
+      if (o.error_image.empty()) o.error_image = "out/error.ppm";
+    }
     if (o.frames_dir.empty()) o.frames_dir = "out/frames";
     if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = shown_name = "out/demo.ngc";
@@ -308,7 +313,8 @@ int run_job(RunOptions o) {
     if (!spool_stdin(&spooled.path, &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = spooled.path;
   }
-  if (!check_output("image", o.image, &err) || !check_output("heightmap", o.heightmap, &err) ||
+  if (!check_output("image", o.image, &err) || !check_output("error image", o.error_image, &err) ||
+      !check_output("heightmap", o.heightmap, &err) ||
       !check_output("STL file", o.stl, &err) || !check_output("report", o.report, &err))
     return fail(kExitIo, "%s", err.c_str());
   if (!o.frames_dir.empty() && !make_dirs(o.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
@@ -494,24 +500,33 @@ int run_job(RunOptions o) {
   }
   // The final image is the frame of the live view or of the sequence when
   // there is one (the same pixels), else a frame of its own.
-  RenderOutput* image_src = is_live ? w.live_out : frames_out.get();
-  if (!o.image.empty() && !image_src) {
-    image_pixels.assign(static_cast<size_t>(o.width) * static_cast<size_t>(o.height), 0);
+  // A still frame of its own at --size, watching the cut like the others.
+  auto still = [&](std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) -> bool {
+    pixels->assign(static_cast<size_t>(o.width) * static_cast<size_t>(o.height), 0);
     FrameView fb;
-    fb.pixels = image_pixels.data();
+    fb.pixels = pixels->data();
     fb.width = o.width;
     fb.height = o.height;
     fb.stride_bytes = o.width * 4;
     fb.format = PixelFormat::kXrgb8888;
-    image_out.reset(new RenderOutput());
-    if (!image_out->init(grid, fb, cam, &err)) return fail(kExitUsage, "%s", err.c_str());
-    w.outputs.push_back(image_out.get());
+    out->reset(new RenderOutput());
+    if (!(*out)->init(grid, fb, cam, &err)) return false;
+    w.outputs.push_back(out->get());
+    return true;
+  };
+  RenderOutput* image_src = is_live ? w.live_out : frames_out.get();
+  if (!o.image.empty() && !image_src) {
+    if (!still(&image_pixels, &image_out)) return fail(kExitUsage, "%s", err.c_str());
     image_src = image_out.get();
   }
+  std::vector<uint32_t> error_pixels;
+  std::unique_ptr<RenderOutput> error_out;
+  if (!o.error_image.empty() && !still(&error_pixels, &error_out)) return fail(kExitUsage, "%s", err.c_str());
   for (RenderOutput* out : w.outputs) out->set_tool(o.tool);
-  if (o.color == RunOptions::Color::kError) {
+  if (o.color == RunOptions::Color::kError || error_out) {
     error_view_init(grid, &design);
     for (RenderOutput* out : w.outputs) {
+      if (out != error_out.get() && o.color != RunOptions::Color::kError) continue;
       out->set_colours(&design.colours);
       out->set_legend(&design.legend);
     }
@@ -584,6 +599,14 @@ int run_job(RunOptions o) {
     if (!write_ppm(o.image.c_str(), image_src->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
     write_s += clock_now_s() - t1;
   }
+  if (error_out) {
+    const double t0 = clock_now_s();
+    error_out->draw(&grid, cut.pose());
+    const double t1 = clock_now_s();
+    render_s += t1 - t0;
+    if (!write_ppm(o.error_image.c_str(), error_out->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    write_s += clock_now_s() - t1;
+  }
   const double t_files = clock_now_s();
   if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
   if (!o.stl.empty() && !write_stl(o.stl.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
@@ -595,7 +618,7 @@ int run_job(RunOptions o) {
     return fail(kExitIo, "%s", live.error().c_str());
   if (cut.gouged && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
   if (!o.quiet && demo)
-    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, frames/%s)\n",
+    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/%s)\n",
                  frames ? "frame-*.ppm" : "");
   return kExitOk;
 }

@@ -45,6 +45,8 @@ struct RunOptions {
   int64_t speed_milli = 0;       // --speed X: simulated seconds per second, x1000; 0: auto
   // The design part to assess against (paper §2.5).
   std::string design;            // --design FILE.stl|FILE.pgm
+  bool demo_design = false;      // the built-in demo's own part (tools/demo_program.h), no file
+  std::string error_image;       // --error-image FILE.ppm: the final frame in the error view
   bool design_pgm = false;       // by the extension
   bool have_design_z = false;
   int64_t design_z_nm[2] = {};   // --design-z ZLOW,ZHIGH (PGM: black, white)
