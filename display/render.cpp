@@ -238,6 +238,13 @@ void renderer_set_tool(Renderer<H>* r, const ToolProfile* p) {
 }
 
 template <class H>
+void renderer_share_frame(Renderer<H>* r, const Renderer<H>& from) {
+  r->stock = from.stock;
+  r->scene = from.scene;
+  r->need_full = true;
+}
+
+template <class H>
 void renderer_set_colours(Renderer<H>* r, const SurfaceColours* c) {
   r->colours = c && c->cls && c->luts && c->nclasses > 0 && c->nclasses <= kMaxColourClasses ? c : nullptr;
   r->need_full = true;
@@ -335,6 +342,7 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
   template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
+  template void renderer_share_frame<H>(Renderer<H>*, const Renderer<H>&);                                   \
   template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
 DEXMILL_RENDER_INSTANTIATE(uint8_t)

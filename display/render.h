@@ -136,6 +136,12 @@ void renderer_set_camera(Renderer<H>* r, const Camera& c);
 template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p);
 
+// Takes the stock box and scene frame of `from` (a renderer of another grid
+// of the same geometry): the two then map machine points to the same
+// screen points and depths for any camera (display/overlay.h). Next frame whole.
+template <class H>
+void renderer_share_frame(Renderer<H>* r, const Renderer<H>& from);
+
 // A colour mode (null: off, the workpiece colour throughout). Its ramps are
 // built with the next frame, which is drawn whole.
 template <class H>
@@ -157,6 +163,7 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   extern template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   extern template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
   extern template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
+  extern template void renderer_share_frame<H>(Renderer<H>*, const Renderer<H>&);                                   \
   extern template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
 DEXMILL_RENDER_EXTERN(uint8_t)

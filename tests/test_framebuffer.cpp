@@ -1,10 +1,12 @@
 // display/framebuffer.h: pixel formats, the view checks, fills, the frame hash.
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <vector>
 
 #include "core/math/hash.h"
 #include "display/framebuffer.h"
+#include "display/overlay.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -80,4 +82,51 @@ TEST(screen_rects) {
   CHECK_EQ(e.area(), 0);
   CHECK_EQ(rect_union(e, b).x1, 20);
   CHECK_EQ(a.area(), 100);
+}
+
+TEST(overlay_blends_the_nearer_surface_half_and_half) {
+  // Two 4 x 2 frames in each format; the top frame is nearer at x < 2.
+  for (PixelFormat pf : {PixelFormat::kXrgb8888, PixelFormat::kRgb565}) {
+    for (ZFormat zf : {ZFormat::kZ16, ZFormat::kZ32}) {
+      uint32_t base_px[8], top_px[8], base_z[8], top_z[8];
+      const int bpp = pf == PixelFormat::kRgb565 ? 2 : 4, zb = zf == ZFormat::kZ16 ? 2 : 4;
+      FrameView base{base_px, 4, 2, 4 * bpp, pf}, top{top_px, 4, 2, 4 * bpp, pf};
+      const Rgb a{201, 100, 31}, b{50, 255, 0};
+      for (int k = 0; k < 8; ++k) {
+        uint8_t* bp = reinterpret_cast<uint8_t*>(base_px) + k * bpp;
+        uint8_t* tp = reinterpret_cast<uint8_t*>(top_px) + k * bpp;
+        const uint32_t va = pixel_pack(pf, a), vb = pixel_pack(pf, b);
+        std::memcpy(bp, &va, static_cast<size_t>(bpp));  // little-endian hosts: the low bytes
+        std::memcpy(tp, &vb, static_cast<size_t>(bpp));
+        const uint32_t zbase = 1000, ztop = (k % 4) < 2 ? 500 : 1000;  // equal depth: not nearer
+        std::memcpy(reinterpret_cast<uint8_t*>(base_z) + k * zb, &zbase, static_cast<size_t>(zb));
+        std::memcpy(reinterpret_cast<uint8_t*>(top_z) + k * zb, &ztop, static_cast<size_t>(zb));
+      }
+      const DepthView bz{reinterpret_cast<uint8_t*>(base_z), 4 * zb, zf}, tz{reinterpret_cast<uint8_t*>(top_z), 4 * zb, zf};
+      CHECK(overlay_blend(base, bz, top, tz, ScreenRect{0, 0, 4, 2}));
+      const Rgb pa = pixel_unpack(pf, pixel_pack(pf, a)), pb = pixel_unpack(pf, pixel_pack(pf, b));
+      for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x) {
+          const Rgb got = pixel_unpack(pf, frame_pixel(base, x, y));
+          if (x < 2) {
+            // The mean per channel, rounded down, in the format's own precision.
+            const Rgb want = pixel_unpack(pf, pixel_pack(pf, Rgb{uint8_t((pa.r + pb.r) / 2), uint8_t((pa.g + pb.g) / 2),
+                                                                 uint8_t((pa.b + pb.b) / 2)}));
+            if (pf == PixelFormat::kXrgb8888) {
+              CHECK(got.r == want.r && got.g == want.g && got.b == want.b);
+            } else {  // per 5/6-bit channel of the stored values
+              const uint32_t va = pixel_pack(pf, a), vb = pixel_pack(pf, b), v = frame_pixel(base, x, y);
+              CHECK_EQ(v >> 11, ((va >> 11) + (vb >> 11)) / 2);
+              CHECK_EQ((v >> 5) & 63, (((va >> 5) & 63) + ((vb >> 5) & 63)) / 2);
+              CHECK_EQ(v & 31, ((va & 31) + (vb & 31)) / 2);
+            }
+          } else {
+            CHECK(got.r == pa.r && got.g == pa.g && got.b == pa.b);
+          }
+        }
+      FrameView other = top;
+      other.width = 3;
+      CHECK(!overlay_blend(base, bz, other, tz, ScreenRect{0, 0, 4, 2}));
+    }
+  }
 }

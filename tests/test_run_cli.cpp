@@ -380,6 +380,17 @@ TEST(run_color_error_frames_and_image) {
   const Result u = run("pocket.ngc -q --color error");
   CHECK_EQ(u.code, 2);
   CHECK(has(u.err, "--color error needs --design"));
+  // The overlays (paper figure 9): the design translucent over the cut shows
+  // the G81 hole, the cut translucent over the design the material left.
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --image %/plain.ppm").code, 0);
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --design %/pde.stl --overlay design --image %/od.ppm").code, 0);
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --design %/pde.stl --overlay workpiece --image %/ow.ppm").code, 0);
+  check_hash(d + "od.ppm", 0xabed5b0d719b67f9ULL);
+  check_hash(d + "ow.ppm", 0x2bace7e8e61eacc8ULL);
+  CHECK(file_hash(d + "od.ppm") != file_hash(d + "plain.ppm"));
+  const Result v = run("pocket.ngc -q --overlay design");
+  CHECK_EQ(v.code, 2);
+  CHECK(has(v.err, "--overlay needs --design"));
 }
 
 TEST(run_gouges_are_traced_to_their_line) {

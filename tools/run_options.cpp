@@ -100,6 +100,9 @@ void run_usage(std::FILE* f) {
                "  --color plain|error        what colours the surface: one colour, or cut - design in\n"
                "                             bands (white within tolerance, greens left, reds gouged)\n"
                "  --error-image FILE.ppm     the final frame in the error view too (needs --design)\n"
+               "  --overlay design|workpiece --image with the design translucent over the cut (shows\n"
+               "                             gouges), or the cut translucent over the design (shows\n"
+               "                             material left)\n"
                "  --stop-at gouge            stop at the first gouge (outputs show that state), exit 4\n"
                "  --fail-on-gouge            run to the end, exit 4 if the cut gouged the design\n"
                "  -q                         no progress bar\n\n"
@@ -136,7 +139,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--image", "--frames", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -228,6 +231,10 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!std::strcmp(v, "plain")) o->color = RunOptions::Color::kPlain;
       else if (!std::strcmp(v, "error")) o->color = RunOptions::Color::kError;
       else return fail(kExitUsage, "--color must be plain or error, not '%s'", v);
+    } else if (name == "--overlay") {
+      if (!std::strcmp(v, "design")) o->overlay = RunOptions::Overlay::kDesign;
+      else if (!std::strcmp(v, "workpiece")) o->overlay = RunOptions::Overlay::kWorkpiece;
+      else return fail(kExitUsage, "--overlay must be design or workpiece, not '%s'", v);
     } else if (name == "--error-image") {
       o->error_image = v;
     } else if (name == "--stop-at") {
@@ -247,6 +254,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     return fail(kExitUsage, "%s needs --design", o->have_design_z ? "--design-z" : "--tolerance-box");
   if (!o->error_image.empty() && o->design.empty() && !o->file.empty())
     return fail(kExitUsage, "--error-image needs --design (the part to compare the cut with)");
+  if (o->overlay != RunOptions::Overlay::kNone && o->design.empty())
+    return fail(kExitUsage, "--overlay needs --design (the part to draw with the cut)");
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())

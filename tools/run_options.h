@@ -54,6 +54,9 @@ struct RunOptions {
   int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
   std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
   enum class Color : uint8_t { kPlain, kError } color = Color::kPlain;  // --color
+  // --overlay: the design translucent over the cut (shows overcut), or the
+  // cut translucent over the design (shows undercut), in --image.
+  enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
   bool stop_at_gouge = false;    // --stop-at gouge: stop at the first gouge, exit 4
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
 };

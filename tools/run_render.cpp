@@ -66,6 +66,19 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
 
 Camera RenderOutput::camera() const { return r_->cam; }
 
+DepthView RenderOutput::depth() const {
+  DepthView d;
+  d.z = r_->target.z;
+  d.stride_bytes = r_->target.z_stride;
+  d.format = r_->target.zformat;
+  return d;
+}
+
+void RenderOutput::share_view_of(const RenderOutput& other) {
+  renderer_share_frame(r_.get(), *other.r_);
+  renderer_set_camera(r_.get(), other.camera());
+}
+
 void RenderOutput::set_camera(const Camera& c) { renderer_set_camera(r_.get(), c); }
 
 Camera RenderOutput::initial_camera() const {

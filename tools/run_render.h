@@ -15,6 +15,7 @@
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "display/legend.h"
+#include "display/overlay.h"
 #include "display/render.h"
 
 namespace dexmill {
@@ -56,6 +57,10 @@ class RenderOutput {
   RenderResult draw(DexelGrid<height_t>* g, const CutterPose& pose);
 
   const FrameView& view() const { return fb_; }
+  DepthView depth() const;
+  // Draws with the scene frame and camera of `other` (a grid of the same
+  // geometry): the two frames can be overlaid (display/overlay.h).
+  void share_view_of(const RenderOutput& other);
   Camera camera() const;
   void set_camera(const Camera& c);
   // The chosen camera fitted to the stock (what `r` resets the window to).

@@ -109,6 +109,26 @@ Status design_from_image(DesignGrid* d, const HeightImage& img, int64_t x0_nm, i
   return Status::kOk;
 }
 
+template <class H>
+void design_to_grid(const DesignGrid& d, GridRect region, DexelGrid<H>* g) {
+  const int64_t hmax = height_max<H>();
+  for (int32_t j = 0; j < g->ny; ++j)
+    for (int32_t i = 0; i < g->nx; ++i) {
+      const size_t k = g->index(i, j);
+      const int32_t t = d.top_lsb[k];
+      const bool in = i >= region.i0 && i < region.i1 && j >= region.j0 && j < region.j1;
+      g->top[k] = static_cast<H>(in && t != kNoDesign ? clamp<int64_t>(t, 1, hmax) : 0);
+      g->bottom[k] = 0;
+    }
+  g->bottoms_zero = true;
+  g->top_bound_lsb = hmax;
+  g->dirty = g->bounds();
+}
+
+template void design_to_grid<uint8_t>(const DesignGrid&, GridRect, DexelGrid<uint8_t>*);
+template void design_to_grid<uint16_t>(const DesignGrid&, GridRect, DexelGrid<uint16_t>*);
+template void design_to_grid<uint32_t>(const DesignGrid&, GridRect, DexelGrid<uint32_t>*);
+
 uint64_t design_columns(const DesignGrid& d) {
   const size_t n = static_cast<size_t>(d.geo.nx) * static_cast<size_t>(d.geo.ny);
   uint64_t c = 0;

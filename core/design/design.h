@@ -70,6 +70,17 @@ struct HeightImage {
 Status design_from_image(DesignGrid* d, const HeightImage& img, int64_t x0_nm, int64_t y0_nm, int64_t x1_nm,
                          int64_t y1_nm, int64_t z_low_nm, int64_t z_high_nm);
 
+// The design as a dexel grid, to draw it (display/overlay.h): `g`, set up by
+// grid_init with the design's geometry, gets tops clamped to [1, 2^m - 1]
+// and bottoms 0; columns without design material, and those outside
+// `region` (a run's ring of holes around the stock), become holes.
+template <class H>
+void design_to_grid(const DesignGrid& d, GridRect region, DexelGrid<H>* g);
+
+extern template void design_to_grid<uint8_t>(const DesignGrid&, GridRect, DexelGrid<uint8_t>*);
+extern template void design_to_grid<uint16_t>(const DesignGrid&, GridRect, DexelGrid<uint16_t>*);
+extern template void design_to_grid<uint32_t>(const DesignGrid&, GridRect, DexelGrid<uint32_t>*);
+
 // Columns with design material.
 uint64_t design_columns(const DesignGrid& d);
 

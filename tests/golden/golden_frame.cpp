@@ -13,6 +13,7 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/golden.h"
 
@@ -79,6 +80,37 @@ bool error_view(Arena& a, const DexelGrid<uint16_t>& g, ErrorView* e, Out& out) 
   return true;
 }
 
+// Paper figure 9: the design as a grid of its own, drawn through the same
+// view, blended over the cut where it is the nearer (display/overlay.h).
+void overlay(Out& out, Arena& a, const DexelGrid<uint16_t>& g, const ErrorView& ev, Renderer<uint16_t>& r,
+             const FrameView& fb, const RenderOptions& opt) {
+  const size_t cells = static_cast<size_t>(g.nx) * g.ny;
+  uint16_t* top = a.take<uint16_t>(cells);
+  uint16_t* bottom = a.take<uint16_t>(cells);
+  uint8_t* pixels = a.take<uint8_t>(static_cast<size_t>(fb.stride_bytes) * fb.height);
+  const size_t need = renderer_scratch_bytes(g, fb.width, fb.height, opt.zformat);
+  void* scratch = a.take<uint64_t>((need + 7) / 8);
+  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+  DexelGrid<uint16_t> dg;
+  static Renderer<uint16_t> rd;
+  FrameView dfb = fb;
+  dfb.pixels = pixels;
+  if (!top || !bottom || !pixels || !scratch || !ok(grid_init(&dg, geo, top, bottom, cells)) ||
+      !ok(renderer_init(&rd, dg, dfb, opt, scratch, need))) {
+    fail(out, "frame: overlay");
+    return;
+  }
+  design_to_grid(ev.design, ev.opt.region, &dg);
+  renderer_share_frame(&rd, r);
+  renderer_set_camera(&rd, r.cam);
+  render_full(&rd, &dg, CutterPose{});
+  const ScreenRect all{0, 0, fb.width, fb.height};
+  const DepthView rz{r.target.z, r.target.z_stride, r.target.zformat}, dz{rd.target.z, rd.target.z_stride, rd.target.zformat};
+  out.str("overlay").kx("design", frame_hash(dfb));
+  overlay_blend(fb, rz, dfb, dz, all);
+  out.kx("design_over_cut", frame_hash(fb)).end();
+}
+
 void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false) {
   Arena& a = arena();
   a.reset();
@@ -131,6 +163,7 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
   sweep_line(&g, st_tool, PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, &st, false);
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
+  if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
 }
 
 }  // namespace
