@@ -439,6 +439,26 @@ TEST(run_gouges_are_traced_to_their_line) {
   CHECK(has(u.err, "--fail-on-gouge needs --design"));
 }
 
+TEST(run_stock_from_an_stl_blank) {
+  if (skip()) return;
+  // tests/run/blank_step.stl: a closed 36 x 26 x 10 mm block whose right
+  // third (X > 24) is 3 mm lower; the pocket there meets the step.
+  Result r = run("pocket.ngc -q --size 160x120 --stock blank_step.stl --image %/blank.ppm --report %/blank.json");
+  CHECK_EQ(r.code, 0);
+  const std::string rep = slurp(tmp_dir() + "/blank.json");
+  CHECK(has(rep, "\"stock\": {\"min_mm\": [-2.0000, -2.0000, -10.0000], \"max_mm\": [34.0001, 24.0396, 0.0000], \"source\": \"stl\"}"));
+  // Less to remove than from the full box: the step was never there.
+  CHECK(has(rep, "\"removed_mm3\": 1090.985"));
+  r = run("pocket.ngc -q --size 160x120 --stock -2,-2,-10,34,24.0396,0 --report %/box.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(slurp(tmp_dir() + "/box.json").find("\"removed_mm3\": 1090.985") == std::string::npos);
+  check_hash(tmp_dir() + "/blank.ppm", 0x422a6b00decf2f6cULL);
+  write_file(tmp_dir() + "/flat.stl", "solid f\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n  endloop\n endfacet\nendsolid f\n");
+  r = run("pocket.ngc -q --stock %/flat.stl");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "flat.stl: error: the blank is flat"));
+}
+
 TEST(run_design_from_a_height_image) {
   if (skip()) return;
   // A 2 x 1 image: the left half of the stock is to stay at Z0 (white), the

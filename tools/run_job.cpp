@@ -406,7 +406,12 @@ int run_job(RunOptions o) {
 
   // -- stock and grid
   StockBox stock;
-  if (o.have_stock) {
+  std::vector<TriangleNm> blank;
+  if (!o.stock_stl.empty()) {
+    const int code = read_stock_stl(o.stock_stl, &blank, &stock);
+    if (code != kExitOk) return code;
+    rep.stock_source = "stl";
+  } else if (o.have_stock) {
     stock = StockBox{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
     rep.stock_source = "option";
   } else if (demo) {
@@ -437,6 +442,10 @@ int run_job(RunOptions o) {
   if (!ok(grid_init(&grid, plan.geo, top.data(), bottom.data(), cells)))
     return fail(kExitUsage, "the stock and grid give a geometry the dexel grid cannot hold");
   fill_stock(&grid, plan);
+  if (!blank.empty()) {
+    const int code = carve_stock(&grid, plan, blank);
+    if (code != kExitOk) return code;
+  }
   const uint64_t material_before = grid_material_lsb(grid);
   // -- the design part, before the cut: a bad file costs no simulation
   RunDesign design;

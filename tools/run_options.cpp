@@ -76,6 +76,7 @@ void run_usage(std::FILE* f) {
                "for. With no FILE it runs the built-in demo (writes out/demo.ngc, out/final.ppm\n"
                "and out/frames/).\n\n"
                "  --stock X0,Y0,Z0,X1,Y1,Z1  stock box, mm, machine coordinates (default: from the program)\n"
+               "  --stock FILE.stl           a pre-machined blank: its mesh's tops over its bounding box\n"
                "  --grid NXxNY | --pitch MM  dexel resolution (default 256 across the longer side)\n"
                "  --tool SPEC                ball:D flat:D bull:D:R vbit:D:ANGLE [,len=L] (default flat:6)\n"
                "  --tools FILE               LinuxCNC tool table; T/M6 pick from it\n"
@@ -146,9 +147,11 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
     const char* v = argv[++i];
     const std::string name = a;
-    if (name == "--stock") {
+    if (name == "--stock" && ends_with(v, ".stl")) {
+      o->stock_stl = v;
+    } else if (name == "--stock") {
       if (!parse_stock(v, o->stock_nm))
-        return fail(kExitUsage, "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1, not '%s'", v);
+        return fail(kExitUsage, "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1 (or a FILE.stl), not '%s'", v);
       o->have_stock = true;
     } else if (name == "--grid") {
       if (!parse_pair(v, 4, 65535, &o->grid_nx, &o->grid_ny))

@@ -21,6 +21,7 @@ struct RunOptions {
   std::string file;              // input; "-" is standard input; empty: the built-in demo
   bool have_stock = false;
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
+  std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   Tool tool;                     // --tool (default flat:6)

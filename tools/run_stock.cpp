@@ -1,10 +1,13 @@
 // Default stock and grid planning; see run_stock.h.
 #include "tools/run_stock.h"
 
-#include "core/config.h"
 #include <cstdio>
 
+#include "core/config.h"
+
 #include "core/math/fixed.h"
+#include "platform/stl_read.h"
+#include "tools/cli.h"
 
 namespace dexmill {
 namespace cli {
@@ -97,6 +100,53 @@ void fill_stock(DexelGrid<H>* g, const GridPlan& plan) {
 template void fill_stock<uint8_t>(DexelGrid<uint8_t>*, const GridPlan&);
 template void fill_stock<uint16_t>(DexelGrid<uint16_t>*, const GridPlan&);
 template void fill_stock<uint32_t>(DexelGrid<uint32_t>*, const GridPlan&);
+
+int read_stock_stl(const std::string& path, std::vector<TriangleNm>* tris, StockBox* box) {
+  std::string err;
+  StlReadInfo info;
+  const StlRead r = stl_read(path, PointNm{0, 0, 0},
+                             [tris](const PointNm* v, std::string*) {
+                               tris->push_back(TriangleNm{{v[0], v[1], v[2]}});
+                               return true;
+                             },
+                             &info, &err);
+  if (r != StlRead::kOk) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return r == StlRead::kIoError ? kExitIo : kExitInput;
+  }
+  BoxAccum b;
+  for (const TriangleNm& t : *tris)
+    for (const PointNm& p : t.v) b.add(p);
+  if (b.lo.x_nm >= b.hi.x_nm || b.lo.y_nm >= b.hi.y_nm || b.lo.z_nm >= b.hi.z_nm) {
+    std::fprintf(stderr, "%s: error: the blank is flat (its box has no width, depth or height)\n", path.c_str());
+    return kExitInput;
+  }
+  *box = StockBox{b.lo, b.hi};
+  return kExitOk;
+}
+
+template <class H>
+int carve_stock(DexelGrid<H>* g, const GridPlan& plan, const std::vector<TriangleNm>& tris) {
+  const size_t cells = static_cast<size_t>(g->nx) * static_cast<size_t>(g->ny);
+  std::vector<int32_t> tops(cells);
+  DesignGrid d;
+  if (!ok(design_init(&d, plan.geo, tops.data(), cells)))
+    return fail(kExitUsage, "a blank wider than %.2f m cannot be read from STL", static_cast<double>(kDesignRangeNm) * 1e-9);
+  for (const TriangleNm& t : tris) (void)design_add_triangle(&d, t);  // within the box: in range
+  for (int32_t j = 1; j <= plan.stock_ny; ++j)
+    for (int32_t i = 1; i <= plan.stock_nx; ++i) {
+      const size_t k = g->index(i, j);
+      const int32_t t = tops[k];
+      g->top[k] = static_cast<H>(t == kNoDesign || t < 1 ? 0 : min_of<int64_t>(t, g->top[k]));
+      g->bottom[k] = 0;
+    }
+  g->dirty = g->bounds();
+  return kExitOk;
+}
+
+template int carve_stock<uint8_t>(DexelGrid<uint8_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+template int carve_stock<uint16_t>(DexelGrid<uint16_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+template int carve_stock<uint32_t>(DexelGrid<uint32_t>*, const GridPlan&, const std::vector<TriangleNm>&);
 
 }  // namespace cli
 }  // namespace dexmill

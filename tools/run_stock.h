@@ -26,7 +26,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
+#include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/motion/summary.h"
 
@@ -58,6 +60,18 @@ bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t 
 // Fills a grid set up by grid_init with the plan's stock.
 template <class H>
 void fill_stock(DexelGrid<H>* g, const GridPlan& plan);
+
+// --stock FILE.stl, a pre-machined blank: its triangles (machine mm, read
+// once, floats end there) and their bounding box. Returns kExitOk, or the
+// exit code after printing the STL reader's error.
+int read_stock_stl(const std::string& path, std::vector<TriangleNm>* tris, StockBox* box);
+
+// Carves a grid filled by fill_stock to the blank's shape: each column of the
+// stock takes the highest point of the mesh over its axis (core/design's
+// rasterizing, within 0.5 LSB + 2 nm), or becomes a hole where the mesh has
+// none. kExitOk, or kExitUsage when the stock is wider than that allows.
+template <class H>
+int carve_stock(DexelGrid<H>* g, const GridPlan& plan, const std::vector<TriangleNm>& tris);
 
 }  // namespace cli
 }  // namespace dexmill
