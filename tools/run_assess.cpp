@@ -129,37 +129,20 @@ void assess_design(const DexelGrid<height_t>& g, RunDesign* d) {
 
 namespace {
 
-// The bands' colours, by ErrorBand: the workpiece's grey where there is no
-// design, greens for material left, white within tolerance, reds for gouges,
-// light to dark.
-const Rgb kBandColour[kErrorBands] = {{196, 204, 214}, {160, 222, 160}, {70, 180, 80},  {20, 110, 40},
-                                      {248, 248, 248}, {250, 160, 150}, {228, 72, 60},  {140, 20, 20}};
-
-void classify_bands(void* ctx, GridRect r, uint8_t* cls) {
-  const RunDesign* d = static_cast<const RunDesign*>(ctx);
-  assess_bands(*d->cut, d->grid, d->opt, r, cls);
-}
-
 std::string signed_mm(int64_t nm) { return (nm > 0 ? "+" : "") + nm_to_mm_text(nm, 2); }
 
 }  // namespace
 
 void error_view_init(const DexelGrid<height_t>& g, RunDesign* d) {
-  d->cut = &g;
   d->bands.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), kBandNone);
   d->luts.assign(static_cast<size_t>(kErrorBands) * kShadeLevels, 0);
-  d->colours.cls = d->bands.data();
-  d->colours.luts = d->luts.data();
-  d->colours.nclasses = kErrorBands;
-  for (int k = 0; k < kErrorBands; ++k) d->colours.colour[k] = kBandColour[k];
-  d->colours.classify = classify_bands;
-  d->colours.ctx = d;
+  error_colours_init(&d->colours, g, d->grid, d->opt, d->bands.data(), d->luts.data());
   // Gouges on the left, dark to light, white, then material left; the
   // limits are the general tolerance's (boxes have their own).
   const uint8_t order[7] = {kBandGouge3, kBandGouge2, kBandGouge1, kBandWithin, kBandLeft1, kBandLeft2, kBandLeft3};
   RenderOutput::Legend& l = d->legend;
   l.n = 7;
-  for (int k = 0; k < 7; ++k) l.colour[k] = kBandColour[order[k]];
+  for (int k = 0; k < 7; ++k) l.colour[k] = kErrorBandColour[order[k]];
   const int64_t t = d->opt.tol_nm;
   const int64_t limits[6] = {-kBandStep3 * t, -kBandStep2 * t, -t, t, kBandStep2 * t, kBandStep3 * t};
   for (int k = 0; k < 6; ++k) l.labels[k] = signed_mm(limits[k]);

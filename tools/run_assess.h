@@ -9,7 +9,7 @@
 #include "core/config.h"
 #include "core/assess/gouge_watch.h"
 #include "core/design/design.h"
-#include "display/surface_colours.h"
+#include "display/error_colours.h"
 #include "platform/report_json.h"
 #include "tools/run_render.h"
 #include "tools/run_options.h"
@@ -24,10 +24,9 @@ struct RunDesign {
   ReportAssessment report;
   AssessOptions opt;          // tolerance, boxes and the stock's columns
   // --color error: the bands of every dexel, their ramps, and the legend.
-  const DexelGrid<height_t>* cut = nullptr;
   std::vector<uint8_t> bands;
   std::vector<uint32_t> luts;
-  SurfaceColours colours;
+  ErrorColours<height_t> colours;
   RenderOutput::Legend legend;
   // Gouges charged to their lines while cutting.
   std::vector<uint8_t> seen;

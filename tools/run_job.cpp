@@ -538,7 +538,7 @@ int run_job(RunOptions o) {
     error_view_init(grid, &design);
     for (RenderOutput* out : w.outputs) {
       if (out != error_out.get() && o.color != RunOptions::Color::kError) continue;
-      out->set_colours(&design.colours);
+      out->set_colours(&design.colours.colours);
       out->set_legend(&design.legend);
     }
   }

@@ -13,6 +13,7 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/error_colours.h"
 #include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/golden.h"
@@ -33,28 +34,21 @@ Tool ball6() {
   return t;
 }
 
-// The error view's state: the design, the bands and their ramps.
+// The error view's state: the design and its colour mode.
 struct ErrorView {
-  const DexelGrid<uint16_t>* g;
   DesignGrid design;
   AssessOptions opt;
-  SurfaceColours colours;
+  ErrorColours<uint16_t> colours;
 };
-
-void classify_bands(void* ctx, GridRect r, uint8_t* cls) {
-  const ErrorView* e = static_cast<const ErrorView*>(ctx);
-  assess_bands(*e->g, e->design, e->opt, r, cls);
-}
 
 // Sets up the design and the error colours for grid g; false when the arena is short.
 bool error_view(Arena& a, const DexelGrid<uint16_t>& g, ErrorView* e, Out& out) {
   const size_t cells = static_cast<size_t>(g.nx) * g.ny;
   int32_t* tops = a.take<int32_t>(cells);
-  e->colours.cls = a.take<uint8_t>(cells);
-  e->colours.luts = a.take<uint32_t>(static_cast<size_t>(kErrorBands) * kShadeLevels);
+  uint8_t* cls = a.take<uint8_t>(cells);
+  uint32_t* luts = a.take<uint32_t>(static_cast<size_t>(kErrorBands) * kShadeLevels);
   const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
-  if (!tops || !e->colours.cls || !e->colours.luts || !ok(design_init(&e->design, geo, tops, cells))) return false;
-  e->g = &g;
+  if (!tops || !cls || !luts || !ok(design_init(&e->design, geo, tops, cells))) return false;
   const int64_t mm = kNmPerMm, z = 14 * mm;
   const PointNm c0{0, 0, z}, c1{24 * mm, 0, z}, c2{24 * mm, 20 * mm, z}, c3{0, 20 * mm, z}, apex{16 * mm, 12 * mm, 19 * mm};
   const TriangleNm tris[6] = {{{c0, c1, c2}}, {{c0, c2, c3}},
@@ -65,12 +59,7 @@ bool error_view(Arena& a, const DexelGrid<uint16_t>& g, ErrorView* e, Out& out) 
   for (const TriangleNm& t : tris) (void)design_add_triangle(&e->design, t);
   e->opt.region = GridRect{1, 1, g.nx - 1, g.ny - 1};
   e->opt.tol_nm = 100000;
-  e->colours.nclasses = kErrorBands;
-  const Rgb band[kErrorBands] = {{196, 204, 214}, {160, 222, 160}, {70, 180, 80},  {20, 110, 40},
-                                 {248, 248, 248}, {250, 160, 150}, {228, 72, 60},  {140, 20, 20}};
-  for (int k = 0; k < kErrorBands; ++k) e->colours.colour[k] = band[k];
-  e->colours.classify = classify_bands;
-  e->colours.ctx = e;
+  error_colours_init(&e->colours, g, e->design, e->opt, cls, luts);
   AssessResult res;
   if (!ok(assess(g, e->design, e->opt, &res))) return false;
   out.str("assess").kx("E_lsb2_lo", res.e_lsb2.lo).kx("E_lsb2_hi", res.e_lsb2.hi).kv("sum_top", static_cast<int64_t>(res.sum_design_top_lsb));
@@ -154,7 +143,7 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
       fail(out, "frame: error view");
       return;
     }
-    renderer_set_colours(&r, &ev.colours);
+    renderer_set_colours(&r, &ev.colours.colours);
   }
   render_full(&r, &g, CutterPose{true, PointNm{18 * mm, 14 * mm, 12 * mm}});
   out.str(with_error_view ? "frame-error" : "frame").kv("view", static_cast<int64_t>(view));

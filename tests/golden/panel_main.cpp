@@ -15,12 +15,15 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "core/assess/assess.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
+#include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/motion/interp.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
+#include "display/error_colours.h"
 #include "display/render.h"
 #include "tests/golden/board.h"
 #include "tests/golden/golden_out.h"
@@ -188,6 +191,52 @@ bool render_frame(golden::Out& out, DexelGrid<height_t>* g, const ToolProfile& t
   return true;
 }
 
+// ==== ASSESS: the cut against the part it is meant to make (paper §2.5) =====
+// The design: the block's top at Z20 with a 42 x 30 mm pocket at Z15 (what
+// T4's contour leaves), as ten triangles (a panel gets them from its CAM
+// system). T1's floor is left 1 mm high (green), the inner pocket, the
+// finishing ramps and the drilled holes go below it (red).
+int32_t g_design_tops[kNx * kNy];
+uint8_t g_bands[kNx * kNy];
+uint32_t g_band_luts[kErrorBands * kShadeLevels];
+DesignGrid g_design;
+ErrorColours<height_t> g_error_colours;
+
+bool assess_and_draw(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
+  if (!ok(design_init(&g_design, GridGeometry{g->nx, g->ny, g->x0_nm, g->y0_nm, g->pitch_nm, g->z0_nm, g->lsb_nm},
+                      g_design_tops, static_cast<size_t>(kNx) * kNy))) {
+    out.str("panel FAIL design set-up").end();
+    return false;
+  }
+  const int64_t x0 = 0, y0 = 0, x1 = mm(48), y1 = mm(32), px0 = mm(3), py0 = mm(1), px1 = mm(45), py1 = mm(31);
+  const int64_t top = mm(20), floor = mm(15);
+  // Rectangles (x0, y0, x1, y1, z) as two triangles each: the pocket's
+  // floor, then the top around it.
+  const int64_t rects[5][5] = {{px0, py0, px1, py1, floor}, {x0, y0, x1, py0, top}, {x0, py1, x1, y1, top},
+                               {x0, py0, px0, py1, top},    {px1, py0, x1, py1, top}};
+  for (const auto& q : rects) {
+    const PointNm a{q[0], q[1], q[4]}, b{q[2], q[1], q[4]}, c{q[2], q[3], q[4]}, d{q[0], q[3], q[4]};
+    (void)design_add_triangle(&g_design, TriangleNm{{a, b, c}});
+    (void)design_add_triangle(&g_design, TriangleNm{{a, c, d}});
+  }
+  AssessOptions opt;
+  opt.region = GridRect{1, 1, g->nx - 1, g->ny - 1};
+  opt.tol_nm = um(100);
+  AssessResult res;
+  if (!ok(assess(*g, g_design, opt, &res))) return false;
+  out.str("panel assess").kx("E_lsb2_lo", res.e_lsb2.lo).kx("E_lsb2_hi", res.e_lsb2.hi);
+  out.kv("design_columns", static_cast<int64_t>(res.design_columns)).kv("within", static_cast<int64_t>(res.within_tol_columns));
+  out.kv("gouge", static_cast<int64_t>(res.gouge_columns)).kv("max_gouge_lsb", res.max_gouge_lsb);
+  out.kv("left", static_cast<int64_t>(res.leftover_columns)).kv("max_left_lsb", res.max_leftover_lsb).end();
+  // The error view (figure 10) in the same frame, from the same renderer.
+  error_colours_init(&g_error_colours, *g, g_design, opt, g_bands, g_band_luts);
+  renderer_set_colours(&g_renderer, &g_error_colours.colours);
+  const RenderResult r = render_full(&g_renderer, g, CutterPose{true, tip});
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  out.str("panel error frame").kx("hash", frame_hash(fb)).kv("rects", r.nrects).end();
+  return true;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -229,12 +278,15 @@ int main(int, char**) {
   const ToolProfile prof = tool_profile(mill.tool());
   const bool drawn = render_frame(out, &g, prof, mill.position());
   const uint64_t t4 = golden::board_instructions();
+  const bool assessed = drawn && assess_and_draw(out, &g, mill.position());
+  const uint64_t t5 = golden::board_instructions();
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
     info_instructions(out, "setup(grid)", t1 - t0, 0);
     info_instructions(out, "cut", t2 - t1, mill.stats().dexel_updates);
     info_instructions(out, "render(480x272)", t4 - t3, 0);
+    info_instructions(out, "assess+error_frame(480x272)", t5 - t4, 0);
   }
-  return (errors == 0 && drawn) ? 0 : 1;
+  return (errors == 0 && drawn && assessed) ? 0 : 1;
 }
