@@ -97,6 +97,13 @@ void print_events(const DexelGrid<height_t>& g, RunDesign* d, size_t end) {
 bool watch_gouges(const DexelGrid<height_t>& g, GridRect changed, uint32_t line, const PointNm& tool,
                   const GougeOrigin* prev, RunDesign* d) {
   const bool found = gouge_watch_check(&d->watch, g, changed, line, tool, prev);
+  if (found) {
+    d->marks.clear();
+    for (size_t k = 0; k < d->watch.nevents; ++k) {
+      const GougeEvent& e = d->watch.events[k];
+      d->marks.push_back(PointNm{g.x0_nm + e.i * g.pitch_nm, g.y0_nm + e.j * g.pitch_nm, g.z0_nm + e.design_lsb * g.lsb_nm});
+    }
+  }
   // Lines other than this record's are done (the previous line's end cap
   // came with this record).
   size_t done = d->printed;

@@ -33,6 +33,7 @@ struct RunDesign {
   GougeWatch watch;
   std::string file;           // the program, for the warnings
   size_t printed = 0;         // events whose warning is out
+  std::vector<PointNm> marks; // where the kept gouges are (deepest column, on the design's surface), for the frames
 };
 
 // Reads o.design onto the grid of `plan`. Returns kExitOk, or the exit code

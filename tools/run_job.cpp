@@ -542,6 +542,9 @@ int run_job(RunOptions o) {
       out->set_legend(&design.legend);
     }
   }
+  // The gouges found so far, marked in every frame and live view.
+  if (!o.design.empty())
+    for (RenderOutput* out : w.outputs) out->set_marks(&design.marks);
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 

@@ -53,6 +53,16 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
   pending_ = GridRect::none();
   RenderResult res = render_update(r_.get(), g, pose);
   g->dirty = saved;
+  if (marks_ && !marks_->empty()) {
+    const int32_t radius = fb_.height >= 400 ? 8 : 4;
+    const uint32_t red = pixel_pack(fb_.format, Rgb{255, 32, 24});
+    ScreenRect all{0, 0, 0, 0};
+    for (const PointNm& p : *marks_) all = rect_union(all, marker_draw(fb_, r_->view, p, radius, red));
+    if (!all.empty()) {
+      if (res.nrects < kMaxDirtyRects) res.rects[res.nrects++] = all;
+      else res.rects[res.nrects - 1] = rect_union(res.rects[res.nrects - 1], all);
+    }
+  }
   if (legend_) {
     const char* labels[kLegendMaxSwatches - 1];
     for (int32_t k = 0; k + 1 < legend_->n; ++k) labels[k] = legend_->labels[k].c_str();

@@ -15,6 +15,7 @@
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "display/legend.h"
+#include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
 
@@ -50,6 +51,8 @@ class RenderOutput {
     std::string title;
   };
   void set_legend(const Legend* l) { legend_ = l; }
+  // Points marked in red over every frame (the gouges found so far; null: none).
+  void set_marks(const std::vector<PointNm>* m) { marks_ = m; }
 
   // Grid changes since the last call of take_dirty (every output gets them).
   void note_dirty(const GridRect& r) { pending_.include(r); }
@@ -76,6 +79,7 @@ class RenderOutput {
   GridRect pending_ = GridRect::none();
   const SurfaceColours* colours_ = nullptr;
   const Legend* legend_ = nullptr;
+  const std::vector<PointNm>* marks_ = nullptr;
 };
 
 // Moves the grid's dirty rectangle into every output (then clears it).
