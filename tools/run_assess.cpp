@@ -140,6 +140,39 @@ std::string signed_mm(int64_t nm) { return (nm > 0 ? "+" : "") + nm_to_mm_text(n
 
 }  // namespace
 
+bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d, RenderOutput* cut_view,
+                   OverlayImage* ov, const FrameView** shown, std::string* err) {
+  const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
+  ov->top.assign(cells, 0);
+  ov->bottom.assign(cells, 0);
+  (void)grid_init(&ov->grid, plan.geo, ov->top.data(), ov->bottom.data(), cells);
+  design_to_grid(d.grid, d.opt.region, &ov->grid);
+  FrameView fb = cut_view->view();
+  ov->pixels.assign(static_cast<size_t>(fb.height) * static_cast<size_t>(fb.stride_bytes / 4 + 1), 0);
+  fb.pixels = ov->pixels.data();
+  ov->out.reset(new RenderOutput());
+  if (!ov->out->init(ov->grid, fb, CameraChoice{}, err)) return false;
+  // The design in a colour of its own: a one-class colour mode.
+  ov->cls.assign(cells, 0);
+  ov->lut.assign(kShadeLevels, 0);
+  ov->colours.cls = ov->cls.data();
+  ov->colours.luts = ov->lut.data();
+  ov->colours.nclasses = 1;
+  ov->colours.colour[0] = Rgb{80, 140, 230};
+  ov->out->set_colours(&ov->colours);
+  ov->out->share_view_of(*cut_view);
+  ov->out->draw(&ov->grid, CutterPose{});
+  const ScreenRect all{0, 0, fb.width, fb.height};
+  if (o.overlay == RunOptions::Overlay::kDesign) {
+    overlay_blend(cut_view->view(), cut_view->depth(), ov->out->view(), ov->out->depth(), all);
+    *shown = &cut_view->view();
+  } else {
+    overlay_blend(ov->out->view(), ov->out->depth(), cut_view->view(), cut_view->depth(), all);
+    *shown = &ov->out->view();
+  }
+  return true;
+}
+
 void error_view_init(const DexelGrid<height_t>& g, RunDesign* d) {
   d->bands.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), kBandNone);
   d->luts.assign(static_cast<size_t>(kErrorBands) * kShadeLevels, 0);

@@ -4,6 +4,8 @@
 #define DEXMILL_TOOLS_RUN_ASSESS_H
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/config.h"
@@ -53,6 +55,23 @@ bool watch_gouges(const DexelGrid<height_t>& g, GridRect changed, uint32_t line,
                   const GougeOrigin* prev, RunDesign* d);
 // Prints the warnings not printed yet (the end of the run, or a stop).
 void print_gouges(const DexelGrid<height_t>& g, RunDesign* d);
+
+// --overlay (paper figure 9) for the final image: the design drawn as a
+// dexel grid of its own, in a colour of its own, through the view of
+// `cut_view` (the cut's final frame), and one of the two blended over the
+// other where it is the nearer (display/overlay.h). *shown is the frame to
+// write. False with *err when the frame cannot be drawn.
+struct OverlayImage {
+  std::vector<height_t> top, bottom;
+  DexelGrid<height_t> grid;
+  std::vector<uint32_t> pixels;
+  std::unique_ptr<RenderOutput> out;
+  std::vector<uint8_t> cls;
+  std::vector<uint32_t> lut;
+  SurfaceColours colours;
+};
+bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d, RenderOutput* cut_view,
+                   OverlayImage* ov, const FrameView** shown, std::string* err);
 
 // Compares the cut with the design into d->report.
 void assess_design(const DexelGrid<height_t>& g, RunDesign* d);

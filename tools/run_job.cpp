@@ -507,10 +507,8 @@ int run_job(RunOptions o) {
     w.every = o.every ? static_cast<uint64_t>(o.every) : max_of<uint64_t>(1, (motion_moves + 99) / 100);
     w.outputs.push_back(frames_out.get());
   }
-  // The final image is the frame of the live view or of the sequence when
-  // there is one (the same pixels), else a frame of its own.
   // A still frame of its own at --size.
-  auto still = [&](const DexelGrid<height_t>& g, std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) -> bool {
+  auto still = [&](std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) -> bool {
     pixels->assign(static_cast<size_t>(o.width) * static_cast<size_t>(o.height), 0);
     FrameView fb;
     fb.pixels = pixels->data();
@@ -519,18 +517,20 @@ int run_job(RunOptions o) {
     fb.stride_bytes = o.width * 4;
     fb.format = PixelFormat::kXrgb8888;
     out->reset(new RenderOutput());
-    return (*out)->init(g, fb, cam, &err);
+    return (*out)->init(grid, fb, cam, &err);
   };
+  // The final image is the frame of the live view or of the sequence when
+  // there is one (the same pixels), else a frame of its own.
   RenderOutput* image_src = is_live ? w.live_out : frames_out.get();
   if (!o.image.empty() && !image_src) {
-    if (!still(grid, &image_pixels, &image_out)) return fail(kExitUsage, "%s", err.c_str());
+    if (!still(&image_pixels, &image_out)) return fail(kExitUsage, "%s", err.c_str());
     w.outputs.push_back(image_out.get());
     image_src = image_out.get();
   }
   std::vector<uint32_t> error_pixels;
   std::unique_ptr<RenderOutput> error_out;
   if (!o.error_image.empty()) {
-    if (!still(grid, &error_pixels, &error_out)) return fail(kExitUsage, "%s", err.c_str());
+    if (!still(&error_pixels, &error_out)) return fail(kExitUsage, "%s", err.c_str());
     w.outputs.push_back(error_out.get());
   }
   for (RenderOutput* out : w.outputs) out->set_tool(o.tool);
@@ -609,39 +609,10 @@ int run_job(RunOptions o) {
     const double t0 = clock_now_s();
     if (image_src != w.live_out) image_src->draw(&grid, cut.pose());
     const FrameView* shown = &image_src->view();
-    // --overlay (paper figure 9): the design drawn as a dexel grid of its
-    // own, seen through the same view, and one of the two blended over the
-    // other where it is the nearer.
-    std::vector<height_t> dtop, dbottom;
-    DexelGrid<height_t> dgrid;
-    std::vector<uint32_t> dpixels;
-    std::unique_ptr<RenderOutput> dout;
-    std::vector<uint8_t> dcls;
-    uint32_t dlut[kShadeLevels];
-    SurfaceColours dcolours;
-    if (o.overlay != RunOptions::Overlay::kNone && image_src != w.live_out) {
-      dtop.assign(cells, 0);
-      dbottom.assign(cells, 0);
-      (void)grid_init(&dgrid, plan.geo, dtop.data(), dbottom.data(), cells);
-      design_to_grid(design.grid, design.opt.region, &dgrid);
-      if (!still(dgrid, &dpixels, &dout)) return fail(kExitUsage, "%s", err.c_str());
-      // The design in a colour of its own (a one-class colour mode).
-      dcls.assign(cells, 0);
-      dcolours.cls = dcls.data();
-      dcolours.luts = dlut;
-      dcolours.nclasses = 1;
-      dcolours.colour[0] = Rgb{80, 140, 230};
-      dout->set_colours(&dcolours);
-      dout->share_view_of(*image_src);
-      dout->draw(&dgrid, CutterPose{});
-      const ScreenRect all{0, 0, o.width, o.height};
-      if (o.overlay == RunOptions::Overlay::kDesign) {
-        overlay_blend(image_src->view(), image_src->depth(), dout->view(), dout->depth(), all);
-      } else {
-        overlay_blend(dout->view(), dout->depth(), image_src->view(), image_src->depth(), all);
-        shown = &dout->view();
-      }
-    }
+    OverlayImage overlay;
+    if (o.overlay != RunOptions::Overlay::kNone && image_src != w.live_out &&
+        !overlay_image(o, plan, design, image_src, &overlay, &shown, &err))
+      return fail(kExitUsage, "%s", err.c_str());
     const double t1 = clock_now_s();
     render_s += t1 - t0;
     if (!write_ppm(o.image.c_str(), *shown, e, sizeof e)) return fail(kExitIo, "%s", e);
