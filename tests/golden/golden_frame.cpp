@@ -7,6 +7,7 @@
 // pyramid on it) in the error view (paper §2.5, figure 10), with the
 // assessment's figures: E, sum of design tops, the band counts.
 #include <stdint.h>
+#include <string.h>
 
 #include "core/assess/assess.h"
 #include "core/cut/sweep.h"
@@ -96,7 +97,21 @@ void overlay(Out& out, Arena& a, const DexelGrid<uint16_t>& g, const ErrorView& 
   const ScreenRect all{0, 0, fb.width, fb.height};
   const DepthView rz{r.target.z, r.target.z_stride, r.target.zformat}, dz{rd.target.z, rd.target.z_stride, rd.target.zformat};
   out.str("overlay").kx("design", frame_hash(dfb));
-  overlay_blend(fb, rz, dfb, dz, all);
+  // Both ways: the cut over the design into the design's frame first (its
+  // own pixels are not needed after), then the design over the cut from a
+  // copy of the design's frame taken before.
+  const size_t bytes = static_cast<size_t>(fb.stride_bytes) * fb.height;
+  uint8_t* design_copy = a.take<uint8_t>(bytes);
+  if (!design_copy) {
+    fail(out, "frame: overlay copy");
+    return;
+  }
+  memcpy(design_copy, pixels, bytes);
+  FrameView copy = dfb;
+  copy.pixels = design_copy;
+  overlay_blend(dfb, dz, fb, rz, all);
+  out.kx("cut_over_design", frame_hash(dfb));
+  overlay_blend(fb, rz, copy, dz, all);
   out.kx("design_over_cut", frame_hash(fb)).end();
 }
 
