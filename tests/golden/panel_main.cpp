@@ -24,6 +24,7 @@
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
 #include "display/error_colours.h"
+#include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/board.h"
 #include "tests/golden/golden_out.h"
@@ -237,6 +238,50 @@ bool assess_and_draw(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
   return true;
 }
 
+// ==== OVERLAY: the design translucent over the cut (paper figure 9) ==========
+// The design as a grid of its own, drawn by a second renderer through the
+// same view, blended over the plain frame of the cut where it is nearer:
+// what went below the design shows in the design's colour.
+height_t g_design_top[kNx * kNy];
+height_t g_design_bottom[kNx * kNy];
+uint16_t g_design_frame[kFrameW * kFrameH];
+uint64_t g_design_scratch[kScratchWords];
+Renderer<height_t> g_design_renderer;
+uint8_t g_design_cls[kNx * kNy];
+uint32_t g_design_lut[kShadeLevels];
+
+bool overlay_frame(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
+  DexelGrid<height_t> dg;
+  const GridGeometry geo{g->nx, g->ny, g->x0_nm, g->y0_nm, g->pitch_nm, g->z0_nm, g->lsb_nm};
+  FrameView dfb{g_design_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  RenderOptions opt;
+  opt.zformat = ZFormat::kZ16;
+  if (!ok(grid_init(&dg, geo, g_design_top, g_design_bottom, static_cast<size_t>(kNx) * kNy)) ||
+      !ok(renderer_init(&g_design_renderer, dg, dfb, opt, g_design_scratch, sizeof g_design_scratch))) {
+    out.str("panel FAIL overlay set-up").end();
+    return false;
+  }
+  design_to_grid(g_design, GridRect{1, 1, g->nx - 1, g->ny - 1}, &dg);
+  SurfaceColours blue;
+  blue.cls = g_design_cls;  // all class 0 (static zeros)
+  blue.luts = g_design_lut;
+  blue.nclasses = 1;
+  blue.colour[0] = Rgb{80, 140, 230};
+  renderer_set_colours(&g_design_renderer, &blue);
+  renderer_share_frame(&g_design_renderer, g_renderer);
+  renderer_set_camera(&g_design_renderer, g_renderer.cam);
+  render_full(&g_design_renderer, &dg, CutterPose{});
+  // The cut's plain frame again (the error view replaced it), then the blend.
+  renderer_set_colours(&g_renderer, nullptr);
+  render_full(&g_renderer, g, CutterPose{true, tip});
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  const DepthView cz{g_renderer.target.z, g_renderer.target.z_stride, g_renderer.target.zformat};
+  const DepthView dz{g_design_renderer.target.z, g_design_renderer.target.z_stride, g_design_renderer.target.zformat};
+  overlay_blend(fb, cz, dfb, dz, ScreenRect{0, 0, kFrameW, kFrameH});
+  out.str("panel overlay frame").kx("design", frame_hash(dfb)).kx("design_over_cut", frame_hash(fb)).end();
+  return true;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -280,6 +325,8 @@ int main(int, char**) {
   const uint64_t t4 = golden::board_instructions();
   const bool assessed = drawn && assess_and_draw(out, &g, mill.position());
   const uint64_t t5 = golden::board_instructions();
+  const bool overlaid = assessed && overlay_frame(out, &g, mill.position());
+  const uint64_t t6 = golden::board_instructions();
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
@@ -287,6 +334,7 @@ int main(int, char**) {
     info_instructions(out, "cut", t2 - t1, mill.stats().dexel_updates);
     info_instructions(out, "render(480x272)", t4 - t3, 0);
     info_instructions(out, "assess+error_frame(480x272)", t5 - t4, 0);
+    info_instructions(out, "overlay(2 frames+blend)", t6 - t5, 0);
   }
-  return (errors == 0 && drawn && assessed) ? 0 : 1;
+  return (errors == 0 && drawn && assessed && overlaid) ? 0 : 1;
 }
