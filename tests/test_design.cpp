@@ -228,3 +228,19 @@ TEST(design_from_image_maps_pixels_and_grey_levels) {
   CHECK_EQ(d.top_lsb[d.index(10, 2)], kNoDesign);  // right of the image
   CHECK_EQ(design_from_image(&d, HeightImage{px, 0, 2, 255}, X0, Y0, X0 + 1, Y0 + 1, 0, 1), Status::kBadArgument);
 }
+
+TEST(design_edge_functions_hold_at_the_range_limit) {
+  // A triangle spanning the whole range from a grid whose last column sits
+  // at the limit: the worst-case edge products (checked under UBSan in
+  // make test SAN=1), the right columns covered.
+  const int64_t lim = kDesignRangeNm;
+  GridGeometry g{2, 2, 0, 0, lim, 0, 1000};
+  std::vector<int32_t> mem(4);
+  DesignGrid d;
+  CHECK_EQ(design_init(&d, g, mem.data(), mem.size()), Status::kOk);
+  CHECK_EQ(design_add_triangle(&d, TriangleNm{{{-lim, -lim, lim}, {lim, -lim, lim}, {-lim, lim, -lim}}}), Status::kOk);
+  CHECK_EQ(design_add_triangle(&d, TriangleNm{{{lim, lim, -lim}, {-lim, lim, lim}, {lim, -lim, lim}}}), Status::kOk);
+  for (int32_t v : mem) CHECK(v != kNoDesign);
+  g.pitch_nm = lim + 1;
+  CHECK_EQ(design_init(&d, g, mem.data(), mem.size()), Status::kOutOfRange);
+}

@@ -9,8 +9,8 @@ namespace {
 
 bool within_range(int64_t v) { return v >= -kDesignRangeNm && v <= kDesignRangeNm; }
 
-// (b - a) x (p - a), exact: every coordinate within +-2^30, so each product
-// is below 2^62 and the difference below 2^63.
+// (b - a) x (p - a), exact: every coordinate within +-kDesignRangeNm, so
+// each product is below 2^62 and the difference below 2^63.
 int64_t edge(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py) {
   return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
 }

@@ -23,9 +23,11 @@ namespace dexmill {
 // A column with no design material.
 constexpr int32_t kNoDesign = INT32_MIN;
 
-// Vertices, and the grid's extent, must lie within +-2^30 nm (1.07 m) of the
-// grid's origin (x0, y0, z0): the exact edge functions then fit int64.
-constexpr int64_t kDesignRangeNm = static_cast<int64_t>(1) << 30;
+// Vertices, and the grid's extent, must lie within +-(2^30 - 1) nm (1.07 m)
+// of the grid's origin (x0, y0, z0): a coordinate difference is then below
+// 2^31 in magnitude, each product of two below 2^62, and an edge function
+// (a difference of two products) fits int64 exactly.
+constexpr int64_t kDesignRangeNm = (static_cast<int64_t>(1) << 30) - 1;
 
 struct DesignGrid {
   GridGeometry geo{};         // the workpiece grid's geometry
