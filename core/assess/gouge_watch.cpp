@@ -13,7 +13,6 @@ Status gouge_watch_init(GougeWatch* w, const DesignGrid* d, const AssessOptions&
   for (size_t k = 0; k < seen_bytes; ++k) seen[k] = 0;
   w->nevents = 0;
   w->total = 0;
-  w->columns = 0;
   return Status::kOk;
 }
 
@@ -73,7 +72,6 @@ bool gouge_watch_check(GougeWatch* w, const DexelGrid<H>& g, GridRect changed, u
       const int64_t tol = w->opt.nboxes ? assess_tolerance_nm(w->opt, d.geo, i, j) / g.lsb_nm : tol_all;
       if (depth <= tol) continue;
       w->seen[k >> 3] = static_cast<uint8_t>(w->seen[k >> 3] | (1u << (k & 7)));
-      ++w->columns;
       found = true;
       const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
       const bool before = prev && prev->tool && origin_explains(*prev, x, y, g.z0_nm + tr[i] * g.lsb_nm, g.lsb_nm);

@@ -4,8 +4,8 @@
 // that goes below its design top by more than its tolerance for the first
 // time is charged to that record's line. One event per line (records of
 // one line in a row share it): its deepest column, the depth, where that
-// line left the tool, and how many columns it gouged. Bounded: the first kGougeEventsMax events are kept, the rest
-// counted, never silently dropped.
+// line left the tool, and how many columns it gouged. Bounded: the first
+// kGougeEventsMax events are kept, the rest counted, never silently dropped.
 //
 // Attribution: the Mill cuts a straight move's end cap (the tool standing
 // at its end) with the next record, for the chain of moves to share it.
@@ -33,7 +33,7 @@ struct GougeEvent {
   int64_t depth_lsb = 0;      // design top - cut top there, LSB
   int64_t design_lsb = 0;     // the design top there
   PointNm tool{0, 0, 0};      // the tool tip at the record's end
-  uint64_t columns = 0;       // columns this record gouged first
+  uint64_t columns = 0;       // columns this line gouged first
 };
 
 struct GougeWatch {
@@ -43,7 +43,6 @@ struct GougeWatch {
   GougeEvent events[kGougeEventsMax];
   size_t nevents = 0;         // kept
   uint64_t total = 0;         // events in all (kept + not kept)
-  uint64_t columns = 0;       // gouged columns in all
 };
 
 // Where the line before left the tool: its end and its profile.
