@@ -30,7 +30,8 @@ void usage(FILE* f) {
                "  dexmill check FILE                 read and interpret a program, report errors only\n"
                "  dexmill bench [NAME...]            run benchmarks, one result line each\n"
                "  dexmill --help | --version         (also `dexmill COMMAND --help`)\n\n"
-               "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error.\n");
+               "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error, 4 a check\n"
+               "you asked for failed (run --stop-at, --fail-on-gouge).\n");
 }
 
 }  // namespace
