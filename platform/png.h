@@ -3,9 +3,10 @@
 //
 // Each encoder replaces *out with a whole file: the signature, IHDR, the
 // image data in IDAT chunks of at most 64 KiB, and IEND, each chunk with its
-// CRC. Rows are filtered one by one with the filter type (None, Sub, Up,
-// Average, Paeth) whose output has the least sum of absolute values taken as
-// signed bytes (the specification's suggested heuristic, section 12.8). The
+// CRC. Grey images' rows are filtered one by one with the filter type
+// (None, Sub, Up, Average, Paeth) whose output has the least sum of absolute
+// values taken as signed bytes (the specification's suggested heuristic,
+// section 12.8); RGB frames are left unfiltered (png.cpp says why). The
 // output depends only on the pixels: the same bytes on every run and
 // platform (no time chunk, no other ancillary chunks).
 //
