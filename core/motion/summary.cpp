@@ -42,6 +42,19 @@ int64_t MotionSummary::piece_time_us(int64_t length_nm, int64_t rate_nm_per_min)
   return muldiv_round(length_nm, 60 * 1000000LL, rate_nm_per_min);
 }
 
+int64_t MotionSummary::move_time_us(const MotionTimeModel& m, int64_t length_nm, int64_t rate_nm_per_min) {
+  const int64_t cruise_us = piece_time_us(length_nm, rate_nm_per_min);
+  if (m.accel_nm_per_s2 <= 0 || length_nm <= 0 || rate_nm_per_min <= 0) return cruise_us;
+  // Trapezoid: speeding up and slowing down cover v^2 / a and take 2 v / a,
+  // so the move takes L / v + v / a when L >= v^2 / a, that is when
+  // L / v >= v / a; else a triangle, 2 sqrt(L / a).
+  const int64_t ramp_us = muldiv_round(rate_nm_per_min, 1000000, sat_mul_i64(60, m.accel_nm_per_s2));
+  if (cruise_us >= ramp_us) return sat_add_i64(cruise_us, ramp_us);
+  // sqrt(L / a) s = sqrt(L * 10^12 / a) us.
+  const int64_t q = muldiv_round(length_nm, 1000000000000LL, m.accel_nm_per_s2);
+  return 2 * static_cast<int64_t>(isqrt_round_u64(static_cast<uint64_t>(q)));
+}
+
 MotionSummary::MotionSummary(const MotionTimeModel& model) : model_(model) {}
 
 namespace {
@@ -62,7 +75,7 @@ void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t
   motion_.add(a);
   motion_.add(b);
   if (len < 0) len = distance_nm(a, b);
-  const int64_t us = piece_time_us(len, rate);
+  const int64_t us = move_time_us(model_, len, rate);
   if (feed) {
     feed_.add(a);
     feed_.add(b);

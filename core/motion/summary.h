@@ -33,6 +33,11 @@ struct BoxAccum {
 
 struct MotionTimeModel {
   int64_t rapid_nm_per_min = 5000 * 1000000LL;  // 5000 mm/min
+  // > 0: every move (a straight move, or an arc as a whole) starts and ends
+  // at rest and reaches its rate by this acceleration (a trapezoidal speed
+  // profile, a triangle when the move is too short): an upper bound on
+  // what a controller that blends moves takes. 0: no acceleration.
+  int64_t accel_nm_per_s2 = 0;
 };
 
 constexpr int kCanonKinds = 9;  // CanonKind values 0..8
@@ -66,6 +71,9 @@ class MotionSummary final : public CanonSink {
   // Time of one straight piece at a rate (nm/min), us, rounded; 0 for a
   // rate <= 0.
   static int64_t piece_time_us(int64_t length_nm, int64_t rate_nm_per_min);
+  // Time of one move of the model: piece_time_us with the acceleration's
+  // ramps, within 1.1 us of the exact trapezoid (tests/test_motion_summary.cpp).
+  static int64_t move_time_us(const MotionTimeModel& m, int64_t length_nm, int64_t rate_nm_per_min);
 
  private:
   // One straight piece; len_nm < 0: its own length.
