@@ -334,7 +334,13 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   return res;
 }
 
+template <class H>
+void renderer_invalidate(Renderer<H>* r, const ScreenRect& rect) {
+  if (!r->need_full) tiles_mark(&r->tiles, rect);
+}
+
 #define DEXMILL_RENDER_INSTANTIATE(H)                                                                       \
+  template void renderer_invalidate<H>(Renderer<H>*, const ScreenRect&);                                    \
   template Status renderer_init<H>(Renderer<H>*, const DexelGrid<H>&, const FrameView&, const RenderOptions&, \
                                    void*, size_t);                                                          \
   template BoxNm renderer_stock_box<H>(const Renderer<H>&);                                                 \

@@ -155,6 +155,11 @@ RenderResult render_full(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutt
 template <class H>
 RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cutter);
 
+// Has the next render_update repaint `rect` too (what was drawn over the
+// frame there changes: a backplot piece that turned from to come to done).
+template <class H>
+void renderer_invalidate(Renderer<H>* r, const ScreenRect& rect);
+
 #define DEXMILL_RENDER_EXTERN(H)                                                                                   \
   extern template Status renderer_init<H>(Renderer<H>*, const DexelGrid<H>&, const FrameView&, const RenderOptions&, \
                                           void*, size_t);                                                          \
@@ -165,7 +170,8 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   extern template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
   extern template void renderer_share_frame<H>(Renderer<H>*, const Renderer<H>&);                                   \
   extern template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
-  extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);
+  extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                   \
+  extern template void renderer_invalidate<H>(Renderer<H>*, const ScreenRect&);
 DEXMILL_RENDER_EXTERN(uint8_t)
 DEXMILL_RENDER_EXTERN(uint16_t)
 DEXMILL_RENDER_EXTERN(uint32_t)
