@@ -4,7 +4,9 @@
 #   make run          build and run the built-in demo (writes out/)
 #   make test         build and run every test (SAN=1: under ASan+UBSan)
 #   make CXX=clang++  the same with clang
-#   make GLFW=1       with the live window of `dexmill run --window` (libglfw3-dev)
+#   make GLFW=1       build/glfw/dexmill, with the live window of `dexmill run --window`
+#                     (libglfw3-dev: tools/scripts/install-deps.sh window); its own
+#                     build folder, so switching does not rebuild the rest
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (DESIGN.md
@@ -15,7 +17,7 @@
 CXX      ?= g++
 SAN      ?=
 OPT      ?= -O2
-BUILD    ?= build$(if $(SAN),/san)
+BUILD    ?= build$(if $(SAN),/san)$(if $(GLFW),/glfw)
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wvla -Wundef
 BASEFLAGS := -std=c++17 $(OPT) -g $(WARN) -I. -MMD -MP
@@ -33,6 +35,9 @@ LDLIBS   ?=
 # The window (platform/window_glfw.cpp) needs GLFW and OpenGL.
 GLFW     ?=
 ifneq ($(GLFW),)
+ifneq ($(shell pkg-config --exists glfw3 gl 2>/dev/null && echo yes),yes)
+$(error GLFW=1 needs GLFW and OpenGL's development files (pkg-config glfw3 gl); install them with tools/scripts/install-deps.sh window)
+endif
 HOSTFLAGS += -DDEXMILL_GLFW $(shell pkg-config --cflags glfw3 gl)
 LDLIBS   += $(shell pkg-config --libs glfw3 gl)
 endif

@@ -1,17 +1,18 @@
-#include "platform/ppm_frames.h"
+#include "platform/frame_files.h"
 
+#include <dirent.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 
-#include "platform/ppm.h"
 
 namespace dexmill {
 
-PpmFrames::PpmFrames(const std::string& dir, int32_t width, int32_t height)
-    : dir_(dir), pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+FrameFiles::FrameFiles(const std::string& dir, ImageFormat format, int32_t width, int32_t height)
+    : dir_(dir), format_(format), pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
   view_.pixels = pixels_.data();
   view_.width = width;
   view_.height = height;
@@ -19,11 +20,12 @@ PpmFrames::PpmFrames(const std::string& dir, int32_t width, int32_t height)
   view_.format = PixelFormat::kXrgb8888;
 }
 
-bool PpmFrames::present(const ScreenRect*, int) {
+bool FrameFiles::present(const ScreenRect*, int) {
   // A file holds a whole frame, whatever changed.
   char path[1100];
-  std::snprintf(path, sizeof path, "%s/frame-%06u.ppm", dir_.c_str(), static_cast<unsigned>(written_ + 1));
-  if (!write_ppm(path, view_, error_, sizeof error_)) return false;
+  std::snprintf(path, sizeof path, "%s/frame-%06u.%s", dir_.c_str(), static_cast<unsigned>(written_ + 1),
+                image_format_extension(format_));
+  if (!write_frame_image(path, format_, view_, error_, sizeof error_)) return false;
   ++written_;
   return true;
 }
@@ -51,6 +53,40 @@ bool make_dirs(const std::string& dir, std::string* err) {
     }
   }
   return true;
+}
+
+namespace {
+
+// frame-NNNNNN.png or frame-NNNNNN.ppm: the names FrameFiles writes.
+bool is_frame_name(const char* name) {
+  if (std::strncmp(name, "frame-", 6) != 0) return false;
+  for (int k = 6; k < 12; ++k)
+    if (name[k] < '0' || name[k] > '9') return false;
+  return std::strcmp(name + 12, ".png") == 0 || std::strcmp(name + 12, ".ppm") == 0;
+}
+
+}  // namespace
+
+bool remove_old_frames(const std::string& dir, uint32_t* removed, std::string* err) {
+  *removed = 0;
+  DIR* d = opendir(dir.c_str());
+  if (!d) {
+    *err = "cannot read directory '" + dir + "': " + std::strerror(errno);
+    return false;
+  }
+  bool ok = true;
+  while (const dirent* e = readdir(d)) {
+    if (!is_frame_name(e->d_name)) continue;
+    const std::string path = dir + "/" + e->d_name;
+    if (unlink(path.c_str()) != 0) {
+      *err = "cannot remove the earlier frame '" + path + "': " + std::strerror(errno);
+      ok = false;
+      break;
+    }
+    ++*removed;
+  }
+  closedir(d);
+  return ok;
 }
 
 }  // namespace dexmill

@@ -1,21 +1,22 @@
 // A Screen whose every present() writes the whole frame as the next file of
-// a numbered sequence: DIR/frame-000001.ppm, DIR/frame-000002.ppm, ...
-// The frame is XRGB8888 in memory this object owns.
-#ifndef DEXMILL_PLATFORM_PPM_FRAMES_H
-#define DEXMILL_PLATFORM_PPM_FRAMES_H
+// a numbered sequence: DIR/frame-000001.png, DIR/frame-000002.png, ... (or
+// .ppm). The frame is XRGB8888 in memory this object owns.
+#ifndef DEXMILL_PLATFORM_FRAME_FILES_H
+#define DEXMILL_PLATFORM_FRAME_FILES_H
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "platform/image_file.h"
 #include "platform/screen.h"
 
 namespace dexmill {
 
-class PpmFrames final : public Screen {
+class FrameFiles final : public Screen {
  public:
-  // Frames of width x height into `dir` (which must exist).
-  PpmFrames(const std::string& dir, int32_t width, int32_t height);
+  // Frames of width x height into `dir` (which must exist), as PNG or PPM.
+  FrameFiles(const std::string& dir, ImageFormat format, int32_t width, int32_t height);
 
   FrameView frame() override { return view_; }
   bool present(const ScreenRect* rects, int count) override;
@@ -25,6 +26,7 @@ class PpmFrames final : public Screen {
 
  private:
   std::string dir_;
+  ImageFormat format_;
   std::vector<uint32_t> pixels_;
   FrameView view_;
   uint32_t written_ = 0;
@@ -35,6 +37,12 @@ class PpmFrames final : public Screen {
 // with a message ("cannot create directory 'x': ...") on failure, including
 // when a component exists and is not a directory.
 bool make_dirs(const std::string& dir, std::string* err);
+
+// Removes the files of an earlier sequence from `dir` (frame-NNNNNN.png and
+// .ppm, nothing else), so that a shorter run's frames are not mixed with a
+// longer run's. Sets *removed to their count. False with a message when one
+// cannot be removed or the folder cannot be read.
+bool remove_old_frames(const std::string& dir, uint32_t* removed, std::string* err);
 
 }  // namespace dexmill
 

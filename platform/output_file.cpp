@@ -1,66 +1,122 @@
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdarg>
 #include <cstring>
-#include <unistd.h>
 
 namespace dexmill {
 
-AtomicFile::~AtomicFile() { abandon(); }
+// Follows symbolic links (as the kernel would, up to its usual limit of
+// 40): that name is replaced, the links stay.
+bool output_target(const std::string& path, std::string* out) {
+  std::string p = path;
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st;
+    if (lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) {
+      *out = p;
+      return true;
+    }
+    char buf[4096];
+    const ssize_t n = readlink(p.c_str(), buf, sizeof buf - 1);
+    if (n < 0) return false;
+    buf[n] = 0;
+    if (buf[0] == '/') {
+      p = buf;
+    } else {
+      const size_t slash = p.rfind('/');
+      p = (slash == std::string::npos ? std::string() : p.substr(0, slash + 1)) + buf;
+    }
+  }
+  errno = ELOOP;
+  return false;
+}
 
-void AtomicFile::set_error(const char* what, const char* path) {
+OutputFile::~OutputFile() { abandon(); }
+
+void OutputFile::set_error(const char* what, const char* path) {
   if (!failed_) std::snprintf(error_, sizeof error_, "cannot %s '%s': %s", what, path, std::strerror(errno));
   failed_ = true;
 }
 
-void AtomicFile::abandon() {
-  if (f_) {
+void OutputFile::abandon() {
+  if (f_ && !stdout_) {
     std::fclose(f_);
-    f_ = nullptr;
-    std::remove(tmp_);
+    if (!tmp_.empty()) std::remove(tmp_.c_str());
   }
+  f_ = nullptr;
+  stdout_ = false;
 }
 
-bool AtomicFile::open(const char* path) {
+bool OutputFile::open(const char* path) {
   abandon();
   failed_ = false;
   error_[0] = 0;
-  if (std::strlen(path) >= sizeof path_) {
-    std::snprintf(error_, sizeof error_, "cannot write '%s': path too long", path);
-    failed_ = true;
+  path_ = path;
+  target_.clear();
+  tmp_.clear();
+  mode_ = -1;
+  if (is_stdout_path(path_)) {
+    f_ = stdout;
+    stdout_ = true;
+    return true;
+  }
+  std::string real;
+  if (!output_target(path_, &real)) {
+    set_error("write", path);
     return false;
   }
-  std::snprintf(path_, sizeof path_, "%s", path);
-  std::snprintf(tmp_, sizeof tmp_, "%s.tmp-%ld", path, static_cast<long>(getpid()));
-  f_ = std::fopen(tmp_, "wb");
+  struct stat st;
+  const bool exists = stat(real.c_str(), &st) == 0;
+  if (exists && !S_ISREG(st.st_mode)) {
+    // A device, FIFO or socket is written to, never replaced by a file
+    // (run as root, a rename over /dev/null would replace the device).
+    f_ = std::fopen(real.c_str(), "wb");
+    if (!f_) set_error("write", path);
+    return f_ != nullptr;
+  }
+  target_ = real;
+  if (exists) mode_ = static_cast<int>(st.st_mode & 07777);
+  tmp_ = real + ".tmp-" + std::to_string(static_cast<long>(getpid()));
+  f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) {
-    set_error("write", path_);
+    tmp_.clear();
+    set_error("write", path);
     return false;
   }
   return true;
 }
 
-void AtomicFile::write(const void* data, std::size_t n) {
+void OutputFile::write(const void* data, std::size_t n) {
   if (!f_ || failed_) return;
-  if (n && std::fwrite(data, 1, n, f_) != n) set_error("write", path_);
+  if (n && std::fwrite(data, 1, n, f_) != n) set_error("write", path_.c_str());
 }
 
-void AtomicFile::printf(const char* fmt, ...) {
+void OutputFile::printf(const char* fmt, ...) {
   if (!f_ || failed_) return;
   va_list ap;
   va_start(ap, fmt);
-  if (std::vfprintf(f_, fmt, ap) < 0) set_error("write", path_);
+  if (std::vfprintf(f_, fmt, ap) < 0) set_error("write", path_.c_str());
   va_end(ap);
 }
 
-bool AtomicFile::commit() {
+bool OutputFile::commit() {
   if (!f_) return false;
-  if (!failed_ && std::fflush(f_) != 0) set_error("write", path_);
-  if (std::fclose(f_) != 0 && !failed_) set_error("write", path_);
+  if (!failed_ && std::fflush(f_) != 0) set_error("write", path_.c_str());
+  if (stdout_) {
+    f_ = nullptr;
+    stdout_ = false;
+    return !failed_;
+  }
+  if (mode_ >= 0 && !failed_ && fchmod(fileno(f_), static_cast<mode_t>(mode_)) != 0) set_error("write", path_.c_str());
+  if (std::fclose(f_) != 0 && !failed_) set_error("write", path_.c_str());
   f_ = nullptr;
-  if (!failed_ && std::rename(tmp_, path_) != 0) set_error("write", path_);
-  if (failed_) std::remove(tmp_);
+  if (tmp_.empty()) return !failed_;  // written in place
+  if (!failed_ && std::rename(tmp_.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
+  if (failed_) std::remove(tmp_.c_str());
+  tmp_.clear();
   return !failed_;
 }
 

@@ -1,27 +1,36 @@
-// Output files are written completely or not at all: data goes to a
-// temporary file beside the target, which is renamed over it on commit.
-#ifndef DEXMILL_PLATFORM_ATOMIC_FILE_H
-#define DEXMILL_PLATFORM_ATOMIC_FILE_H
+// Output files, written the way a careful Unix tool writes them:
+// - a regular file (or a new name) is written completely or not at all:
+//   the data goes to a temporary file beside it, renamed over it on commit,
+//   keeping the old file's permission bits;
+// - a symbolic link is written through: its target is replaced that way,
+//   the link stays a link;
+// - anything else that exists (a device such as /dev/null, a FIFO, a socket)
+//   is opened and written straight through, never replaced by a file;
+// - "-" is standard output.
+#ifndef DEXMILL_PLATFORM_OUTPUT_FILE_H
+#define DEXMILL_PLATFORM_OUTPUT_FILE_H
 
 #include <cstddef>
 #include <cstdio>
+#include <string>
 
 namespace dexmill {
 
-class AtomicFile {
+class OutputFile {
  public:
-  AtomicFile() = default;
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-  ~AtomicFile();  // abandons (removes the temporary) unless committed
+  OutputFile() = default;
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  ~OutputFile();  // abandons (removes the temporary) unless committed
 
-  // Opens "<path>.tmp-<pid>" for writing. False on failure (see error()).
+  // Opens `path` for writing as above. False on failure (see error()).
   bool open(const char* path);
   // Appends bytes; failures are remembered and reported by commit().
   void write(const void* data, std::size_t n);
   void printf(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-  // Flushes, closes and renames onto the target. False on any failure, in
-  // which case the target is untouched and the temporary removed.
+  // Flushes and closes; renames a temporary onto its target. False on any
+  // failure, in which case a replaced target is untouched and the temporary
+  // removed (a device, FIFO or standard output may have had part of it).
   bool commit();
   // Text of the first failure, e.g. "cannot write 'out/x.ppm': No space left on device".
   const char* error() const { return error_; }
@@ -29,13 +38,22 @@ class AtomicFile {
  private:
   void set_error(const char* what, const char* path);
   void abandon();
-
   std::FILE* f_ = nullptr;
-  char path_[1024] = {0};
-  char tmp_[1100] = {0};
+  bool stdout_ = false;      // f_ is stdout: flushed, never closed
+  std::string path_;         // as given, for messages
+  std::string target_;       // what the rename replaces (a link's target); empty: written in place
+  std::string tmp_;
+  int mode_ = -1;            // permission bits of the replaced file; -1: a new file
   char error_[1200] = {0};
   bool failed_ = false;
 };
+
+// The name a write to `path` lands on, following symbolic links (a
+// dangling link's target included). False with errno set on a link loop.
+bool output_target(const std::string& path, std::string* target);
+
+// True when `path` is "-": the output goes to standard output.
+inline bool is_stdout_path(const std::string& path) { return path == "-"; }
 
 }  // namespace dexmill
 

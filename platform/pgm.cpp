@@ -6,13 +6,13 @@
 #include <cstring>
 #include <vector>
 
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
 #include "platform/read_file.h"
 
 namespace dexmill {
 
 bool write_pgm16(const char* path, int width, int height, const uint16_t* samples, char* err, std::size_t errn) {
-  AtomicFile f;
+  OutputFile f;
   if (f.open(path)) {
     f.printf("P5\n%d %d\n65535\n", width, height);
     std::vector<uint8_t> row(static_cast<std::size_t>(width) * 2);

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
 
 namespace dexmill {
 
@@ -21,7 +21,7 @@ void frame_row_rgb(const FrameView& fb, int32_t y, uint8_t* rgb) {
 }
 
 bool write_ppm(const char* path, const FrameView& fb, char* err, std::size_t errn) {
-  AtomicFile f;
+  OutputFile f;
   if (f.open(path)) {
     f.printf("P6\n%d %d\n255\n", static_cast<int>(fb.width), static_cast<int>(fb.height));
     std::vector<uint8_t> rgb(static_cast<std::size_t>(fb.width) * 3);

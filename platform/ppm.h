@@ -1,5 +1,5 @@
 // Binary PPM (P6, maxval 255) images of a framebuffer view, written
-// atomically (platform/atomic_file.h): complete or not at all.
+// atomically (platform/output_file.h): complete or not at all.
 #ifndef DEXMILL_PLATFORM_PPM_H
 #define DEXMILL_PLATFORM_PPM_H
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "core/math/fixed.h"
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
 
 namespace dexmill {
 namespace {
@@ -146,10 +146,10 @@ std::string report_json_text(const RunReport& r) {
   std::string o = "{\n";
   o += "  \"dexmill_report\": 1,\n";
   o += "  \"program\": {\"file\": " + quoted(r.file) + ", \"lines\": " + u64(r.lines) + ", \"units\": " +
-       quoted(r.inch ? "inch" : "mm") + ",\n";
+       quoted(r.units) + ",\n";
   o += "    \"moves\": {\"rapid\": " + u64(r.rapid) + ", \"feed\": " + u64(r.feed) + ", \"arc\": " + u64(r.arc) +
        ", \"dwell\": " + u64(r.dwell) + ", \"tool_change\": " + u64(r.tool_change) + "}},\n";
-  o += "  \"status\": " + quoted(r.errors.empty() ? "ok" : "errors") + ",\n";
+  o += "  \"status\": " + quoted(r.errors.empty() ? "ok" : "error") + ",\n";
   o += "  \"stopped\": " +
        (r.stopped_reason.empty() ? std::string("null")
                                  : "{\"reason\": " + quoted(r.stopped_reason) + ", \"line\": " + u64(r.stopped_line) + "}") +
@@ -177,7 +177,8 @@ std::string report_json_text(const RunReport& r) {
   o += "]},\n";
   o += "  \"removed_mm3\": " + (r.nx ? volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) : std::string("0.000")) + ",\n";
   o += "  \"estimated_time_s\": " + seconds_of_us(r.estimated_us) + ",\n";
-  o += "  \"time_model\": {\"rapid_mm_per_min\": " + nm_to_mm_text(r.rapid_nm_per_min, 0) + ", \"feed_s\": " +
+  o += "  \"time_model\": {\"rapid_mm_per_min\": " + nm_to_mm_text(r.rapid_nm_per_min, 0) + ", \"accel_mm_per_s2\": " +
+       (r.accel_nm_per_s2 ? nm_to_mm_text(r.accel_nm_per_s2, 3) : std::string("null")) + ", \"feed_s\": " +
        seconds_of_us(r.feed_us) + ", \"rapid_s\": " + seconds_of_us(r.rapid_us) + ", \"dwell_s\": " +
        seconds_of_us(r.dwell_us) + "},\n";
   if (r.have_bounds)
@@ -198,7 +199,7 @@ std::string report_json_text(const RunReport& r) {
 
 bool write_report_json(const char* path, const RunReport& r, char* err, std::size_t errn) {
   const std::string text = report_json_text(r);
-  AtomicFile f;
+  OutputFile f;
   if (f.open(path)) {
     f.write(text.data(), text.size());
     if (f.commit()) return true;

@@ -5,10 +5,12 @@
 // differs between two runs of the same job, and it comes last.
 //
 //   dexmill_report  1 (the format's version)
-//   program         file, lines (read), units (default: mm|inch),
+//   program         file, lines (read), units (what its moves were written in:
+//                   mm|inch|mixed; a program with no move: the units it started in),
 //                   moves {rapid, feed, arc, dwell, tool_change}
-//   status          "ok" or "errors"
-//   stopped         null, or {reason "gouge", line} where --stop-at stopped the cut
+//   status          "ok", or "error" when the program has an input error
+//   stopped         null, or {reason, line}: "gouge" where --stop-at stopped the
+//                   cut, "error" at the bad block a partial run stopped before
 //   errors          [{line, column, message}]          input errors
 //   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept)
 //   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
@@ -17,8 +19,8 @@
 //   tool            {default, table (file or null), used [{number, spec}]}
 //   removed_mm3     material removed: (sum of dexel heights before - after) x lsb x pitch^2
 //   estimated_time_s  feeds at F, rapids at rapid_mm_per_min, dwells added,
-//                     no acceleration; time_model holds the parts
-//   time_model      {rapid_mm_per_min, feed_s, rapid_s, dwell_s}
+//                     no acceleration unless --accel; time_model holds the parts
+//   time_model      {rapid_mm_per_min, accel_mm_per_s2 (null: none), feed_s, rapid_s, dwell_s}
 //   bounds_mm       {min [x,y,z], max [x,y,z]} of all motion (null: none)
 //   cut             {instances, dexel_updates}
 //   assessment      null without --design; else (paper §2.5; d = cut top -
@@ -86,7 +88,7 @@ struct ReportAssessment {
 struct RunReport {
   std::string file;
   uint32_t lines = 0;
-  bool inch = false;
+  const char* units = "mm";  // "mm", "inch" or "mixed"
   uint64_t rapid = 0, feed = 0, arc = 0, dwell = 0, tool_change = 0;
   std::vector<ReportDiag> errors, warnings;
   uint64_t warnings_total = 0;
@@ -102,6 +104,7 @@ struct RunReport {
   uint64_t removed_lsb_dexels = 0;  // sum over dexels of height removed, LSB
   int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
   int64_t rapid_nm_per_min = 0;
+  int64_t accel_nm_per_s2 = 0;  // --accel; 0: none
   bool have_bounds = false;
   PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
   uint64_t instances = 0, dexel_updates = 0;

@@ -1,6 +1,6 @@
 // The platform seam (STYLE.md habit 10; LVGL's flush callback): a screen
 // hands out a framebuffer view to draw into and shows the rectangles of it
-// that a frame changed. PPM files (platform/ppm_frames.h), a GLFW window
+// that a frame changed. image files (platform/frame_files.h), a GLFW window
 // (platform/window.h) and a Linux framebuffer (platform/fbdev.h) implement
 // it; the renderer does not know which one it draws for.
 #ifndef DEXMILL_PLATFORM_SCREEN_H

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "display/mesh.h"
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
 
 namespace dexmill {
 namespace {
@@ -132,7 +132,7 @@ bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t e
                   static_cast<unsigned long long>(count));
     return false;
   }
-  AtomicFile f;
+  OutputFile f;
   if (f.open(path)) {
     uint8_t header[84] = {0};
     std::snprintf(reinterpret_cast<char*>(header), 80, "dexmill workpiece, mm, %dx%d dexels", static_cast<int>(g.nx),

@@ -22,6 +22,7 @@ struct WindowInput {
   int32_t drag_dx = 0, drag_dy = 0;  // pixels the mouse moved with a button held
   int32_t zoom_steps = 0;     // wheel notches, > 0 towards the scene
   bool reset_view = false;    // r
+  bool toggle_path = false;   // p: the toolpath over the part
   bool resized = false;       // frame() has a new size
 };
 

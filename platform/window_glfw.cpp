@@ -48,6 +48,7 @@ void on_char(GLFWwindow* w, unsigned int c) {
     case '-': case '_': --in.speed_steps; break;
     case ' ': in.toggle_pause = true; break;
     case 'r': case 'R': in.reset_view = true; break;
+    case 'p': case 'P': in.toggle_path = true; break;
     case 'q': case 'Q': in.quit = true; break;
     default: break;
   }

@@ -14,7 +14,7 @@ FrameView Window::frame() { return FrameView(); }
 bool Window::present(const ScreenRect*, int) { return false; }
 const char* Window::error() const {
   return "this dexmill was built without GLFW: install libglfw3-dev (tools/scripts/install-deps.sh window) and "
-         "build with make GLFW=1";
+         "build with make GLFW=1, then run build/glfw/dexmill";
 }
 WindowInput Window::poll(double) {
   WindowInput in;

@@ -13,103 +13,18 @@
 #include <string>
 #include <vector>
 
+#include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string err;
-};
-
-std::string tmp_dir() {
-  static std::string dir;
-  if (dir.empty()) {
-    char t[] = "/tmp/dexmill-run-test-XXXXXX";
-    if (mkdtemp(t)) dir = t;
-  }
-  return dir;
-}
-
-std::string slurp(const std::string& path) {
-  std::string s;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return s;
-  char b[65536];
-  size_t n;
-  while ((n = std::fread(b, 1, sizeof b, f)) > 0) s.append(b, n);
-  std::fclose(f);
-  return s;
-}
-
-uint64_t fnv(const std::string& s) {
-  uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : s) { h ^= c; h *= 1099511628211ULL; }
-  return h;
-}
-uint64_t file_hash(const std::string& path) { return fnv(slurp(path)); }
-
-// Runs `dexmill run ARGS` in the tests/run folder (so reports name the
-// inputs without a path); % in ARGS stands for the temporary folder.
-Result run(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false) {
-  Result r;
-  const char* bin = t::dexmill_binary();
-  if (!bin) return r;
-  std::string a;
-  for (char c : args) {
-    if (c == '%') a += tmp_dir();
-    else a += c;
-  }
-  char abs[4096];
-  const std::string binary = realpath(bin, abs) ? abs : bin;
-  const std::string err = tmp_dir() + "/stderr.txt";
-  const std::string cwd = in_tmp ? tmp_dir() : std::string(t::tests_dir()) + "/run";
-  std::string cmd = "cd '" + cwd + "' && '" + binary + "' run " + a + " 2>'" + err + "'";
-  char in_abs[4096];
-  if (stdin_file && realpath(stdin_file, in_abs)) stdin_file = in_abs;
-  cmd += stdin_file ? " <'" + std::string(stdin_file) + "'" : std::string(" </dev/null");
-  const int st = std::system(cmd.c_str());
-  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  r.err = slurp(err);
-  return r;
-}
-
-bool has(const std::string& s, const char* part) {
-  if (s.find(part) != std::string::npos) return true;
-  std::printf("  wanted '%s' in: %s\n", part, s.c_str());
-  return false;
-}
-
-// The report without its wall-clock timing.
-std::string report_body(const std::string& path) {
-  std::string s = slurp(path);
-  const size_t t = s.find("  \"timing\"");
-  return t == std::string::npos ? s : s.substr(0, t);
-}
-
-bool skip() {
-  if (t::dexmill_binary()) return false;
-  std::printf("  (skipped: set DEXMILL to the built binary)\n");
-  return true;
-}
-
-// The report's assessment object, from its key to the line before timing.
-std::string assessment_of(const std::string& report) {
-  const size_t a = report.find("  \"assessment\""), b = report.find("  \"timing\"");
-  return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
-}
-
-void check_hash(const std::string& path, uint64_t want) {
-  const uint64_t got = file_hash(path);
-  if (got != want) std::printf("  %s: hash 0x%016llxULL\n", path.c_str(), static_cast<unsigned long long>(got));
-  CHECK_EQ(got, want);
-}
+using namespace run_cli;
 
 }  // namespace
 
 TEST(run_pocket_outputs_are_pinned) {
   if (skip()) return;
-  const Result r = run("pocket.ngc -q --size 160x120 --image %/p.ppm --frames %/pf --every 4 --heightmap %/p.pgm "
+  const Result r = run("pocket.ngc -q --size 160x120 --image %/p.ppm --frames %/pf --frame-format ppm --every 4 --heightmap %/p.pgm "
                        "--stl %/p.stl --report %/p.json");
   CHECK_EQ(r.code, 0);
   CHECK(r.err.empty());
@@ -162,11 +77,11 @@ TEST(run_stdin_and_demo) {
   struct stat st;
   CHECK_EQ(stat((tmp_dir() + "/out/demo.ngc").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
-  CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.ppm").c_str(), &st), 0);
-  check_hash(tmp_dir() + "/out/final.ppm", 0x7866d9c24ba7c719ULL);
+  CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.png").c_str(), &st), 0);
+  check_hash(tmp_dir() + "/out/final.ppm", 0x5f06b9111aa8a541ULL);
   // And the error view of its own part (tools/demo_program.h): the corners
   // the roughing rows stop short of and the dome's base are left green.
-  check_hash(tmp_dir() + "/out/error.ppm", 0xf8092d6d6966333dULL);
+  check_hash(tmp_dir() + "/out/error.ppm", 0xbfddcbc5a1dec0bbULL);
   const std::string a = assessment_of(slurp(tmp_dir() + "/out/demo.json"));
   CHECK(has(a, "\"kind\": \"demo\""));
   CHECK(has(a, "\"max_gouge\": null"));
@@ -217,8 +132,8 @@ TEST(run_io_errors_exit_3) {
   } cases[] = {
       {"nope.ngc", "dexmill: error: cannot open 'nope.ngc': No such file or directory"},
       {".", "dexmill: error: cannot read '.': Is a directory"},
-      {"pocket.ngc --image %/nodir/x.ppm", "dexmill: error: cannot write the image '"},
-      {"pocket.ngc --report %", "dexmill: error: cannot write the report '"},
+      {"pocket.ngc --image %/nodir/x.ppm", "dexmill: error: cannot write --image '"},
+      {"pocket.ngc --report %", "dexmill: error: cannot write --report '"},
       {"pocket.ngc --frames %/plain/sub", "dexmill: error: cannot create directory '"},
       {"pocket.ngc --tools nope.tbl", "dexmill: error: cannot open 'nope.tbl'"},
       {"pocket.ngc --fbdev %/plain", "not a framebuffer device"},
@@ -236,15 +151,16 @@ TEST(run_io_errors_exit_3) {
 
 TEST(run_input_errors_exit_1) {
   if (skip()) return;
-  Result r = run("bad_word.ngc --report %/bad.json --image %/bad.ppm");
+  // --strict: a program with an error is not cut at all.
+  Result r = run("bad_word.ngc --strict --report %/bad.json --image %/bad.ppm");
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "bad_word.ngc:4:8: error: 'Q' is not followed by a number"));
   const std::string rep = slurp(tmp_dir() + "/bad.json");
-  CHECK(has(rep, "\"status\": \"errors\""));
+  CHECK(has(rep, "\"status\": \"error\""));
   CHECK(has(rep, "{\"line\": 4, \"column\": 8, \"message\": \"'Q' is not followed by a number\"}"));
   struct stat st;
-  CHECK(stat((tmp_dir() + "/bad.ppm").c_str(), &st) != 0);  // a program with errors is not cut
-  r = run("unknown_tool.ngc --tools tools.tbl");
+  CHECK(stat((tmp_dir() + "/bad.ppm").c_str(), &st) != 0);
+  r = run("unknown_tool.ngc --strict --tools tools.tbl");
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "unknown_tool.ngc:4:1: error: tool T7 is not in the tool table 'tools.tbl'"));
   std::FILE* f = std::fopen((tmp_dir() + "/bad.tbl").c_str(), "wb");
@@ -255,6 +171,46 @@ TEST(run_input_errors_exit_1) {
   r = run("pocket.ngc --tools %/bad.tbl");
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "bad.tbl:2:1: error: tool T2 has no diameter (D)"));
+}
+
+TEST(run_partial_cuts_up_to_the_bad_block) {
+  if (skip()) return;
+  // By default the cut goes up to the first bad block: the outputs show
+  // that state, with the block's place marked, and the run exits 1.
+  const std::string d = tmp_dir() + "/";
+  Result r = run("bad_word.ngc --size 160x120 --report %/part.json --image %/part.ppm --heightmap %/part.pgm");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "bad_word.ngc:4:8: error: 'Q' is not followed by a number"));
+  const std::string rep = slurp(d + "part.json");
+  CHECK(has(rep, "\"status\": \"error\""));
+  CHECK(has(rep, "\"stopped\": {\"reason\": \"error\", \"line\": 4}"));
+  CHECK(rep.find("\"removed_mm3\": 0.000") == std::string::npos);  // line 3 cut
+  // The same cut as the program without its bad block and what follows.
+  std::FILE* f = std::fopen((d + "good3.ngc").c_str(), "wb");
+  if (f) {
+    std::fputs("G21 G90\nG0 Z5\nG1 X10 Y10 Z-1 F300\n", f);
+    std::fclose(f);
+  }
+  CHECK_EQ(run("%/good3.ngc -q --size 160x120 --stock " + std::string("-5,-5,-2,25,15,0") + " --heightmap %/good3.pgm").code, 0);
+  CHECK_EQ(run("bad_word.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --heightmap %/part2.pgm").code, 1);
+  CHECK_EQ(file_hash(d + "good3.pgm"), file_hash(d + "part2.pgm"));
+  // The frame marks the bad block in amber; the same frame without the
+  // error has no amber.
+  CHECK_EQ(run("bad_word.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --image %/amber.ppm").code, 1);
+  CHECK_EQ(run("%/good3.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --image %/plain3.ppm").code, 0);
+  auto amber_pixels = [](const std::string& ppm) {
+    int n = 0;
+    const size_t start = ppm.size() - 160 * 120 * 3;
+    for (size_t k = start; k + 2 < ppm.size(); k += 3)
+      if (static_cast<uint8_t>(ppm[k]) == 255 && static_cast<uint8_t>(ppm[k + 1]) == 190 && ppm[k + 2] == 0) ++n;
+    return n;
+  };
+  CHECK(amber_pixels(slurp(d + "amber.ppm")) > 10);
+  CHECK_EQ(amber_pixels(slurp(d + "plain3.ppm")), 0);
+  // A tool the table lacks stops the cut at its T line the same way.
+  r = run("unknown_tool.ngc --tools tools.tbl --report %/tool.json");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(slurp(d + "tool.json"), "\"stopped\": {\"reason\": \"error\", \"line\": 4}"));
 }
 
 TEST(run_window_needs_glfw_or_a_display) {
@@ -369,7 +325,7 @@ TEST(run_color_error_frames_and_image) {
   if (skip()) return;
   const std::string d = tmp_dir() + "/";
   write_file(d + "pde.stl", ascii_stl(pocket_design()));
-  const Result r = run("pocket.ngc -q --size 160x120 --design %/pde.stl --color error --image %/e.ppm --frames %/ef --every 4");
+  const Result r = run("pocket.ngc -q --size 160x120 --design %/pde.stl --color error --image %/e.ppm --frames %/ef --frame-format ppm --every 4");
   CHECK_EQ(r.code, 0);
   // The error view drawn frame by frame (incremental bands) ends as the
   // final image; pinned (paper figure 10's view: a red G81 hole, green
@@ -439,8 +395,8 @@ TEST(run_gouges_are_traced_to_their_line) {
   CHECK(has(u.err, "--fail-on-gouge needs --design"));
   // The frames mark the gouge in red where it is found; the same frames
   // without the design have no mark.
-  CHECK_EQ(run(std::string("gouge_one.ngc ") + common + " --size 160x120 --frames %/gf --every 3").code, 0);
-  CHECK_EQ(run("gouge_one.ngc -q --stock 0,0,-10,33,23,0 --size 160x120 --frames %/gn --every 3").code, 0);
+  CHECK_EQ(run(std::string("gouge_one.ngc ") + common + " --size 160x120 --frames %/gf --frame-format ppm --every 3").code, 0);
+  CHECK_EQ(run("gouge_one.ngc -q --stock 0,0,-10,33,23,0 --size 160x120 --frames %/gn --frame-format ppm --every 3").code, 0);
   CHECK(file_hash(d + "gf/frame-000002.ppm") == file_hash(d + "gn/frame-000002.ppm"));  // before line 7
   CHECK(file_hash(d + "gf/frame-000004.ppm") != file_hash(d + "gn/frame-000004.ppm"));  // after it
   check_hash(d + "gf/frame-000004.ppm", 0xc3dad48f7b9b979dULL);
@@ -551,7 +507,32 @@ TEST(run_design_bad_files_exit_1_with_the_reason) {
   CHECK(has(r.err, "dexmill: error: cannot read '"));
 }
 
-TEST(run_zz_cleanup) {
-  // Last in this file: the temporary folder goes.
-  if (!tmp_dir().empty()) CHECK_EQ(std::system(("rm -rf '" + tmp_dir() + "'").c_str()), 0);
+TEST(run_path_overlay_draws_the_toolpath) {
+  if (skip()) return;
+  // The backplot over the final frame; the frames' last one (drawn a piece
+  // at a time as the cut goes) equals a still drawn whole at the end.
+  const std::string d = tmp_dir() + "/";
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --image %/np.ppm").code, 0);
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --path-overlay --image %/po.ppm").code, 0);
+  CHECK_EQ(run("pocket.ngc -q --size 160x120 --path-overlay --frames %/pof --frame-format ppm --every 3 "
+               "--image %/pof.ppm").code, 0);
+  CHECK(file_hash(d + "np.ppm") != file_hash(d + "po.ppm"));
+  CHECK_EQ(file_hash(d + "po.ppm"), file_hash(d + "pof.ppm"));
+  // Done feeds in their strong blue, done rapids in yellow (all is done).
+  const std::string img = slurp(d + "po.ppm");
+  int blue = 0, yellow = 0;
+  for (size_t k = img.size() - 160 * 120 * 3; k + 2 < img.size(); k += 3) {
+    const uint8_t r = static_cast<uint8_t>(img[k]), g = static_cast<uint8_t>(img[k + 1]), b = static_cast<uint8_t>(img[k + 2]);
+    if (r == 24 && g == 100 && b == 255) ++blue;
+    if (r == 255 && g == 226 && b == 40) ++yellow;
+  }
+  CHECK(blue > 50);
+  CHECK(yellow > 10);
+  // A middle frame shows the pieces still to come, pale.
+  const std::string mid = slurp(d + "pof/frame-000003.ppm");
+  int pale = 0;
+  for (size_t k = mid.size() - 160 * 120 * 3; k + 2 < mid.size(); k += 3)
+    if (static_cast<uint8_t>(mid[k]) == 156 && static_cast<uint8_t>(mid[k + 1]) == 200 && static_cast<uint8_t>(mid[k + 2]) == 236)
+      ++pale;
+  CHECK(pale > 20);
 }

@@ -20,20 +20,22 @@
 #include "core/motion/summary.h"
 #include "core/tool/cutter.h"
 #include "core/tool/spec.h"
-#include "platform/atomic_file.h"
+#include "platform/output_file.h"
 #include "platform/clock.h"
 #include "platform/gcode_file.h"
-#include "platform/pgm.h"
-#include "platform/ppm.h"
-#include "platform/ppm_frames.h"
+#include "platform/frame_files.h"
+#include "platform/image_file.h"
 #include "platform/progress.h"
 #include "platform/report_json.h"
+#include "platform/report_summary.h"
 #include "platform/stl.h"
 #include "platform/tool_table.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/run_assess.h"
 #include "tools/run_live.h"
+#include "tools/run_outputs.h"
+#include "tools/run_path.h"
 #include "tools/run_render.h"
 #include "tools/run_stock.h"
 
@@ -78,11 +80,15 @@ class RunMessages final : public GcodeMessages {
 // The scan pass: the summary, and the tools the program changes to.
 class ScanSink final : public CanonSink {
  public:
-  ScanSink(const ToolLibrary* lib, const Tool& initial) : max_radius_nm(initial.diameter_nm / 2), lib_(lib) {
+  ScanSink(const ToolLibrary* lib, const Tool& initial, const MotionTimeModel& model)
+      : summary(model), max_radius_nm(initial.diameter_nm / 2), lib_(lib) {
     tools_seen.push_back(initial);
   }
   void emit(const CanonRecord& r) override {
     summary.emit(r);
+    if (interp && (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc))
+      (interp->state().inch ? inch_moves : mm_moves) = true;
+    if (path) append_path(r, path);
     if (r.kind != CanonKind::kToolChange) return;
     Tool t;
     if (!lib_->tool(r.tool, &t)) {
@@ -98,6 +104,9 @@ class ScanSink final : public CanonSink {
     used.push_back(ReportToolUse{r.tool, spec});
   }
   MotionSummary summary;
+  const Interp* interp = nullptr;     // for the units each move was written in
+  std::vector<PathSegment>* path = nullptr;  // the backplot's pieces, when wanted
+  bool inch_moves = false, mm_moves = false;
   std::vector<ReportToolUse> used;
   std::vector<Tool> tools_seen;
   int64_t max_radius_nm;
@@ -112,7 +121,7 @@ class ScanSink final : public CanonSink {
 struct Watchers {
   std::vector<RenderOutput*> outputs;  // fed the grid's changes
   RenderOutput* frames_out = nullptr;
-  PpmFrames* frames = nullptr;
+  FrameFiles* frames = nullptr;
   uint64_t every = 0;
   RenderOutput* live_out = nullptr;
 };
@@ -121,9 +130,13 @@ struct Watchers {
 class CutSink final : public CanonSink {
  public:
   CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib, RunDesign* design,
-          const Tool& initial)
-      : mill_(mill), g_(g), w_(w), lib_(lib), design_(design), profile_(tool_profile(initial)) {}
+          const Tool& initial, const MotionTimeModel& model)
+      : time(model), mill_(mill), g_(g), w_(w), lib_(lib), design_(design), profile_(tool_profile(initial)) {}
   void emit(const CanonRecord& r) override {
+    if (stop_line && r.line >= stop_line) {  // a partial run: nothing of the bad block or after it
+      stopped_at_error = true;
+      return;
+    }
     // Where the line before left the tool: a deferred end cap cut now is its.
     const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
     if (move && r.line != last_line_) {
@@ -131,6 +144,7 @@ class CutSink final : public CanonSink {
       have_origin_ = last_line_ != 0;
     }
     mill_->emit(r);
+    if (count_path) path_done += path_pieces(r);
     last_line_ = r.line;
     watch();
     time.emit(r);
@@ -178,6 +192,10 @@ class CutSink final : public CanonSink {
 
   MotionSummary time;
   LiveStatus status;
+  uint32_t stop_line = 0;        // the first bad block of a partial run (0: none)
+  bool count_path = false;       // keep path_done: the backplot's pieces cut so far
+  uint32_t path_done = 0;
+  bool stopped_at_error = false;
   bool gouged = false;  // a gouge was found (the watch's warnings are printed)
   uint64_t moves = 0, last_frame_moves = 0;
   std::string frame_error;
@@ -201,35 +219,6 @@ class CutSink final : public CanonSink {
       gouged = true;
   }
 };
-
-std::string dir_of(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
-
-// An output file's folder must exist and be writable: checked before the
-// simulation, so that a typo does not cost a long run.
-bool check_output(const char* what, const std::string& path, std::string* err) {
-  if (path.empty()) return true;
-  const std::string dir = dir_of(path);
-  struct stat st;
-  if (stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
-    *err = std::string("cannot write the ") + what + " '" + path + "': no directory '" + dir + "'";
-    return false;
-  }
-  if (access(dir.c_str(), W_OK) != 0) {
-    *err = std::string("cannot write the ") + what + " '" + path + "': directory '" + dir + "' is not writable";
-    return false;
-  }
-  struct stat fst;
-  if (stat(path.c_str(), &fst) == 0 && S_ISDIR(fst.st_mode)) {
-    *err = std::string("cannot write the ") + what + " '" + path + "': it is a directory";
-    return false;
-  }
-  return true;
-}
 
 // Standard input is read twice (scan and cut), so it is kept in a file.
 bool spool_stdin(std::string* path, std::string* err) {
@@ -269,7 +258,7 @@ struct TempFile {
   }
 };
 
-bool write_heightmap(const char* path, const DexelGrid<height_t>& g, char* err, size_t errn) {
+bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
   // Row 0 of the image is the grid's last row (north up); samples are the
   // top heights in LSB (the report gives the LSB), holes 0.
   std::vector<uint16_t> img(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny));
@@ -279,7 +268,7 @@ bool write_heightmap(const char* path, const DexelGrid<height_t>& g, char* err, 
       img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
           static_cast<uint16_t>(h > 65535 ? 65535 : h);
     }
-  return write_pgm16(path, g.nx, g.ny, img.data(), err, errn);
+  return write_grey16_image(path, format, g.nx, g.ny, img.data(), err, errn);
 }
 
 }  // namespace
@@ -303,7 +292,7 @@ int run_job(RunOptions o) {
     if (o.frames_dir.empty()) o.frames_dir = "out/frames";
     if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = shown_name = "out/demo.ngc";
-    AtomicFile f;
+    OutputFile f;
     const std::string text = demo_program();
     if (!f.open(read_path.c_str())) return fail(kExitIo, "%s", f.error());
     f.write(text.data(), text.size());
@@ -313,13 +302,20 @@ int run_job(RunOptions o) {
     if (!spool_stdin(&spooled.path, &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = spooled.path;
   }
-  if (!check_output("image", o.image, &err) || !check_output("error image", o.error_image, &err) ||
-      !check_output("heightmap", o.heightmap, &err) ||
-      !check_output("STL file", o.stl, &err) || !check_output("report", o.report, &err))
-    return fail(kExitIo, "%s", err.c_str());
-  if (!o.frames_dir.empty() && !make_dirs(o.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (!o.frames_dir.empty() && access(o.frames_dir.c_str(), W_OK) != 0)
-    return fail(kExitIo, "cannot write frames into '%s': %s", o.frames_dir.c_str(), std::strerror(errno));
+  OutputFormats formats;
+  {
+    const int code = check_outputs(o, {o.file, o.tools_file, o.design, o.stock_stl}, &formats);
+    if (code != kExitOk) return code;
+  }
+  if (!o.frames_dir.empty()) {
+    uint32_t removed = 0;
+    if (!make_dirs(o.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
+    if (access(o.frames_dir.c_str(), W_OK) != 0)
+      return fail(kExitIo, "cannot write frames into '%s': %s", o.frames_dir.c_str(), std::strerror(errno));
+    if (!remove_old_frames(o.frames_dir, &removed, &err)) return fail(kExitIo, "%s", err.c_str());
+    if (removed && !o.quiet && !demo)
+      std::fprintf(stderr, "dexmill: removed %u frames of an earlier run from '%s'\n", removed, o.frames_dir.c_str());
+  }
 
   // -- tools
   ToolTableFile table;
@@ -341,12 +337,12 @@ int run_job(RunOptions o) {
   const ToolLibrary* lib = have_table ? static_cast<const ToolLibrary*>(&table) : &single;
 
   rep.file = shown_name;
-  rep.inch = o.inch;
+  rep.units = o.inch ? "inch" : "mm";
   rep.mode = o.mode == CutMode::kSweep ? "sweep" : "stamp";
   rep.default_tool = o.tool_text;
   rep.tool_table = demo && o.tools_file.empty() ? "(built-in demo table)" : o.tools_file;
   rep.height_bits = DEXMILL_HEIGHT_BITS;
-  rep.rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;
+  rep.rapid_nm_per_min = o.rapid_nm_per_min;
   auto write_report = [&]() -> bool {
     if (o.report.empty()) return true;
     rep.timing.emplace_back("total", clock_now_s() - t_start);
@@ -358,7 +354,15 @@ int run_job(RunOptions o) {
 
   // -- scan pass
   RunMessages scan_msgs(shown_name, true);
-  ScanSink scan(lib, o.tool);
+  MotionTimeModel time_model;
+  time_model.rapid_nm_per_min = o.rapid_nm_per_min;
+  time_model.accel_nm_per_s2 = o.accel_nm_per_s2;
+  rep.accel_nm_per_s2 = o.accel_nm_per_s2;
+  ScanSink scan(lib, o.tool, time_model);
+  // The backplot's path: for --path-overlay, and for a live view (its p key).
+  const bool want_path = o.path_overlay || o.window || !o.fbdev.empty();
+  std::vector<PathSegment> path;
+  if (want_path) scan.path = &path;
   {
     const double t0 = clock_now_s();
     GcodeFile in;
@@ -368,6 +372,7 @@ int run_job(RunOptions o) {
     opt.warnings = &scan_msgs;
     opt.tools = have_table ? &table : nullptr;
     Interp interp(&scan, opt);
+    scan.interp = &interp;
     GcodeRunner runner(&in, &interp, &scan_msgs, true);
     while (runner.step()) {
       if (scan.bad_tool_line) {
@@ -380,6 +385,8 @@ int run_job(RunOptions o) {
     }
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     rep.lines = runner.lines();
+    scan.interp = nullptr;
+    if (scan.inch_moves || scan.mm_moves) rep.units = scan.inch_moves ? (scan.mm_moves ? "mixed" : "inch") : "mm";
     rep.timing.emplace_back("scan", clock_now_s() - t0);
   }
   const MotionSummary& sum = scan.summary;
@@ -399,9 +406,17 @@ int run_job(RunOptions o) {
   rep.have_bounds = sum.motion_box().valid;
   rep.bounds_lo = sum.motion_box().lo;
   rep.bounds_hi = sum.motion_box().hi;
+  // A program with an input error is cut up to its first bad block (as
+  // LinuxCNC's preview draws the path up to it), unless --strict.
+  uint32_t stop_line = 0;
   if (scan_msgs.errors()) {
-    if (!write_report()) return kExitIo;
-    return kExitInput;
+    if (o.strict) {
+      if (!write_report()) return kExitIo;
+      return kExitInput;
+    }
+    stop_line = rep.errors.front().line;
+    rep.stopped_reason = "error";
+    rep.stopped_line = stop_line;
   }
 
   // -- stock and grid
@@ -428,7 +443,13 @@ int run_job(RunOptions o) {
     rep.stock_source = "program";
   }
   GridPlan plan;
-  if (!plan_grid(stock, o.grid_nx, o.grid_ny, o.pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  int64_t pitch_nm = o.pitch_nm;
+  if (!pitch_nm && !o.grid_nx) {
+    int64_t smallest = 0;
+    for (const Tool& t : scan.tools_seen) smallest = smallest ? min_of(smallest, t.diameter_nm) : t.diameter_nm;
+    pitch_nm = default_pitch_nm(stock, smallest);
+  }
+  if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
   rep.have_stock = true;
   rep.stock_lo = plan.stock.lo;
   rep.stock_hi = plan.stock.hi;
@@ -486,7 +507,7 @@ int run_job(RunOptions o) {
     cam.elevation_bam = o.have_elevation ? static_cast<int32_t>(bam_from_mdeg(o.elevation_mdeg)) : iso.elevation_bam;
   }
   Watchers w;
-  std::unique_ptr<PpmFrames> frames;
+  std::unique_ptr<FrameFiles> frames;
   std::unique_ptr<RenderOutput> frames_out, image_out;
   std::vector<uint32_t> image_pixels;
   LiveView live;
@@ -499,7 +520,7 @@ int run_job(RunOptions o) {
     w.outputs.push_back(w.live_out);
   }
   if (!o.frames_dir.empty()) {
-    frames.reset(new PpmFrames(o.frames_dir, o.width, o.height));
+    frames.reset(new FrameFiles(o.frames_dir, o.frame_format, o.width, o.height));
     frames_out.reset(new RenderOutput());
     if (!frames_out->init(grid, frames->frame(), cam, &err)) return fail(kExitUsage, "%s", err.c_str());
     w.frames = frames.get();
@@ -544,16 +565,24 @@ int run_job(RunOptions o) {
   }
   // The gouges found so far, marked in every frame and live view.
   if (!o.design.empty())
-    for (RenderOutput* out : w.outputs) out->set_marks(&design.marks);
+    for (RenderOutput* out : w.outputs) out->add_marks(&design.marks, Rgb{255, 32, 24});
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 
   // -- cut pass
-  CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, o.tool);
+  CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, o.tool, time_model);
+  cut.stop_line = stop_line;
+  cut.count_path = want_path;
+  if (want_path)
+    for (RenderOutput* out : w.outputs) {
+      out->set_path(&path, &cut.path_done);
+      out->set_path_visible(o.path_overlay);
+    }
   if (is_live) live.set_before_draw([&cut] { cut.sync(); });
   cut.status.inch = o.inch;
   cut.status.tool_spec = o.tool_text;
   bool user_quit = false;
+  std::vector<PointNm> error_mark;
   {
     const double t0 = clock_now_s();
     if (frames) cut.write_frame();  // the untouched stock
@@ -568,7 +597,7 @@ int run_job(RunOptions o) {
     Progress progress(stderr, !o.quiet && !is_live);
     while (runner.step()) {
       progress.update(in.bytes_read(), in.total_bytes(), cut.moves);
-      if (!cut.frame_error.empty()) break;
+      if (!cut.frame_error.empty() || cut.stopped_at_error) break;
       if (o.stop_at_gouge && cut.gouged) {
         rep.stopped_reason = "gouge";
         rep.stopped_line = cut.status.line;
@@ -581,11 +610,15 @@ int run_job(RunOptions o) {
     }
     progress.finish();
     cut.sync();
+    if (stop_line) {  // the bad block's place, in amber on the last frames
+      error_mark.push_back(mill.position());
+      for (RenderOutput* out : w.outputs) out->add_marks(&error_mark, Rgb{255, 190, 0});
+    }
     if (!o.design.empty()) print_gouges(grid, &design);
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());
     if (live.failed()) return fail(kExitIo, "%s", live.error().c_str());
-    if (frames && cut.last_frame_moves != cut.moves && !cut.write_frame())
+    if (frames && (cut.last_frame_moves != cut.moves || stop_line) && !cut.write_frame())
       return fail(kExitIo, "%s", cut.frame_error.c_str());
     rep.timing.emplace_back("cut", clock_now_s() - t0 - cut.render_s - cut.write_s);
   }
@@ -615,7 +648,7 @@ int run_job(RunOptions o) {
       return fail(kExitUsage, "%s", err.c_str());
     const double t1 = clock_now_s();
     render_s += t1 - t0;
-    if (!write_ppm(o.image.c_str(), *shown, e, sizeof e)) return fail(kExitIo, "%s", e);
+    if (!write_frame_image(o.image.c_str(), formats.image, *shown, e, sizeof e)) return fail(kExitIo, "%s", e);
     write_s += clock_now_s() - t1;
   }
   if (error_out) {
@@ -623,11 +656,11 @@ int run_job(RunOptions o) {
     error_out->draw(&grid, cut.pose());
     const double t1 = clock_now_s();
     render_s += t1 - t0;
-    if (!write_ppm(o.error_image.c_str(), error_out->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    if (!write_frame_image(o.error_image.c_str(), formats.error_image, error_out->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
     write_s += clock_now_s() - t1;
   }
   const double t_files = clock_now_s();
-  if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
+  if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), formats.heightmap, grid, e, sizeof e)) return fail(kExitIo, "%s", e);
   if (!o.stl.empty() && !write_stl(o.stl.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
   write_s += clock_now_s() - t_files;
   rep.timing.emplace_back("render", render_s);
@@ -635,10 +668,14 @@ int run_job(RunOptions o) {
   if (!write_report()) return kExitIo;
   if (is_live && !user_quit && !live.wait_done(&grid, cut.pose(), cut.status))
     return fail(kExitIo, "%s", live.error().c_str());
+  const bool no_output = o.image.empty() && o.error_image.empty() && o.frames_dir.empty() && o.heightmap.empty() &&
+                         o.stl.empty() && o.report.empty() && !is_live;
+  if (no_output) std::fputs(report_summary_text(rep).c_str(), stdout);
+  if (stop_line) return kExitInput;
   if (cut.gouged && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
   if (!o.quiet && demo)
-    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/%s)\n",
-                 frames ? "frame-*.ppm" : "");
+    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
+                 image_format_extension(o.frame_format));
   return kExitOk;
 }
 

@@ -57,7 +57,7 @@ std::string status_text(const LiveStatus& s, int64_t speed_milli, bool paused, b
   char b[256];
   const int64_t sec = s.sim_us / 1000000;
   const std::string x = nm_to_mm_text(s.pos.x_nm, 3), y = nm_to_mm_text(s.pos.y_nm, 3), z = nm_to_mm_text(s.pos.z_nm, 3);
-  std::snprintf(b, sizeof b, "N%u X%s Y%s Z%s F%lld T%d %s %lld:%02lld:%02lld X%s%s", static_cast<unsigned>(s.line),
+  std::snprintf(b, sizeof b, "line %u X%s Y%s Z%s F%lld T%d %s %lld:%02lld:%02lld x%s%s", static_cast<unsigned>(s.line),
                 x.c_str(), y.c_str(), z.c_str(), static_cast<long long>(div_round(s.feed_nm_per_min, kNmPerMm)),
                 static_cast<int>(s.tool), s.tool_spec.c_str(), static_cast<long long>(sec / 3600),
                 static_cast<long long>(sec / 60 % 60), static_cast<long long>(sec % 60),
@@ -151,6 +151,10 @@ bool LiveView::handle_input(DexelGrid<height_t>* g, double wait_s, bool* redraw)
   if (in.quit) return false;
   if (in.resized) {
     layout(*g);
+    *redraw = true;
+  }
+  if (in.toggle_path) {
+    out_.set_path_visible(!out_.path_visible());
     *redraw = true;
   }
   if (in.toggle_pause) {

@@ -77,19 +77,25 @@ void run_usage(std::FILE* f) {
                "and out/frames/).\n\n"
                "  --stock X0,Y0,Z0,X1,Y1,Z1  stock box, mm, machine coordinates (default: from the program)\n"
                "  --stock FILE.stl           a pre-machined blank: its mesh's tops over its bounding box\n"
-               "  --grid NXxNY | --pitch MM  dexel resolution (default 256 across the longer side)\n"
+               "  --grid NXxNY | --pitch MM  dexel resolution (default: a 32nd of the smallest tool,\n"
+               "                             256 to 1024 dexels across the longer side)\n"
                "  --tool SPEC                ball:D flat:D bull:D:R vbit:D:ANGLE [,len=L] (default flat:6)\n"
                "  --tools FILE               LinuxCNC tool table; T/M6 pick from it\n"
                "  --units mm|inch            units of programs that never say G20/G21 (default mm)\n"
                "  --mode sweep|stamp         exact swept envelopes or instances of motion (default sweep)\n"
-               "  --image FILE.ppm           final frame\n"
-               "  --frames DIR [--every N]   a frame every N moves: DIR/frame-000001.ppm ...\n"
+               "  --rapid MM/MIN             rapid rate for the time estimate (default 5000)\n"
+               "  --accel MM/S2              time estimate with every move speeding up from rest and\n"
+               "                             slowing to rest at this acceleration (default: none)\n"
+               "  --image FILE.png|FILE.ppm  final frame (the extension picks the format; - is stdout)\n"
+               "  --frames DIR [--every N]   a frame every N moves: DIR/frame-000001.png ... (earlier\n"
+               "                             frame-* files in DIR are removed first)\n"
+               "  --frame-format png|ppm     the frames' format (default png)\n"
                "  --size WxH                 frame size (default 640x480)\n"
                "  --view iso|top|front|right or --azimuth DEG --elevation DEG   camera (default iso)\n"
-               "  --heightmap FILE.pgm       final tops as a 16-bit PGM\n"
+               "  --heightmap FILE.pgm|.png  final tops as a 16-bit grey image\n"
                "  --stl FILE.stl             final surface as a closed binary STL\n"
                "  --report FILE.json         summary: program, errors, stock, grid, tools, volume, time\n"
-               "  --window                   show the simulation live (GLFW build: make GLFW=1)\n"
+               "  --window                   show the simulation live (make GLFW=1: build/glfw/dexmill)\n"
                "  --fbdev DEV                draw live into a Linux framebuffer (/dev/fb0)\n"
                "  --speed X                  live: simulated seconds per second (default: ~20 s per job)\n"
                "  --exit-when-done [--hold S]  live: close after the program (after S seconds)\n"
@@ -100,16 +106,22 @@ void run_usage(std::FILE* f) {
                "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
                "  --color plain|error        what colours the surface: one colour, or cut - design in\n"
                "                             bands (white within tolerance, greens left, reds gouged)\n"
-               "  --error-image FILE.ppm     the final frame in the error view too (needs --design)\n"
+               "  --error-image FILE.png     the final frame in the error view too (needs --design)\n"
                "  --overlay design|workpiece --image with the design translucent over the cut (shows\n"
                "                             gouges), or the cut translucent over the design (shows\n"
                "                             material left)\n"
                "  --stop-at gouge            stop at the first gouge (outputs show that state), exit 4\n"
                "  --fail-on-gouge            run to the end, exit 4 if the cut gouged the design\n"
+               "  --path-overlay             the toolpath over the frames: rapids dashed yellow, feeds\n"
+               "                             blue, pale where still to come (live: the p key)\n"
+               "  --strict                   a program with an input error is not cut at all (by\n"
+               "                             default the cut goes up to the bad block, which the\n"
+               "                             frames mark in amber, and the run exits 1)\n"
                "  -q                         no progress bar\n\n"
-               "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, r resets\n"
-               "the view, q quits. Exit status: 0 ok, 1 input errors, 2 usage, 3 I/O, 4 a check\n"
-               "asked for failed (--stop-at, --fail-on-gouge).\n");
+               "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, p shows\n"
+               "the toolpath, r resets the view, q quits. Exit status: 0 ok, 1 input errors (the cut\n"
+               "goes up to the first), 2 usage, 3 I/O, 4 a check asked for failed (--stop-at,\n"
+               "--fail-on-gouge).\n");
 }
 
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
@@ -130,6 +142,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     if (!std::strcmp(a, "--window")) { o->window = true; continue; }
     if (!std::strcmp(a, "--exit-when-done")) { o->exit_when_done = true; continue; }
     if (!std::strcmp(a, "--fail-on-gouge")) { o->fail_on_gouge = true; continue; }
+    if (!std::strcmp(a, "--strict")) { o->strict = true; continue; }
+    if (!std::strcmp(a, "--path-overlay")) { o->path_overlay = true; continue; }
     if (a[0] != '-' || !a[1]) {
       if (have_file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", o->file.c_str(), a);
       o->file = a;
@@ -137,7 +151,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       continue;
     }
     static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
-                                             "--mode", "--image", "--frames", "--every", "--size", "--view",
+                                             "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
                                              "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay"};
@@ -173,10 +187,22 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
       else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;
       else return fail(kExitUsage, "--mode must be sweep or stamp, not '%s'", v);
+    } else if (name == "--rapid") {
+      if (!parse_scaled(v, kNmPerMm, &o->rapid_nm_per_min) || o->rapid_nm_per_min < kNmPerMm ||
+          o->rapid_nm_per_min > 1000000 * kNmPerMm)
+        return fail(kExitUsage, "--rapid needs the machine's rapid rate in mm/min, from 1 to 1000000, not '%s'", v);
+    } else if (name == "--accel") {
+      if (!parse_scaled(v, kNmPerMm, &o->accel_nm_per_s2) || o->accel_nm_per_s2 < kNmPerMm ||
+          o->accel_nm_per_s2 > 1000000 * kNmPerMm)
+        return fail(kExitUsage, "--accel needs the machine's acceleration in mm/s2, from 1 to 1000000, not '%s'", v);
     } else if (name == "--image") {
       o->image = v;
     } else if (name == "--frames") {
       o->frames_dir = v;
+    } else if (name == "--frame-format") {
+      if (!std::strcmp(v, "png")) o->frame_format = ImageFormat::kPng;
+      else if (!std::strcmp(v, "ppm")) o->frame_format = ImageFormat::kPpm;
+      else return fail(kExitUsage, "--frame-format must be png or ppm, not '%s'", v);
     } else if (name == "--every") {
       if (!parse_scaled(v, 1, &o->every) || o->every < 1 || std::strchr(v, '.'))
         return fail(kExitUsage, "--every needs a whole number of moves >= 1, not '%s'", v);

@@ -11,8 +11,10 @@
 
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
+#include "core/motion/summary.h"
 #include "core/tool/tool.h"
 #include "display/camera.h"
+#include "platform/image_file.h"
 
 namespace dexmill {
 namespace cli {
@@ -31,6 +33,7 @@ struct RunOptions {
   CutMode mode = CutMode::kSweep;
   std::string image;             // --image (demo: out/final.ppm)
   std::string frames_dir;        // --frames
+  ImageFormat frame_format = ImageFormat::kPng;  // --frame-format
   int64_t every = 0;             // --every; 0: about 100 frames over the program
   int32_t width = 640, height = 480;  // --size
   ViewPreset view = ViewPreset::kIso;
@@ -60,6 +63,10 @@ struct RunOptions {
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
   bool stop_at_gouge = false;    // --stop-at gouge: stop at the first gouge, exit 4
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
+  int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
+  int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
+  bool strict = false;
+  bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)           // --strict: an input error cuts nothing (else up to the bad block)
 };
 
 // Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the

@@ -48,16 +48,24 @@ void RenderOutput::set_tool(const Tool& t) {
 }
 
 RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) {
+  // Backplot pieces that turned to done since the last draw: the renderer
+  // repaints where they lie, and draw_path draws the path there again.
+  if (path_ && path_on_) {
+    const uint32_t done = min_of<uint32_t>(*path_done_, static_cast<uint32_t>(path_->size()));
+    if (done > path_drawn_done_)
+      renderer_invalidate(r_.get(), backplot_bounds(fb_, r_->view, path_->data(), path_drawn_done_, done));
+  }
   const GridRect saved = g->dirty;
   g->dirty = pending_;
   pending_ = GridRect::none();
   RenderResult res = render_update(r_.get(), g, pose);
   g->dirty = saved;
-  if (marks_ && !marks_->empty()) {
+  if (path_ && path_on_) draw_path(&res);
+  for (const Marks& m : marks_) {
     const int32_t radius = fb_.height >= 400 ? 8 : 4;
-    const uint32_t red = pixel_pack(fb_.format, Rgb{255, 32, 24});
+    const uint32_t value = pixel_pack(fb_.format, m.colour);
     ScreenRect all{0, 0, 0, 0};
-    for (const PointNm& p : *marks_) all = rect_union(all, marker_draw(fb_, r_->view, p, radius, red));
+    for (const PointNm& p : *m.points) all = rect_union(all, marker_draw(fb_, r_->view, p, radius, value));
     if (!all.empty()) {
       if (res.nrects < kMaxDirtyRects) res.rects[res.nrects++] = all;
       else res.rects[res.nrects - 1] = rect_union(res.rects[res.nrects - 1], all);
@@ -75,6 +83,30 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
 }
 
 Camera RenderOutput::camera() const { return r_->cam; }
+
+void RenderOutput::set_path(const std::vector<PathSegment>* path, const uint32_t* done) {
+  path_ = path;
+  path_done_ = done;
+  path_drawn_done_ = 0;
+  r_->need_full = true;
+}
+
+void RenderOutput::set_path_visible(bool on) {
+  path_on_ = on;
+  r_->need_full = true;
+}
+
+// The path over what render_update drew, inside each rectangle it
+// repainted (the whole frame after a full redraw; where pieces turned to
+// done, draw() had it repaint). Every piece is redrawn in order inside
+// each, so the pixels equal a full redraw's (backplot.h).
+void RenderOutput::draw_path(RenderResult* res) {
+  const PathSegment* segs = path_->data();
+  const uint32_t n = static_cast<uint32_t>(path_->size()), done = min_of(*path_done_, n);
+  const BackplotColours colours;
+  for (int k = 0; k < res->nrects; ++k) backplot_draw(fb_, depth(), r_->view, segs, n, done, res->rects[k], colours);
+  path_drawn_done_ = done;
+}
 
 DepthView RenderOutput::depth() const {
   DepthView d;

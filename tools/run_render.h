@@ -14,6 +14,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/backplot.h"
 #include "display/legend.h"
 #include "display/marker.h"
 #include "display/overlay.h"
@@ -51,9 +52,16 @@ class RenderOutput {
     std::string title;
   };
   void set_legend(const Legend* l) { legend_ = l; }
-  // Points marked in red over every frame (the gouges found so far; null: none).
-  void set_marks(const std::vector<PointNm>* m) { marks_ = m; }
+  // Points marked over every frame in `colour` (the gouges found so far in
+  // red, the block a partial run stopped at in amber); kept by the caller.
+  void add_marks(const std::vector<PointNm>* m, Rgb colour) { marks_.push_back(Marks{m, colour}); }
 
+  // The toolpath drawn over every frame (display/backplot.h): path[0, *done)
+  // as done, the rest as to come; null: none. Both are the caller's.
+  void set_path(const std::vector<PathSegment>* path, const uint32_t* done);
+  // Shows or hides the path (the live view's p key); the next draw is full.
+  void set_path_visible(bool on);
+  bool path_visible() const { return path_ && path_on_; }
   // Grid changes since the last call of take_dirty (every output gets them).
   void note_dirty(const GridRect& r) { pending_.include(r); }
   // Draws what changed (everything after init, resize or a camera change).
@@ -79,7 +87,17 @@ class RenderOutput {
   GridRect pending_ = GridRect::none();
   const SurfaceColours* colours_ = nullptr;
   const Legend* legend_ = nullptr;
-  const std::vector<PointNm>* marks_ = nullptr;
+  struct Marks {
+    const std::vector<PointNm>* points;
+    Rgb colour;
+  };
+  std::vector<Marks> marks_;
+  const std::vector<PathSegment>* path_ = nullptr;
+  const uint32_t* path_done_ = nullptr;
+  uint32_t path_drawn_done_ = 0;  // *path_done_ when the path was last drawn
+  bool path_on_ = true;
+
+  void draw_path(RenderResult* res);
 };
 
 // Moves the grid's dirty rectangle into every output (then clears it).

@@ -37,6 +37,12 @@ StockBox default_stock(const MotionSummary& s, int64_t max_tool_radius_nm) {
                   PointNm{xy.hi.x_nm + margin, xy.hi.y_nm + margin, top}};
 }
 
+int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm) {
+  const int64_t longer = max_of(stock.hi.x_nm - stock.lo.x_nm, stock.hi.y_nm - stock.lo.y_nm);
+  const int64_t fine = div_ceil(longer, kDefaultMaxAcross - 3), coarse = div_ceil(longer, kDefaultMinAcross - 3);
+  return max_of<int64_t>(1, min_of(coarse, max_of(fine, smallest_tool_nm / kDefaultDexelsPerTool)));
+}
+
 bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
                std::string* err) {
   const int64_t sx = stock.hi.x_nm - stock.lo.x_nm, sy = stock.hi.y_nm - stock.lo.y_nm;
@@ -47,13 +53,12 @@ bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t 
       return false;
     }
     pitch = max_of(div_ceil(sx, grid_nx - 3), div_ceil(sy, grid_ny - 3));
-  } else if (pitch == 0) {
-    pitch = div_ceil(max_of(sx, sy), 256 - 3);
   }
   pitch = max_of<int64_t>(pitch, 1);
-  // Dexel axes X0, X0 + p, ... up to the first at or past X1.
+  // Dexel axes X0, X0 + p, ... up to the first at or past X1; the grid is
+  // the stock's shape (--grid is the most it may have each way).
   const int64_t ux = div_ceil(sx, pitch) + 1, uy = div_ceil(sy, pitch) + 1;
-  const int64_t nx = max_of<int64_t>(ux + 2, grid_nx), ny = max_of<int64_t>(uy + 2, grid_ny);
+  const int64_t nx = ux + 2, ny = uy + 2;
   if (nx > 65535 || ny > 65535 || nx * ny > kMaxGridCells) {
     char b[200];
     std::snprintf(b, sizeof b, "the grid would be %lldx%lld dexels, more than the %lld M dexels a run may use; "

@@ -14,11 +14,15 @@
 //          the largest tool radius the program uses plus 2 mm.
 // A program with no motion gets a 50 x 50 x 10 mm block under the origin.
 //
-// The grid: the longer side of the stock gets 256 dexels (or --grid NXxNY,
-// or --pitch MM), one pitch for x and y. Dexel axes run from the stock's
-// X0, Y0 in steps of the pitch, so the stock is rounded up to whole pitches
-// (by less than one); one ring of hole dexels around it makes its side
-// walls (core/grid/grid.h). With --grid, dexels past the stock are holes too.
+// The grid: one pitch for x and y, by default from the job: a 32nd of the
+// smallest tool the program uses, but no finer than 1024 dexels and no
+// coarser than 256 across the stock's longer side (fine enough that real
+// programs' walls do not alias into stripes, within a million dexels).
+// --pitch MM sets it; --grid NXxNY gives the finest pitch that fits the
+// stock in NX x NY dexels, keeping its shape. Dexel axes run from the
+// stock's X0, Y0 in steps of the pitch, so the stock is rounded up to whole
+// pitches (by less than one); one ring of hole dexels around it makes its
+// side walls (core/grid/grid.h).
 // Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
 // the stock height in 16 bits (core/grid/grid.h lsb_for_range).
 #ifndef DEXMILL_TOOLS_RUN_STOCK_H
@@ -51,9 +55,16 @@ struct GridPlan {
 // Most dexels a run may use (2 x 2 bytes each for 16-bit heights).
 constexpr int64_t kMaxGridCells = 64LL << 20;
 
-// Plans the grid for a stock. grid_nx/ny or pitch_nm (0 if not given).
-// False with a message for a grid beyond kMaxGridCells or a pitch that
-// leaves fewer than 2 dexels across.
+// The default grid's bounds and its pitch per tool (see above).
+constexpr int64_t kDefaultMaxAcross = 1024, kDefaultMinAcross = 256, kDefaultDexelsPerTool = 32;
+// The default pitch for a stock and the smallest tool diameter (0: none known).
+int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm);
+
+// Plans the grid for a stock: by grid_nx/ny when given, else by pitch_nm
+// (the caller's default_pitch_nm when no option gave one). False with a
+// message for a grid beyond kMaxGridCells or a pitch that leaves fewer
+// than 2 dexels across.
+
 bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
                std::string* err);
 

@@ -1,0 +1,54 @@
+#include "platform/image_file.h"
+
+#include <cstdio>
+#include <vector>
+
+#include "platform/output_file.h"
+#include "platform/pgm.h"
+#include "platform/png.h"
+#include "platform/ppm.h"
+
+namespace dexmill {
+
+namespace {
+
+bool write_bytes(const char* path, const std::vector<uint8_t>& bytes, char* err, std::size_t errn) {
+  OutputFile f;
+  if (f.open(path)) {
+    f.write(bytes.data(), bytes.size());
+    if (f.commit()) return true;
+  }
+  std::snprintf(err, errn, "%s", f.error());
+  return false;
+}
+
+}  // namespace
+
+const char* image_format_extension(ImageFormat f) {
+  switch (f) {
+    case ImageFormat::kPpm: return "ppm";
+    case ImageFormat::kPgm: return "pgm";
+    case ImageFormat::kPng: return "png";
+  }
+  return "";
+}
+
+bool write_frame_image(const char* path, ImageFormat format, const FrameView& fb, char* err, std::size_t errn) {
+  if (format != ImageFormat::kPng) return write_ppm(path, fb, err, errn);
+  std::vector<uint8_t> rgb(static_cast<std::size_t>(fb.width) * 3 * static_cast<std::size_t>(fb.height));
+  for (int32_t y = 0; y < fb.height; ++y)
+    frame_row_rgb(fb, y, rgb.data() + static_cast<std::size_t>(y) * 3 * static_cast<std::size_t>(fb.width));
+  std::vector<uint8_t> png;
+  png_encode_rgb8(rgb.data(), fb.width, fb.height, &png);
+  return write_bytes(path, png, err, errn);
+}
+
+bool write_grey16_image(const char* path, ImageFormat format, int32_t width, int32_t height, const uint16_t* samples,
+                        char* err, std::size_t errn) {
+  if (format != ImageFormat::kPng) return write_pgm16(path, width, height, samples, err, errn);
+  std::vector<uint8_t> png;
+  png_encode_gray16(samples, width, height, &png);
+  return write_bytes(path, png, err, errn);
+}
+
+}  // namespace dexmill

@@ -1,0 +1,53 @@
+#include "platform/report_summary.h"
+
+#include <cinttypes>
+#include <cstdio>
+
+namespace dexmill {
+
+namespace {
+
+std::string hms(int64_t us) {
+  const int64_t s = (us + 500000) / 1000000;
+  char b[64];
+  std::snprintf(b, sizeof b, "%" PRId64 ":%02" PRId64 ":%02" PRId64, s / 3600, s / 60 % 60, s % 60);
+  return b;
+}
+
+std::string range(int64_t lo_nm, int64_t hi_nm) { return nm_to_mm_text(lo_nm, 3) + ".." + nm_to_mm_text(hi_nm, 3); }
+
+}  // namespace
+
+std::string report_summary_text(const RunReport& r) {
+  char b[512];
+  std::string o;
+  std::snprintf(b, sizeof b, "%s: %u lines, %s; %" PRIu64 " rapids, %" PRIu64 " feeds, %" PRIu64 " arcs, %" PRIu64
+                " tool changes\n", r.file.c_str(), r.lines, r.units, r.rapid, r.feed, r.arc, r.tool_change);
+  o += b;
+  if (r.have_stock) {
+    o += "stock    X" + range(r.stock_lo.x_nm, r.stock_hi.x_nm) + " Y" + range(r.stock_lo.y_nm, r.stock_hi.y_nm) + " Z" +
+         range(r.stock_lo.z_nm, r.stock_hi.z_nm) + " mm (" +
+         (r.stock_source == "program" ? "from the program's moves; --stock to set it" : "from " + r.stock_source) +
+         ")\n";
+    std::snprintf(b, sizeof b, "grid     %d x %d dexels, pitch %s mm\n", r.nx, r.ny, nm_to_mm_text(r.pitch_nm, 4).c_str());
+    o += b;
+    o += "removed  " + volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + " mm^3\n";
+  }
+  o += "time     " + hms(r.estimated_us) + " estimated (feeds at F, rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) +
+       " mm/min)\n";
+  if (r.have_assessment) {
+    const ReportAssessment& a = r.assessment;
+    std::snprintf(b, sizeof b, "design   %" PRIu64 " gouge(s)\n", static_cast<uint64_t>(a.gouges_total));
+    o += b;
+  }
+  if (!r.stopped_reason.empty()) {
+    std::snprintf(b, sizeof b, "stopped  at the first %s, line %u\n", r.stopped_reason.c_str(), r.stopped_line);
+    o += b;
+  }
+  std::snprintf(b, sizeof b, "warnings %" PRIu64 "%s\n", r.warnings_total, r.warnings_total ? " (on standard error)" : "");
+  o += b;
+  o += "Add --image out.png for a picture, --report out.json for all of it (dexmill run --help).\n";
+  return o;
+}
+
+}  // namespace dexmill

@@ -1,0 +1,115 @@
+// Helpers of the `dexmill run` tests; see run_cli_util.h.
+#include "tests/run_cli_util.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "tests/runner.h"
+
+namespace run_cli {
+
+namespace {
+
+std::string& tmp_path() {
+  static std::string dir;
+  return dir;
+}
+
+// The folder goes when the test binary ends (whichever test made it).
+void remove_tmp_dir() {
+  const std::string& dir = tmp_path();
+  if (!dir.empty() && std::system(("chmod -R u+w '" + dir + "'; rm -rf '" + dir + "'").c_str()) != 0)
+    std::printf("  (could not remove %s)\n", dir.c_str());
+}
+
+}  // namespace
+
+std::string tmp_dir() {
+  std::string& dir = tmp_path();
+  if (dir.empty()) {
+    char t[] = "/tmp/dexmill-run-test-XXXXXX";
+    if (mkdtemp(t)) {
+      dir = t;
+      std::atexit(remove_tmp_dir);
+    }
+  }
+  return dir;
+}
+
+std::string slurp(const std::string& path) {
+  std::string s;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return s;
+  char b[65536];
+  size_t n;
+  while ((n = std::fread(b, 1, sizeof b, f)) > 0) s.append(b, n);
+  std::fclose(f);
+  return s;
+}
+
+uint64_t fnv(const std::string& s) {
+  uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) { h ^= c; h *= 1099511628211ULL; }
+  return h;
+}
+uint64_t file_hash(const std::string& path) { return fnv(slurp(path)); }
+
+Result run(const std::string& args, const char* stdin_file, bool in_tmp, const std::string& prefix) {
+  Result r;
+  const char* bin = t::dexmill_binary();
+  if (!bin) return r;
+  std::string a;
+  for (char c : args) {
+    if (c == '%') a += tmp_dir();
+    else a += c;
+  }
+  char abs[4096];
+  const std::string binary = realpath(bin, abs) ? abs : bin;
+  const std::string err = tmp_dir() + "/stderr.txt", out = tmp_dir() + "/stdout.txt";
+  const std::string cwd = in_tmp ? tmp_dir() : std::string(t::tests_dir()) + "/run";
+  std::string cmd = "cd '" + cwd + "' && " + prefix + " '" + binary + "' run " + a + " 2>'" + err + "' >'" + out + "'";
+  char in_abs[4096];
+  if (stdin_file && realpath(stdin_file, in_abs)) stdin_file = in_abs;
+  cmd += stdin_file ? " <'" + std::string(stdin_file) + "'" : std::string(" </dev/null");
+  const int st = std::system(cmd.c_str());
+  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  r.err = slurp(err);
+  r.out = slurp(out);
+  return r;
+}
+
+bool has(const std::string& s, const char* part) {
+  if (s.find(part) != std::string::npos) return true;
+  std::printf("  wanted '%s' in: %s\n", part, s.c_str());
+  return false;
+}
+
+std::string report_body(const std::string& path) {
+  std::string s = slurp(path);
+  const size_t t = s.find("  \"timing\"");
+  return t == std::string::npos ? s : s.substr(0, t);
+}
+
+bool skip() {
+  if (t::dexmill_binary()) return false;
+  std::printf("  (skipped: set DEXMILL to the built binary)\n");
+  return true;
+}
+
+std::string assessment_of(const std::string& report) {
+  const size_t a = report.find("  \"assessment\""), b = report.find("  \"timing\"");
+  return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
+}
+
+void check_hash(const std::string& path, uint64_t want) {
+  const uint64_t got = file_hash(path);
+  if (got != want) std::printf("  %s: hash 0x%016llxULL\n", path.c_str(), static_cast<unsigned long long>(got));
+  CHECK_EQ(got, want);
+}
+
+}  // namespace run_cli

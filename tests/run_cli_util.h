@@ -1,0 +1,39 @@
+// Running `dexmill run` from tests: a command line with % for a temporary
+// folder, its exit status, standard error and standard output; file hashes.
+#ifndef DEXMILL_TESTS_RUN_CLI_UTIL_H
+#define DEXMILL_TESTS_RUN_CLI_UTIL_H
+
+#include <cstdint>
+#include <string>
+
+namespace run_cli {
+
+struct Result {
+  int code = -1;
+  std::string err, out;
+};
+
+// A temporary folder made once per test binary.
+std::string tmp_dir();
+std::string slurp(const std::string& path);
+uint64_t fnv(const std::string& s);
+uint64_t file_hash(const std::string& path);
+// Runs `dexmill run ARGS` in the tests/run folder (so reports name the
+// inputs without a path), or in the temporary folder when `in_tmp`; % in
+// ARGS stands for the temporary folder. `prefix` goes before the command
+// (e.g. a `setpriv` to run as another user).
+Result run(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false, const std::string& prefix = "");
+// True when s holds part; else prints both and returns false.
+bool has(const std::string& s, const char* part);
+// The report without its wall-clock timing.
+std::string report_body(const std::string& path);
+// True (with a note) when the binary to test is unknown.
+bool skip();
+// The report's assessment object, from its key to the line before timing.
+std::string assessment_of(const std::string& report);
+// CHECKs the file's hash (printing the new one when it differs).
+void check_hash(const std::string& path, uint64_t want);
+
+}  // namespace run_cli
+
+#endif

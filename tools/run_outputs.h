@@ -1,0 +1,42 @@
+// The output files of `dexmill run`, checked before anything runs: each
+// one's format from its extension, at most one on standard output ("-"),
+// none the same file as an input or as another output, each one's folder
+// there and writable (a long simulation must not end in "cannot write").
+#ifndef DEXMILL_TOOLS_RUN_OUTPUTS_H
+#define DEXMILL_TOOLS_RUN_OUTPUTS_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "platform/image_file.h"
+#include "tools/run_options.h"
+
+namespace dexmill {
+namespace cli {
+
+struct OutputFormats {
+  ImageFormat image = ImageFormat::kPng;
+  ImageFormat error_image = ImageFormat::kPng;
+  ImageFormat heightmap = ImageFormat::kPgm;
+};
+
+// The format an image output's name asks for: ".ppm" or ".png" (".pgm" or
+// ".png" when `heightmap`), any case. A name without an extension that is
+// standard output or an existing device or FIFO gets `fallback`. Else false
+// with the usage message in *err.
+bool output_format(const char* option, const std::string& path, bool heightmap, ImageFormat fallback,
+                   ImageFormat* format, std::string* err);
+
+// Checks the outputs of `o` against each other and the input files
+// `inputs` (names as given; "-" and empty ones are skipped) and picks their
+// formats. Returns kExitOk, or prints the error and returns kExitUsage (a
+// bad extension, two outputs on standard output, an output that is an
+// input or another output) or kExitIo (no such folder, not writable, a
+// directory).
+int check_outputs(const RunOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
