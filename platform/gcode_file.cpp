@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "core/gcode/lex.h"
+
 namespace dexmill {
 
 GcodeFile::~GcodeFile() {
@@ -49,39 +51,141 @@ bool GcodeFile::fill() {
   return true;
 }
 
-GcodeFile::Read GcodeFile::next(const char** text, std::size_t* len, uint32_t* line_no) {
-  std::size_t n = 0;
-  bool too_long = false, any = false;
+namespace {
+
+// A byte that text never holds; see the top of gcode_file.h for the ones
+// left out (NUL, white space, SUB).
+bool is_binary_byte(unsigned char c) {
+  return (c < 0x20 && c != 0 && c != '\t' && c != '\n' && c != '\v' && c != '\f' && c != '\r' && c != 0x1a) ||
+         c == 0x7f;
+}
+
+}  // namespace
+
+// Decides, on the first buffer, what the input is (gcode_file.h).
+void GcodeFile::look_at_start() {
+  started_ = true;
+  if (!fill()) return;
+  const unsigned char* b = reinterpret_cast<const unsigned char*>(buf_);
+  if (end_ >= 2 && ((b[0] == 0xff && b[1] == 0xfe) || (b[0] == 0xfe && b[1] == 0xff))) {
+    not_text_ = GcodeError::kUtf16Text;
+    return;
+  }
+  std::size_t binary = 0;
+  for (std::size_t i = 0; i < end_; ++i) {
+    if (!is_binary_byte(b[i])) continue;
+    if (binary++ == 0) not_text_byte_ = b[i];
+  }
+  if (binary && binary * 32 >= end_) {
+    not_text_ = GcodeError::kNotText;
+    return;
+  }
+  if (end_ >= 3 && b[0] == 0xef && b[1] == 0xbb && b[2] == 0xbf) {
+    pos_ = 3;
+    consumed_ = 3;
+  }
+  cr_lines_ = !std::memchr(buf_, '\n', end_) && std::memchr(buf_, '\r', end_);
+}
+
+GcodeError GcodeFile::not_text(char word[16]) const {
+  word[0] = 0;
+  if (not_text_ == GcodeError::kNotText) {
+    GcodeDiag d{};
+    const char c = static_cast<char>(not_text_byte_);
+    gcode_set_word(&d, &c, 1);
+    std::memcpy(word, d.word, sizeof d.word);
+  }
+  return not_text_;
+}
+
+// True when buf_[pos_] is a byte to read (the LF of a CRLF whose CR ended
+// the last line is skipped here, even across a refill).
+bool GcodeFile::more() {
   for (;;) {
-    if (pos_ >= end_ && !fill()) {
+    if (pos_ >= end_ && !fill()) return false;
+    if (!pending_lf_) return true;
+    pending_lf_ = false;
+    if (buf_[pos_] == '\n') {
+      ++pos_;
+      ++consumed_;
+    }
+  }
+}
+
+// Index of the first line end in buf_[pos_, end_), or end_.
+std::size_t GcodeFile::find_eol() const {
+  if (!cr_lines_) {
+    const void* nl = std::memchr(buf_ + pos_, '\n', end_ - pos_);
+    return nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - buf_) : end_;
+  }
+  for (std::size_t i = pos_; i < end_; ++i)
+    if (buf_[i] == '\n' || buf_[i] == '\r') return i;
+  return end_;
+}
+
+// Consumes the line end at pos_.
+void GcodeFile::take_eol() {
+  pending_lf_ = buf_[pos_] == '\r';
+  ++pos_;
+  ++consumed_;
+}
+
+GcodeFile::Read GcodeFile::next(const char** text, std::size_t* len, uint32_t* line_no) {
+  if (!started_) look_at_start();
+  if (not_text_ != GcodeError::kOk) {
+    if (not_text_done_) return Read::kEof;
+    not_text_done_ = true;
+    return Read::kNotText;
+  }
+  if (skipping_) {
+    // The rest of an over-long line, already reported.
+    skipping_ = false;
+    for (std::size_t skipped = 0;;) {
+      if (!more()) return error_[0] ? Read::kIoError : Read::kEof;
+      const std::size_t e = find_eol();
+      skipped += e - pos_;
+      consumed_ += e - pos_;
+      pos_ = e;
+      if (e < end_) {
+        take_eol();
+        break;
+      }
+      if (skipped > kGcodeMaxSkip) return Read::kEndless;
+    }
+  }
+  std::size_t n = 0;
+  bool any = false;
+  for (;;) {
+    if (!more()) {
       if (error_[0]) return Read::kIoError;
       if (!any) return Read::kEof;
       break;  // a last line with no line end
     }
     any = true;
-    // Copy up to the next '\n' in one go.
-    const char* start = buf_ + pos_;
-    const void* nl = std::memchr(start, '\n', end_ - pos_);
-    std::size_t chunk = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - start) : end_ - pos_;
-    if (!too_long) {
-      if (n + chunk <= kGcodeMaxLine + 1) {
-        std::memcpy(line_ + n, start, chunk);
-        n += chunk;
-      } else {
-        too_long = true;
-      }
+    const std::size_t e = find_eol();
+    const std::size_t chunk = e - pos_;
+    if (n + chunk > kGcodeMaxLine + 1) {
+      // Longer than any line, even with the CR of a CRLF: say so now, and
+      // skip the rest on the next call (which may never find a line end).
+      pos_ = e;
+      consumed_ += chunk;
+      if (e < end_) take_eol();
+      else skipping_ = true;
+      *line_no = ++line_no_;
+      return Read::kTooLong;
     }
-    pos_ += chunk;
+    std::memcpy(line_ + n, buf_ + pos_, chunk);
+    n += chunk;
+    pos_ = e;
     consumed_ += chunk;
-    if (nl) {
-      ++pos_;
-      ++consumed_;
+    if (e < end_) {
+      take_eol();
       break;
     }
   }
   *line_no = ++line_no_;
-  if (!too_long && n > 0 && line_[n - 1] == '\r') --n;  // CRLF
-  if (too_long || n > kGcodeMaxLine) return Read::kTooLong;
+  if (n > 0 && line_[n - 1] == '\r') --n;  // CRLF
+  if (n > kGcodeMaxLine) return Read::kTooLong;
   *text = line_;
   *len = n;
   return Read::kLine;
@@ -124,8 +228,21 @@ bool GcodeRunner::step() {
     done_ = true;
     return false;
   }
-  ++lines_;
+  if (r == GcodeFile::Read::kEndless) {
+    done_ = true;  // its over-long line was the error
+    return false;
+  }
   GcodeDiag d{};
+  if (r == GcodeFile::Read::kNotText) {
+    // One error for the whole input, however many lines it would make.
+    d.code = file_->not_text(d.word);
+    d.line = 1;
+    d.col = 1;
+    messages_->error(d);
+    done_ = true;
+    return false;
+  }
+  ++lines_;
   GcodeError e;
   if (r == GcodeFile::Read::kTooLong) {
     e = GcodeError::kLineTooLong;

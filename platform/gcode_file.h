@@ -4,6 +4,23 @@
 // MESSAGE` (../shared/CLI.md). Memory is fixed: a 64 KiB read buffer and one
 // line of kGcodeMaxLine bytes, whatever the length of the file.
 //
+// What counts as text, decided on the first 64 KiB read (the file's start):
+//   - a UTF-8 byte-order mark (EF BB BF, which Windows editors write) is
+//     skipped;
+//   - a UTF-16 byte-order mark, or control bytes making up 1/32 or more of
+//     those bytes, make the input "not a text file": one error, nothing read
+//     (an image or an executable would give an error per line otherwise). A
+//     few stray control bytes are typos, reported on their lines. NUL does
+//     not count (tape leaders and padding are NUL runs; /dev/zero is one
+//     endless line), nor do white space and SUB (0x1A, DOS's end-of-file);
+//   - a line ends at LF (a CR before it belongs to CRLF). A start with no
+//     LF but some CR is an old Mac file: then CR, LF and CRLF each end a line.
+//     Elsewhere a CR is white space, as in LinuxCNC.
+// A line longer than kGcodeMaxLine is reported as soon as it is; its rest is
+// skipped up to its line end. When that end does not come within the next
+// kGcodeMaxSkip bytes (/dev/zero, a stuck pipe), reading stops there: the
+// over-long line is the input's last error, not a read that never ends.
+//
 // Driving it (what `dexmill path`, `check` and `run` do):
 //
 //   GcodeFile file;
@@ -38,10 +55,12 @@ class GcodeFile {
   bool open(const char* path);
 
   enum class Read : uint8_t {
-    kLine,     // *text/*len hold the line, without '\n' or "\r\n"
-    kTooLong,  // the line exceeded kGcodeMaxLine bytes; it was skipped whole
+    kLine,     // *text/*len hold the line, without its line end
+    kTooLong,  // the line exceeded kGcodeMaxLine bytes; the next call skips its rest
     kEof,
     kIoError,  // see error()
+    kNotText,  // the input is not text (see not_text()); nothing is read
+    kEndless,  // the rest of an over-long line had no end within kGcodeMaxSkip bytes; reading stopped
   };
   // The next line; *line_no is its 1-based number.
   Read next(const char** text, std::size_t* len, uint32_t* line_no);
@@ -53,9 +72,21 @@ class GcodeFile {
   // Name for messages: the path, or "<stdin>".
   const char* name() const { return name_; }
   const char* error() const { return error_; }
+  // After Read::kNotText: kNotText (binary data, with the first control byte
+  // in word) or kUtf16Text, and the diagnostic's word.
+  GcodeError not_text(char word[16]) const;
+  // The line ends are CRs (an old Mac file).
+  bool cr_line_ends() const { return cr_lines_; }
+
+  // Bytes of an over-long line's rest read in search of its end.
+  static constexpr std::size_t kGcodeMaxSkip = std::size_t(1) << 20;
 
  private:
   bool fill();
+  void look_at_start();
+  bool more();
+  std::size_t find_eol() const;
+  void take_eol();
 
   std::FILE* f_ = nullptr;
   bool owned_ = false;
@@ -64,6 +95,13 @@ class GcodeFile {
   char buf_[65536];
   std::size_t pos_ = 0, end_ = 0;
   bool eof_ = false;
+  bool started_ = false;     // the first buffer was read and looked at
+  bool cr_lines_ = false;    // CR ends lines (see the top of this file)
+  bool pending_lf_ = false;  // a CR ended the last line: an LF right after it is part of it
+  bool skipping_ = false;    // the last line was over-long: skip its rest first
+  bool not_text_done_ = false;
+  GcodeError not_text_ = GcodeError::kOk;
+  unsigned char not_text_byte_ = 0;
   char line_[kGcodeMaxLine + 1];
   uint32_t line_no_ = 0;
   uint64_t consumed_ = 0;
@@ -105,8 +143,10 @@ class GcodeRunner {
       : file_(file), interp_(interp), messages_(messages), stop_at_first_error_(stop_at_first_error) {}
 
   // Reads and interprets one line. False when there is nothing more to do:
-  // end of file, end of program (M2, M30, closing %), an I/O error, or the
-  // first error when stopping at it.
+  // end of file, an I/O error, an input that is not text (one error for it
+  // all), an over-long line with no end in reach, or the first error when
+  // stopping at it. After the end of the program (M2, M30, closing %) lines
+  // are still read, to warn once about code after it.
   bool step();
   // Runs step() until it returns false.
   void run_all() {

@@ -91,3 +91,36 @@ TEST(cli_check_reports_all_errors) {
   r = sh("check a b");
   CHECK_EQ(r.code, 2);
 }
+
+// Odd input files (issue 22): each gives one clear error and exit 1, or reads
+// as the text it is.
+TEST(cli_odd_input_files) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  // Endless input with no line end: the over-long line, not a hang.
+  Result r = sh("check /dev/zero");
+  CHECK_EQ(r.code, 1);
+  CHECK_EQ(r.out, std::string("/dev/zero:1:257: error: line is longer than 256 characters\n"));
+  r = sh("path - < /dev/zero");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, "<stdin>:1:257: error: line is longer than 256 characters\n"));
+  // An executable is not a text file: one error, not one per line.
+  r = sh(std::string("check '") + t::dexmill_binary() + "'");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":1:1: error: not a text file (binary data, such as the byte \\x7F; G-code is plain text)\n"));
+  CHECK_EQ(r.out.find('\n'), r.out.size() - 1);
+  // Old Mac line ends, and a UTF-8 byte-order mark.
+  r = sh(std::string("path ") + kIn, "\xEF\xBB\xBFG21\rG0 X1\rG1 Y2 F100\rM2\r");
+  CHECK_EQ(r.code, 0);
+  CHECK_EQ(r.out, std::string("# dexmill-path v1 units=mm frame=machine tol=0.001\n"
+                              "# start 0.00000 0.00000 0.00000\n"
+                              "rapid 1.00000 0.00000 0.00000\n"
+                              "feed 1.00000 2.00000 0.00000\n"));
+  r = sh(std::string("check ") + kIn, "G21\rG0 X1\rG1 Y2 Q\rM2\r");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, "dexmill_cli_input.ngc:3:7: error: 'Q' is not followed by a number\n"));
+  // Typos, not missing features.
+  r = sh(std::string("check ") + kIn, "G21\nG1 Y1O F100\nG1 @ F100\nM2\n");
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":2:6: error: 'O' in the middle of a block: o-words start their line (a 0 typed as O?)\n"));
+  CHECK(has(r.out, ":3:4: error: '@' is not followed by a number\n"));
+}

@@ -191,3 +191,137 @@ TEST(gcode_file_streams_150k_lines_without_heap) {
   CHECK_EQ(runner.lines(), 150002u);
   std::remove(path);
 }
+
+namespace {
+
+void write_file(const char* path, const std::string& bytes) {
+  std::FILE* f = std::fopen(path, "wb");
+  std::fwrite(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+}
+
+// The lines of a file as "N:text" (one per kLine), "N:too long", "not text",
+// "endless", until the end.
+std::vector<std::string> read_lines(const char* path) {
+  std::vector<std::string> out;
+  GcodeFile file;
+  if (!file.open(path)) return out;
+  for (;;) {
+    const char* text;
+    std::size_t len;
+    uint32_t line = 0;
+    const GcodeFile::Read r = file.next(&text, &len, &line);
+    if (r == GcodeFile::Read::kEof || r == GcodeFile::Read::kIoError) break;
+    if (r == GcodeFile::Read::kLine) out.push_back(std::to_string(line) + ":" + std::string(text, len));
+    if (r == GcodeFile::Read::kTooLong) out.push_back(std::to_string(line) + ":too long");
+    if (r == GcodeFile::Read::kNotText) out.push_back("not text");
+    if (r == GcodeFile::Read::kEndless) {
+      out.push_back("endless");
+      break;
+    }
+  }
+  return out;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += x + "|";
+  return s;
+}
+
+// Runs a file through the interpreter as `dexmill check` does.
+std::vector<std::string> check_errors(const char* path) {
+  GcodeFile file;
+  Collect msgs;
+  if (!file.open(path)) return {"cannot open"};
+  InterpOptions opt;
+  opt.warnings = &msgs;
+  Interp interp(nullptr, opt);
+  GcodeRunner runner(&file, &interp, &msgs, false);
+  runner.run_all();
+  return msgs.errors;
+}
+
+}  // namespace
+
+TEST(gcode_file_cr_only_line_ends) {
+  const char* path = "/tmp/dexmill_test_cr.ngc";
+  // An old Mac file: CR ends each line, an empty line is an empty line.
+  write_file(path, "G21\rG0 X1\r\rG1 Y2 F100\rM2");
+  CHECK_EQ(join(read_lines(path)), std::string("1:G21|2:G0 X1|3:|4:G1 Y2 F100|5:M2|"));
+  // Once CR ends lines, a later CRLF is one line end, even split across reads.
+  std::string s;
+  int lines = 0;
+  while (s.size() + 6 < 65535 - 100) {
+    s += "G0 X1\r";
+    ++lines;
+  }
+  s += "(" + std::string(65535 - s.size() - 2, 'x') + ")";
+  s += "\r\nG0 X2\r";
+  CHECK_EQ(s.size(), 65536u + 7);
+  CHECK_EQ(s[65535], '\r');
+  write_file(path, s);
+  const std::vector<std::string> got = read_lines(path);
+  CHECK_EQ(got.size(), static_cast<std::size_t>(lines + 2));
+  CHECK_EQ(got.back(), std::to_string(lines + 2) + ":G0 X2");
+  // A CRLF file, and one with stray CRs, keep their LF lines (CR is white space).
+  write_file(path, "G21\r\nG0 X1\r\r\nG0\rX2\n");
+  CHECK_EQ(join(read_lines(path)), std::string("1:G21|2:G0 X1\r|3:G0\rX2|"));
+  std::remove(path);
+}
+
+TEST(gcode_file_utf8_bom_is_skipped) {
+  const char* path = "/tmp/dexmill_test_bom.ngc";
+  write_file(path, "\xEF\xBB\xBFG21\nG0 X1\n");
+  CHECK_EQ(join(read_lines(path)), std::string("1:G21|2:G0 X1|"));
+  CHECK_EQ(check_errors(path).size(), 0u);
+  // Only at the start: elsewhere the bytes are not G-code.
+  write_file(path, "G21\n\xEF\xBB\xBFG0 X1\n");
+  const std::vector<std::string> e = check_errors(path);
+  CHECK_EQ(e.size(), 1u);
+  if (!e.empty()) CHECK_EQ(e[0], std::string("2:1: unexpected character '\\xEF' (not part of any G-code word)"));
+  std::remove(path);
+}
+
+TEST(gcode_file_binary_is_not_a_text_file) {
+  const char* path = "/tmp/dexmill_test_binary.ngc";
+  // The start of a PNG image (a 1x1 pixel), and of an ELF executable.
+  const unsigned char png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R', 0, 0,
+                               0, 1, 0, 0, 0, 1, 8, 6, 0, 0, 0, 0x1f, 0x15, 0xc4, 0x89, 0, 0, 0, 10, 'I', 'D',
+                               'A', 'T', 0x78, 0x9c, 0x63, 0, 1, 0, 0, 5, 0, 1, 0x0d, 0x0a, 0x2d, 0xb4};
+  write_file(path, std::string(reinterpret_cast<const char*>(png), sizeof png));
+  CHECK_EQ(join(read_lines(path)), std::string("not text|"));
+  std::vector<std::string> e = check_errors(path);
+  CHECK_EQ(e.size(), 1u);
+  if (!e.empty()) CHECK_EQ(e[0], std::string("1:1: not a text file (binary data, such as the byte \\x01; G-code is plain text)"));
+  std::string elf("\x7f" "ELF\x02\x01\x01", 7);
+  elf += std::string(9, '\0') + "\x02\0>\0\x01\0\0\0" + std::string(300, '\x01') + "\n";
+  write_file(path, elf);
+  CHECK_EQ(check_errors(path).size(), 1u);
+  // UTF-16 (Notepad's "Unicode") is text, but not text dexmill reads.
+  write_file(path, std::string("\xFF\xFEG\0" "0\0\n\0", 8));
+  e = check_errors(path);
+  CHECK_EQ(e.size(), 1u);
+  if (!e.empty()) CHECK_EQ(e[0], std::string("1:1: the file is UTF-16 text; save it as UTF-8 or ASCII"));
+  // A stray control byte in a text file is a typo on its line.
+  write_file(path, "G21\nG0 X1 \x01\nG0 X2\nG0 X3\nG0 X4\nG0 X5\nM2\n");
+  e = check_errors(path);
+  CHECK_EQ(e.size(), 1u);
+  if (!e.empty()) CHECK_EQ(e[0], std::string("2:7: unexpected character '\\x01' (not part of any G-code word)"));
+  std::remove(path);
+}
+
+TEST(gcode_file_endless_line_stops) {
+  const char* path = "/tmp/dexmill_test_endless.ngc";
+  // A long line is skipped to its end, and the lines after it are read.
+  write_file(path, std::string(300000, 'x') + "\nG0 X2\n");
+  CHECK_EQ(join(read_lines(path)), std::string("1:too long|2:G0 X2|"));
+  // No line end in reach: one error, and reading stops.
+  write_file(path, std::string(2 * GcodeFile::kGcodeMaxSkip, '(') + "\nG0 X2\n");
+  CHECK_EQ(join(read_lines(path)), std::string("1:too long|endless|"));
+  std::remove(path);
+  // /dev/zero: NUL bytes with no line end, forever.
+  const std::vector<std::string> e = check_errors("/dev/zero");
+  CHECK_EQ(e.size(), 1u);
+  if (!e.empty()) CHECK_EQ(e[0], std::string("1:257: line is longer than 256 characters"));
+}

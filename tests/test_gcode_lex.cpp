@@ -109,3 +109,26 @@ TEST(lex_errors) {
   long_line[kGcodeMaxLine] = 0;
   CHECK_EQ(read(long_line, &b, &k, &d), GcodeError::kOk);  // exactly the limit is fine
 }
+
+// A stray letter is a typo, not a feature dexmill lacks: LinuxCNC reads an
+// o-word only at the start of a line, and '@'/'^' only with a number.
+TEST(lex_stray_letters_are_typos) {
+  GcodeBlock b;
+  GcodeLineKind k;
+  GcodeDiag d;
+  CHECK_EQ(read("G1 Y1O F100", &b, &k, &d), GcodeError::kMisplacedOword);
+  CHECK_EQ(d.col, 6);
+  CHECK_EQ(std::strcmp(d.word, "O"), 0);
+  CHECK_EQ(read("N10 O100 sub", &b, &k, &d), GcodeError::kUnsupportedOword);  // after N it starts the line
+  CHECK_EQ(std::strcmp(d.word, "O100"), 0);
+  CHECK_EQ(read("/o100 sub", &b, &k, &d), GcodeError::kUnsupportedOword);
+  CHECK_EQ(read("G1 @ F100", &b, &k, &d), GcodeError::kMissingNumber);
+  CHECK_EQ(d.col, 4);
+  CHECK_EQ(std::strcmp(d.word, "@"), 0);
+  CHECK_EQ(read("G1 X1 ^", &b, &k, &d), GcodeError::kMissingNumber);
+  CHECK_EQ(read("G1 @-", &b, &k, &d), GcodeError::kBadNumber);
+  CHECK_EQ(read("G1 @ 5 ^90", &b, &k, &d), GcodeError::kUnsupportedPolar);
+  CHECK_EQ(d.col, 4);
+  CHECK_EQ(read("G1 ^#1", &b, &k, &d), GcodeError::kUnsupportedPolar);
+  CHECK_EQ(std::strcmp(d.word, "^"), 0);
+}

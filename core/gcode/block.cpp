@@ -197,10 +197,14 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
   GcodeScanner sc(s, n);
   sc.set_pos(i);
   bool first = true;
+  bool after_word = false;  // a word other than N was read
   for (;;) {
     GcodeWord w;
     GcodeError e = sc.next(&w, d);
     if (e != GcodeError::kOk) {
+      // LinuxCNC reads an o-word only at the start of a line (after N); an O
+      // after other words is a stray letter (Y1O: a zero typed as O).
+      if (e == GcodeError::kUnsupportedOword && after_word) return fail(d, GcodeError::kMisplacedOword, d->col, "O");
       if (e == GcodeError::kUnsupportedOword || e == GcodeError::kBadCharacter) {
         // Quote the rest of an o-word ("O100"), or the byte itself.
         size_t at = d->col - 1, end = at + 1;
@@ -225,6 +229,7 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
       continue;  // line numbers carry no meaning for the machine
     }
     first = false;
+    after_word = true;
     if (w.letter == 'G' || w.letter == 'M') {
       int64_t tenths;
       const char letter_str[2] = {w.letter, 0};

@@ -27,6 +27,9 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kLineNumberNotFirst: return "line number {w} must be the first word of the line";
     case GcodeError::kTooManyMcodes: return "{w}: more than 4 M codes in one block";
     case GcodeError::kStrayCloseParen: return "')' without '(' (malformed comment)";
+    case GcodeError::kNotText: return "not a text file (binary data, such as the byte {w}; G-code is plain text)";
+    case GcodeError::kUtf16Text: return "the file is UTF-16 text; save it as UTF-8 or ASCII";
+    case GcodeError::kMisplacedOword: return "'{w}' in the middle of a block: o-words start their line (a 0 typed as O?)";
     case GcodeError::kFeedZero: return "{w}: feed move with zero feed rate (set F first; G93 and G94 set F to 0)";
     case GcodeError::kInverseTimeNoF: return "{w}: F word missing in inverse time mode (G93 needs F on every feed move)";
     case GcodeError::kArcNoCentre: return "{w}: R, I, J and K words all missing for arc";

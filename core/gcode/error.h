@@ -36,6 +36,9 @@ enum class GcodeError : uint8_t {
   kLineNumberNotFirst = 16,
   kTooManyMcodes = 17,
   kStrayCloseParen = 18,
+  kNotText = 19,
+  kUtf16Text = 20,
+  kMisplacedOword = 21,
   // -- checking the block (40..99)
   kFeedZero = 40,
   kInverseTimeNoF = 41,

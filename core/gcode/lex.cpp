@@ -83,6 +83,9 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   const size_t start = pos_;
   const char c = upper(s_[pos_]);
   GcodeError bad = GcodeError::kOk;
+  // LinuxCNC's polar words (@ distance, ^ angle) are read like any other
+  // word, so '@' with no number after it is a typo, not polar coordinates.
+  const bool polar = c == '@' || c == '^';
   if (c >= 'A' && c <= 'Z') {
     if (c == 'E') bad = GcodeError::kUnknownWord;
     if (c == 'O') bad = GcodeError::kUnsupportedOword;
@@ -90,11 +93,9 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
     bad = GcodeError::kUnsupportedParameter;
   } else if (c == '[') {
     bad = GcodeError::kUnsupportedExpression;
-  } else if (c == '@' || c == '^') {
-    bad = GcodeError::kUnsupportedPolar;
   } else if (c == ')') {
     bad = GcodeError::kStrayCloseParen;
-  } else {
+  } else if (!polar) {
     bad = GcodeError::kBadCharacter;
   }
   if (bad != GcodeError::kOk) {
@@ -105,16 +106,24 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   pos_ = start + 1;
   Decimal v{0, 0};
   DecimalParse r = decimal_parse(s_, n_, &pos_, &v);
+  size_t i = start + 1;
+  while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
+  // A value LinuxCNC would compute: X[1+2], X#1.
+  const bool computed = r != DecimalParse::kOk && i < n_ && (s_[i] == '[' || s_[i] == '#');
+  if (polar && (r == DecimalParse::kOk || computed)) {
+    set_diag(d, GcodeError::kUnsupportedPolar, start);
+    gcode_set_word(d, &c, 1);
+    pos_ = start;
+    return GcodeError::kUnsupportedPolar;
+  }
+  if (computed) {
+    GcodeError err = s_[i] == '[' ? GcodeError::kUnsupportedExpression : GcodeError::kUnsupportedParameter;
+    set_diag(d, err, i);
+    gcode_set_word(d, s_ + i, 1);
+    return err;
+  }
   if (r != DecimalParse::kOk) {
     // "X" followed by nothing numeric is a missing number; "X-" or "X." a bad one.
-    size_t i = start + 1;
-    while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
-    if (i < n_ && (s_[i] == '[' || s_[i] == '#')) {
-      GcodeError err = s_[i] == '[' ? GcodeError::kUnsupportedExpression : GcodeError::kUnsupportedParameter;
-      set_diag(d, err, i);
-      gcode_set_word(d, s_ + i, 1);
-      return err;
-    }
     bool started = i < n_ && (s_[i] == '-' || s_[i] == '+' || s_[i] == '.');
     GcodeError err = r == DecimalParse::kTooLarge ? GcodeError::kNumberTooLarge
                      : started                    ? GcodeError::kBadNumber
