@@ -221,6 +221,7 @@ bool GcodeRunner::step() {
   GcodeFile::Read r = file_->next(&text, &len, &line_no);
   if (r == GcodeFile::Read::kEof) {
     done_ = true;
+    interp_->end_of_input(lines_);
     return false;
   }
   if (r == GcodeFile::Read::kIoError) {

@@ -77,7 +77,7 @@ TEST(cli_path_errors) {
 
 TEST(cli_check_reports_all_errors) {
   if (!CHECK(t::dexmill_binary() != nullptr)) return;
-  Result r = sh(std::string("check ") + kIn, "G21\nG0 X1\n");
+  Result r = sh(std::string("check ") + kIn, "G21\nG0 X1\nM2\n");
   CHECK_EQ(r.code, 0);
   CHECK_EQ(r.out, std::string(""));
   r = sh(std::string("check ") + kIn, "G21\nG1 X1\nG0 X1 A1\n$H\nG2 X3 Y4 (no centre)\nM2\n");
@@ -123,4 +123,24 @@ TEST(cli_odd_input_files) {
   CHECK_EQ(r.code, 1);
   CHECK(has(r.out, ":2:6: error: 'O' in the middle of a block: o-words start their line (a 0 typed as O?)\n"));
   CHECK(has(r.out, ":3:4: error: '@' is not followed by a number\n"));
+}
+
+// Programs that read without an error but are not what was meant: warnings
+// (exit 0), in LinuxCNC's place an error for the first one.
+TEST(cli_check_warns_about_cut_short_and_empty_programs) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  Result r = sh(std::string("check ") + kIn, "G21\nG0 X1\nG1 X2 F100\nG1 Y");
+  CHECK_EQ(r.code, 1);  // the cut-off word is an error; the missing end a warning
+  CHECK(has(r.out, "dexmill_cli_input.ngc:4:4: error: 'Y' is not followed by a number\n"));
+  CHECK(has(r.out, "dexmill_cli_input.ngc:4:1: warning: the program ends without M2 or M30 (or a closing %): was the "
+                   "file cut short?\n"));
+  r = sh(std::string("check ") + kIn, "G21\nG0 X1\nG1 X2 F100\n");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, ":3:1: warning: the program ends without M2 or M30"));
+  r = sh(std::string("check ") + kIn, "(nothing but a comment)\n\n");
+  CHECK_EQ(r.code, 0);
+  CHECK_EQ(r.out, std::string("/tmp/dexmill_cli_input.ngc:1:1: warning: the program is empty (no G-code in it)\n"));
+  r = sh(std::string("path ") + kIn, "G21 M3 S1000\nG4 P1\nM30\n");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "dexmill_cli_input.ngc:1:1: warning: the program makes no move\n"));
 }

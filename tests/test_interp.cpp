@@ -2,6 +2,7 @@
 // tolerances, warnings, and the no-heap streaming guarantee.
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include "core/motion/interp.h"
 #include "tests/alloc_count.h"
@@ -187,6 +188,39 @@ TEST(interp_warnings_and_end) {
   CHECK_EQ(w.list[2].line, 5u);
   CHECK_EQ(rec.count(CanonKind::kTraverse), 1u);
   CHECK_EQ(rec.count(CanonKind::kEnd), 1u);
+}
+
+TEST(interp_warnings_at_end_of_input) {
+  struct Case {
+    const char* program;
+    std::vector<GcodeError> warnings;
+    uint32_t line;  // of the last warning
+  };
+  const Case cases[] = {
+      {"G21\nG0 X1\nM2\n", {}, 0},
+      {"", {GcodeError::kWarnEmptyProgram}, 1},
+      {"(comment)\n;another\n\n%\n%\n", {GcodeError::kWarnEmptyProgram}, 1},
+      {"G21\nG0 X1\nG1 X2 F10", {GcodeError::kWarnNoProgramEnd}, 3},
+      {"%\nG21\nG0 X1\n", {GcodeError::kWarnNoClosingPercent}, 3},
+      {"%\nG21\nG0 X1\n%\n", {}, 0},
+      {"G21\nG0 X0 Y0\nG4 P1\nM2\n", {GcodeError::kWarnNoMotion}, 1},  // a move to where it is goes nowhere
+      {"G21\nG0 X0\n", {GcodeError::kWarnNoProgramEnd, GcodeError::kWarnNoMotion}, 1},
+      {"G21\nG1 X1\nM2\n", {}, 0},  // moves of a failed block are unknown: no verdict
+      {"G21 F100\nG2 X0 I1\nM30\n", {}, 0},  // a full circle moves
+  };
+  for (const Case& c : cases) {
+    t::Warnings w;
+    InterpOptions opt;
+    opt.warnings = &w;
+    Interp in(nullptr, opt);
+    (void)interp_run_text(&in, c.program, std::strlen(c.program), nullptr);
+    if (!CHECK_EQ(w.list.size(), c.warnings.size())) {
+      std::printf("  program: %s\n", c.program);
+      continue;
+    }
+    for (size_t i = 0; i < w.list.size(); ++i) CHECK_EQ(w.list[i].code, c.warnings[i]);
+    if (!w.list.empty()) CHECK_EQ(w.list.back().line, c.line);
+  }
 }
 
 TEST(interp_large_numbers_are_errors) {

@@ -69,6 +69,12 @@ struct GcodeBlock {
   bool has_word(char letter) const { return (has >> (letter - 'A')) & 1u; }
   uint16_t col_of(char letter) const { return col[letter - 'A']; }
   const Decimal& val(char letter) const { return value[letter - 'A']; }
+  // No word at all (a blank or comment-only line; N alone counts as none).
+  bool empty() const {
+    for (int i = 0; i < kGGroupCount; ++i)
+      if (g[i] >= 0) return false;
+    return has == 0 && m_count == 0;
+  }
   bool has_axis() const { return (has & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')))) != 0; }
 };
 

@@ -80,6 +80,10 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kWarnGrblCommand: return "grbl command '{w}' skipped (the position is assumed unchanged)";
     case GcodeError::kWarnG10ToolTable: return "{w}: tool table change ignored (tool lengths are not applied to the path)";
     case GcodeError::kWarnAfterEnd: return "text after the end of the program (M2/M30 or %) ignored";
+    case GcodeError::kWarnNoProgramEnd: return "the program ends without M2 or M30 (or a closing %): was the file cut short?";
+    case GcodeError::kWarnNoClosingPercent: return "the file ends without the % that closes its opening %: was it cut short?";
+    case GcodeError::kWarnEmptyProgram: return "the program is empty (no G-code in it)";
+    case GcodeError::kWarnNoMotion: return "the program makes no move";
   }
   return "unknown error";
 }

@@ -89,6 +89,10 @@ enum class GcodeError : uint8_t {
   kWarnGrblCommand = 141,
   kWarnG10ToolTable = 142,
   kWarnAfterEnd = 143,
+  kWarnNoProgramEnd = 144,
+  kWarnNoClosingPercent = 145,
+  kWarnEmptyProgram = 146,
+  kWarnNoMotion = 147,
 };
 
 // Stable number of an error, for messages and tests.

@@ -211,11 +211,16 @@ void Interp::reset() {
   state_.inch = options_.inch;
   state_.path_mode = 640;
   records_ = 0;
+  moves_ = 0;
+  any_code_ = false;
+  any_failed_ = false;
   warned_after_end_ = false;
 }
 
 void Interp::emit(CanonRecord* r) {
   ++records_;
+  const bool straight = r->kind == CanonKind::kTraverse || r->kind == CanonKind::kFeed;
+  if (r->kind == CanonKind::kArc || (straight && !(r->start == r->end))) ++moves_;
   if (sink_) sink_->emit(*r);
 }
 
@@ -244,7 +249,12 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
     }
     return GcodeError::kOk;
   }
-  if (e != GcodeError::kOk) return e;
+  if (e != GcodeError::kOk || kind == GcodeLineKind::kGrblCommand || (kind == GcodeLineKind::kBlock && !block.empty()))
+    any_code_ = true;
+  if (e != GcodeError::kOk) {
+    any_failed_ = true;
+    return e;
+  }
   switch (kind) {
     case GcodeLineKind::kPercent:
       // The first % opens the program; a second one ends it.
@@ -272,11 +282,23 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   BlockRunner run(*this, block, diag);
   e = run.run();
   if (e != GcodeError::kOk) {
+    any_failed_ = true;
     diag->line = line;
     return e;
   }
   run.commit();
   return GcodeError::kOk;
+}
+
+void Interp::end_of_input(uint32_t last_line) {
+  if (!any_code_) {
+    warn(GcodeError::kWarnEmptyProgram, 1, 1, "");
+    return;
+  }
+  if (!state_.ended)
+    warn(state_.percent_open ? GcodeError::kWarnNoClosingPercent : GcodeError::kWarnNoProgramEnd,
+         last_line ? last_line : 1, 1, "");
+  if (!any_failed_ && moves_ == 0) warn(GcodeError::kWarnNoMotion, 1, 1, "");
 }
 
 uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first) {
@@ -292,6 +314,7 @@ uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* fi
     ++line;
     start = i + 1;
   }
+  in->end_of_input(line - 1);
   return errors;
 }
 

@@ -103,6 +103,13 @@ class Interp {
   // further lines are ignored (one warning if they hold words).
   [[nodiscard]] GcodeError execute_line(const char* text, size_t len, uint32_t line, GcodeDiag* diag);
 
+  // The input has no more lines; `last_line` is the number of the last one
+  // (0 for none). Warns where LinuxCNC would refuse the file ("File ended
+  // with no percent sign or program end": a half-uploaded file ends like
+  // that), and when the program is empty or makes no move. The last two
+  // only when no block failed (a failed block's moves are unknown).
+  void end_of_input(uint32_t last_line);
+
   bool ended() const { return state_.ended; }
   const InterpState& state() const { return state_; }
   PointNm position() const { return state_.pos; }
@@ -117,6 +124,9 @@ class Interp {
   InterpOptions options_;
   InterpState state_;
   uint64_t records_ = 0;
+  uint64_t moves_ = 0;        // moves that go somewhere (for the no-motion warning)
+  bool any_code_ = false;     // a line held code (an error counts)
+  bool any_failed_ = false;   // a block failed
   bool warned_after_end_ = false;
 
   friend struct BlockRunner;
