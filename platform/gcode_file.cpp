@@ -194,8 +194,8 @@ GcodeFile::Read GcodeFile::next(const char** text, std::size_t* len, uint32_t* l
 std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n) {
   char msg[400];
   gcode_format_message(d, msg, sizeof msg);
-  int k = std::snprintf(buf, n, "%s:%u:%u: %s: %s", file, static_cast<unsigned>(d.line), static_cast<unsigned>(d.col),
-                        is_error ? "error" : "warning", msg);
+  int k = std::snprintf(buf, n, "%s:%u:%u: %s: %s%s", file, static_cast<unsigned>(d.line), static_cast<unsigned>(d.col),
+                        is_error ? "error" : "warning", msg, d.follow_on ? " (may follow from an earlier error)" : "");
   return k < 0 ? 0 : (static_cast<std::size_t>(k) < n ? static_cast<std::size_t>(k) : n - 1);
 }
 
@@ -252,10 +252,12 @@ bool GcodeRunner::step() {
     d.col = static_cast<uint16_t>(kGcodeMaxLine + 1);
     d.a_nm = static_cast<int64_t>(kGcodeMaxLine);
     if (interp_->ended()) e = GcodeError::kOk;  // nothing after the end is read
+    interp_->line_not_read();
   } else {
     e = interp_->execute_line(text, len, line_no, &d);
   }
-  if (e != GcodeError::kOk) {
+  if (e != GcodeError::kOk && d.follow_on) ++follow_ons_;  // maybe a consequence of an error already reported
+  if (e != GcodeError::kOk && (!d.follow_on || show_follow_ons_)) {
     d.line = line_no;
     messages_->error(d);
     if (stop_at_first_error_) {

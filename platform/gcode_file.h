@@ -121,7 +121,8 @@ class GcodeMessages : public GcodeDiagSink {
   uint32_t warnings_ = 0;
 };
 
-// `FILE:LINE:COL: error: MESSAGE` into buf (NUL-terminated, truncated to n).
+// `FILE:LINE:COL: error: MESSAGE` into buf (NUL-terminated, truncated to n);
+// a follow-on error says so after its message.
 std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n);
 
 // Prints diagnostics to a stdio stream (stderr by default).
@@ -155,6 +156,11 @@ class GcodeRunner {
   }
   bool io_error() const { return io_error_; }
   uint32_t lines() const { return lines_; }
+  // Errors not passed to the messages because they may be only consequences
+  // of earlier ones (GcodeDiag::follow_on); when not stopping at the first.
+  uint32_t follow_ons() const { return follow_ons_; }
+  // Passes follow-ons to the messages too (marked in their text).
+  void show_follow_ons(bool on) { show_follow_ons_ = on; }
 
  private:
   GcodeFile* file_;
@@ -164,6 +170,8 @@ class GcodeRunner {
   bool done_ = false;
   bool io_error_ = false;
   uint32_t lines_ = 0;
+  uint32_t follow_ons_ = 0;
+  bool show_follow_ons_ = false;
 };
 
 }  // namespace dexmill

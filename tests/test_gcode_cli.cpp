@@ -144,3 +144,27 @@ TEST(cli_check_warns_about_cut_short_and_empty_programs) {
   CHECK_EQ(r.code, 0);
   CHECK(has(r.out, "dexmill_cli_input.ngc:1:1: warning: the program makes no move\n"));
 }
+
+// Issue 22: `check` reports each root error once; what follows from it is
+// counted (and shown, marked, with --follow-ons).
+TEST(cli_check_reports_each_root_error_once) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  const char* program = "G21\nG0 X1\nG1 X2\nG1 X3\nG1 X4\nM2\n";
+  Result r = sh(std::string("check ") + kIn, program);
+  CHECK_EQ(r.code, 1);
+  CHECK_EQ(r.out, std::string("/tmp/dexmill_cli_input.ngc:3:1: error: G1: feed move with zero feed rate (set F first; "
+                              "G93 and G94 set F to 0)\n"
+                              "/tmp/dexmill_cli_input.ngc: 2 more error(s) not shown: each may only follow from one "
+                              "above (--follow-ons shows them)\n"));
+  r = sh(std::string("check --follow-ons ") + kIn, program);
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":5:1: error: G1: feed move with zero feed rate (set F first; G93 and G94 set F to 0) (may follow "
+                   "from an earlier error)\n"));
+  CHECK(!has(r.out, "not shown"));
+  // An over-long line may have held anything (here the F).
+  const std::string long_line = "G1 X1 F100 (" + std::string(300, 'x') + ")\nG1 X2\nM2\n";
+  r = sh(std::string("check ") + kIn, long_line.c_str());
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":1:257: error: line is longer than 256 characters\n"));
+  CHECK(has(r.out, ": 1 more error(s) not shown"));
+}

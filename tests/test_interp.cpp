@@ -2,6 +2,7 @@
 // tolerances, warnings, and the no-heap streaming guarantee.
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "core/motion/interp.h"
@@ -206,6 +207,8 @@ TEST(interp_warnings_at_end_of_input) {
       {"G21\nG0 X0 Y0\nG4 P1\nM2\n", {GcodeError::kWarnNoMotion}, 1},  // a move to where it is goes nowhere
       {"G21\nG0 X0\n", {GcodeError::kWarnNoProgramEnd, GcodeError::kWarnNoMotion}, 1},
       {"G21\nG1 X1\nM2\n", {}, 0},  // moves of a failed block are unknown: no verdict
+      {"G21\nG0 X1\nG1 X2 M2\n", {}, 0},  // and it may have been the end
+      {"G21\nG0 X1\nG1 X2\n", {GcodeError::kWarnNoProgramEnd}, 3},
       {"G21 F100\nG2 X0 I1\nM30\n", {}, 0},  // a full circle moves
   };
   for (const Case& c : cases) {
@@ -221,6 +224,63 @@ TEST(interp_warnings_at_end_of_input) {
     for (size_t i = 0; i < w.list.size(); ++i) CHECK_EQ(w.list[i].code, c.warnings[i]);
     if (!w.list.empty()) CHECK_EQ(w.list.back().line, c.line);
   }
+}
+
+namespace {
+
+// Runs a program to its end as `dexmill check` does (a bad block is skipped)
+// and lists its errors as "LINE:CODE" for a root error, "LINE:CODE~" for a
+// follow-on.
+std::string errors_of(const char* program) {
+  Interp in(nullptr, InterpOptions{});
+  std::string out;
+  uint32_t line = 0;
+  for (const char* p = program; *p;) {
+    const char* e = std::strchr(p, '\n');
+    const size_t n = e ? static_cast<size_t>(e - p) : std::strlen(p);
+    GcodeDiag d;
+    const GcodeError err = in.execute_line(p, n, ++line, &d);
+    if (err != GcodeError::kOk)
+      out += std::to_string(line) + ":" + std::to_string(gcode_error_number(err)) + (d.follow_on ? "~ " : " ");
+    if (!e) break;
+    p = e + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+// Issue 22: one cause, one error. After a block fails, what it would have set
+// is suspect, and so is what an error blames; an error that reads a suspect
+// facet is a follow-on (core/motion/interp_follow_on.cpp).
+TEST(interp_follow_on_errors) {
+  const int feed0 = gcode_error_number(GcodeError::kFeedZero);
+  const std::string f0 = std::to_string(feed0);
+  // No F: the first G1 says so, the next ones follow; F mends it, G94 breaks it anew.
+  CHECK_EQ(errors_of("G21\nG0 X1\nG1 X2\nG1 X3\nF100\nG1 X4\nG94\nG1 X5\nG1 X6"),
+           "3:" + f0 + " 4:" + f0 + "~ 8:" + f0 + " 9:" + f0 + "~ ");
+  // The F was on a line that did not read: the G1 after it follows from that line.
+  CHECK_EQ(errors_of("G21\nG1 Z#1 F#2\nG1 X1\nG1 X2 F10\nG1 X3"), "2:101 3:" + f0 + "~ ");
+  // The motion mode was on it: the axis words after it have none.
+  CHECK_EQ(errors_of("G21 F100\nG1 X#1 Y2\nX3 Y4\nG0 X5\nX6\nG80\nX7\nX8"), "2:101 3:50~ 7:50 8:50~ ");
+  // The arc starts where a failed move should have ended: unknown, until an
+  // absolute move puts the tool back on known ground.
+  CHECK_EQ(errors_of("G21 F100\nG0 X0 Y0\nG1 X#1 Y10\nG2 X30 Y0 R10\nG0 X0 Y0\nG2 X30 Y0 R10"), "3:101 4:46~ 6:46 ");
+  CHECK_EQ(errors_of("G21 F100\nG91\nG1 X#1\nG2 X30 R10\nG90 G0 X0\nG91 G2 X30 R10"), "3:101 4:46~ 6:46 ");
+  // Units a bad line may have changed make every absolute position unknown.
+  CHECK_EQ(errors_of("G21 F100\nG20 G0 X#1\nG0 X0 Y0\nG2 X30 Y0 R10\nG21 G0 X0 Y0\nG2 X30 Y0 R10"),
+           "2:101 4:46~ 6:46 ");
+  // A line's own mistakes are always news.
+  CHECK_EQ(errors_of("G21\nG1 X1\nG1 X2 A1\nG1 X3 Q"), "2:" + f0 + " 3:103 4:4 ");
+  // A modal arc on lines meant for lines: once.
+  CHECK_EQ(errors_of("G21 F100\nG2 X1 Y1 I1\nX2 Y2\nX3 Y3\nG1 X4\nG2 X5 Y5"), "3:42 4:42~ 6:42 ");
+  // A cycle whose sticky R was on a bad line.
+  CHECK_EQ(errors_of("G21 F100\nG81 X1 Y1 Z-1 R#1\nG81 X2 Y2\nG80\nG81 X3 Y3"), "2:101 3:53~ 5:53 ");
+  // An o-word line may have done anything; a stray O names nothing.
+  CHECK_EQ(errors_of("G21\nG0 X1\no100 call\nG1 X2"), "3:100 4:" + f0 + "~ ");
+  CHECK_EQ(errors_of("G21\nG0 X1\nG0 X1O\nG1 X2"), "3:21 4:" + f0 + " ");
+  // The first error is never a follow-on.
+  CHECK_EQ(errors_of("G1 X1"), "1:" + f0 + " ");
 }
 
 TEST(interp_large_numbers_are_errors) {

@@ -1,6 +1,8 @@
 // `dexmill check FILE`: reads and interprets a whole program and reports
 // every error it can (a bad block is skipped, the state stays as before it),
-// and the warnings. Exit 0 when clean, 1 with errors.
+// and the warnings. Errors that may only follow from an earlier one
+// (GcodeDiag::follow_on) are counted in one line at the end, not shown one by
+// one, unless --follow-ons. Exit 0 when clean, 1 with errors.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -15,11 +17,14 @@ namespace {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N]\n\n"
+               "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N] [--follow-ons]\n\n"
                "Reads and interprets the program as `path` does, reporting every error\n"
                "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
-               "error is skipped and changes nothing. Exit 0 clean, 1 with errors.\n"
-               "--max-errors: stop after N errors (default 100; 0 = no limit).\n");
+               "error is skipped and changes nothing; errors that may only follow from\n"
+               "an earlier one (a G1 after the bad line that set F) are counted, not\n"
+               "shown. Exit 0 clean, 1 with errors.\n"
+               "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
+               "--follow-ons: show those errors too, marked (they count towards N).\n");
 }
 
 }  // namespace
@@ -28,6 +33,7 @@ int cmd_check(int argc, char** argv) {
   const char* file = nullptr;
   bool inch = false;
   long max_errors = 100;
+  bool follow_ons = false;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -38,6 +44,10 @@ int cmd_check(int argc, char** argv) {
       if (i + 1 >= argc) return fail(kExitUsage, "--units needs a value");
       const char* v = argv[++i];
       if (!parse_units(v, &inch)) return kExitUsage;
+      continue;
+    }
+    if (!std::strcmp(a, "--follow-ons")) {
+      follow_ons = true;
       continue;
     }
     if (!std::strcmp(a, "--max-errors")) {
@@ -61,6 +71,7 @@ int cmd_check(int argc, char** argv) {
   opt.warnings = &msgs;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
+  runner.show_follow_ons(follow_ons);
   while (runner.step()) {
     if (max_errors && msgs.errors() >= static_cast<uint32_t>(max_errors)) {
       std::fprintf(stderr, "%s: too many errors, stopped after %ld\n", in.name(), max_errors);
@@ -68,6 +79,10 @@ int cmd_check(int argc, char** argv) {
     }
   }
   if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+  if (runner.follow_ons() && !follow_ons)
+    std::fprintf(stderr,
+                 "%s: %u more error(s) not shown: each may only follow from one above (--follow-ons shows them)\n",
+                 in.name(), static_cast<unsigned>(runner.follow_ons()));
   return msgs.errors() ? kExitInput : kExitOk;
 }
 

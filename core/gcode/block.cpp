@@ -108,6 +108,11 @@ inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 }  // namespace
 
+int gcode_g_group(int64_t tenths) {
+  const GInfo* g = find_g(tenths);
+  return g ? g->group : -1;
+}
+
 void gcode_code_text(char letter, int32_t tenths, char* buf) {
   char tmp[16];
   int k = 0;

@@ -92,6 +92,9 @@ enum class GcodeLineKind : uint8_t {
 [[nodiscard]] GcodeError gcode_read_block(const char* text, size_t len, uint32_t line, GcodeBlock* b,
                                           GcodeLineKind* kind, GcodeDiag* d);
 
+// The modal group (GGroup) of a G code LinuxCNC knows, in tenths; -1 if none.
+int gcode_g_group(int64_t tenths);
+
 // Text of a code for diagnostics: "G38.2", "M6".
 void gcode_code_text(char letter, int32_t tenths, char* buf16);
 

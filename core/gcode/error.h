@@ -107,6 +107,9 @@ struct GcodeDiag {
   char word[16];   // text of the word as written (upper case), NUL-terminated
   int64_t a_nm;    // lengths quoted by the message ({a}, {b}), nm
   int64_t b_nm;
+  // The error may be only a consequence of an earlier one (an earlier bad
+  // block left the state it reads unknown; core/motion/interp_follow_on.cpp).
+  bool follow_on;
 };
 
 // The template of a message: `{w}` stands for diag.word, `{a}`/`{b}` for

@@ -139,4 +139,40 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   return GcodeError::kOk;
 }
 
+bool GcodeLooseScanner::next(GcodeLooseWord* w) {
+  while (pos_ < n_) {
+    const char c = upper(s_[pos_]);
+    if (c == ';') break;
+    if (c == '(') {
+      while (pos_ < n_ && s_[pos_] != ')') ++pos_;
+      ++pos_;
+      continue;
+    }
+    if (c == '[') {
+      for (int depth = 0; pos_ < n_; ++pos_) {
+        depth += s_[pos_] == '[' ? 1 : s_[pos_] == ']' ? -1 : 0;
+        if (depth == 0) break;
+      }
+      ++pos_;
+      continue;
+    }
+    if (c == '#' && pos_ + 1 < n_ && s_[pos_ + 1] == '<') {
+      while (pos_ < n_ && s_[pos_] != '>') ++pos_;
+      ++pos_;
+      continue;
+    }
+    ++pos_;
+    if (c < 'A' || c > 'Z') continue;
+    w->letter = c;
+    w->first = !seen_word_;
+    if (c != 'N') seen_word_ = true;
+    size_t p = pos_;
+    w->known = decimal_parse(s_, n_, &p, &w->value) == DecimalParse::kOk;
+    if (w->known) pos_ = p;
+    return true;
+  }
+  pos_ = n_;
+  return false;
+}
+
 }  // namespace dexmill

@@ -47,6 +47,31 @@ class GcodeScanner {
   uint16_t pending_col_ = 0;
 };
 
+// A lenient walk over a line that may not read (for telling which parts of
+// the modal state a bad line meant to change; core/motion/interp_follow_on.cpp).
+// It yields each letter that begins a word, as LinuxCNC would see it, with
+// its value when that is a plain number. Comments, [ ] expressions and
+// #<named> parameters are stepped over; other bytes are skipped.
+struct GcodeLooseWord {
+  char letter;   // 'A'..'Z'
+  bool known;    // value holds the number written
+  bool first;    // the first word of the line (after '/' and an N word)
+  Decimal value;
+};
+
+class GcodeLooseScanner {
+ public:
+  GcodeLooseScanner(const char* text, size_t len) : s_(text), n_(len) {}
+  // The next word; false at the end of the line.
+  bool next(GcodeLooseWord* w);
+
+ private:
+  const char* s_;
+  size_t n_;
+  size_t pos_ = 0;
+  bool seen_word_ = false;  // a word other than N was yielded
+};
+
 // Copies up to 15 bytes of printable text into word[16] (non-printable bytes
 // as \xNN), for diagnostics.
 void gcode_set_word(GcodeDiag* d, const char* text, size_t len);

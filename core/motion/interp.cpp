@@ -214,6 +214,7 @@ void Interp::reset() {
   moves_ = 0;
   any_code_ = false;
   any_failed_ = false;
+  suspect_ = 0;
   warned_after_end_ = false;
 }
 
@@ -240,6 +241,7 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   GcodeBlock block;
   GcodeLineKind kind;
   GcodeError e = gcode_read_block(text, len, line, &block, &kind, diag);
+  diag->follow_on = false;
   if (state_.ended) {
     // RS274/NGC: nothing after the end is read. Say so once if it looks like code.
     if (!warned_after_end_ && (e != GcodeError::kOk || (kind == GcodeLineKind::kBlock && block.has) ||
@@ -252,7 +254,9 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   if (e != GcodeError::kOk || kind == GcodeLineKind::kGrblCommand || (kind == GcodeLineKind::kBlock && !block.empty()))
     any_code_ = true;
   if (e != GcodeError::kOk) {
+    // The line's own words are wrong: a root error, whatever came before.
     any_failed_ = true;
+    suspect_ |= facets_written(text, len);
     return e;
   }
   switch (kind) {
@@ -281,13 +285,24 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   if (block.m[kMSpindle] == 190) warn(GcodeError::kWarnMcodeIgnored, line, block.m_col[kMSpindle], "M19");
   BlockRunner run(*this, block, diag);
   e = run.run();
+  const uint16_t set = facets_set(block, state_, suspect_);
   if (e != GcodeError::kOk) {
     any_failed_ = true;
+    const ErrorFacets f = error_facets(e, block);
+    diag->follow_on = ((f.read & suspect_after(suspect_, set)) | (f.before_block & suspect_)) != 0;
+    suspect_ |= facets_written(text, len) | f.blamed;
     diag->line = line;
     return e;
   }
   run.commit();
+  suspect_ = suspect_after(suspect_, set);
   return GcodeError::kOk;
+}
+
+void Interp::line_not_read() {
+  if (state_.ended) return;  // nothing after the end is read anyway
+  any_code_ = any_failed_ = true;
+  suspect_ = kFacetAll;
 }
 
 void Interp::end_of_input(uint32_t last_line) {
@@ -295,7 +310,8 @@ void Interp::end_of_input(uint32_t last_line) {
     warn(GcodeError::kWarnEmptyProgram, 1, 1, "");
     return;
   }
-  if (!state_.ended)
+  // A failed block may have been the end (M2 in it): then no verdict.
+  if (!state_.ended && !(suspect_ & kFacetEnd))
     warn(state_.percent_open ? GcodeError::kWarnNoClosingPercent : GcodeError::kWarnNoProgramEnd,
          last_line ? last_line : 1, 1, "");
   if (!any_failed_ && moves_ == 0) warn(GcodeError::kWarnNoMotion, 1, 1, "");

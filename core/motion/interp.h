@@ -98,10 +98,18 @@ class Interp {
 
   // Interprets one line (no line end; a trailing '\r' is fine). `line` is
   // 1-based. Returns kOk, or an error with *diag filled in (code, line, col
-  // of the offending word); then nothing was emitted and no state changed.
+  // of the offending word, follow_on); then nothing was emitted and no state
+  // changed. diag->follow_on marks an error that may be only a consequence
+  // of an earlier bad block (the rule: core/motion/interp_follow_on.cpp);
+  // the first error of a program never is one.
   // Warnings go to options.warnings. After the program ended (M2, M30, %),
   // further lines are ignored (one warning if they hold words).
   [[nodiscard]] GcodeError execute_line(const char* text, size_t len, uint32_t line, GcodeDiag* diag);
+
+  // The reader could not give the next line (it was over-long): what it
+  // held is unknown, so every later error that reads the state may be its
+  // consequence (interp_follow_on.cpp).
+  void line_not_read();
 
   // The input has no more lines; `last_line` is the number of the last one
   // (0 for none). Warns where LinuxCNC would refuse the file ("File ended
@@ -127,6 +135,7 @@ class Interp {
   uint64_t moves_ = 0;        // moves that go somewhere (for the no-motion warning)
   bool any_code_ = false;     // a line held code (an error counts)
   bool any_failed_ = false;   // a block failed
+  uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)
   bool warned_after_end_ = false;
 
   friend struct BlockRunner;
@@ -134,8 +143,8 @@ class Interp {
 
 // Runs a whole program held in memory (a panel keeps it in flash): the
 // lines of text[0, len) split at '\n', numbered from 1. Returns the number
-// of lines in error (each skipped, as `dexmill check` does); *first gets the
-// first error when not null.
+// of lines in error, follow-ons included (each skipped, as `dexmill check`
+// does); *first gets the first error when not null. Ends with end_of_input.
 uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first);
 
 }  // namespace dexmill
