@@ -1,6 +1,5 @@
 #include "platform/image_file.h"
 
-#include <cstdio>
 #include <vector>
 
 #include "platform/output_file.h"
@@ -9,20 +8,6 @@
 #include "platform/ppm.h"
 
 namespace dexmill {
-
-namespace {
-
-bool write_bytes(const char* path, const std::vector<uint8_t>& bytes, char* err, std::size_t errn) {
-  OutputFile f;
-  if (f.open(path)) {
-    f.write(bytes.data(), bytes.size());
-    if (f.commit()) return true;
-  }
-  std::snprintf(err, errn, "%s", f.error());
-  return false;
-}
-
-}  // namespace
 
 const char* image_format_extension(ImageFormat f) {
   switch (f) {
@@ -40,7 +25,7 @@ bool write_frame_image(const char* path, ImageFormat format, const FrameView& fb
     frame_row_rgb(fb, y, rgb.data() + static_cast<std::size_t>(y) * 3 * static_cast<std::size_t>(fb.width));
   std::vector<uint8_t> png;
   png_encode_rgb8(rgb.data(), fb.width, fb.height, &png);
-  return write_bytes(path, png, err, errn);
+  return write_output(path, png.data(), png.size(), err, errn);
 }
 
 bool write_grey16_image(const char* path, ImageFormat format, int32_t width, int32_t height, const uint16_t* samples,
@@ -48,7 +33,7 @@ bool write_grey16_image(const char* path, ImageFormat format, int32_t width, int
   if (format != ImageFormat::kPng) return write_pgm16(path, width, height, samples, err, errn);
   std::vector<uint8_t> png;
   png_encode_gray16(samples, width, height, &png);
-  return write_bytes(path, png, err, errn);
+  return write_output(path, png.data(), png.size(), err, errn);
 }
 
 }  // namespace dexmill

@@ -120,4 +120,14 @@ bool OutputFile::commit() {
   return !failed_;
 }
 
+bool write_output(const char* path, const void* data, std::size_t n, char* err, std::size_t errn) {
+  OutputFile f;
+  if (f.open(path)) {
+    f.write(data, n);
+    if (f.commit()) return true;
+  }
+  std::snprintf(err, errn, "%s", f.error());
+  return false;
+}
+
 }  // namespace dexmill

@@ -52,6 +52,10 @@ class OutputFile {
 // dangling link's target included). False with errno set on a link loop.
 bool output_target(const std::string& path, std::string* target);
 
+// Writes n bytes as the whole of `path` (an OutputFile opened, written and
+// committed). On failure returns false with the message in err.
+bool write_output(const char* path, const void* data, std::size_t n, char* err, std::size_t errn);
+
 // True when `path` is "-": the output goes to standard output.
 inline bool is_stdout_path(const std::string& path) { return path == "-"; }
 

@@ -199,13 +199,7 @@ std::string report_json_text(const RunReport& r) {
 
 bool write_report_json(const char* path, const RunReport& r, char* err, std::size_t errn) {
   const std::string text = report_json_text(r);
-  OutputFile f;
-  if (f.open(path)) {
-    f.write(text.data(), text.size());
-    if (f.commit()) return true;
-  }
-  std::snprintf(err, errn, "%s", f.error());
-  return false;
+  return write_output(path, text.data(), text.size(), err, errn);
 }
 
 }  // namespace dexmill

@@ -292,11 +292,9 @@ int run_job(RunOptions o) {
     if (o.frames_dir.empty()) o.frames_dir = "out/frames";
     if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = shown_name = "out/demo.ngc";
-    OutputFile f;
     const std::string text = demo_program();
-    if (!f.open(read_path.c_str())) return fail(kExitIo, "%s", f.error());
-    f.write(text.data(), text.size());
-    if (!f.commit()) return fail(kExitIo, "%s", f.error());
+    char e[1300];
+    if (!write_output(read_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
   } else if (o.file == "-") {
     shown_name = "<stdin>";
     if (!spool_stdin(&spooled.path, &err)) return fail(kExitIo, "%s", err.c_str());
