@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/gcode/lex.h"
+#include "platform/process.h"
 
 namespace dexmill {
 
@@ -16,6 +17,10 @@ GcodeFile::~GcodeFile() {
 
 bool GcodeFile::open(const char* path) {
   if (!std::strcmp(path, "-")) {
+    if (standard_input_closed()) {
+      std::snprintf(error_, sizeof error_, "standard input is closed: there is no program to read");
+      return false;
+    }
     f_ = stdin;
     owned_ = false;
     std::snprintf(name_, sizeof name_, "<stdin>");

@@ -1,13 +1,42 @@
 #include "platform/output_file.h"
 
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdarg>
+#include <cstdlib>
 #include <cstring>
 
+#include "platform/process.h"
+
 namespace dexmill {
+
+namespace {
+
+// Removes "<target>.tmp-PID" files whose process is gone: what a run killed
+// by SIGKILL (which no handler sees) left of this output.
+void remove_stale_temporaries(const std::string& target) {
+  const size_t slash = target.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
+  const std::string prefix = (slash == std::string::npos ? target : target.substr(slash + 1)) + ".tmp-";
+  DIR* d = opendir(dir.c_str());
+  if (!d) return;
+  while (const dirent* e = readdir(d)) {
+    if (std::strncmp(e->d_name, prefix.c_str(), prefix.size()) != 0) continue;
+    const char* digits = e->d_name + prefix.size();
+    char* end = nullptr;
+    const long pid = std::strtol(digits, &end, 10);
+    if (end == digits || *end || pid <= 0 || pid == static_cast<long>(getpid())) continue;
+    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    unlink((dir + "/" + e->d_name).c_str());
+  }
+  closedir(d);
+}
+
+}  // namespace
 
 // Follows symbolic links (as the kernel would, up to its usual limit of
 // 40): that name is replaced, the links stay.
@@ -46,6 +75,8 @@ void OutputFile::abandon() {
     std::fclose(f_);
     if (!tmp_.empty()) std::remove(tmp_.c_str());
   }
+  cleanup_unregister(cleanup_slot_);
+  cleanup_slot_ = -1;
   f_ = nullptr;
   stdout_ = false;
 }
@@ -79,9 +110,13 @@ bool OutputFile::open(const char* path) {
   }
   target_ = real;
   if (exists) mode_ = static_cast<int>(st.st_mode & 07777);
+  remove_stale_temporaries(real);
   tmp_ = real + ".tmp-" + std::to_string(static_cast<long>(getpid()));
+  cleanup_slot_ = cleanup_register(tmp_.c_str());
   f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) {
+    cleanup_unregister(cleanup_slot_);
+    cleanup_slot_ = -1;
     tmp_.clear();
     set_error("write", path);
     return false;
@@ -116,6 +151,8 @@ bool OutputFile::commit() {
   if (tmp_.empty()) return !failed_;  // written in place
   if (!failed_ && std::rename(tmp_.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
   if (failed_) std::remove(tmp_.c_str());
+  cleanup_unregister(cleanup_slot_);
+  cleanup_slot_ = -1;
   tmp_.clear();
   return !failed_;
 }

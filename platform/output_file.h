@@ -44,6 +44,7 @@ class OutputFile {
   std::string target_;       // what the rename replaces (a link's target); empty: written in place
   std::string tmp_;
   int mode_ = -1;            // permission bits of the replaced file; -1: a new file
+  int cleanup_slot_ = -1;    // the temporary's entry in the signal handler's list
   char error_[1200] = {0};
   bool failed_ = false;
 };

@@ -8,14 +8,41 @@
 namespace dexmill {
 namespace {
 
+// Length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong
+// forms, no surrogates, at most U+10FFFF), or 0.
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+  const unsigned char c = static_cast<unsigned char>(s[i]);
+  std::size_t n;
+  uint32_t cp;
+  if (c >= 0xc2 && c <= 0xdf) { n = 2; cp = c & 0x1fu; }
+  else if (c >= 0xe0 && c <= 0xef) { n = 3; cp = c & 0x0fu; }
+  else if (c >= 0xf0 && c <= 0xf4) { n = 4; cp = c & 0x07u; }
+  else return 0;
+  if (i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const unsigned char t = static_cast<unsigned char>(s[i + k]);
+    if ((t & 0xc0) != 0x80) return 0;
+    cp = (cp << 6) | (t & 0x3fu);
+  }
+  if ((n == 3 && (cp < 0x800 || (cp >= 0xd800 && cp <= 0xdfff))) || (n == 4 && (cp < 0x10000 || cp > 0x10ffff))) return 0;
+  return n;
+}
+
+// A JSON string. JSON text is Unicode: a byte that is not part of
+// well-formed UTF-8 (a file name in Latin-1) is written as the code point
+// of the same number, \u00XX, so the report stays valid JSON.
 std::string quoted(const std::string& s) {
   std::string o = "\"";
-  for (unsigned char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    char b[8];
     if (c == '"' || c == '\\') { o += '\\'; o += static_cast<char>(c); }
     else if (c == '\n') o += "\\n";
     else if (c == '\t') o += "\\t";
-    else if (c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); o += b; }
-    else o += static_cast<char>(c);
+    else if (c < 0x20 || c == 0x7f) { std::snprintf(b, sizeof b, "\\u%04x", c); o += b; }
+    else if (c < 0x80) o += static_cast<char>(c);
+    else if (const std::size_t n = utf8_sequence(s, i)) { o.append(s, i, n); i += n - 1; }
+    else { std::snprintf(b, sizeof b, "\\u%04x", c); o += b; }
   }
   return o + "\"";
 }

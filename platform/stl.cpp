@@ -118,6 +118,15 @@ uint64_t count_triangles(const DexelGrid<H>& g, const std::vector<uint8_t>& mate
 
 }  // namespace
 
+std::string stl_size_note(uint64_t triangles, const char* path) {
+  const uint64_t bytes = 84 + 50 * triangles;
+  if (bytes <= kStlAnnounceBytes) return std::string();
+  char b[1300];
+  std::snprintf(b, sizeof b, "dexmill: writing a %.1f GB STL (%llu triangles) to '%s'", static_cast<double>(bytes) / 1e9,
+                static_cast<unsigned long long>(triangles), path);
+  return b;
+}
+
 template <class H>
 uint64_t stl_triangle_count(const DexelGrid<H>& g) {
   return count_triangles(g, surface_material(g));
@@ -132,6 +141,10 @@ bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t e
                   static_cast<unsigned long long>(count));
     return false;
   }
+  // A fine grid makes a huge mesh: say how big before writing it (an
+  // interrupt removes the part written, platform/process.h).
+  const std::string note = stl_size_note(count, path);
+  if (!note.empty()) std::fprintf(stderr, "%s\n", note.c_str());
   OutputFile f;
   if (f.open(path)) {
     uint8_t header[84] = {0};

@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "core/grid/grid.h"
 
@@ -30,6 +31,11 @@ uint64_t stl_triangle_count(const DexelGrid<H>& g);
 // (an I/O error, or more than 2^32 - 1 triangles).
 template <class H>
 bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t errn);
+
+// write_stl says on standard error how large the file will be when it is
+// over this size: the line stl_size_note gives (empty below it).
+constexpr uint64_t kStlAnnounceBytes = uint64_t{256} << 20;
+std::string stl_size_note(uint64_t triangles, const char* path);
 
 }  // namespace dexmill
 

@@ -8,6 +8,7 @@
 
 #include "core/math/decimal.h"
 #include "core/tool/spec.h"
+#include "platform/read_file.h"
 
 namespace dexmill {
 namespace {
@@ -19,14 +20,24 @@ std::string lower(const char* s, std::size_t n) {
 }
 
 // A --tool spec among the comment's words, if any.
-bool spec_in_comment(const char* s, std::size_t n, Tool* out) {
+// A shape in a comment: the first word that is a tool spec. A word that
+// names a shape (ball: flat: bull: vbit:) but does not parse is not
+// skipped: *bad gets its offset and *why the reason, and false comes back,
+// so the tool is not silently simulated as another shape.
+bool spec_in_comment(const char* s, std::size_t n, Tool* out, std::size_t* bad, ToolSpecError* why) {
   std::size_t k = 0;
+  *why = ToolSpecError::kOk;
   while (k < n) {
     while (k < n && std::isspace(static_cast<unsigned char>(s[k]))) ++k;
     std::size_t b = k;
     while (k < n && !std::isspace(static_cast<unsigned char>(s[k]))) ++k;
-    if (k > b && std::memchr(s + b, ':', k - b) && tool_spec_parse(s + b, k - b, out) == ToolSpecError::kOk)
-      return true;
+    if (k == b || !std::memchr(s + b, ':', k - b)) continue;
+    const ToolSpecError e = tool_spec_parse(s + b, k - b, out);
+    if (e == ToolSpecError::kOk) return true;
+    if (e != ToolSpecError::kUnknownShape && *why == ToolSpecError::kOk) {
+      *bad = b;
+      *why = e;
+    }
   }
   return false;
 }
@@ -139,7 +150,18 @@ bool ToolTableFile::parse_line(const char* s, std::size_t n, uint32_t line, bool
     return false;
   }
   Tool t;
-  if (spec_in_comment(comment, comment_n, &t)) {
+  std::size_t bad_at = 0;
+  ToolSpecError why = ToolSpecError::kOk;
+  const bool have_spec = spec_in_comment(comment, comment_n, &t, &bad_at, &why);
+  if (!have_spec && why != ToolSpecError::kOk) {
+    std::size_t end = bad_at;
+    while (end < comment_n && !std::isspace(static_cast<unsigned char>(comment[end]))) ++end;
+    error_at(line, static_cast<std::size_t>(comment - s) + bad_at + 1,
+             "the shape '" + std::string(comment + bad_at, end - bad_at) + "' of T" + std::to_string(e.number) +
+                 " is not usable: " + tool_spec_message(why));
+    return false;
+  }
+  if (have_spec) {
     t.diameter_nm = diameter_nm;
     if (t.kind == ToolKind::kBullNose && t.corner_radius_nm > diameter_nm / 2) {
       error_at(line, t_col, "the corner radius of T" + std::to_string(e.number) + " is larger than D/2");
@@ -189,26 +211,16 @@ ToolTableFile::Load ToolTableFile::parse(const char* name, const char* text, std
 
 ToolTableFile::Load ToolTableFile::load(const char* path, bool inch) {
   name_ = path;
-  std::FILE* f = std::fopen(path, "rb");
-  if (!f) {
-    message_ = std::string("cannot open '") + path + "': " + std::strerror(errno);
-    return Load::kIoError;
+  // A real table is a few kilobytes; a limit that is an error, never a cut.
+  std::vector<unsigned char> text;
+  std::string err;
+  const ReadFile r = read_whole_file(path, kToolTableMaxBytes, &text, &err);
+  if (r != ReadFile::kOk) {
+    const std::string prefix = "dexmill: error: ";
+    message_ = err.compare(0, prefix.size(), prefix) == 0 ? err.substr(prefix.size()) : err;
+    return r == ReadFile::kTooLarge ? Load::kInputError : Load::kIoError;
   }
-  std::string text;
-  char buf[8192];
-  std::size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
-    text.append(buf, got);
-    if (text.size() > (64u << 20)) break;
-  }
-  const bool bad = std::ferror(f) != 0;
-  const int err = errno;
-  std::fclose(f);
-  if (bad) {
-    message_ = std::string("cannot read '") + path + "': " + std::strerror(err);
-    return Load::kIoError;
-  }
-  return parse(path, text.data(), text.size(), inch);
+  return parse(path, reinterpret_cast<const char*>(text.data()), text.size(), inch);
 }
 
 }  // namespace dexmill

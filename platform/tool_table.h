@@ -41,6 +41,9 @@ struct ToolTableEntry {
   uint32_t line = 0;             // where it was defined
 };
 
+// The largest table file read (a real one is a few kilobytes).
+constexpr std::size_t kToolTableMaxBytes = std::size_t{64} << 20;
+
 class ToolTableFile final : public ToolLibrary, public ToolTable {
  public:
   enum class Load : uint8_t { kOk, kIoError, kInputError };

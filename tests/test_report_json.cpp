@@ -27,3 +27,14 @@ TEST(report_mm_text) {
   CHECK(nm_to_mm_text(5000000000LL, 0) == "5000");
   CHECK(nm_to_mm_text(250000, 6) == "0.250000");
 }
+
+TEST(report_json_strings_stay_valid_json) {
+  // A file name is bytes; JSON is Unicode. Well-formed UTF-8 passes, any
+  // other byte becomes the code point of its number.
+  RunReport r;
+  r.file = "caf\xc3\xa9 / caf\xe9 / \xe2\x82 / \xed\xa0\x80 / \xc0\xaf / \x7f.ngc";
+  const std::string text = report_json_text(r);
+  const std::string want = "\"file\": \"caf\xc3\xa9 / caf\\u00e9 / \\u00e2\\u0082 / \\u00ed\\u00a0\\u0080 / \\u00c0\\u00af / \\u007f.ngc\"";
+  if (text.find(want) == std::string::npos) std::printf("  %s\n", text.substr(0, 160).c_str());
+  CHECK(text.find(want) != std::string::npos);
+}

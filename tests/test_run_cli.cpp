@@ -135,7 +135,7 @@ TEST(run_io_errors_exit_3) {
       {"pocket.ngc --image %/nodir/x.ppm", "dexmill: error: cannot write --image '"},
       {"pocket.ngc --report %", "dexmill: error: cannot write --report '"},
       {"pocket.ngc --frames %/plain/sub", "dexmill: error: cannot create directory '"},
-      {"pocket.ngc --tools nope.tbl", "dexmill: error: cannot open 'nope.tbl'"},
+      {"pocket.ngc --tools nope.tbl", "dexmill: error: cannot read 'nope.tbl'"},
       {"pocket.ngc --fbdev %/plain", "not a framebuffer device"},
   };
   for (const Case& c : cases) {

@@ -78,3 +78,13 @@ TEST(run_rapid_rate_sets_the_time_estimate) {
   CHECK_EQ(run(d + "rapid.ngc --rapid 0").code, 2);
   CHECK_EQ(run(d + "rapid.ngc --rapid fast").code, 2);
 }
+
+TEST(run_warns_about_a_tool_narrower_than_the_pitch) {
+  if (skip()) return;
+  // A 0.1 mm tool on a 0.5 mm grid can fall between the dexel axes.
+  Result r = run("pocket.ngc -q --tool flat:0.1 --pitch 0.5 --report /dev/null");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "dexmill: warning: the tool flat:0.1 is narrower than the grid's pitch (0.5000 mm)"));
+  r = run("pocket.ngc -q --tool flat:1 --pitch 0.5 --report /dev/null");
+  CHECK(r.err.find("narrower") == std::string::npos);
+}

@@ -155,3 +155,10 @@ TEST(stl_random_grids_are_closed) {
   for (auto& h : empty.top) h = 0;
   check_closed(empty.g, "empty");
 }
+
+TEST(stl_size_is_said_before_a_huge_file) {
+  // 10 M triangles are half a gigabyte: said before writing; 1 M is not.
+  const std::string note = dexmill::stl_size_note(10000000, "part.stl");
+  CHECK(note.find("writing a 0.5 GB STL (10000000 triangles) to 'part.stl'") != std::string::npos);
+  CHECK(dexmill::stl_size_note(1000000, "part.stl").empty());
+}

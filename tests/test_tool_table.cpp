@@ -2,6 +2,8 @@
 #include <cstring>
 #include <string>
 
+#include <unistd.h>
+
 #include "core/math/fixed.h"
 #include "platform/tool_table.h"
 #include "tests/runner.h"
@@ -75,6 +77,9 @@ TEST(tool_table_errors) {
       {"T1 D0\n", "tt.tbl:1:4: error: the diameter must be between"},
       {"T1 DX\n", "tt.tbl:1:4: error: 'D' needs a number"},
       {"T1 D4 ;bull:4:1.5\nT2 D2 ;bull:4:1.5\n", "tt.tbl:2:1: error: the corner radius of T2 is larger than D/2"},
+      // A shape that does not parse is said to be wrong, not replaced by a
+      // flat end mill with a warning asking for a shape.
+      {"T1 P1 D6 ;engraver vbit:1000:0.001\n", "tt.tbl:1:20: error: the shape 'vbit:1000:0.001' of T1 is not usable: "},
   };
   for (const Case& c : cases) {
     ToolTableFile t;
@@ -86,5 +91,18 @@ TEST(tool_table_errors) {
   }
   ToolTableFile t;
   CHECK_EQ(t.load("/nonexistent/tools.tbl", false), ToolTableFile::Load::kIoError);
-  CHECK(t.message().find("cannot open '/nonexistent/tools.tbl'") == 0);
+  CHECK(t.message().find("cannot read '/nonexistent/tools.tbl'") == 0);
+  // A table past the size limit is an error, not a table cut short (it
+  // used to end at 64 MB, then say a later tool was missing).
+  char path[] = "/tmp/dexmill-tool-table-XXXXXX";
+  const int fd = mkstemp(path);
+  CHECK(fd >= 0);
+  if (fd >= 0) {
+    CHECK_EQ(ftruncate(fd, static_cast<off_t>(kToolTableMaxBytes) + 1), 0);
+    close(fd);
+    ToolTableFile big;
+    CHECK_EQ(big.load(path, false), ToolTableFile::Load::kInputError);
+    CHECK(big.message().find(": error: larger than 64 MB") != std::string::npos);
+    unlink(path);
+  }
 }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "platform/process.h"
+
 namespace dexmill {
 namespace cli {
 namespace {
@@ -61,6 +63,10 @@ int take_input_file(const char* cmd, const char* arg, const char** file) {
 }
 
 int main(int argc, char** argv) {
+  // Before any file is opened: a closed standard descriptor must not be
+  // taken by one (platform/process.h), and a signal must not leave debris.
+  fix_standard_descriptors();
+  install_cleanup_handlers();
   if (argc < 2) {
     usage(stderr);
     return kExitUsage;

@@ -25,6 +25,7 @@
 #include "platform/gcode_file.h"
 #include "platform/frame_files.h"
 #include "platform/image_file.h"
+#include "platform/program_input.h"
 #include "platform/progress.h"
 #include "platform/report_json.h"
 #include "platform/report_summary.h"
@@ -220,44 +221,6 @@ class CutSink final : public CanonSink {
   }
 };
 
-// Standard input is read twice (scan and cut), so it is kept in a file.
-bool spool_stdin(std::string* path, std::string* err) {
-  const char* tmpdir = std::getenv("TMPDIR");
-  std::string templ = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/dexmill-stdin-XXXXXX";
-  std::vector<char> buf(templ.begin(), templ.end());
-  buf.push_back(0);
-  const int fd = mkstemp(buf.data());
-  if (fd < 0) {
-    *err = std::string("cannot keep standard input in '") + templ + "': " + std::strerror(errno);
-    return false;
-  }
-  *path = buf.data();
-  char chunk[65536];
-  for (;;) {
-    const size_t n = std::fread(chunk, 1, sizeof chunk, stdin);
-    if (n == 0) break;
-    if (write(fd, chunk, n) != static_cast<ssize_t>(n)) {
-      *err = std::string("cannot keep standard input in '") + *path + "': " + std::strerror(errno);
-      close(fd);
-      return false;
-    }
-  }
-  const bool bad = std::ferror(stdin);
-  close(fd);
-  if (bad) {
-    *err = "cannot read standard input";
-    return false;
-  }
-  return true;
-}
-
-struct TempFile {
-  std::string path;
-  ~TempFile() {
-    if (!path.empty()) std::remove(path.c_str());
-  }
-};
-
 bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
   // Row 0 of the image is the grid's last row (north up); samples are the
   // top heights in LSB (the report gives the LSB), holes 0.
@@ -278,7 +241,7 @@ int run_job(RunOptions o) {
   RunReport rep;
   const bool demo = o.file.empty();
   std::string read_path = o.file, shown_name = o.file;
-  TempFile spooled;
+  ProgramInput input;
   std::string err;
 
   // -- inputs and output folders, before anything long happens
@@ -295,15 +258,16 @@ int run_job(RunOptions o) {
     const std::string text = demo_program();
     char e[1300];
     if (!write_output(read_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
-  } else if (o.file == "-") {
-    shown_name = "<stdin>";
-    if (!spool_stdin(&spooled.path, &err)) return fail(kExitIo, "%s", err.c_str());
-    read_path = spooled.path;
   }
   OutputFormats formats;
   {
     const int code = check_outputs(o, {o.file, o.tools_file, o.design, o.stock_stl}, &formats);
     if (code != kExitOk) return code;
+  }
+  if (!demo) {
+    if (o.file == "-") shown_name = "<stdin>";
+    if (!input.open(o.file, &err)) return fail(kExitIo, "%s", err.c_str());
+    read_path = input.read_path();
   }
   if (!o.frames_dir.empty()) {
     uint32_t removed = 0;
@@ -448,6 +412,16 @@ int run_job(RunOptions o) {
     pitch_nm = default_pitch_nm(stock, smallest);
   }
   if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  // A tool narrower than the pitch may fall between the dexel axes and cut
+  // nothing: say so rather than show an untouched block.
+  for (const Tool& t : scan.tools_seen)
+    if (t.diameter_nm < plan.geo.pitch_nm) {
+      char spec[64];
+      tool_spec_format(t, spec, sizeof spec);
+      std::fprintf(stderr, "dexmill: warning: the tool %s is narrower than the grid's pitch (%s mm) and may cut nothing; "
+                   "give a finer --pitch\n", spec, nm_to_mm_text(plan.geo.pitch_nm, 4).c_str());
+      break;
+    }
   rep.have_stock = true;
   rep.stock_lo = plan.stock.lo;
   rep.stock_hi = plan.stock.hi;
@@ -583,6 +557,7 @@ int run_job(RunOptions o) {
   std::vector<PointNm> error_mark;
   {
     const double t0 = clock_now_s();
+    if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
     if (frames) cut.write_frame();  // the untouched stock
     GcodeFile in;
     if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());

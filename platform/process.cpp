@@ -1,0 +1,68 @@
+#include "platform/process.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstring>
+#include <initializer_list>
+
+namespace dexmill {
+
+namespace {
+
+// Paths the handler removes; a slot's path is complete before its flag is
+// set, and the handler reads nothing else (async-signal-safe: unlink only).
+constexpr int kPathBytes = 4096;
+char g_paths[kCleanupSlots][kPathBytes];
+volatile sig_atomic_t g_used[kCleanupSlots];
+unsigned g_closed_at_start = 0;
+
+extern "C" void on_stop_signal(int sig) {
+  for (int k = 0; k < kCleanupSlots; ++k)
+    if (g_used[k]) unlink(g_paths[k]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+}  // namespace
+
+unsigned fix_standard_descriptors() {
+  unsigned closed = 0;
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (fcntl(fd, F_GETFD) != -1) continue;
+    closed |= 1u << fd;
+    // open() returns the lowest free descriptor: this one.
+    const int got = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+    if (got != fd && got >= 0) close(got);
+  }
+  g_closed_at_start |= closed;
+  return closed;
+}
+
+bool standard_input_closed() { return (g_closed_at_start & 1u) != 0; }
+
+void install_cleanup_handlers() {
+  struct sigaction sa;
+  std::memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+}
+
+int cleanup_register(const char* path) {
+  if (std::strlen(path) >= static_cast<size_t>(kPathBytes)) return -1;
+  for (int k = 0; k < kCleanupSlots; ++k) {
+    if (g_used[k]) continue;
+    std::memcpy(g_paths[k], path, std::strlen(path) + 1);
+    g_used[k] = 1;
+    return k;
+  }
+  return -1;
+}
+
+void cleanup_unregister(int slot) {
+  if (slot >= 0 && slot < kCleanupSlots) g_used[slot] = 0;
+}
+
+}  // namespace dexmill

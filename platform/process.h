@@ -1,0 +1,39 @@
+// What a process owes the machine it runs on: standard descriptors that are
+// really open, and no debris when it is interrupted.
+//
+// - A closed standard input, output or error (`dexmill run - <&-`) would be
+//   taken by the next file opened (a temporary spool would become "standard
+//   input"): they are opened on /dev/null instead, and the caller is told
+//   which were closed.
+// - On SIGINT, SIGTERM and SIGHUP the temporary files registered here (an
+//   output being written, the spool of standard input) are removed and the
+//   signal is raised again with its default action, so the exit status says
+//   what stopped the run (130, 143, 129). SIGKILL cannot be caught: an output
+//   killed that way leaves its temporary, which the next write of the same
+//   output removes (platform/output_file.h).
+#ifndef DEXMILL_PLATFORM_PROCESS_H
+#define DEXMILL_PLATFORM_PROCESS_H
+
+namespace dexmill {
+
+// Opens /dev/null on each of descriptors 0, 1, 2 that is closed; returns a
+// bit mask of those that were (bit 0: standard input), which
+// standard_input_closed() remembers.
+unsigned fix_standard_descriptors();
+// The process started with standard input closed: "-" has nothing to read
+// (an I/O error, not an empty program).
+bool standard_input_closed();
+
+// Installs the SIGINT, SIGTERM and SIGHUP handlers.
+void install_cleanup_handlers();
+
+// Registers a file to remove if a signal stops the process; returns its
+// slot, or -1 when all kCleanupSlots are taken (the file is then left, as
+// without the handler). cleanup_unregister(-1) does nothing.
+constexpr int kCleanupSlots = 32;
+int cleanup_register(const char* path);
+void cleanup_unregister(int slot);
+
+}  // namespace dexmill
+
+#endif
