@@ -15,6 +15,7 @@
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "display/error_colours.h"
+#include "display/backplot.h"
 #include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/golden.h"
@@ -115,6 +116,29 @@ void overlay(Out& out, Arena& a, const DexelGrid<uint16_t>& g, const ErrorView& 
   out.kx("design_over_cut", frame_hash(fb)).end();
 }
 
+// The toolpath over the frame (display/backplot.h): the four cuts done,
+// then a lift and a rapid still to come; then the lift done, the renderer
+// repainting where it lies and the path redrawn there (as dexmill run does).
+void backplot(Out& out, Renderer<uint16_t>& r, DexelGrid<uint16_t>& g, const FrameView& fb, const CutterPose& pose) {
+  const int64_t mm = kNmPerMm;
+  const PathSegment path[] = {
+      {PointNm{5 * mm, 5 * mm, 15 * mm}, PointNm{18 * mm, 6 * mm, 13 * mm}, PathKind::kFeed},
+      {PointNm{18 * mm, 6 * mm, 13 * mm}, PointNm{18 * mm, 14 * mm, 12 * mm}, PathKind::kFeed},
+      {PointNm{10 * mm, 14 * mm, 25 * mm}, PointNm{10 * mm, 14 * mm, -mm}, PathKind::kFeed},
+      {PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, PathKind::kFeed},
+      {PointNm{6 * mm, 15 * mm, 14 * mm}, PointNm{6 * mm, 15 * mm, 25 * mm}, PathKind::kRapid},
+      {PointNm{6 * mm, 15 * mm, 25 * mm}, PointNm{30 * mm, 2 * mm, 25 * mm}, PathKind::kRapid},
+  };
+  const DepthView z{r.target.z, r.target.z_stride, r.target.zformat};
+  const BackplotColours colours;
+  backplot_draw(fb, z, r.view, path, 6, 4, ScreenRect{0, 0, fb.width, fb.height}, colours);
+  out.str("backplot").kx("full", frame_hash(fb));
+  renderer_invalidate(&r, backplot_bounds(fb, r.view, path, 4, 5));
+  const RenderResult res = render_update(&r, &g, pose);
+  for (int k = 0; k < res.nrects; ++k) backplot_draw(fb, z, r.view, path, 6, 5, res.rects[k], colours);
+  out.kx("turned", frame_hash(fb)).kv("rects", res.nrects).kv("bias", backplot_depth_bias(r.view)).end();
+}
+
 void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false) {
   Arena& a = arena();
   a.reset();
@@ -168,6 +192,7 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
   if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
+  else backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
 }
 
 }  // namespace
