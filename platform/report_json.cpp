@@ -169,6 +169,38 @@ std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_
   return fixed_text(quotient, 3, false);
 }
 
+std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitch_nm) {
+  const std::string at = "X" + nm_to_mm_text(e.at.x_nm, 3) + " Y" + nm_to_mm_text(e.at.y_nm, 3) + " Z" + nm_to_mm_text(e.at.z_nm, 3);
+  const std::string removed = volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 removed, " +
+                              nm_to_mm_text(e.depth_nm, 3) + " mm deep at " + at;
+  switch (e.kind) {
+    case SafetyKind::kRapidIntoStock: return "rapid into material: " + removed;
+    case SafetyKind::kSpindleStopped:
+      return "cutting with the spindle stopped (no M3/M4) from here to line " + std::to_string(e.last_line) + ": " + removed;
+    case SafetyKind::kBelowStock: return "the tool goes " + nm_to_mm_text(e.depth_nm, 3) + " mm below the stock's bottom at " + at;
+    case SafetyKind::kIntoTable: return "the tool goes " + nm_to_mm_text(e.depth_nm, 3) + " mm into the table at " + at;
+  }
+  return "";
+}
+
+namespace {
+
+std::string collisions_text(const RunReport& r) {
+  std::string o = "  \"collisions\": {\"total\": " + u64(r.collisions_total) + ", \"rapid_removed_mm3\": " +
+                  volume_mm3_text(r.rapid_removed_lsb, r.lsb_nm, r.pitch_nm) + ", \"list\": [";
+  for (std::size_t k = 0; k < r.collisions.size(); ++k) {
+    const SafetyEvent& e = r.collisions[k];
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"kind\": " + quoted(safety_kind_name(e.kind)) +
+         ", \"line\": " + u64(e.line) + ", \"x_mm\": " + nm_to_mm_text(e.at.x_nm, 4) + ", \"y_mm\": " +
+         nm_to_mm_text(e.at.y_nm, 4) + ", \"z_mm\": " + nm_to_mm_text(e.at.z_nm, 4) + ", \"depth_mm\": " +
+         nm_to_mm_text(e.depth_nm, 4) + ", \"volume_mm3\": " + volume_mm3_text(e.removed_lsb, r.lsb_nm, r.pitch_nm) +
+         ", \"message\": " + quoted(safety_event_text(e, r.lsb_nm, r.pitch_nm)) + "}";
+  }
+  return o + (r.collisions.empty() ? "]},\n" : "\n    ]},\n");
+}
+
+}  // namespace
+
 std::string report_json_text(const RunReport& r) {
   std::string o = "{\n";
   o += "  \"dexmill_report\": 1,\n";
@@ -214,6 +246,7 @@ std::string report_json_text(const RunReport& r) {
     o += "  \"bounds_mm\": null,\n";
   o += "  \"cut\": {\"instances\": " + u64(r.instances) + ", \"dexel_updates\": " + u64(r.dexel_updates) + "},\n";
   o += r.have_assessment ? assessment_text(r) : std::string("  \"assessment\": null,\n");
+  o += r.have_collisions ? collisions_text(r) : std::string("  \"collisions\": null,\n");
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

@@ -39,6 +39,11 @@
 //                   cut_z_mm, tool_mm [x,y,z], columns}] (one per line that
 //                   first took a column below its tolerance; the first 64),
 //                   gouges_total
+//   collisions      null without safety checks (--check, --table); else
+//                   {total, rapid_removed_mm3, list [{kind "rapid"|
+//                   "spindle_stopped"|"below_stock"|"table", line, x_mm,
+//                   y_mm, z_mm, depth_mm, volume_mm3, message}]} (the first
+//                   64 kept; total counts all)
 //   timing          {STAGE_s: seconds, ...}
 #ifndef DEXMILL_PLATFORM_REPORT_JSON_H
 #define DEXMILL_PLATFORM_REPORT_JSON_H
@@ -50,6 +55,7 @@
 #include <vector>
 
 #include "core/assess/assess.h"
+#include "core/check/safety.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -112,8 +118,18 @@ struct RunReport {
   uint32_t stopped_line = 0;
   bool have_assessment = false;
   ReportAssessment assessment;
+  // The safety checks (core/check/safety.h) when any ran: their events as
+  // kept, the count of all, and what rapids removed.
+  bool have_collisions = false;
+  std::vector<SafetyEvent> collisions;
+  uint64_t collisions_total = 0;
+  uint64_t rapid_removed_lsb = 0;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
 };
+
+// One safety event as text: "rapid into material: 0.123 mm3 removed, 0.400
+// mm deep at X.. Y.. Z.." (the warning's message, the report's "message").
+std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitch_nm);
 
 // The report as text.
 std::string report_json_text(const RunReport& r);

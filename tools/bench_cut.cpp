@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/assess/gouge_watch.h"
+#include "core/check/safety.h"
 #include "core/config.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
@@ -156,11 +157,44 @@ void run(const char* name) {
   }
 }
 
-// assess-*: what the gouge watch of `dexmill run --design` costs: the sweep
-// of a workload with gouge_watch_check over each move's changed columns (as
-// the run's cut sink does), against the same sweep without, in the same
-// rounds. The design is a plane 0.1 mm under the path's lowest point, so
-// nothing gouges and every changed column is compared (the usual case).
+// The sweep of a workload with a watch called over each move's changed
+// columns (as the run's cut sink does), against the same sweep without, in
+// the same rounds: the watch's cost as a ratio. watch(k, changed) runs
+// after move k (k = path size: the last end cap).
+template <class Watch, class Start>
+void watch_ratio(const char* name, const char* workload, Job* j, Start start, Watch watch, uint64_t* found) {
+  const auto timed = [&](bool watched) {
+    reset(j);
+    start();
+    CutStats st;
+    SweepChain chain;
+    const std::vector<PointNm>& path = j->w.path;
+    const double t0 = bench::now_s();
+    for (size_t k = 1; k < path.size(); ++k) {
+      sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], &st, &chain);
+      if (watched) {
+        watch(k, j->g.dirty);
+        j->g.dirty = GridRect::none();
+      }
+    }
+    sweep_chain_end(&j->g, j->sweep_tool, &st, &chain);
+    if (watched) watch(path.size(), j->g.dirty);
+    return bench::now_s() - t0;
+  };
+  double plain = 1e300, watched = 1e300;
+  bench::best_time_s([&] {
+    plain = std::min(plain, timed(false));
+    watched = std::min(watched, timed(true));
+    return 0.0;
+  }, bench::single_run() ? 0.0 : 0.6);
+  bench::result(name, "workload=%s grid=%dx%d moves=%zu seconds=%.6f plain_seconds=%.6f watch_ratio=%.3f found=%llu",
+                workload, j->w.geo.nx, j->w.geo.ny, j->w.path.size() - 1, watched, plain, watched / plain,
+                static_cast<unsigned long long>(*found));
+}
+
+// assess-*: what the gouge watch of `dexmill run --design` costs. The
+// design is a plane 0.1 mm under the path's lowest point, so nothing gouges
+// and every changed column is compared (the usual case).
 void run_assess(const char* name) {
   const char* workload = !std::strcmp(name, "assess-w3") ? "paper-w3" : "scale-1k";
   Job j;
@@ -177,35 +211,45 @@ void run_assess(const char* name) {
   if (!ok(design_init(&d, j.w.geo, tops.data(), n))) return;
   std::fill(tops.begin(), tops.end(), static_cast<int32_t>(grid_height_of_z(j.g, zmin - kNmPerMm / 10)));
   GougeWatch watch;
-  const auto timed = [&](bool watched) {
-    reset(&j);
-    AssessOptions opt;
-    opt.region = GridRect{1, 1, j.w.geo.nx - 1, j.w.geo.ny - 1};  // not the ring of holes
-    (void)gouge_watch_init(&watch, &d, opt, seen.data(), seen.size());
-    CutStats st;
-    SweepChain chain;
-    const std::vector<PointNm>& path = j.w.path;
-    const double t0 = bench::now_s();
-    for (size_t k = 1; k < path.size(); ++k) {
-      sweep_chain_line(&j.g, j.sweep_tool, path[k - 1], path[k], &st, &chain);
-      if (watched) {
-        gouge_watch_check(&watch, j.g, j.g.dirty, static_cast<uint32_t>(k), path[k], nullptr);
-        j.g.dirty = GridRect::none();
-      }
-    }
-    sweep_chain_end(&j.g, j.sweep_tool, &st, &chain);
-    if (watched) gouge_watch_check(&watch, j.g, j.g.dirty, static_cast<uint32_t>(path.size()), path.back(), nullptr);
-    return bench::now_s() - t0;
-  };
-  double plain = 1e300, watched = 1e300;
-  bench::best_time_s([&] {
-    plain = std::min(plain, timed(false));
-    watched = std::min(watched, timed(true));
-    return 0.0;
-  }, bench::single_run() ? 0.0 : 0.6);
-  bench::result(name, "workload=%s grid=%dx%d moves=%zu seconds=%.6f plain_seconds=%.6f watch_ratio=%.3f gouges=%llu",
-                workload, j.w.geo.nx, j.w.geo.ny, j.w.path.size() - 1, watched, plain, watched / plain,
-                static_cast<unsigned long long>(watch.total));
+  AssessOptions opt;
+  opt.region = GridRect{1, 1, j.w.geo.nx - 1, j.w.geo.ny - 1};  // not the ring of holes
+  watch_ratio(
+      name, workload, &j, [&] { (void)gouge_watch_init(&watch, &d, opt, seen.data(), seen.size()); },
+      [&](size_t k, GridRect changed) {
+        const PointNm& at = j.w.path[k < j.w.path.size() ? k : j.w.path.size() - 1];
+        gouge_watch_check(&watch, j.g, changed, static_cast<uint32_t>(k), at, nullptr);
+      },
+      &watch.total);
+}
+
+// safety-*: what `dexmill run --check all` costs: each move a feed with the
+// spindle on (every removal is compared with the shadow, none is a
+// finding), below-stock checks on every move.
+void run_safety(const char* name) {
+  const char* workload = !std::strcmp(name, "safety-w3") ? "paper-w3" : "scale-1k";
+  Job j;
+  if (!setup(workload, &j)) {
+    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
+    return;
+  }
+  std::vector<uint32_t> shadow(static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny);
+  SafetyWatch watch;
+  watch_ratio(
+      name, workload, &j,
+      [&] {
+        (void)safety_watch_init(&watch, j.g, shadow.data(), shadow.size());
+        watch.bottom_nm = j.g.z0_nm;
+      },
+      [&](size_t k, GridRect changed) {
+        const std::vector<PointNm>& path = j.w.path;
+        CanonRecord r{};
+        r.kind = k < path.size() ? CanonKind::kFeed : CanonKind::kDwell;
+        r.line = static_cast<uint32_t>(k);
+        r.start = path[k < path.size() ? k - 1 : path.size() - 1];
+        r.end = path[k < path.size() ? k : path.size() - 1];
+        safety_watch_record(&watch, j.g, changed, r, SafetyMove{r.line, false, true}, nullptr);
+      },
+      &watch.total);
 }
 
 }  // namespace
@@ -213,6 +257,8 @@ void run_assess(const char* name) {
 
 BENCH(assess_w3, "assess-w3", dexmill::run_assess);
 BENCH(assess_1k, "assess-1k", dexmill::run_assess);
+BENCH(safety_w3, "safety-w3", dexmill::run_safety);
+BENCH(safety_1k, "safety-1k", dexmill::run_safety);
 BENCH(paper_w1, "paper-w1", dexmill::run);
 BENCH(paper_w2, "paper-w2", dexmill::run);
 BENCH(paper_w3, "paper-w3", dexmill::run);

@@ -38,6 +38,7 @@
 #include "tools/run_outputs.h"
 #include "tools/run_path.h"
 #include "tools/run_render.h"
+#include "tools/run_safety.h"
 #include "tools/run_stock.h"
 
 namespace dexmill {
@@ -131,8 +132,9 @@ struct Watchers {
 class CutSink final : public CanonSink {
  public:
   CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib, RunDesign* design,
-          const Tool& initial, const MotionTimeModel& model)
-      : time(model), mill_(mill), g_(g), w_(w), lib_(lib), design_(design), profile_(tool_profile(initial)) {}
+          RunSafety* safety, const Tool& initial, const MotionTimeModel& model)
+      : time(model), mill_(mill), g_(g), w_(w), lib_(lib), design_(design), safety_(safety),
+        profile_(tool_profile(initial)) {}
   void emit(const CanonRecord& r) override {
     if (stop_line && r.line >= stop_line) {  // a partial run: nothing of the bad block or after it
       stopped_at_error = true;
@@ -142,12 +144,22 @@ class CutSink final : public CanonSink {
     const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
     if (move && r.line != last_line_) {
       origin_ = GougeOrigin{last_line_, mill_->position(), &profile_};
+      safety_origin_ = SafetyOrigin{last_move_, mill_->position(), &profile_};
       have_origin_ = last_line_ != 0;
     }
+    if (r.kind == CanonKind::kSpindle) spindle_on_ = r.spindle_rpm != 0;
     mill_->emit(r);
     if (count_path) path_done += path_pieces(r);
     last_line_ = r.line;
     watch();
+    if (safety_) {
+      const SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on_, moved_};
+      check_safety(r, m, have_origin_ ? &safety_origin_ : nullptr);
+      if (move) {
+        last_move_ = m;
+        moved_ = true;
+      }
+    }
     time.emit(r);
     status.line = r.line;
     status.pos = mill_->position();
@@ -174,6 +186,12 @@ class CutSink final : public CanonSink {
   void sync() {
     mill_->flush();
     watch();
+    if (safety_) {  // the end cap flushed is the last move's
+      CanonRecord cap{};
+      cap.kind = CanonKind::kDwell;
+      cap.line = last_move_.line;
+      check_safety(cap, last_move_, nullptr);
+    }
     fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
   }
   // One frame of the sequence; false (and frame_error set) on failure.
@@ -198,6 +216,7 @@ class CutSink final : public CanonSink {
   uint32_t path_done = 0;
   bool stopped_at_error = false;
   bool gouged = false;  // a gouge was found (the watch's warnings are printed)
+  bool collided = false;  // a safety check found something
   uint64_t moves = 0, last_frame_moves = 0;
   std::string frame_error;
   double render_s = 0, write_s = 0;
@@ -208,10 +227,21 @@ class CutSink final : public CanonSink {
   Watchers* w_;
   const ToolLibrary* lib_;
   RunDesign* design_;  // null: no gouge watch
+  RunSafety* safety_;  // null: no safety checks
+  bool spindle_on_ = false;  // M3/M4 in effect (a program starts with the spindle stopped)
+  bool moved_ = false;       // a move has run: the tool's position is the program's, not assumed
+  SafetyMove last_move_{};   // the last motion record's line and state
+  SafetyOrigin safety_origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
   uint32_t last_line_ = 0;
   ToolProfile profile_{};  // the tool in the spindle
   GougeOrigin origin_{0, PointNm{0, 0, 0}, nullptr};
   bool have_origin_ = false;
+
+  void check_safety(const CanonRecord& r, const SafetyMove& m, const SafetyOrigin* prev) {
+    if (!safety_watch_record(&safety_->watch, *g_, g_->dirty, r, m, prev)) return;
+    collided = true;
+    safety_mark_new(safety_);
+  }
 
   // The columns the last record changed (the grid's dirty rectangle, which
   // fan_out_dirty clears after every record) against the design.
@@ -447,6 +477,11 @@ int run_job(RunOptions o) {
     if (code != kExitOk) return code;
   }
 
+  // -- the safety checks, on the grid as stocked
+  RunSafety safety;
+  const bool safety_on = o.check_rapid || o.check_spindle || o.check_below || o.have_table;
+  if (safety_on) safety_start(&safety, grid, o.check_rapid, o.check_spindle, o.check_below, o.have_table, o.table_nm);
+
   // -- the cutter's memory: the stamp set of the largest tool used
   size_t words = 0;
   for (const Tool& t : scan.tools_seen) {
@@ -538,11 +573,14 @@ int run_job(RunOptions o) {
   // The gouges found so far, marked in every frame and live view.
   if (!o.design.empty())
     for (RenderOutput* out : w.outputs) out->add_marks(&design.marks, Rgb{255, 32, 24});
+  if (safety_on)  // the safety findings so far, in magenta
+    for (RenderOutput* out : w.outputs) out->add_marks(&safety.marks, Rgb{255, 40, 255});
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 
   // -- cut pass
-  CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, o.tool, time_model);
+  CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, safety_on ? &safety : nullptr, o.tool,
+              time_model);
   cut.stop_line = stop_line;
   cut.count_path = want_path;
   if (want_path)
@@ -576,6 +614,11 @@ int run_job(RunOptions o) {
         rep.stopped_line = cut.status.line;
         break;
       }
+      if (o.stop_at_collision && cut.collided) {
+        rep.stopped_reason = "collision";
+        rep.stopped_line = cut.status.line;
+        break;
+      }
       if (is_live && !live.tick(&grid, cut.pose(), cut.status)) {
         user_quit = !live.failed();
         break;
@@ -588,6 +631,10 @@ int run_job(RunOptions o) {
       for (RenderOutput* out : w.outputs) out->add_marks(&error_mark, Rgb{255, 190, 0});
     }
     if (!o.design.empty()) print_gouges(grid, &design);
+    if (safety_on) {
+      safety_print(safety, shown_name, grid);
+      safety_to_report(safety, &rep);
+    }
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());
     if (live.failed()) return fail(kExitIo, "%s", live.error().c_str());
@@ -646,6 +693,7 @@ int run_job(RunOptions o) {
   if (no_output) std::fputs(report_summary_text(rep).c_str(), stdout);
   if (stop_line) return kExitInput;
   if (cut.gouged && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
+  if (cut.collided && (o.stop_at_collision || o.fail_on_collision)) return kExitCheck;
   if (!o.quiet && demo)
     std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
                  image_format_extension(o.frame_format));

@@ -110,8 +110,13 @@ void run_usage(std::FILE* f) {
                "  --overlay design|workpiece --image with the design translucent over the cut (shows\n"
                "                             gouges), or the cut translucent over the design (shows\n"
                "                             material left)\n"
-               "  --stop-at gouge            stop at the first gouge (outputs show that state), exit 4\n"
+               "  --stop-at gouge|collision|any  stop at the first gouge or safety finding (outputs\n"
+               "                             show that state), exit 4\n"
                "  --fail-on-gouge            run to the end, exit 4 if the cut gouged the design\n"
+               "  --check rapid,spindle,below|all  safety checks: rapids that remove material,\n"
+               "                             cutting with the spindle stopped, the tool below the stock\n"
+               "  --table Z                  the table's Z (mm): the tool going below it is a finding\n"
+               "  --fail-on-collision        run to the end, exit 4 if a safety check found something\n"
                "  --path-overlay             the toolpath over the frames: rapids dashed yellow, feeds\n"
                "                             blue, pale where still to come (live: the p key)\n"
                "  --strict                   a program with an input error is not cut at all (by\n"
@@ -130,6 +135,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     const ToolSpecError e = tool_spec_parse("flat:6", 6, &o->tool);
     if (e != ToolSpecError::kOk) return fail(kExitUsage, "internal: default tool");
   }
+  bool stop_any = false;
   bool have_file = false, have_grid = false, have_pitch = false, have_view = false, have_every = false;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
@@ -143,6 +149,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     if (!std::strcmp(a, "--exit-when-done")) { o->exit_when_done = true; continue; }
     if (!std::strcmp(a, "--fail-on-gouge")) { o->fail_on_gouge = true; continue; }
     if (!std::strcmp(a, "--strict")) { o->strict = true; continue; }
+    if (!std::strcmp(a, "--fail-on-collision")) { o->fail_on_collision = true; continue; }
     if (!std::strcmp(a, "--path-overlay")) { o->path_overlay = true; continue; }
     if (a[0] != '-' || !a[1]) {
       if (have_file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", o->file.c_str(), a);
@@ -154,7 +161,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -267,8 +274,24 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     } else if (name == "--error-image") {
       o->error_image = v;
     } else if (name == "--stop-at") {
-      if (std::strcmp(v, "gouge")) return fail(kExitUsage, "--stop-at must be gouge, not '%s'", v);
-      o->stop_at_gouge = true;
+      if (!std::strcmp(v, "any")) stop_any = true;
+      else if (!std::strcmp(v, "gouge")) o->stop_at_gouge = true;
+      else if (!std::strcmp(v, "collision")) o->stop_at_collision = true;
+      else return fail(kExitUsage, "--stop-at must be gouge, collision or any, not '%s'", v);
+    } else if (name == "--check") {
+      for (const char* p = v; *p;) {
+        const char* end = std::strchr(p, ',');
+        const std::string word(p, end ? static_cast<size_t>(end - p) : std::strlen(p));
+        if (word == "rapid") o->check_rapid = true;
+        else if (word == "spindle") o->check_spindle = true;
+        else if (word == "below") o->check_below = true;
+        else if (word == "all") o->check_rapid = o->check_spindle = o->check_below = true;
+        else return fail(kExitUsage, "--check takes rapid, spindle, below or all (comma-separated), not '%s'", word.c_str());
+        p = end ? end + 1 : p + word.size();
+      }
+    } else if (name == "--table") {
+      if (!parse_scaled(v, kNmPerMm, &o->table_nm)) return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);
+      o->have_table = true;
     } else if (name == "--speed") {
       if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
         return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
@@ -285,6 +308,16 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     return fail(kExitUsage, "--error-image needs --design (the part to compare the cut with)");
   if (o->overlay != RunOptions::Overlay::kNone && o->design.empty())
     return fail(kExitUsage, "--overlay needs --design (the part to draw with the cut)");
+  // Asking to stop or fail on a collision without naming checks runs them all.
+  if (stop_any) o->stop_at_collision = true;
+  if ((o->stop_at_collision || o->fail_on_collision) && !o->check_rapid && !o->check_spindle && !o->check_below &&
+      !o->have_table)
+    o->check_rapid = o->check_spindle = o->check_below = true;
+  // --stop-at any: at a gouge when there is a design, at a safety finding.
+  if (stop_any) {
+    o->stop_at_collision = true;
+    o->stop_at_gouge = o->stop_at_gouge || !o->design.empty();
+  }
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())

@@ -61,7 +61,14 @@ struct RunOptions {
   // --overlay: the design translucent over the cut (shows overcut), or the
   // cut translucent over the design (shows undercut), in --image.
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
-  bool stop_at_gouge = false;    // --stop-at gouge: stop at the first gouge, exit 4
+  bool stop_at_gouge = false;    // --stop-at gouge|any: stop at the first gouge, exit 4
+  bool stop_at_collision = false;  // --stop-at collision|any: stop at the first safety finding, exit 4
+  bool fail_on_collision = false;  // --fail-on-collision
+  // Safety checks (core/check/safety.h): --check rapid,spindle,below|all,
+  // and --table Z (mm) for the table.
+  bool check_rapid = false, check_spindle = false, check_below = false;
+  bool have_table = false;
+  int64_t table_nm = 0;
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)

@@ -18,17 +18,6 @@ Status gouge_watch_init(GougeWatch* w, const DesignGrid* d, const AssessOptions&
 
 namespace {
 
-// True when the tool standing at o.end cuts column (x, y) as low as z_nm,
-// within 1 LSB: that depth is the previous line's doing.
-bool origin_explains(const GougeOrigin& o, int64_t x_nm, int64_t y_nm, int64_t z_nm, int64_t lsb_nm) {
-  const int64_t dx = x_nm - o.end.x_nm, dy = y_nm - o.end.y_nm;
-  const int64_t r = o.tool->radius_nm;
-  if (dx < -r || dx > r || dy < -r || dy > r) return false;
-  const uint64_t r2 = static_cast<uint64_t>(dx * dx) + static_cast<uint64_t>(dy * dy);
-  if (r2 > static_cast<uint64_t>(r) * static_cast<uint64_t>(r)) return false;
-  return z_nm + lsb_nm >= o.end.z_nm + profile_height_r2_nm(*o.tool, r2);
-}
-
 // The event of `line`: one this call began, or the one before them when it
 // has that line (a line's gouges go on over several records: its end cap
 // comes with the next), else a new one (counted; null when the list is full).
@@ -74,7 +63,7 @@ bool gouge_watch_check(GougeWatch* w, const DexelGrid<H>& g, GridRect changed, u
       w->seen[k >> 3] = static_cast<uint8_t>(w->seen[k >> 3] | (1u << (k & 7)));
       found = true;
       const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
-      const bool before = prev && prev->tool && origin_explains(*prev, x, y, g.z0_nm + tr[i] * g.lsb_nm, g.lsb_nm);
+      const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, g.z0_nm + tr[i] * g.lsb_nm, g.lsb_nm);
       bool is_new = false;
       GougeEvent* e = event_for(w, first, before ? prev->line : line, &is_new);
       if (!e) continue;

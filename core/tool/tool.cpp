@@ -89,4 +89,14 @@ int64_t profile_full_height_nm(const ToolProfile& p) {
   return 0;
 }
 
+bool profile_explains_cut(const ToolProfile& p, const PointNm& tip, int64_t x_nm, int64_t y_nm, int64_t z_nm,
+                          int64_t lsb_nm) {
+  const int64_t dx = x_nm - tip.x_nm, dy = y_nm - tip.y_nm;
+  const int64_t r = p.radius_nm;
+  if (dx < -r || dx > r || dy < -r || dy > r) return false;
+  const uint64_t r2 = static_cast<uint64_t>(dx * dx) + static_cast<uint64_t>(dy * dy);
+  if (r2 > static_cast<uint64_t>(r) * static_cast<uint64_t>(r)) return false;
+  return z_nm + lsb_nm >= tip.z_nm + profile_height_r2_nm(p, r2);
+}
+
 }  // namespace dexmill

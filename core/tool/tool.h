@@ -11,6 +11,7 @@
 
 #include <stdint.h>
 
+#include "core/point.h"
 #include "core/status.h"
 
 namespace dexmill {
@@ -58,6 +59,14 @@ int64_t profile_height_nm(const ToolProfile& p, int64_t r_nm);
 // since near r = R the profile is steep and rounding r first would cost up to
 // sqrt(R) nm.
 int64_t profile_height_r2_nm(const ToolProfile& p, uint64_t r2_nm2);
+
+// True when the tool standing with its tip at `tip` cuts the column at
+// (x_nm, y_nm) down to z_nm or lower, within lsb_nm: what the Mill cut
+// there when it cut that tool position (a deferred end cap is charged to
+// the move that brought the tool there: core/assess/gouge_watch.h,
+// core/check/safety.h).
+bool profile_explains_cut(const ToolProfile& p, const PointNm& tip, int64_t x_nm, int64_t y_nm, int64_t z_nm,
+                          int64_t lsb_nm);
 
 // Height of the profile at r = R (the top of the cutting shape's curve):
 // R for a ball, rc for a bull nose, R / tan(a/2) for a V-bit, 0 for flat.
