@@ -79,6 +79,11 @@ TEST(safety_each_kind_on_its_line_and_none_without_it) {
   CHECK_EQ(r.code, 0);
   CHECK_EQ(count_of(r.err, "warning:"), 0);
   CHECK(has(slurp(tmp_dir() + "/safety_good.json"), "\"collisions\": {\"total\": 0, \"rapid_removed_mm3\": 0.000, \"list\": []}"));
+  // M3 with no S word: the spindle turns (at the controller's default
+  // speed); a record's rpm is 0 there, as after M5 (cameo.nc's false alarm).
+  const std::string no_s = write_program("safety_no_s.ngc", "G21 G90\nG0 X-10 Y10 Z5\nM3\nG1 Z-1 F300\nG1 X10\nG0 Z5\nM2\n");
+  r = run(no_s + kStock + " -q --check all --report /dev/null");
+  CHECK_EQ(count_of(r.err, "warning:"), 0);
   // Without --check the report says null and nothing is watched.
   r = run(bad + kStock + " -q --report " + tmp_dir() + "/safety_off.json");
   CHECK_EQ(count_of(r.err, "warning:"), 0);

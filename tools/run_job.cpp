@@ -147,13 +147,16 @@ class CutSink final : public CanonSink {
       safety_origin_ = SafetyOrigin{last_move_, mill_->position(), &profile_};
       have_origin_ = last_line_ != 0;
     }
-    if (r.kind == CanonKind::kSpindle) spindle_on_ = r.spindle_rpm != 0;
     mill_->emit(r);
     if (count_path) path_done += path_pieces(r);
     last_line_ = r.line;
     watch();
     if (safety_) {
-      const SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on_, moved_};
+      // M3/M4 in effect (the interpreter's state: a record's rpm is 0 both
+      // after M5 and for M3 with no S word, which a controller runs at its
+      // default speed).
+      const bool spindle_on = interp && interp->state().spindle_dir != 0;
+      const SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on, moved_};
       check_safety(r, m, have_origin_ ? &safety_origin_ : nullptr);
       if (move) {
         last_move_ = m;
@@ -212,6 +215,7 @@ class CutSink final : public CanonSink {
   MotionSummary time;
   LiveStatus status;
   uint32_t stop_line = 0;        // the first bad block of a partial run (0: none)
+  const Interp* interp = nullptr;  // the cut pass's, for the spindle's state
   bool count_path = false;       // keep path_done: the backplot's pieces cut so far
   uint32_t path_done = 0;
   bool stopped_at_error = false;
@@ -228,7 +232,6 @@ class CutSink final : public CanonSink {
   const ToolLibrary* lib_;
   RunDesign* design_;  // null: no gouge watch
   RunSafety* safety_;  // null: no safety checks
-  bool spindle_on_ = false;  // M3/M4 in effect (a program starts with the spindle stopped)
   bool moved_ = false;       // a move has run: the tool's position is the program's, not assumed
   SafetyMove last_move_{};   // the last motion record's line and state
   SafetyOrigin safety_origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
@@ -604,6 +607,7 @@ int run_job(RunOptions o) {
     opt.inch = o.inch;
     opt.tools = have_table ? &table : nullptr;
     Interp interp(&cut, opt);
+    cut.interp = &interp;
     GcodeRunner runner(&in, &interp, &quiet, true);
     Progress progress(stderr, !o.quiet && !is_live);
     while (runner.step()) {
