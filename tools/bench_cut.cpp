@@ -39,7 +39,7 @@ struct Job {
   SweepTool sweep_tool;
 };
 
-bool setup(const char* name, Job* j) {
+bool prepare(const char* name, Job* j) {
   if (!make_workload(name, &j->w)) return false;
   const size_t n = static_cast<size_t>(j->w.geo.nx) * j->w.geo.ny;
   j->top.assign(n, 0);
@@ -52,6 +52,14 @@ bool setup(const char* name, Job* j) {
   if (!ok(cutter_build(p, j->g.pitch_nm, j->g.lsb_nm, j->cutter_words.data(), j->cutter_words.size(), &j->cutter)))
     return false;
   return ok(sweep_tool_prepare(p, j->g.lsb_nm, &j->sweep_tool));
+}
+
+// The job of workload `name` for benchmark `bench`; says so when it cannot
+// be set up.
+bool setup(const char* bench, const char* name, Job* j) {
+  if (prepare(name, j)) return true;
+  std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", bench);
+  return false;
 }
 
 void reset(Job* j) {
@@ -105,10 +113,7 @@ double time_cut(Job* j, bool sweep) {
 
 void run(const char* name) {
   Job j;
-  if (!setup(name, &j)) {
-    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
-    return;
-  }
+  if (!setup(name, name, &j)) return;
   const bool big = j.w.geo.nx > 2000;
   ModeRun m[2];
   for (int mode = 0; mode < 2; ++mode) {
@@ -198,10 +203,7 @@ void watch_ratio(const char* name, const char* workload, Job* j, Start start, Wa
 void run_assess(const char* name) {
   const char* workload = !std::strcmp(name, "assess-w3") ? "paper-w3" : "scale-1k";
   Job j;
-  if (!setup(workload, &j)) {
-    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
-    return;
-  }
+  if (!setup(name, workload, &j)) return;
   const size_t n = static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny;
   std::vector<int32_t> tops(n);
   std::vector<uint8_t> seen(gouge_watch_seen_bytes(j.w.geo.nx, j.w.geo.ny));
@@ -228,10 +230,7 @@ void run_assess(const char* name) {
 void run_safety(const char* name) {
   const char* workload = !std::strcmp(name, "safety-w3") ? "paper-w3" : "scale-1k";
   Job j;
-  if (!setup(workload, &j)) {
-    std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", name);
-    return;
-  }
+  if (!setup(name, workload, &j)) return;
   std::vector<uint32_t> shadow(static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny);
   SafetyWatch watch;
   watch_ratio(
