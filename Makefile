@@ -130,20 +130,55 @@ panel:
 	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
-#   make fuzz SECONDS=N   run the pipeline fuzz target N seconds (default 60)
-#                         over tests/fuzz/seeds plus build/fuzz/corpus
+#   make fuzz SECONDS=N           the pipeline target N seconds (default 60)
+#   make fuzz FUZZ_TARGET=T ...   target T: pipeline, tool_table, stl or pgm
+#   make fuzz-all SECONDS=N       every target, N seconds each, one after another
+# Target T is tests/fuzz/fuzz_T.cpp; it runs over its corpus
+# build/fuzz/corpus/T and its seeds tests/fuzz/seeds/T, with its dictionary.
+# What it finds (crash-*, timeout-*, oom-*) lands in build/fuzz/found/T;
+# kept in tests/fuzz/regress/T, `make test` replays it.
 SECONDS ?= 60
-FUZZ_BIN := build/fuzz/fuzz_pipeline
+FUZZ_TARGETS := pipeline tool_table stl pgm
+FUZZ_TARGET ?= pipeline
 FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
             -fno-sanitize-recover=all
 FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
-.PHONY: fuzz
+# The readers are host code (std, exceptions), linked into every target.
+FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/tool_table.cpp platform/stl_read.cpp platform/pgm.cpp \
+                   platform/read_file.cpp platform/output_file.cpp)
+# Per target: the longest input (the pipeline's seeds are whole programs,
+# binary STL seeds a hundred triangles), the dictionary, further options (a
+# reader must not be made to allocate hundreds of MB by a few KB of input).
+FUZZ_MAXLEN_pipeline := 8192
+FUZZ_MAXLEN_tool_table := 4096
+FUZZ_MAXLEN_stl := 8192
+FUZZ_MAXLEN_pgm := 4096
+FUZZ_DICT_pipeline := tests/fuzz/gcode.dict
+FUZZ_DICT_tool_table := tests/fuzz/tool_table.dict
+FUZZ_DICT_stl := tests/fuzz/stl.dict
+FUZZ_DICT_pgm := tests/fuzz/pgm.dict
+FUZZ_OPTS_tool_table := -malloc_limit_mb=64
+FUZZ_OPTS_stl := -malloc_limit_mb=64
+FUZZ_OPTS_pgm := -malloc_limit_mb=64
+.PHONY: fuzz fuzz-all
+# Objects reached through the build/fuzz/fuzz_% pattern are kept, not
+# deleted as intermediates.
+.SECONDARY: $(FUZZ_OBJ) $(FUZZ_HOST_OBJ)
+build/fuzz/obj/core/%.o build/fuzz/obj/display/%.o: FUZZ_KIND := int
 build/fuzz/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
-	$(FUZZ_CXX) $(INTFLAGS) -c $< -o $@
-$(FUZZ_BIN): tests/fuzz/fuzz_pipeline.cpp $(wildcard tests/fuzz/*.h) $(FUZZ_OBJ)
-	$(FUZZ_CXX) tests/fuzz/fuzz_pipeline.cpp $(FUZZ_OBJ) -o $@
-fuzz: $(FUZZ_BIN)
-	@mkdir -p build/fuzz/corpus
-	$(FUZZ_BIN) -max_total_time=$(SECONDS) -max_len=4096 -timeout=10 -print_final_stats=1 \
-	  build/fuzz/corpus tests/fuzz/seeds
+	$(FUZZ_CXX) $(if $(filter int,$(FUZZ_KIND)),$(INTFLAGS)) -MMD -MP -c $< -o $@
+build/fuzz/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_OBJ) $(FUZZ_HOST_OBJ)
+	$(FUZZ_CXX) -MMD -MP -MF $@.d -MT $@ $< $(FUZZ_OBJ) $(FUZZ_HOST_OBJ) -o $@
+fuzz: build/fuzz/fuzz_$(FUZZ_TARGET)
+	@mkdir -p build/fuzz/corpus/$(FUZZ_TARGET) build/fuzz/found/$(FUZZ_TARGET)
+	$< -max_total_time=$(SECONDS) -max_len=$(FUZZ_MAXLEN_$(FUZZ_TARGET)) -timeout=10 -print_final_stats=1 \
+	  -artifact_prefix=build/fuzz/found/$(FUZZ_TARGET)/ \
+	  $(if $(FUZZ_DICT_$(FUZZ_TARGET)),-dict=$(FUZZ_DICT_$(FUZZ_TARGET))) $(FUZZ_OPTS_$(FUZZ_TARGET)) \
+	  build/fuzz/corpus/$(FUZZ_TARGET) tests/fuzz/seeds/$(FUZZ_TARGET)
+# Every target even when one fails; fails if any did.
+fuzz-all: $(addprefix build/fuzz/fuzz_,$(FUZZ_TARGETS))
+	@failed=; for t in $(FUZZ_TARGETS); do \
+	  $(MAKE) --no-print-directory fuzz FUZZ_TARGET=$$t SECONDS=$(SECONDS) || failed="$$failed $$t"; done; \
+	  if [ -n "$$failed" ]; then echo "fuzz-all: failed:$$failed"; exit 1; fi
+-include $(shell find build/fuzz -name '*.d' 2>/dev/null)

@@ -68,6 +68,10 @@ PgmRead read_pgm(const std::string& path, PgmImage* img, std::string* err) {
     case ReadFile::kTooLarge: return PgmRead::kInputError;
     case ReadFile::kIoError: return PgmRead::kIoError;
   }
+  return pgm_parse(path, b, img, err);
+}
+
+PgmRead pgm_parse(const std::string& path, const std::vector<unsigned char>& b, PgmImage* img, std::string* err) {
   auto input_error = [&](const std::string& what) {
     *err = path + ": error: " + what;
     return PgmRead::kInputError;

@@ -29,6 +29,9 @@ enum class PgmRead : uint8_t { kOk, kInputError, kIoError };
 // out of range (sides 1..65535, at most 2^28 samples), too few samples, a
 // sample above maxval. I/O errors: the file cannot be read.
 PgmRead read_pgm(const std::string& path, PgmImage* img, std::string* err);
+// The same over a file's bytes already in memory; `name` stands for the
+// file in messages (the fuzz target, tests/fuzz/fuzz_pgm.cpp, reads no file).
+PgmRead pgm_parse(const std::string& name, const std::vector<unsigned char>& bytes, PgmImage* img, std::string* err);
 
 }  // namespace dexmill
 

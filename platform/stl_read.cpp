@@ -164,6 +164,13 @@ StlRead stl_read(const std::string& path, const PointNm& offset,
     case ReadFile::kTooLarge: return StlRead::kInputError;
     case ReadFile::kIoError: return StlRead::kIoError;
   }
+  return stl_parse(path, b, offset, on_triangle, info, err);
+}
+
+StlRead stl_parse(const std::string& path, const std::vector<unsigned char>& b, const PointNm& offset,
+                  const std::function<bool(const PointNm*, std::string*)>& on_triangle, StlReadInfo* info,
+                  std::string* err) {
+  *info = StlReadInfo{};
   StlRead r;
   if (b.size() >= 84 && b.size() == 84 + 50 * static_cast<uint64_t>(le32(&b[80]))) {
     info->binary = true;

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/point.h"
 
@@ -35,6 +36,12 @@ struct StlReadInfo {
 StlRead stl_read(const std::string& path, const PointNm& offset,
                  const std::function<bool(const PointNm*, std::string*)>& on_triangle, StlReadInfo* info,
                  std::string* err);
+
+// The same over a file's bytes already in memory; `name` stands for the
+// file in messages (the fuzz target, tests/fuzz/fuzz_stl.cpp, reads no file).
+StlRead stl_parse(const std::string& name, const std::vector<unsigned char>& bytes, const PointNm& offset,
+                  const std::function<bool(const PointNm*, std::string*)>& on_triangle, StlReadInfo* info,
+                  std::string* err);
 
 }  // namespace dexmill
 
