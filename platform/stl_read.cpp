@@ -176,8 +176,10 @@ StlRead stl_parse(const std::string& path, const std::vector<unsigned char>& b, 
     info->binary = true;
     r = read_binary(path, b, offset, on_triangle, info, err);
   } else {
-    // ASCII STL is text: a NUL byte means binary STL of the wrong size.
-    const bool text = std::memchr(b.data(), 0, b.size()) == nullptr;
+    // ASCII STL is text: a NUL byte means binary STL of the wrong size. An
+    // empty file's data() may be null, which memchr must not get even for
+    // 0 bytes (fuzzer: UBSan, nonnull argument).
+    const bool text = b.empty() || std::memchr(b.data(), 0, b.size()) == nullptr;
     size_t k = 0;
     while (k < b.size() && std::isspace(b[k])) ++k;
     if (!text || b.size() - k < 5 || strncasecmp(reinterpret_cast<const char*>(&b[k]), "solid", 5) != 0) {
