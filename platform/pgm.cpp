@@ -1,5 +1,6 @@
 #include "platform/pgm.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -90,7 +91,9 @@ PgmRead pgm_parse(const std::string& path, const std::vector<unsigned char>& b, 
   img->height = static_cast<int32_t>(ht);
   img->maxval = static_cast<uint32_t>(maxval);
   const size_t count = static_cast<size_t>(w * ht);
-  img->samples.assign(count, 0);
+  // Memory for the samples only as the file holds them: a header alone may
+  // claim 2^28 (fuzzer: a 37-byte file had 84 MB taken and cleared).
+  img->samples.clear();
   if (binary) {
     // Exactly one whitespace byte after maxval, then the samples.
     size_t p = h.pos_ + 1;
@@ -99,18 +102,21 @@ PgmRead pgm_parse(const std::string& path, const std::vector<unsigned char>& b, 
       return input_error("too few samples: " + std::to_string(w) + "x" + std::to_string(ht) + " needs " +
                          std::to_string(count * bytes) + " bytes of data, the file has " +
                          std::to_string(h.pos_ < b.size() ? b.size() - p : 0));
+    img->samples.assign(count, 0);
     for (size_t k = 0; k < count; ++k, p += bytes) {
       const uint32_t s = bytes == 2 ? (static_cast<uint32_t>(b[p]) << 8 | b[p + 1]) : b[p];
       if (s > maxval) return input_error("sample " + std::to_string(k + 1) + " is above maxval");
       img->samples[k] = static_cast<uint16_t>(s);
     }
   } else {
+    // A text sample takes two bytes at least: a digit and a separator.
+    img->samples.reserve(std::min(count, (b.size() - std::min(h.pos_, b.size())) / 2 + 1));
     for (size_t k = 0; k < count; ++k) {
       uint64_t s;
       if (!h.number(&s))
         return input_error("too few samples: " + std::to_string(count) + " needed, " + std::to_string(k) + " found");
       if (s > maxval) return input_error("sample " + std::to_string(k + 1) + " is above maxval");
-      img->samples[k] = static_cast<uint16_t>(s);
+      img->samples.push_back(static_cast<uint16_t>(s));
     }
   }
   return PgmRead::kOk;

@@ -1,9 +1,10 @@
 // libFuzzer target: the PGM reader (platform/pgm.h), P5 and P2, 8 and 16
 // bit, and the design made from the image (core/design/design.h's
 // design_from_image, what `run --design FILE.pgm` does). The input is the
-// file. An image that reads must hold width x height samples, none above
-// maxval; laid over a small grid, every column inside gets a design top
-// between the low and high z, every column outside none.
+// file. The reader must take memory in proportion to the file, not to what
+// its header claims. An image that reads must hold width x height samples,
+// none above maxval; laid over a small grid, every column inside gets a
+// design top between the low and high z, every column outside none.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,6 +26,9 @@ int fuzz_pgm(const uint8_t* data, size_t size) {
   std::string err;
   const PgmRead r = pgm_parse("fuzz.pgm", bytes, &img, &err);
   FUZZ_REQUIRE(r != PgmRead::kIoError);
+  // Memory in proportion to the file, whatever its header claims (every
+  // sample takes a byte at least); `make fuzz` also limits malloc to 64 MB.
+  FUZZ_REQUIRE(img.samples.capacity() <= size + 1);
   if (r != PgmRead::kOk) {
     FUZZ_REQUIRE(err.compare(0, 9, "fuzz.pgm:") == 0);
     return 0;
