@@ -27,7 +27,6 @@
 #include "core/cut/mill.h"
 #include "core/design/design.h"
 #include "core/grid/grid.h"
-#include "core/motion/arc_chords.h"
 #include "core/motion/interp.h"
 #include "core/motion/summary.h"
 #include "core/tool/cutter.h"
@@ -37,6 +36,7 @@
 #include "tests/fuzz/fuzz_entry.h"
 #include "tests/fuzz/fuzz_render.h"
 #include "tests/fuzz/fuzz_spec.h"
+#include "tools/run_path.h"
 
 namespace fuzz_pipeline {
 
@@ -81,32 +81,11 @@ class NoWarnings final : public GcodeDiagSink {
   uint64_t count = 0;
 };
 
-// The backplot's pieces (tools/run_path.cpp's rule, coarser chords and a cap).
+// The backplot's pieces (tools/run_path.h), with a cap.
 class PathSink final : public CanonSink {
  public:
   explicit PathSink(std::vector<PathSegment>* path, int64_t sagitta_nm) : path_(path), sagitta_nm_(sagitta_nm) {}
-  void emit(const CanonRecord& r) override {
-    if (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed) {
-      if (path_->size() < kMaxPathPieces)
-        path_->push_back(PathSegment{r.start, r.end, r.kind == CanonKind::kFeed ? PathKind::kFeed : PathKind::kRapid});
-      return;
-    }
-    if (r.kind != CanonKind::kArc) return;
-    ArcChords chords;
-    chords.init(r, sagitta_nm_);
-    PointNm from = r.start, to;
-    while (path_->size() < kMaxPathPieces && chords.next(&to)) {
-      path_->push_back(PathSegment{from, to, PathKind::kFeed});
-      from = to;
-    }
-  }
-  static uint32_t pieces(const CanonRecord& r, int64_t sagitta_nm) {
-    if (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed) return 1;
-    if (r.kind != CanonKind::kArc) return 0;
-    ArcChords chords;
-    chords.init(r, sagitta_nm);
-    return chords.count();
-  }
+  void emit(const CanonRecord& r) override { cli::append_path(r, path_, sagitta_nm_, kMaxPathPieces); }
 
  private:
   std::vector<PathSegment>* path_;
@@ -145,7 +124,7 @@ class CutSink final : public CanonSink {
     pending_.include(g_->dirty);
     g_->dirty = GridRect::none();
     if (!move) return;
-    path_done += PathSink::pieces(r, sagitta_nm_);
+    path_done += cli::path_pieces(r, sagitta_nm_);
     if (++moves_ % every_ == 0) step();
   }
 
