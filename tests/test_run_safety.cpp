@@ -79,6 +79,11 @@ TEST(safety_each_kind_on_its_line_and_none_without_it) {
   CHECK_EQ(r.code, 0);
   CHECK_EQ(count_of(r.err, "warning:"), 0);
   CHECK(has(slurp(tmp_dir() + "/safety_good.json"), "\"collisions\": {\"total\": 0, \"rapid_removed_mm3\": 0.000, \"list\": []}"));
+  // Frames flush the Mill's deferred end caps: the findings must not depend
+  // on how often a frame is drawn (issue 25 item 2, core/cut/mill.h).
+  r = run(bad + kStock + " -q --check all --table -6 --size 64x48 --frames " + tmp_dir() + "/safety_frames --every 1 "
+          "--report " + tmp_dir() + "/safety_framed.json");
+  CHECK(collisions_of(slurp(tmp_dir() + "/safety_framed.json")) == c);
   // M3 with no S word: the spindle turns (at the controller's default
   // speed); a record's rpm is 0 there, as after M5 (cameo.nc's false alarm).
   const std::string no_s = write_program("safety_no_s.ngc", "G21 G90\nG0 X-10 Y10 Z5\nM3\nG1 Z-1 F300\nG1 X10\nG0 Z5\nM2\n");

@@ -184,12 +184,20 @@ class CutSink final : public CanonSink {
     ++moves;
     if (w_->frames && moves % w_->every == 0) write_frame();
   }
-  // Completes the cut so far (the Mill defers a move's end cap) and passes
-  // its dirty rectangle on: before anything reads the grid.
+  // Shows the cut so far (the Mill defers a move's end cap) and passes its
+  // dirty rectangle on: before anything reads the grid. The gouge watch
+  // skips what flush shows: the records after it cut that cap for good
+  // (core/cut/mill.h), so the watch's events do not depend on when frames
+  // are drawn either.
   void sync() {
     mill_->flush();
+    fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
+  }
+  // The end of the cut pass: the deferred cap for good, watched.
+  void finish() {
+    mill_->finish();
     watch();
-    if (safety_) {  // the end cap flushed is the last move's
+    if (safety_) {  // the deferred end cap, now cut for good, is the last move's
       CanonRecord cap{};
       cap.kind = CanonKind::kDwell;
       cap.line = last_move_.line;
@@ -485,7 +493,8 @@ int run_job(RunOptions o) {
   const bool safety_on = o.check_rapid || o.check_spindle || o.check_below || o.have_table;
   if (safety_on) safety_start(&safety, grid, o.check_rapid, o.check_spindle, o.check_below, o.have_table, o.table_nm);
 
-  // -- the cutter's memory: the stamp set of the largest tool used
+  // -- the Mill's memory for the largest tool used: the stamp set, or the
+  // dexels under a deferred end cap that a frame shows (core/cut/mill.h)
   size_t words = 0;
   for (const Tool& t : scan.tools_seen) {
     const ToolProfile p = tool_profile(t);
@@ -496,12 +505,12 @@ int run_job(RunOptions o) {
       if (reach > kCutterMaxReach)
         return fail(kExitUsage, "the tool %s spans more than %d dexels at this pitch; use a coarser --pitch or --mode sweep",
                     spec, 2 * kCutterMaxReach + 1);
-      words = max_of(words, cutter_storage_words(reach));
     } else {
       SweepTool st;
       if (!ok(sweep_tool_prepare(p, grid.lsb_nm, &st)))
         return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 268 mm)", spec);
     }
+    words = max_of(words, mill_words(o.mode, p, grid));
   }
   std::vector<int32_t> cutter_words(words);
   Mill<height_t> mill(&grid, o.mode, lib, cutter_words.empty() ? nullptr : cutter_words.data(), cutter_words.size());
@@ -629,7 +638,7 @@ int run_job(RunOptions o) {
       }
     }
     progress.finish();
-    cut.sync();
+    cut.finish();
     if (stop_line) {  // the bad block's place, in amber on the last frames
       error_mark.push_back(mill.position());
       for (RenderOutput* out : w.outputs) out->add_marks(&error_mark, Rgb{255, 190, 0});

@@ -1,8 +1,13 @@
 // The cutting stage: canonical records to stamp or sweep calls.
 #include "core/cut/mill.h"
 
+#include <string.h>
+
 #include "core/cut/arc_walk.h"
 #include "core/cut/stamp.h"
+#include "core/cut/sweep_cut.h"
+#include "core/math/fixed.h"
+#include "core/tool/cutter.h"
 
 namespace dexmill {
 
@@ -14,7 +19,7 @@ template <class H>
 Status Mill<H>::set_tool(const Tool& t) {
   Status s = tool_check(t);
   if (!ok(s)) return s;
-  flush();  // the pending cap belongs to the tool in the spindle
+  finish();  // the pending cap belongs to the tool in the spindle
   const ToolProfile p = tool_profile(t);
   if (mode_ == CutMode::kStamp) {
     s = cutter_build(p, grid_->pitch_nm, grid_->lsb_nm, words_, nwords_, &cutter_);
@@ -30,8 +35,65 @@ Status Mill<H>::set_tool(const Tool& t) {
 }
 
 template <class H>
-void Mill<H>::flush() {
+void Mill<H>::end_chain() {
   if (have_tool_ && mode_ == CutMode::kSweep) sweep_chain_end(grid_, sweep_, &stats_, &chain_);
+}
+
+template <class H>
+void Mill<H>::finish() {
+  unshow();
+  end_chain();
+}
+
+template <class H>
+void Mill<H>::flush() {
+  if (!have_tool_ || mode_ != CutMode::kSweep || shown_ || chain_.state != SweepChain::State::kPending) return;
+  // The dexels the tool standing at the joint may change: sweep_piece's
+  // columns for that point.
+  SweepColumns c;
+  GridRect box = GridRect::none();
+  if (sweep_columns(*grid_, sweep_, chain_.end.x_nm, chain_.end.x_nm, chain_.end.y_nm, chain_.end.y_nm, &c))
+    box = GridRect{static_cast<int32_t>(c.i_first), static_cast<int32_t>(c.j_first), static_cast<int32_t>(c.i_last + 1),
+                   static_cast<int32_t>(c.j_last + 1)};
+  const size_t row = box.empty() ? 0 : static_cast<size_t>(box.i1 - box.i0) * sizeof(H);
+  const size_t rows = box.empty() ? 0 : static_cast<size_t>(box.j1 - box.j0);
+  if (rows && (!words_ || 2 * row * rows > nwords_ * sizeof(int32_t))) {
+    end_chain();  // no room to put the dexels back: for good
+    return;
+  }
+  unsigned char* save = reinterpret_cast<unsigned char*>(words_);
+  for (int32_t j = box.j0; j < box.j1; ++j) {
+    const size_t k = grid_->index(box.i0, j);
+    memcpy(save, grid_->top + k, row);
+    memcpy(save + row, grid_->bottom + k, row);
+    save += 2 * row;
+  }
+  shown_box_ = box;
+  shown_stats_ = stats_;
+  shown_bottoms_zero_ = grid_->bottoms_zero;
+  sweep_chain_end(grid_, sweep_, &stats_, &chain_);
+  // Still pending: the next move cuts its wedge of the cap over the dexels
+  // put back, as without this flush.
+  chain_.state = SweepChain::State::kPending;
+  shown_ = true;
+}
+
+template <class H>
+void Mill<H>::unshow() {
+  if (!shown_) return;
+  shown_ = false;
+  const GridRect box = shown_box_;
+  const size_t row = box.empty() ? 0 : static_cast<size_t>(box.i1 - box.i0) * sizeof(H);
+  const unsigned char* save = reinterpret_cast<const unsigned char*>(words_);
+  for (int32_t j = box.j0; j < box.j1 && row; ++j) {
+    const size_t k = grid_->index(box.i0, j);
+    memcpy(grid_->top + k, save, row);
+    memcpy(grid_->bottom + k, save + row, row);
+    save += 2 * row;
+  }
+  stats_ = shown_stats_;
+  grid_->bottoms_zero = shown_bottoms_zero_;
+  grid_->dirty.include(box);  // changed back: readers of the changes redraw it
 }
 
 template <class H>
@@ -49,6 +111,11 @@ void Mill<H>::cut_line(PointNm a, PointNm b) {
 
 template <class H>
 void Mill<H>::emit(const CanonRecord& r) {
+  // A record that cuts or ends the chain starts from the grid as it was
+  // before any flush (issue 25: what flush shows does not change the cut).
+  if (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc ||
+      r.kind == CanonKind::kToolChange || r.kind == CanonKind::kEnd)
+    unshow();
   switch (r.kind) {
     case CanonKind::kTraverse:
     case CanonKind::kFeed:
@@ -81,12 +148,29 @@ void Mill<H>::emit(const CanonRecord& r) {
       break;
     }
     case CanonKind::kEnd:
-      flush();
+      end_chain();
       break;
     default:
       break;
   }
 }
+
+template <class H>
+size_t mill_words(CutMode mode, const ToolProfile& p, const DexelGrid<H>& g) {
+  if (g.pitch_nm <= 0) return 0;  // not a grid (grid_init refuses it)
+  if (mode == CutMode::kStamp) return cutter_storage_words(min_of(cutter_reach_dex(p, g.pitch_nm), kCutterMaxReach));
+  // The columns sweep_columns finds for one point: axes within R + 1 nm of
+  // it, at most floor(2 (R + 1) / pitch) + 1 a side, and no more than the
+  // grid's; a top and a bottom each.
+  const uint64_t side = static_cast<uint64_t>(2 * (p.radius_nm + 1) / g.pitch_nm + 1);
+  const uint64_t w = min_of<uint64_t>(side, static_cast<uint64_t>(g.nx));
+  const uint64_t h = min_of<uint64_t>(side, static_cast<uint64_t>(g.ny));
+  return static_cast<size_t>((w * h * 2 * sizeof(H) + sizeof(int32_t) - 1) / sizeof(int32_t));
+}
+
+template size_t mill_words<uint8_t>(CutMode, const ToolProfile&, const DexelGrid<uint8_t>&);
+template size_t mill_words<uint16_t>(CutMode, const ToolProfile&, const DexelGrid<uint16_t>&);
+template size_t mill_words<uint32_t>(CutMode, const ToolProfile&, const DexelGrid<uint32_t>&);
 
 template class Mill<uint8_t>;
 template class Mill<uint16_t>;

@@ -50,11 +50,29 @@ class Mill : public CanonSink {
 
   void emit(const CanonRecord& r) override;
 
-  // Sweep mode defers the end cap of the last straight move until the next
-  // move shows how much of it is needed (core/cut/sweep.h, SweepChain). Call
-  // flush before reading the grid (a frame, the end); a program end (M2/M30)
-  // and a tool change flush by themselves. Cheap when nothing is pending.
+  // Makes the grid show everything cut so far: call it before reading the
+  // grid (a frame, a live view, the end). Sweep mode defers the end cap of
+  // the last straight move until the next move shows how much of it is
+  // needed (core/cut/sweep.h, SweepChain); flush cuts that cap whole.
+  //
+  // What is finally cut does not depend on when or how often flush is
+  // called (issue 25). The chain cuts only the wedge of the cap that the
+  // next move needs, with heights in that move's frame, and leaves out the
+  // columns where the moves' bands are lower in exact arithmetic; in
+  // integers the whole cap and the bands there round apart by an LSB at a
+  // few dexels. So flush cuts the cap over a saved copy of the dexels under
+  // it (mill_words of caller memory) and puts them back before the next
+  // record that cuts, which then goes on as if there had been no flush.
+  // With less memory than that it cuts the cap for good, as finish() does
+  // (the final grid may then differ by an LSB at a few dexels). Cheap when
+  // nothing is pending.
   void flush();
+
+  // Ends the chain for good, as a program end (M2/M30) and a tool change do
+  // by themselves: the pending cap is cut, a shown one again (its dexels
+  // marked changed once more, for readers of the grid's changes that skip
+  // what flush shows). For a program that ends without M2.
+  void finish();
 
   // First failure (a tool the library lacks, a tool too large for the
   // stamp memory); cutting goes on with the previous tool.
@@ -67,6 +85,9 @@ class Mill : public CanonSink {
 
  private:
   void cut_line(PointNm a, PointNm b);
+  // Puts back the dexels flush saved (and the counts), if it showed a cap.
+  void unshow();
+  void end_chain();
 
   DexelGrid<H>* grid_;
   CutMode mode_;
@@ -83,7 +104,19 @@ class Mill : public CanonSink {
   PointNm last_{0, 0, 0};
   bool chained_ = false;  // stamp: the next move starts where the last cut ended
   SweepChain chain_;      // sweep: the polyline so far
+  // flush: the box of dexels (exclusive bounds) saved in words_ before it
+  // cut the pending cap, and what else the cut may change.
+  bool shown_ = false;
+  GridRect shown_box_ = GridRect::none();
+  CutStats shown_stats_;
+  bool shown_bottoms_zero_ = false;
 };
+
+// Words of caller memory a Mill<H> on grid g wants for a tool: in stamp mode
+// the cutter's dexel set (core/tool/cutter.h), in sweep mode room to save the
+// dexels under the tool standing at one point (Mill::flush).
+template <class H>
+size_t mill_words(CutMode mode, const ToolProfile& p, const DexelGrid<H>& g);
 
 extern template class Mill<uint8_t>;
 extern template class Mill<uint16_t>;
