@@ -35,7 +35,7 @@ const char* safety_kind_name(SafetyKind k);
 struct SafetyEvent {
   SafetyKind kind = SafetyKind::kRapidIntoStock;
   uint32_t line = 0;
-  PointNm at{0, 0, 0};        // removals: the deepest cut column at its new top; below: the lowest tip
+  PointNm at{0, 0, 0};        // removals: the deepest cut column, at its top after the cut; below: the lowest tip
   uint64_t removed_lsb = 0;   // removals: sum of heights removed, LSB x dexels (x lsb x pitch^2 = volume)
   int64_t depth_nm = 0;       // below kinds: how far under the limit the tip went; removals: the deepest column's cut
   uint64_t columns = 0;       // removals: columns cut
