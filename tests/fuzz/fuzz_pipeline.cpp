@@ -15,7 +15,7 @@
 //                 words and G43 H then use it (a table that does not
 //                 parse: every T is the line-1 tool)
 //   the rest      the G-code program
-// tools/scripts/fuzz-seeds.sh makes inputs of this form from the project's
+// tools/scripts/fuzz_seeds.py makes inputs of this form from the project's
 // programs (tests/fuzz/seeds/pipeline).
 #include <cstddef>
 #include <cstdint>
