@@ -309,15 +309,14 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   if (o->overlay != RunOptions::Overlay::kNone && o->design.empty())
     return fail(kExitUsage, "--overlay needs --design (the part to draw with the cut)");
   // Asking to stop or fail on a collision without naming checks runs them all.
-  if (stop_any) o->stop_at_collision = true;
-  if ((o->stop_at_collision || o->fail_on_collision) && !o->check_rapid && !o->check_spindle && !o->check_below &&
-      !o->have_table)
-    o->check_rapid = o->check_spindle = o->check_below = true;
-  // --stop-at any: at a gouge when there is a design, at a safety finding.
+  // --stop-at any: at a safety finding, and at a gouge when there is a design.
   if (stop_any) {
     o->stop_at_collision = true;
     o->stop_at_gouge = o->stop_at_gouge || !o->design.empty();
   }
+  if ((o->stop_at_collision || o->fail_on_collision) && !o->check_rapid && !o->check_spindle && !o->check_below &&
+      !o->have_table)
+    o->check_rapid = o->check_spindle = o->check_below = true;
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())
