@@ -61,3 +61,44 @@ TEST(tool_spec_errors) {
   CHECK_EQ(parse("flat:2000", &t), ToolSpecError::kOutOfRange);
   CHECK(std::strlen(tool_spec_message(ToolSpecError::kFieldCount)) > 10);
 }
+
+// The parts above the flutes (issue 20): stick-out, shank, holder pieces,
+// and the non-centre-cutting flag, each read and written back.
+TEST(tool_spec_holder) {
+  Tool t;
+  CHECK_EQ(parse("flat:6,len=20,stick=35,holder=20x10,30-40x15", &t), ToolSpecError::kOk);
+  CHECK_EQ(t.flute_length_nm, 20 * kNmPerMm);
+  CHECK_EQ(t.stick_out_nm, 35 * kNmPerMm);
+  CHECK_EQ(t.length_nm, 35 * kNmPerMm);
+  CHECK_EQ(t.holder_segments, 2);
+  CHECK_EQ(t.holder[0].bottom_diameter_nm, 20 * kNmPerMm);
+  CHECK_EQ(t.holder[0].top_diameter_nm, 20 * kNmPerMm);
+  CHECK_EQ(t.holder[0].height_nm, 10 * kNmPerMm);
+  CHECK_EQ(t.holder[1].bottom_diameter_nm, 30 * kNmPerMm);
+  CHECK_EQ(t.holder[1].top_diameter_nm, 40 * kNmPerMm);
+  CHECK_EQ(t.holder[1].height_nm, 15 * kNmPerMm);
+  CHECK(t.centre_cutting);
+  CHECK(fmt(t) == "flat:6,len=20,stick=35,holder=20x10,30-40x15");
+  // Options in any order; holder pieces end at the next key.
+  CHECK_EQ(parse("ball:3,holder=12.5x8,shank=4,nocentre,len=9", &t), ToolSpecError::kOk);
+  CHECK_EQ(t.holder_segments, 1);
+  CHECK_EQ(t.shank_diameter_nm, 4 * kNmPerMm);
+  CHECK(!t.centre_cutting);
+  CHECK(fmt(t) == "ball:3,len=9,shank=4,holder=12.5x8,nocentre");
+  CHECK_EQ(parse("flat:6,nocenter", &t), ToolSpecError::kOk);
+  CHECK(!t.centre_cutting);
+  // Errors.
+  CHECK_EQ(parse("flat:6,holder=20", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,holder=20x", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,holder=x5", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,holder=20-x5", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,holder=1x1,2x2,3x3,4x4,5x5", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,holder=1x1,holder=2x2", &t), ToolSpecError::kBadHolder);
+  CHECK_EQ(parse("flat:6,20x10", &t), ToolSpecError::kBadOption);
+  CHECK_EQ(parse("flat:6,stick=", &t), ToolSpecError::kBadNumber);
+  CHECK_EQ(parse("flat:6,len=20,stick=10", &t), ToolSpecError::kOutOfRange);  // stick-out under the flutes
+  CHECK_EQ(parse("ball:6,stick=2", &t), ToolSpecError::kOutOfRange);         // under the ball
+  CHECK_EQ(parse("flat:6,shank=2000", &t), ToolSpecError::kOutOfRange);
+  CHECK_EQ(parse("drill:6,foo", &t), ToolSpecError::kUnknownShape);
+  CHECK(std::strlen(tool_spec_message(ToolSpecError::kBadHolder)) > 10);
+}

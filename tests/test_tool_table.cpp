@@ -106,3 +106,21 @@ TEST(tool_table_errors) {
     unlink(path);
   }
 }
+
+// The holder and the other safety fields ride in the comment's spec word.
+TEST(tool_table_holder_in_comment) {
+  ToolTableFile t;
+  CHECK_EQ(parse(&t, "T7 P7 D6 Z40 ;roughing flat:6,len=12,stick=30,holder=20x10,32-40x15,nocentre\n"),
+           ToolTableFile::Load::kOk);
+  Tool tool;
+  CHECK(t.tool(7, &tool));
+  CHECK_EQ(tool.flute_length_nm, 12 * kNmPerMm);
+  CHECK_EQ(tool.length_nm, 30 * kNmPerMm);
+  CHECK_EQ(tool.holder_segments, 2);
+  CHECK_EQ(tool.holder[1].top_diameter_nm, 40 * kNmPerMm);
+  CHECK(!tool.centre_cutting);
+  ToolTableFile bad;
+  CHECK_EQ(parse(&bad, "T7 P7 D6 Z40 ;flat:6,holder=20\n"), ToolTableFile::Load::kInputError);
+  CHECK(bad.message().find("tt.tbl:1:") == 0);
+  CHECK(bad.message().find("holder") != std::string::npos);
+}

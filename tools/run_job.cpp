@@ -101,7 +101,7 @@ class ScanSink final : public CanonSink {
     tools_seen.push_back(t);
     for (const ReportToolUse& u : used)
       if (u.number == r.tool) return;
-    char spec[64];
+    char spec[kToolSpecTextMax];
     tool_spec_format(t, spec, sizeof spec);
     used.push_back(ReportToolUse{r.tool, spec});
   }
@@ -172,7 +172,7 @@ class CutSink final : public CanonSink {
       Tool t;
       if (lib_->tool(r.tool, &t)) {
         profile_ = tool_profile(t);
-        char spec[64];
+        char spec[kToolSpecTextMax];
         tool_spec_format(t, spec, sizeof spec);
         status.tool_spec = spec;
         for (RenderOutput* o : w_->outputs) o->set_tool(t);
@@ -457,7 +457,7 @@ int run_job(RunOptions o) {
   // nothing: say so rather than show an untouched block.
   for (const Tool& t : scan.tools_seen)
     if (t.diameter_nm < plan.geo.pitch_nm) {
-      char spec[64];
+      char spec[kToolSpecTextMax];
       tool_spec_format(t, spec, sizeof spec);
       std::fprintf(stderr, "dexmill: warning: the tool %s is narrower than the grid's pitch (%s mm) and may cut nothing; "
                    "give a finer --pitch\n", spec, nm_to_mm_text(plan.geo.pitch_nm, 4).c_str());
@@ -498,7 +498,7 @@ int run_job(RunOptions o) {
   size_t words = 0;
   for (const Tool& t : scan.tools_seen) {
     const ToolProfile p = tool_profile(t);
-    char spec[64];
+    char spec[kToolSpecTextMax];
     tool_spec_format(t, spec, sizeof spec);
     if (o.mode == CutMode::kStamp) {
       const int32_t reach = cutter_reach_dex(p, grid.pitch_nm);

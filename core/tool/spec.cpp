@@ -63,7 +63,10 @@ const char* tool_spec_message(ToolSpecError e) {
     case ToolSpecError::kUnknownShape: return "unknown tool shape (use ball:D, flat:D, bull:D:R or vbit:D:ANGLE)";
     case ToolSpecError::kBadNumber: return "tool sizes must be positive numbers (mm, degrees)";
     case ToolSpecError::kFieldCount: return "wrong number of fields (ball:D, flat:D, bull:D:R, vbit:D:ANGLE)";
-    case ToolSpecError::kBadOption: return "only ',len=L' may follow the shape";
+    case ToolSpecError::kBadOption:
+      return "after the shape: len=L, stick=S, shank=D, holder=DxH[,DxH...] or nocentre";
+    case ToolSpecError::kBadHolder:
+      return "a holder is up to 4 pieces DxH (a cylinder) or D1-D2xH (a cone), mm";
     case ToolSpecError::kOutOfRange:
       return "tool out of range (diameter 0.001..1000 mm, corner radius <= D/2, angle below 180 degrees)";
   }
@@ -71,6 +74,7 @@ const char* tool_spec_message(ToolSpecError e) {
 }
 
 int64_t tool_default_length_nm(const Tool& t) {
+  if (t.stick_out_nm > 0) return t.stick_out_nm;
   Tool probe = t;
   probe.length_nm = 0;
   const int64_t full = profile_full_height_nm(tool_profile(probe));
@@ -79,19 +83,78 @@ int64_t tool_default_length_nm(const Tool& t) {
   return max_of(len, t.flute_length_nm);
 }
 
+namespace {
+
+// One holder piece: DxH or D1-D2xH.
+bool parse_holder_piece(const char* s, size_t n, HolderSegment* out) {
+  size_t x = n, dash = n;
+  for (size_t k = 0; k < n; ++k) {
+    if ((s[k] == 'x' || s[k] == 'X') && x == n) x = k;
+    if (s[k] == '-' && dash == n && k > 0) dash = k;
+  }
+  if (x == n) return false;
+  if (dash > x) dash = x;
+  HolderSegment h;
+  if (!parse_field(s, dash, kNmPerMm, &h.bottom_diameter_nm)) return false;
+  h.top_diameter_nm = h.bottom_diameter_nm;
+  if (dash < x && !parse_field(s + dash + 1, x - dash - 1, kNmPerMm, &h.top_diameter_nm)) return false;
+  if (!parse_field(s + x + 1, n - x - 1, kNmPerMm, &h.height_nm)) return false;
+  *out = h;
+  return true;
+}
+
+// The options after the shape, s[0, n) without its leading ','.
+ToolSpecError parse_options(const char* s, size_t n, Tool* t) {
+  bool in_holder = false;
+  size_t b = 0;
+  for (size_t k = 0; k <= n; ++k) {
+    if (k < n && s[k] != ',') continue;
+    const char* o = s + b;
+    const size_t on = k - b;
+    b = k + 1;
+    size_t eq = on;
+    for (size_t m = 0; m < on; ++m)
+      if (o[m] == '=') { eq = m; break; }
+    if (eq == on && (same_word(o, on, "nocentre") || same_word(o, on, "nocenter"))) {
+      t->centre_cutting = false;
+      in_holder = false;
+      continue;
+    }
+    if (eq == on && in_holder) {  // the holder's next piece
+      if (t->holder_segments >= kHolderSegmentsMax || !parse_holder_piece(o, on, &t->holder[t->holder_segments]))
+        return ToolSpecError::kBadHolder;
+      ++t->holder_segments;
+      continue;
+    }
+    in_holder = false;
+    if (eq == on) return ToolSpecError::kBadOption;
+    const char* v = o + eq + 1;
+    const size_t vn = on - eq - 1;
+    int64_t* field = nullptr;
+    if (same_word(o, eq, "len")) field = &t->flute_length_nm;
+    else if (same_word(o, eq, "stick")) field = &t->stick_out_nm;
+    else if (same_word(o, eq, "shank")) field = &t->shank_diameter_nm;
+    else if (same_word(o, eq, "holder")) {
+      if (t->holder_segments > 0 || !parse_holder_piece(v, vn, &t->holder[0])) return ToolSpecError::kBadHolder;
+      t->holder_segments = 1;
+      in_holder = true;
+      continue;
+    } else {
+      return ToolSpecError::kBadOption;
+    }
+    if (!parse_field(v, vn, kNmPerMm, field)) return ToolSpecError::kBadNumber;
+  }
+  return ToolSpecError::kOk;
+}
+
+}  // namespace
+
 ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
-  // Split off ",len=L".
   size_t comma = n;
   for (size_t k = 0; k < n; ++k) {
     if (s[k] == ',') { comma = k; break; }
   }
-  int64_t flute_nm = 0;
-  if (comma < n) {
-    const char* o = s + comma + 1;
-    const size_t on = n - comma - 1;
-    if (on < 4 || !same_word(o, 4, "len=")) return ToolSpecError::kBadOption;
-    if (!parse_field(o + 4, on - 4, kNmPerMm, &flute_nm)) return ToolSpecError::kBadNumber;
-  }
+  Tool t;
   // Fields separated by ':'.
   size_t start[4], len[4];
   int nf = 0;
@@ -105,7 +168,6 @@ ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
       b = k + 1;
     }
   }
-  Tool t;
   int want;
   const char* name = s + start[0];
   if (same_word(name, len[0], "ball")) { t.kind = ToolKind::kBall; want = 2; }
@@ -123,11 +185,15 @@ ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
     if (mdeg >= 180000) return ToolSpecError::kOutOfRange;
     t.tip_angle_mdeg = static_cast<int32_t>(mdeg);
   }
+  if (comma < n) {
+    const ToolSpecError e = parse_options(s + comma + 1, n - comma - 1, &t);
+    if (e != ToolSpecError::kOk) return e;
+  }
   // Range checks before the length rule, which evaluates the profile.
-  if (t.diameter_nm < kNmPerUm || t.diameter_nm > 1000 * kNmPerMm || flute_nm > 10000 * kNmPerMm)
+  if (t.diameter_nm < kNmPerUm || t.diameter_nm > 1000 * kNmPerMm || t.flute_length_nm > 10000 * kNmPerMm ||
+      t.stick_out_nm > 10000 * kNmPerMm)
     return ToolSpecError::kOutOfRange;
   if (t.kind == ToolKind::kBullNose && t.corner_radius_nm > t.diameter_nm / 2) return ToolSpecError::kOutOfRange;
-  t.flute_length_nm = flute_nm;
   t.length_nm = tool_default_length_nm(t);
   if (!ok(tool_check(t))) return ToolSpecError::kOutOfRange;
   *out = t;
@@ -155,6 +221,26 @@ size_t tool_spec_format(const Tool& t, char* buf, size_t n) {
     at = put_text(buf, at, n, ",len=");
     at = put_millis(buf, at, n, t.flute_length_nm);
   }
+  if (t.stick_out_nm) {
+    at = put_text(buf, at, n, ",stick=");
+    at = put_millis(buf, at, n, t.stick_out_nm);
+  }
+  if (t.shank_diameter_nm) {
+    at = put_text(buf, at, n, ",shank=");
+    at = put_millis(buf, at, n, t.shank_diameter_nm);
+  }
+  for (int k = 0; k < t.holder_segments; ++k) {
+    const HolderSegment& h = t.holder[k];
+    at = put_text(buf, at, n, k ? "," : ",holder=");
+    at = put_millis(buf, at, n, h.bottom_diameter_nm);
+    if (h.top_diameter_nm != h.bottom_diameter_nm) {
+      at = put_text(buf, at, n, "-");
+      at = put_millis(buf, at, n, h.top_diameter_nm);
+    }
+    at = put_text(buf, at, n, "x");
+    at = put_millis(buf, at, n, h.height_nm);
+  }
+  if (!t.centre_cutting) at = put_text(buf, at, n, ",nocentre");
   buf[at] = 0;
   return at;
 }

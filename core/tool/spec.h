@@ -1,16 +1,23 @@
 // Tool specifications as text, the `--tool` syntax of ../shared/CLI.md:
 //
-//   ball:D   flat:D   bull:D:R   vbit:D:ANGLE      each optionally ,len=L
+//   ball:D   flat:D   bull:D:R   vbit:D:ANGLE      then any of, after commas:
+//     len=L         flute length: above it the shank must not touch material
+//     stick=S       stick-out: the tip to the holder's face
+//     shank=D       the shank's diameter (default: the cutting diameter)
+//     holder=DxH[,DxH...]   the holder above the stick-out, bottom piece
+//                   first: a cylinder of diameter D and height H, or a cone
+//                   D1-D2xH from D1 at its bottom to D2 at its top; at most
+//                   kHolderSegmentsMax pieces
+//     nocentre      (or nocenter) the tool cannot plunge straight down
 //
-// D (diameter), R (corner radius) and L (flute length) in millimetres,
-// ANGLE (the V-bit's included angle) in degrees; decimals as G-code writes
-// them (read exactly, core/math/decimal.h). Parsing is integer-only and uses no
-// heap, so a controller's panel can take the same text.
+// Lengths in millimetres, ANGLE (the V-bit's included angle) in degrees;
+// decimals as G-code writes them (read exactly, core/math/decimal.h).
+// Parsing is integer-only and uses no heap, so a controller's panel can take
+// the same text.
 //
-// The tool's stick-out (Tool::length_nm, the top of the shaft above the tip)
-// is not part of the text: it is max(L, the profile's full height, 2 D,
-// 30 mm), long enough that the shaft, not the end of the model, meets any
-// material the holder would.
+// Without stick=, the stick-out (Tool::length_nm, the top of the shaft above
+// the tip) is max(L, the profile's full height, 2 D, 30 mm), long enough that
+// the shaft, not the end of the model, meets any material the holder would.
 #ifndef DEXMILL_CORE_TOOL_SPEC_H
 #define DEXMILL_CORE_TOOL_SPEC_H
 
@@ -26,8 +33,9 @@ enum class ToolSpecError : uint8_t {
   kUnknownShape = 1,   // not ball, flat, bull or vbit
   kBadNumber = 2,      // a field is not a decimal number
   kFieldCount = 3,     // too few or too many ':' fields for the shape
-  kBadOption = 4,      // something after ',' other than len=L
-  kOutOfRange = 5,     // fails tool_check (e.g. R > D/2, angle >= 180)
+  kBadOption = 4,      // something after ',' that is not an option above
+  kOutOfRange = 5,     // fails tool_check (e.g. R > D/2, angle >= 180, stick-out under the flutes)
+  kBadHolder = 6,      // a holder piece that is not DxH or D1-D2xH, or too many
 };
 
 // Message for an error; never null.
@@ -36,10 +44,15 @@ const char* tool_spec_message(ToolSpecError e);
 // Parses s[0, n). On success *out is a tool that passes tool_check.
 ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out);
 
-// The stick-out rule above, for a tool whose other fields are set.
+// The stick-out: stick_out_nm when given, else the rule above, for a tool
+// whose other fields are set.
 int64_t tool_default_length_nm(const Tool& t);
 
-// Writes the canonical text of a tool ("ball:6", "bull:10:1.5,len=25"),
+// Room for any tool's canonical text with its NUL.
+constexpr size_t kToolSpecTextMax = 192;
+
+// Writes the canonical text of a tool ("ball:6", "bull:10:1.5,len=25",
+// "flat:6,len=20,stick=35,holder=20x10,30-40x15"),
 // NUL-terminated and truncated to n - 1 bytes. Returns the length written.
 size_t tool_spec_format(const Tool& t, char* buf, size_t n);
 

@@ -24,6 +24,18 @@ Status tool_check(const Tool& t) {
       return Status::kBadArgument;
   }
   if (t.length_nm > 10 * kMetre || t.flute_length_nm < 0 || t.flute_length_nm > t.length_nm) return Status::kBadArgument;
+  if (t.shank_diameter_nm < 0 || t.shank_diameter_nm > kMetre || t.holder_segments < 0 ||
+      t.holder_segments > kHolderSegmentsMax)
+    return Status::kBadArgument;
+  int64_t holder_nm = 0;
+  for (int k = 0; k < t.holder_segments; ++k) {
+    const HolderSegment& h = t.holder[k];
+    if (h.bottom_diameter_nm <= 0 || h.bottom_diameter_nm > kMetre || h.top_diameter_nm <= 0 ||
+        h.top_diameter_nm > kMetre || h.height_nm <= 0 || h.height_nm > 10 * kMetre)
+      return Status::kBadArgument;
+    holder_nm += h.height_nm;
+  }
+  if (holder_nm > 10 * kMetre) return Status::kBadArgument;
   ToolProfile p = tool_profile(t);
   if (t.length_nm < profile_full_height_nm(p)) return Status::kBadArgument;
   return Status::kOk;

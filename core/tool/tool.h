@@ -23,17 +23,35 @@ enum class ToolKind : uint8_t {
   kVBit = 3,      // cone with included tip angle a: height(r) = r / tan(a/2)
 };
 
+// One piece of a tool holder (issue 20): a cylinder (equal diameters) or a
+// cone, stacked above the stick-out. Only its lower surface can meet the
+// stock from below, so a cone narrowing upwards acts as its bottom disc.
+struct HolderSegment {
+  int64_t bottom_diameter_nm = 0;
+  int64_t top_diameter_nm = 0;
+  int64_t height_nm = 0;
+};
+constexpr int kHolderSegmentsMax = 4;
+
 struct Tool {
   ToolKind kind = ToolKind::kFlat;
   int64_t diameter_nm = 0;        // cutting diameter, 2R
   int64_t corner_radius_nm = 0;   // kBullNose only: 0 < rc <= R
   int32_t tip_angle_mdeg = 0;     // kVBit only: included angle, (0, 180) degrees
   int64_t flute_length_nm = 0;    // cutting length above the tip (0: as long as the tool)
-  int64_t length_nm = 0;          // stick-out: tip to the top of the shaft
+  int64_t length_nm = 0;          // stick-out: tip to the top of the shaft (the holder's face)
+  // What the safety checks need (core/check/body.h); the cut ignores them.
+  int64_t stick_out_nm = 0;       // stick-out as given (0: the default rule, core/tool/spec.h)
+  int64_t shank_diameter_nm = 0;  // above the flutes (0: the cutting diameter)
+  bool centre_cutting = true;     // false: must not plunge straight down into material
+  int32_t holder_segments = 0;
+  HolderSegment holder[kHolderSegmentsMax] = {};
 };
 
 // Limits: 1 um <= diameter <= 1 m, length >= the profile's full height and
-// <= 10 m, corner radius and tip angle in the ranges above.
+// <= 10 m, corner radius and tip angle in the ranges above; shank and holder
+// diameters <= 1 m, holder heights > 0 and <= 10 m together, at most
+// kHolderSegmentsMax segments.
 Status tool_check(const Tool& t);
 
 // Precomputed profile of a checked tool: height above the tip of the tool's
