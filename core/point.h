@@ -12,6 +12,11 @@ struct PointNm {
   int64_t x_nm, y_nm, z_nm;
 };
 
+// An axis-aligned box in machine coordinates, nm.
+struct BoxNm {
+  PointNm lo, hi;
+};
+
 // Cutting code accepts any coordinates but saturates them to +-2^46 nm
 // (about 70 km) first, so no intermediate can overflow; the G-code reader
 // rejects anything beyond its own, much smaller, range before that.

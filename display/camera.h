@@ -38,11 +38,6 @@ Camera camera_preset(ViewPreset v);
 // "iso", "top", "front", "right"; false for any other name.
 bool view_preset_from_name(const char* name, ViewPreset* out);
 
-// An axis-aligned box in machine coordinates, nm.
-struct BoxNm {
-  PointNm lo, hi;
-};
-
 // Aims at the box's centre and sets the view height (orthographic) or the
 // distance (perspective, with a 40 deg field of view when none is set) so the
 // whole box fits the frame with a 5 % margin. Keeps the direction.
