@@ -85,6 +85,17 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
       mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
   }
+  // Fixtures after the stock: the stock draws as it does with none (nearest
+  // blocks first, its own ties unchanged), and where a fixture's face and
+  // the stock's meet at exactly the same depth the stock shows.
+  // Before the table, which lies behind them too where they stand on it
+  // beside the stock, so that its colour writes under them are skipped;
+  // before the cutter, which wins no tie against a fixture it touches.
+  if (r->nfixtures > 0) {
+    t->lut = r->lut_fixture;
+    for (int k = 0; k < r->nfixtures; ++k)
+      if (!rect_intersect(rect, r->fixture_mesh[k].rect).empty()) fixture_draw(t, r->view, r->fixture_mesh[k], r->fixture_shades);
+  }
   // The table lies wholly behind the stock (below its bottom, seen from
   // above), so drawing it after the stock changes no pixel and skips the
   // colour writes under the stock.
@@ -120,6 +131,11 @@ void prepare_view(Renderer<H>* r) {
   shade_ramp(r->fb.format, r->opt.workpiece, base, r->lut_work);
   shade_ramp(r->fb.format, r->opt.cutter, base, r->lut_cutter);
   shade_ramp(r->fb.format, r->opt.table_colour, base, r->lut_table);
+  if (r->nfixtures > 0) {
+    shade_ramp(r->fb.format, r->opt.fixture, base, r->lut_fixture);
+    fixture_light(r->light, &r->fixture_shades);
+    for (int k = 0; k < r->nfixtures; ++k) fixture_place(r->fixtures[k], v, r->fb.width, r->fb.height, &r->fixture_mesh[k]);
+  }
   if (const SurfaceColours* c = r->colours)
     for (int32_t k = 0; k < c->nclasses; ++k) shade_ramp(r->fb.format, c->colour[k], base, c->luts + static_cast<size_t>(k) * kShadeLevels);
   r->bottom_shade = shade_of_normal(r->light, UnitQ14{0, 0, -16384});
@@ -198,6 +214,9 @@ Status renderer_init(Renderer<H>* r, const DexelGrid<H>& g, const FrameView& fb,
   s.pitch_nm = g.pitch_nm;
   s.lsb_nm = g.lsb_nm;
   s.stock_top_nm = r->stock.hi.z_nm;
+  r->scene_bare = s.box;
+  r->fixtures = nullptr;
+  r->nfixtures = 0;
   r->target = RasterTarget{};
   r->target.color = static_cast<uint8_t*>(fb.pixels);
   r->target.color_stride = fb.stride_bytes;
@@ -238,9 +257,29 @@ void renderer_set_tool(Renderer<H>* r, const ToolProfile* p) {
 }
 
 template <class H>
+Status renderer_set_fixtures(Renderer<H>* r, const BoxNm* boxes, int n) {
+  if (n < 0 || (n > 0 && !boxes)) return Status::kBadArgument;
+  r->fixtures = n > 0 ? boxes : nullptr;
+  r->nfixtures = min_of(n, kFixturesMax);
+  // The scene's box, widened to hold every fixture drawn.
+  BoxNm& b = r->scene.box;
+  b = r->scene_bare;
+  for (int k = 0; k < r->nfixtures; ++k) {
+    const BoxNm& f = boxes[k];
+    b.lo = PointNm{min_of(b.lo.x_nm, min_of(f.lo.x_nm, f.hi.x_nm)), min_of(b.lo.y_nm, min_of(f.lo.y_nm, f.hi.y_nm)),
+                   min_of(b.lo.z_nm, min_of(f.lo.z_nm, f.hi.z_nm))};
+    b.hi = PointNm{max_of(b.hi.x_nm, max_of(f.lo.x_nm, f.hi.x_nm)), max_of(b.hi.y_nm, max_of(f.lo.y_nm, f.hi.y_nm)),
+                   max_of(b.hi.z_nm, max_of(f.lo.z_nm, f.hi.z_nm))};
+  }
+  r->need_full = true;
+  return n > kFixturesMax ? Status::kBufferTooSmall : Status::kOk;
+}
+
+template <class H>
 void renderer_share_frame(Renderer<H>* r, const Renderer<H>& from) {
   r->stock = from.stock;
   r->scene = from.scene;
+  r->scene_bare = from.scene.box;
   r->need_full = true;
 }
 
@@ -348,6 +387,7 @@ void renderer_invalidate(Renderer<H>* r, const ScreenRect& rect) {
   template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
   template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
+  template Status renderer_set_fixtures<H>(Renderer<H>*, const BoxNm*, int);                                 \
   template void renderer_share_frame<H>(Renderer<H>*, const Renderer<H>&);                                   \
   template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);

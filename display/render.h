@@ -5,7 +5,7 @@
 //
 // Set-up, all memory the caller's (nothing here allocates):
 //
-//   static Renderer<height_t> r;                       // about 18 KB of state
+//   static Renderer<height_t> r;                       // about 22 KB of state
 //   FrameView fb{pixels, 480, 272, 480 * 2, PixelFormat::kRgb565};
 //   RenderOptions opt;                                  // defaults are fine
 //   size_t n = renderer_scratch_bytes(grid, fb.width, fb.height, opt.zformat);
@@ -13,6 +13,7 @@
 //   renderer_init(&r, grid, fb, opt, scratch, n);
 //   renderer_set_tool(&r, &profile);                    // tool_profile(tool)
 //   renderer_set_camera(&r, renderer_fit(r, ViewPreset::kIso));
+//   renderer_set_fixtures(&r, clamps, 2);               // optional: boxes drawn every frame
 //
 // Each frame:
 //
@@ -42,6 +43,7 @@
 #include "core/tool/tool.h"
 #include "display/camera.h"
 #include "display/cutter_draw.h"
+#include "display/fixture_draw.h"
 #include "display/framebuffer.h"
 #include "display/raster.h"
 #include "display/redraw.h"
@@ -59,6 +61,10 @@ struct RenderOptions {
   Rgb workpiece{196, 204, 214};  // light aluminium
   Rgb cutter{215, 38, 30};       // red
   Rgb table_colour{92, 98, 108};
+  // Fixtures (renderer_set_fixtures): steel blue, apart from the workpiece's
+  // grey, the red cutter, the magenta safety marks and the amber partial-run
+  // mark.
+  Rgb fixture{64, 104, 176};
   // The light: with light_follows_camera, a direction in the camera's frame
   // (right, up, towards the eye), else in machine coordinates; any length.
   bool light_follows_camera = true;
@@ -90,7 +96,7 @@ struct Renderer {
   Camera cam;
   View view;
   Lighting light;
-  uint32_t lut_work[kShadeLevels], lut_cutter[kShadeLevels], lut_table[kShadeLevels];
+  uint32_t lut_work[kShadeLevels], lut_cutter[kShadeLevels], lut_table[kShadeLevels], lut_fixture[kShadeLevels];
   uint8_t* z = nullptr;
   ShadeCache shades;
   BlockInfo* blocks = nullptr;
@@ -101,6 +107,11 @@ struct Renderer {
   CutterPose cutter_pose;       // as last drawn
   ScreenRect cutter_rect{0, 0, 0, 0};  // where it was last drawn (empty: not drawn)
   ClipVertex table_quad[4];
+  BoxNm scene_bare;                // the scene's box before fixtures widened it
+  const BoxNm* fixtures = nullptr; // caller memory, nfixtures boxes
+  int nfixtures = 0;
+  FixtureShades fixture_shades;    // per face, for the view
+  FixtureMesh fixture_mesh[kFixturesMax];  // placed for the view
   bool table_visible = false;
   bool need_full = true;
   bool i_desc = false, j_desc = false;
@@ -136,9 +147,28 @@ void renderer_set_camera(Renderer<H>* r, const Camera& c);
 template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p);
 
+// Fixtures (issue 20: clamps, vices), drawn in opt.fixture as shaded boxes
+// in every frame, depth-tested against the stock, the table and the tool:
+// boxes[0, n) in machine coordinates (display/fixture_draw.h; null or
+// n = 0: none), caller memory that this call and every full frame read and
+// that must not change while it is set (call again after changing it).
+// The scene frame (camera.h SceneFrame, whose bounding sphere sets the
+// depth range and, in perspective, the near plane) widens to hold them, so
+// a fixture beside the stock is neither clamped in depth nor cut by the
+// near plane; fixtures far from the stock cost depth precision.
+// renderer_fit still frames the stock alone. The next frame is drawn
+// whole. kBadArgument (nothing changes) for n < 0 or null boxes with n > 0;
+// kBufferTooSmall for n > kFixturesMax: the first kFixturesMax are drawn,
+// the rest not.
+template <class H>
+[[nodiscard]] Status renderer_set_fixtures(Renderer<H>* r, const BoxNm* boxes, int n);
+
 // Takes the stock box and scene frame of `from` (a renderer of another grid
 // of the same geometry): the two then map machine points to the same
 // screen points and depths for any camera (display/overlay.h). Next frame whole.
+// The frame includes the room `from`'s fixtures took; set fixtures on
+// `from` before sharing, and none on r afterwards (they would widen r's
+// frame again).
 template <class H>
 void renderer_share_frame(Renderer<H>* r, const Renderer<H>& from);
 
@@ -168,6 +198,7 @@ void renderer_invalidate(Renderer<H>* r, const ScreenRect& rect);
   extern template void renderer_set_camera<H>(Renderer<H>*, const Camera&);                                        \
   extern template void renderer_set_tool<H>(Renderer<H>*, const ToolProfile*);                                     \
   extern template void renderer_set_colours<H>(Renderer<H>*, const SurfaceColours*);                                \
+  extern template Status renderer_set_fixtures<H>(Renderer<H>*, const BoxNm*, int);                                 \
   extern template void renderer_share_frame<H>(Renderer<H>*, const Renderer<H>&);                                   \
   extern template RenderResult render_full<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                     \
   extern template RenderResult render_update<H>(Renderer<H>*, DexelGrid<H>*, const CutterPose&);                   \
