@@ -5,7 +5,8 @@
 // (display's frame_hash: pixel values as little-endian bytes, any stride).
 // The same scene against a design part (a plane 6 mm below the top with a
 // pyramid on it) in the error view (paper §2.5, figure 10), with the
-// assessment's figures: E, sum of design tops, the band counts.
+// assessment's figures: E, sum of design tops, the band counts. And once,
+// the scene held in a vice with a clamp on its top (display/fixture_draw.h).
 #include <stdint.h>
 #include <string.h>
 
@@ -139,7 +140,17 @@ void backplot(Out& out, Renderer<uint16_t>& r, DexelGrid<uint16_t>& g, const Fra
   out.kx("turned", frame_hash(fb)).kv("rects", res.nrects).kv("bias", backplot_depth_bias(r.view)).end();
 }
 
-void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false) {
+// Issue 20's fixtures: vice jaws along both y sides of the stock (x -2 to
+// 26, y -4 to 0.5 and 19 to 23.5, z 2 to 16 mm; the material spans x and y
+// 0.5 to 23 mm) and a toe clamp on the top (x 20 to 26, y 7 to 13, z 20 to
+// 22.5 mm); the update's cutter stands in front of the far jaw.
+const BoxNm kFixtures[3] = {
+    {PointNm{-2 * kNmPerMm, -4 * kNmPerMm, 2 * kNmPerMm}, PointNm{26 * kNmPerMm, kNmPerMm / 2, 16 * kNmPerMm}},
+    {PointNm{-2 * kNmPerMm, 19 * kNmPerMm, 2 * kNmPerMm}, PointNm{26 * kNmPerMm, 23 * kNmPerMm + kNmPerMm / 2, 16 * kNmPerMm}},
+    {PointNm{20 * kNmPerMm, 7 * kNmPerMm, 20 * kNmPerMm}, PointNm{26 * kNmPerMm, 13 * kNmPerMm, 22 * kNmPerMm + kNmPerMm / 2}},
+};
+
+void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false, bool with_fixtures = false) {
   Arena& a = arena();
   a.reset();
   const size_t cells = static_cast<size_t>(kNx) * kNy;
@@ -184,15 +195,19 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
     }
     renderer_set_colours(&r, &ev.colours.colours);
   }
+  if (!ok(renderer_set_fixtures(&r, kFixtures, with_fixtures ? 3 : 0))) {
+    fail(out, "frame: fixtures");
+    return;
+  }
   render_full(&r, &g, CutterPose{true, PointNm{18 * mm, 14 * mm, 12 * mm}});
-  out.str(with_error_view ? "frame-error" : "frame").kv("view", static_cast<int64_t>(view));
+  out.str(with_error_view ? "frame-error" : (with_fixtures ? "frame-fixture" : "frame")).kv("view", static_cast<int64_t>(view));
   out.str(pf == PixelFormat::kRgb565 ? " rgb565" : " xrgb8888");
   out.str(zf == ZFormat::kZ16 ? " z16" : " z32").kx("full", frame_hash(fb));
   sweep_line(&g, st_tool, PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, &st, false);
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
   if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
-  else backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
+  else if (!with_fixtures) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
 }
 
 }  // namespace
@@ -204,6 +219,7 @@ void golden_frame(Out& out) {
   one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront);
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, true);
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, true);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, false, true);
 }
 
 }  // namespace golden
