@@ -179,6 +179,18 @@ std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitc
       return "cutting with the spindle stopped (no M3/M4) from here to line " + std::to_string(e.last_line) + ": " + removed;
     case SafetyKind::kBelowStock: return "the tool goes " + nm_to_mm_text(e.depth_nm, 3) + " mm below the stock's bottom at " + at;
     case SafetyKind::kIntoTable: return "the tool goes " + nm_to_mm_text(e.depth_nm, 3) + " mm into the table at " + at;
+    case SafetyKind::kShank:
+      return "the shank touches material: " + nm_to_mm_text(e.depth_nm, 3) + " mm above the flutes at " + at + ", " +
+             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
+    case SafetyKind::kHolder:
+      return "the holder touches material: " + nm_to_mm_text(e.depth_nm, 3) + " mm deep at " + at + ", " +
+             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
+    case SafetyKind::kFixture:
+      return "the tool enters a fixture: " + nm_to_mm_text(e.depth_nm, 3) + " mm deep at " + at + ", " +
+             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
+    case SafetyKind::kPlunge:
+      return "a tool that is not centre cutting plunges " + nm_to_mm_text(e.depth_nm, 3) +
+             " mm straight down into material at " + at;
   }
   return "";
 }
