@@ -59,7 +59,21 @@ uint64_t fnv(const std::string& s) {
 }
 uint64_t file_hash(const std::string& path) { return fnv(slurp(path)); }
 
+std::string write_tmp(const char* name, const char* text) {
+  const std::string path = tmp_dir() + "/" + name;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f) {
+    std::fputs(text, f);
+    std::fclose(f);
+  }
+  return path;
+}
+
 Result run(const std::string& args, const char* stdin_file, bool in_tmp, const std::string& prefix) {
+  return run_command("run " + args, stdin_file, in_tmp, prefix);
+}
+
+Result run_command(const std::string& args, const char* stdin_file, bool in_tmp, const std::string& prefix) {
   Result r;
   const char* bin = t::dexmill_binary();
   if (!bin) return r;
@@ -72,7 +86,7 @@ Result run(const std::string& args, const char* stdin_file, bool in_tmp, const s
   const std::string binary = realpath(bin, abs) ? abs : bin;
   const std::string err = tmp_dir() + "/stderr.txt", out = tmp_dir() + "/stdout.txt";
   const std::string cwd = in_tmp ? tmp_dir() : std::string(t::tests_dir()) + "/run";
-  std::string cmd = "cd '" + cwd + "' && " + prefix + " '" + binary + "' run " + a + " 2>'" + err + "' >'" + out + "'";
+  std::string cmd = "cd '" + cwd + "' && " + prefix + " '" + binary + "' " + a + " 2>'" + err + "' >'" + out + "'";
   char in_abs[4096];
   if (stdin_file && realpath(stdin_file, in_abs)) stdin_file = in_abs;
   cmd += stdin_file ? " <'" + std::string(stdin_file) + "'" : std::string(" </dev/null");

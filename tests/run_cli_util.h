@@ -23,6 +23,11 @@ uint64_t file_hash(const std::string& path);
 // ARGS stands for the temporary folder. `prefix` goes before the command
 // (e.g. a `setpriv` to run as another user).
 Result run(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false, const std::string& prefix = "");
+// Writes text to tmp_dir()/name; returns the path.
+std::string write_tmp(const char* name, const char* text);
+// The same for any subcommand: args begin with it ("check --simulate ...").
+Result run_command(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false,
+                   const std::string& prefix = "");
 // True when s holds part; else prints both and returns false.
 bool has(const std::string& s, const char* part);
 // The report without its wall-clock timing.

@@ -17,15 +17,7 @@ using namespace run_cli;
 
 const char* kStock = " --stock 0,0,-5,40,40,0 --tool flat:6 --pitch 0.2";
 
-std::string write_program(const char* name, const char* text) {
-  const std::string path = tmp_dir() + "/" + name;
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (f) {
-    std::fputs(text, f);
-    std::fclose(f);
-  }
-  return path;
-}
+std::string write_program(const char* name, const char* text) { return write_tmp(name, text); }
 
 // The report's collisions object.
 std::string collisions_of(const std::string& report) {

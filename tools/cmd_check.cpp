@@ -9,7 +9,11 @@
 
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
+#include <vector>
+
 #include "tools/cli.h"
+#include "tools/run_job.h"
+#include "tools/run_options.h"
 
 namespace dexmill {
 namespace cli {
@@ -24,12 +28,37 @@ void usage(std::FILE* f) {
                "an earlier one (a G1 after the bad line that set F) are counted, not\n"
                "shown. Exit 0 clean, 1 with errors.\n"
                "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
-               "--follow-ons: show those errors too, marked (they count towards N).\n");
+               "--follow-ons: show those errors too, marked (they count towards N).\n\n"
+               "       dexmill check --simulate FILE [run options]\n\n"
+               "Cuts the program as `run` does with the safety checks (all unless --check\n"
+               "names some) and, with --design, the gouge watch; writes no image. The findings\n"
+               "are warnings; exit 4 when there is one, 0 when clean, 1 with input errors.\n");
+}
+
+int check_simulate(int argc, char** argv) {
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i)
+    if (std::strcmp(argv[i], "--simulate")) args.push_back(argv[i]);
+  static char fail_on[] = "--fail-on-collision";
+  args.push_back(fail_on);
+  RunOptions o;
+  bool help = false;
+  const int code = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
+  if (code != kExitOk || help) return code;
+  if (o.file.empty()) return fail(kExitUsage, "check --simulate needs a program FILE (or - for stdin)");
+  if (!o.image.empty() || !o.frames_dir.empty() || !o.heightmap.empty() || !o.stl.empty() || o.window ||
+      !o.fbdev.empty() || !o.error_image.empty())
+    return fail(kExitUsage, "check --simulate writes no images or models (use dexmill run); --report is fine");
+  o.fail_on_gouge = !o.design.empty();
+  o.simulate_only = true;
+  return run_job(o);
 }
 
 }  // namespace
 
 int cmd_check(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (!std::strcmp(argv[i], "--simulate")) return check_simulate(argc, argv);
   const char* file = nullptr;
   bool inch = false;
   long max_errors = 100;

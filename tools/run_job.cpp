@@ -134,7 +134,10 @@ class CutSink final : public CanonSink {
   CutSink(Mill<height_t>* mill, DexelGrid<height_t>* g, Watchers* w, const ToolLibrary* lib, RunDesign* design,
           RunSafety* safety, const Tool& initial, const MotionTimeModel& model)
       : time(model), mill_(mill), g_(g), w_(w), lib_(lib), design_(design), safety_(safety),
-        profile_(tool_profile(initial)) {}
+        profile_(tool_profile(initial)) {
+    tool_body_build(initial, &body_);
+    if (safety_) safety_watch_set_tool(&safety_->watch, profile_);
+  }
   void emit(const CanonRecord& r) override {
     if (stop_line && r.line >= stop_line) {  // a partial run: nothing of the bad block or after it
       stopped_at_error = true;
@@ -156,7 +159,10 @@ class CutSink final : public CanonSink {
       // after M5 and for M3 with no S word, which a controller runs at its
       // default speed).
       const bool spindle_on = interp && interp->state().spindle_dir != 0;
-      const SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on, moved_};
+      SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on, moved_};
+      m.plunge = safety_is_plunge(r);
+      m.end = r.end;
+      m.body = &body_;
       check_safety(r, m, have_origin_ ? &safety_origin_ : nullptr);
       if (move) {
         last_move_ = m;
@@ -172,6 +178,8 @@ class CutSink final : public CanonSink {
       Tool t;
       if (lib_->tool(r.tool, &t)) {
         profile_ = tool_profile(t);
+        tool_body_build(t, &body_);
+        if (safety_) safety_watch_set_tool(&safety_->watch, profile_);
         char spec[kToolSpecTextMax];
         tool_spec_format(t, spec, sizeof spec);
         status.tool_spec = spec;
@@ -245,6 +253,7 @@ class CutSink final : public CanonSink {
   SafetyOrigin safety_origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
   uint32_t last_line_ = 0;
   ToolProfile profile_{};  // the tool in the spindle
+  ToolBody body_{};        // its shank and holder (core/check/body.h)
   GougeOrigin origin_{0, PointNm{0, 0, 0}, nullptr};
   bool have_origin_ = false;
 
@@ -490,8 +499,26 @@ int run_job(RunOptions o) {
 
   // -- the safety checks, on the grid as stocked
   RunSafety safety;
-  const bool safety_on = o.check_rapid || o.check_spindle || o.check_below || o.have_table;
-  if (safety_on) safety_start(&safety, grid, o.check_rapid, o.check_spindle, o.check_below, o.have_table, o.table_nm);
+  SafetyChoice checks;
+  checks.rapid = o.check_rapid;
+  checks.spindle = o.check_spindle;
+  checks.below = o.check_below;
+  checks.shank = o.check_shank;
+  checks.holder = o.check_holder;
+  checks.plunge = o.check_plunge;
+  for (const Tool& t : scan.tools_seen) {  // what a tool describes is checked
+    checks.shank = checks.shank || t.flute_length_nm > 0;
+    checks.holder = checks.holder || t.holder_segments > 0;
+    checks.plunge = checks.plunge || !t.centre_cutting;
+  }
+  checks.has_table = o.have_table;
+  checks.table_nm = o.table_nm;
+  checks.fixtures = o.fixtures;
+  const bool safety_on = checks.any();
+  if (safety_on) {
+    std::string why;
+    if (!safety_start(&safety, grid, checks, &why)) return fail(kExitUsage, "--fixture: %s", why.c_str());
+  }
 
   // -- the Mill's memory for the largest tool used: the stamp set, or the
   // dexels under a deferred end cap that a frame shows (core/cut/mill.h)
@@ -587,6 +614,9 @@ int run_job(RunOptions o) {
     for (RenderOutput* out : w.outputs) out->add_marks(&design.marks, Rgb{255, 32, 24});
   if (safety_on)  // the safety findings so far, in magenta
     for (RenderOutput* out : w.outputs) out->add_marks(&safety.marks, Rgb{255, 40, 255});
+  if (!o.fixtures.empty()) {  // in every frame, the error view's too
+    for (RenderOutput* out : w.outputs) out->set_fixtures(&o.fixtures);
+  }
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));
 
@@ -703,7 +733,13 @@ int run_job(RunOptions o) {
     return fail(kExitIo, "%s", live.error().c_str());
   const bool no_output = o.image.empty() && o.error_image.empty() && o.frames_dir.empty() && o.heightmap.empty() &&
                          o.stl.empty() && o.report.empty() && !is_live;
-  if (no_output) std::fputs(report_summary_text(rep).c_str(), stdout);
+  if (o.simulate_only) {
+    const uint64_t found = safety_on ? safety.watch.total : 0;
+    std::fprintf(stderr, "%s: %llu safety finding(s)%s\n", shown_name.c_str(), static_cast<unsigned long long>(found),
+                 o.design.empty() ? "" : (cut.gouged ? ", gouged the design" : ", no gouge"));
+  } else if (no_output) {
+    std::fputs(report_summary_text(rep).c_str(), stdout);
+  }
   if (stop_line) return kExitInput;
   if (cut.gouged && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
   if (cut.collided && (o.stop_at_collision || o.fail_on_collision)) return kExitCheck;

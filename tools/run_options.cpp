@@ -10,6 +10,7 @@
 #include "core/math/fixed.h"
 #include "core/motion/interp.h"
 #include "core/tool/spec.h"
+#include "display/fixture_draw.h"
 #include "display/framebuffer.h"
 #include "tools/cli.h"
 
@@ -113,9 +114,15 @@ void run_usage(std::FILE* f) {
                "  --stop-at gouge|collision|any  stop at the first gouge or safety finding (outputs\n"
                "                             show that state), exit 4\n"
                "  --fail-on-gouge            run to the end, exit 4 if the cut gouged the design\n"
-               "  --check rapid,spindle,below|all  safety checks: rapids that remove material,\n"
-               "                             cutting with the spindle stopped, the tool below the stock\n"
+               "  --check rapid,spindle,below,shank,holder,plunge|all  safety checks: rapids that\n"
+               "                             remove material, cutting with the spindle stopped, the\n"
+               "                             tool below the stock, the shank above the flutes (len=)\n"
+               "                             or the holder (holder=) touching material, a nocentre\n"
+               "                             tool plunging; a tool that gives len=, holder= or\n"
+               "                             nocentre has its check on without asking\n"
                "  --table Z                  the table's Z (mm): the tool going below it is a finding\n"
+               "  --fixture X0,Y0,Z0,X1,Y1,Z1  a box (mm) the tool and holder must never enter, drawn\n"
+               "                             in steel blue (repeatable, up to 8)\n"
                "  --fail-on-collision        run to the end, exit 4 if a safety check found something\n"
                "  --path-overlay             the toolpath over the frames: rapids dashed yellow, feeds\n"
                "                             blue, pale where still to come (live: the p key)\n"
@@ -161,7 +168,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -285,10 +292,23 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
         if (word == "rapid") o->check_rapid = true;
         else if (word == "spindle") o->check_spindle = true;
         else if (word == "below") o->check_below = true;
-        else if (word == "all") o->check_rapid = o->check_spindle = o->check_below = true;
-        else return fail(kExitUsage, "--check takes rapid, spindle, below or all (comma-separated), not '%s'", word.c_str());
+        else if (word == "shank") o->check_shank = true;
+        else if (word == "holder") o->check_holder = true;
+        else if (word == "plunge") o->check_plunge = true;
+        else if (word == "all")
+          o->check_rapid = o->check_spindle = o->check_below = o->check_shank = o->check_holder = o->check_plunge = true;
+        else
+          return fail(kExitUsage, "--check takes rapid, spindle, below, shank, holder, plunge or all (comma-separated), not '%s'",
+                      word.c_str());
         p = end ? end + 1 : p + word.size();
       }
+    } else if (name == "--fixture") {
+      int64_t b[6];
+      if (!parse_stock(v, b))
+        return fail(kExitUsage, "--fixture needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1, not '%s'", v);
+      if (o->fixtures.size() >= static_cast<size_t>(kFixturesMax))
+        return fail(kExitUsage, "at most %d --fixture boxes", kFixturesMax);
+      o->fixtures.push_back(BoxNm{PointNm{b[0], b[1], b[2]}, PointNm{b[3], b[4], b[5]}});
     } else if (name == "--table") {
       if (!parse_scaled(v, kNmPerMm, &o->table_nm)) return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);
       o->have_table = true;
@@ -315,8 +335,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     o->stop_at_gouge = o->stop_at_gouge || !o->design.empty();
   }
   if ((o->stop_at_collision || o->fail_on_collision) && !o->check_rapid && !o->check_spindle && !o->check_below &&
-      !o->have_table)
-    o->check_rapid = o->check_spindle = o->check_below = true;
+      !o->have_table && !o->check_shank && !o->check_holder && !o->check_plunge && o->fixtures.empty())
+    o->check_rapid = o->check_spindle = o->check_below = o->check_shank = o->check_holder = o->check_plunge = true;
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())

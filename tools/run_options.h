@@ -43,6 +43,7 @@ struct RunOptions {
   bool window = false;
   std::string fbdev;
   bool quiet = false;
+  bool simulate_only = false;    // `check --simulate`: no summary, a verdict line on stderr
   // Live outputs (--window, --fbdev).
   bool exit_when_done = false;   // close the window after the program (fbdev always does)
   int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
@@ -67,6 +68,10 @@ struct RunOptions {
   // Safety checks (core/check/safety.h): --check rapid,spindle,below|all,
   // and --table Z (mm) for the table.
   bool check_rapid = false, check_spindle = false, check_below = false;
+  // --check shank,holder,plunge; also on for a tool that gives a flute
+  // length, a holder or nocentre (what the user describes is checked).
+  bool check_shank = false, check_holder = false, check_plunge = false;
+  std::vector<BoxNm> fixtures;  // --fixture X0,Y0,Z0,X1,Y1,Z1 (repeatable), nm
   bool have_table = false;
   int64_t table_nm = 0;
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any

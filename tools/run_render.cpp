@@ -33,7 +33,13 @@ bool RenderOutput::resize(const DexelGrid<height_t>& g, const FrameView& fb, std
   }
   if (have_tool_) renderer_set_tool(r_.get(), &profile_);
   renderer_set_colours(r_.get(), colours_);
+  if (fixtures_) set_fixtures(fixtures_);
   return true;
+}
+
+void RenderOutput::set_fixtures(const std::vector<BoxNm>* f) {
+  fixtures_ = f;
+  (void)renderer_set_fixtures(r_.get(), f->data(), static_cast<int>(f->size()));  // at most kFixturesMax: run_options
 }
 
 void RenderOutput::set_colours(const SurfaceColours* c) {

@@ -55,6 +55,8 @@ class RenderOutput {
   // Points marked over every frame in `colour` (the gouges found so far in
   // red, the block a partial run stopped at in amber); kept by the caller.
   void add_marks(const std::vector<PointNm>* m, Rgb colour) { marks_.push_back(Marks{m, colour}); }
+  // Boxes drawn in every frame (--fixture; caller memory, kept by pointer).
+  void set_fixtures(const std::vector<BoxNm>* f);
 
   // The toolpath drawn over every frame (display/backplot.h): path[0, *done)
   // as done, the rest as to come; null: none. Both are the caller's.
@@ -96,6 +98,7 @@ class RenderOutput {
   const uint32_t* path_done_ = nullptr;
   uint32_t path_drawn_done_ = 0;  // *path_done_ when the path was last drawn
   bool path_on_ = true;
+  const std::vector<BoxNm>* fixtures_ = nullptr;
 
   void draw_path(RenderResult* res);
 };

@@ -5,16 +5,41 @@
 namespace dexmill {
 namespace cli {
 
-void safety_start(RunSafety* s, const DexelGrid<height_t>& g, bool rapid, bool spindle, bool below, bool has_table,
-                  int64_t table_nm) {
+bool safety_start(RunSafety* s, const DexelGrid<height_t>& g, const SafetyChoice& c, std::string* why) {
   s->shadow.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), 0);
-  safety_watch_init(&s->watch, g, s->shadow.data(), s->shadow.size());
-  s->watch.check_rapid = rapid;
-  s->watch.check_spindle = spindle;
-  s->watch.check_below = below;
-  s->watch.bottom_nm = g.z0_nm;
-  s->watch.check_table = has_table;
-  s->watch.table_nm = table_nm;
+  s->tiles.assign(safety_tile_words(g), 0);
+  safety_watch_init(&s->watch, g, s->shadow.data(), s->shadow.size(), s->tiles.data(), s->tiles.size());
+  SafetyWatch& w = s->watch;
+  w.check_rapid = c.rapid;
+  w.check_spindle = c.spindle;
+  w.check_below = c.below;
+  w.check_shank = c.shank;
+  w.check_holder = c.holder;
+  w.check_plunge = c.plunge;
+  w.bottom_nm = g.z0_nm;
+  w.check_table = c.has_table;
+  w.table_nm = c.table_nm;
+  s->boxes = c.fixtures;
+  if (s->boxes.empty()) return true;
+  DexelGrid<uint32_t>& f = s->fixture_grid;
+  if (!fixture_grid_size(g, s->boxes.data(), static_cast<int>(s->boxes.size()), &f)) {
+    *why = "the fixtures hold no dexel column of the stock's lattice, or span more than 65535 of them";
+    return false;
+  }
+  const size_t n = static_cast<size_t>(f.nx) * static_cast<size_t>(f.ny);
+  if (n > (size_t{1} << 26)) {
+    *why = "the fixtures span more than 64 M dexel columns at this pitch; use a coarser --pitch";
+    return false;
+  }
+  s->fixture_top.assign(n, 0);
+  s->fixture_bottom.assign(n, 0);
+  f.top = s->fixture_top.data();
+  f.bottom = s->fixture_bottom.data();
+  fixture_grid_fill(&f, s->boxes.data(), static_cast<int>(s->boxes.size()));
+  w.fixtures = &f;
+  w.fixture_boxes = s->boxes.data();
+  w.nfixture_boxes = static_cast<int>(s->boxes.size());
+  return true;
 }
 
 void safety_mark_new(RunSafety* s) {

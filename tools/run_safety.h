@@ -18,14 +18,28 @@ namespace cli {
 struct RunSafety {
   SafetyWatch watch;
   std::vector<uint32_t> shadow;
+  std::vector<uint32_t> tiles;     // the holder check's bounds on tops
+  std::vector<BoxNm> boxes;        // --fixture
+  DexelGrid<uint32_t> fixture_grid;
+  std::vector<uint32_t> fixture_top, fixture_bottom;
   std::vector<PointNm> marks;  // where the kept events are, for the frames
   size_t marked = 0;           // events already in marks
 };
 
+// Which checks, and their limits.
+struct SafetyChoice {
+  bool rapid = false, spindle = false, below = false, shank = false, holder = false, plunge = false;
+  bool has_table = false;
+  int64_t table_nm = 0;
+  std::vector<BoxNm> fixtures;
+  bool any() const { return rapid || spindle || below || shank || holder || plunge || has_table || !fixtures.empty(); }
+};
+
 // Starts the watch on the grid as stocked: the stock's bottom is the grid's
-// z0, the table (when has_table) at table_nm.
-void safety_start(RunSafety* s, const DexelGrid<height_t>& g, bool rapid, bool spindle, bool below, bool has_table,
-                  int64_t table_nm);
+// z0, the table (when has_table) at table_nm, the fixtures in a grid of
+// their own on the stock's lattice. False (with *why) when the fixtures
+// cannot be gridded (too many columns or too tall for the LSB).
+bool safety_start(RunSafety* s, const DexelGrid<height_t>& g, const SafetyChoice& c, std::string* why);
 
 // Marks the events found since the last call in the frames.
 void safety_mark_new(RunSafety* s);
