@@ -226,18 +226,34 @@ void run_assess(const char* name) {
 
 // safety-*: what `dexmill run --check all` costs: each move a feed with the
 // spindle on (every removal is compared with the shadow, none is a
-// finding), below-stock checks on every move.
+// finding), below-stock checks on every move. safety-body-1k adds the
+// shank, holder and plunge checks of a tool whose flutes (20 mm) and holder
+// (a 40 mm cylinder at a 30 mm stick-out) clear the stock, as a sound
+// program's do; safety-deep-1k gives it 3 mm flutes and a 6 mm stick-out,
+// so that the shank and holder meet material on most moves (the work a
+// finding costs, not the usual case).
 void run_safety(const char* name) {
   const char* workload = !std::strcmp(name, "safety-w3") ? "paper-w3" : "scale-1k";
+  const bool body = !std::strcmp(name, "safety-body-1k") || !std::strcmp(name, "safety-deep-1k");
+  const bool deep = !std::strcmp(name, "safety-deep-1k");
   Job j;
   if (!setup(name, workload, &j)) return;
   std::vector<uint32_t> shadow(static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny);
+  std::vector<uint32_t> tiles(safety_tile_words(j.g));
   SafetyWatch watch;
+  Tool t = j.w.tool;
+  if (deep) t.flute_length_nm = 3 * kNmPerMm;
+  t.length_nm = deep ? 6 * kNmPerMm : 30 * kNmPerMm;
+  t.holder_segments = 1;
+  t.holder[0] = HolderSegment{40 * kNmPerMm, 40 * kNmPerMm, 20 * kNmPerMm};
+  ToolBody tb;
+  tool_body_build(t, &tb);
   watch_ratio(
       name, workload, &j,
       [&] {
-        (void)safety_watch_init(&watch, j.g, shadow.data(), shadow.size());
+        (void)safety_watch_init(&watch, j.g, shadow.data(), shadow.size(), tiles.data(), tiles.size());
         watch.bottom_nm = j.g.z0_nm;
+        watch.check_shank = watch.check_holder = watch.check_plunge = body;
       },
       [&](size_t k, GridRect changed) {
         const std::vector<PointNm>& path = j.w.path;
@@ -246,7 +262,11 @@ void run_safety(const char* name) {
         r.line = static_cast<uint32_t>(k);
         r.start = path[k < path.size() ? k - 1 : path.size() - 1];
         r.end = path[k < path.size() ? k : path.size() - 1];
-        safety_watch_record(&watch, j.g, changed, r, SafetyMove{r.line, false, true}, nullptr);
+        SafetyMove m{r.line, false, true};
+        m.plunge = safety_is_plunge(r);
+        m.end = r.end;
+        m.body = body ? &tb : nullptr;
+        safety_watch_record(&watch, j.g, changed, r, m, nullptr);
       },
       &watch.total);
 }
@@ -258,6 +278,8 @@ BENCH(assess_w3, "assess-w3", dexmill::run_assess);
 BENCH(assess_1k, "assess-1k", dexmill::run_assess);
 BENCH(safety_w3, "safety-w3", dexmill::run_safety);
 BENCH(safety_1k, "safety-1k", dexmill::run_safety);
+BENCH(safety_body_1k, "safety-body-1k", dexmill::run_safety);
+BENCH(safety_deep_1k, "safety-deep-1k", dexmill::run_safety);
 BENCH(paper_w1, "paper-w1", dexmill::run);
 BENCH(paper_w2, "paper-w2", dexmill::run);
 BENCH(paper_w3, "paper-w3", dexmill::run);
