@@ -28,9 +28,16 @@ namespace {
 SafetyEvent* event_for(SafetyWatch* w, size_t first_of_call, uint32_t line, SafetyKind kind, bool* added) {
   for (size_t k = first_of_call > 0 ? first_of_call - 1 : 0; k < w->nevents; ++k)
     if (w->events[k].line == line && w->events[k].kind == kind) return &w->events[k];
+  // Past the list: counted once a (line, kind), as a kept one is (a line's
+  // columns come in one record, or two with its end cap).
+  const size_t ki = static_cast<size_t>(kind);
+  if (w->nevents >= kSafetyEventsMax && w->unkept_line[ki] == line) return nullptr;
   ++w->total;
   *added = true;
-  if (w->nevents >= kSafetyEventsMax) return nullptr;
+  if (w->nevents >= kSafetyEventsMax) {
+    w->unkept_line[ki] = line;
+    return nullptr;
+  }
   SafetyEvent* e = &w->events[w->nevents++];
   *e = SafetyEvent{};
   e->line = line;
@@ -78,7 +85,7 @@ void add_overlap(SafetyEvent* e, int64_t depth_nm, int64_t lsb_nm, PointNm at) {
 // Pieces of a record the contact checks take at once: their per-column
 // minimum is exact; a record with more (a long helix) is taken in batches,
 // and a column near two batches counts in both.
-constexpr int kBatchPieces = 64;
+constexpr int kBatchPieces = 16;  // about 2 KB of stack (a panel's is small)
 struct Batch {
   int n = 0;
   BodyPiece piece[kBatchPieces];
@@ -337,6 +344,8 @@ Status safety_watch_init(SafetyWatch* w, const DexelGrid<H>& g, uint32_t* shadow
   w->rapid_removed_lsb = 0;
   w->spindle_stretch = kSafetyEventsMax;
   w->spindle_stretch_open = false;
+  w->spindle_on_line = 0;
+  for (uint32_t& l : w->unkept_line) l = 0;
   return Status::kOk;
 }
 
@@ -347,7 +356,7 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
   const uint64_t total_before = w->total;
   bool added = false;
   const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
-  if (move && m.spindle_on) w->spindle_stretch_open = false;  // M3/M4 ended the stretch
+  if (move && m.spindle_on && w->spindle_stretch_open && !w->spindle_on_line) w->spindle_on_line = r.line;
   if (move && w->check_below) check_below(w, first, r, SafetyKind::kBelowStock, w->bottom_nm, &added);
   if (move && w->check_table) check_below(w, first, r, SafetyKind::kIntoTable, w->table_nm, &added);
   // Straight up is the way out of whatever the move before went into.
@@ -440,8 +449,9 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
         e = event_for(w, first, by.line, SafetyKind::kRapidIntoStock, &added);
       } else if (!by.spindle_on && w->check_spindle) {
         // One event a stretch: the open one, else a new one on this line.
-        if (!w->spindle_stretch_open) {
+        if (!w->spindle_stretch_open || (w->spindle_on_line && by.line >= w->spindle_on_line)) {  // M3/M4 ended the last
           w->spindle_stretch_open = true;
+          w->spindle_on_line = 0;
           ++w->total;
           added = true;
           w->spindle_stretch = w->nevents;

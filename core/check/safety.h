@@ -119,6 +119,12 @@ struct SafetyWatch {
   uint64_t rapid_removed_lsb = 0;  // all rapids removed
   size_t spindle_stretch = kSafetyEventsMax;  // the open spindle-stopped event (kSafetyEventsMax: none)
   bool spindle_stretch_open = false;          // a stretch is open (its event may not be kept)
+  // The first line that moved with the spindle on since the open stretch
+  // began (0: none yet): the stretch holds the stopped moves before it. A
+  // stopped move's end cap is cut by the next record, which may be that
+  // line's: the cap is still the stretch's.
+  uint32_t spindle_on_line = 0;
+  uint32_t unkept_line[kSafetyKinds] = {};   // per kind, the last line counted past the list
 };
 
 // Starts a watch on g: the shadow takes g's tops (shadow_words >= nx * ny,

@@ -12,6 +12,7 @@ const Section kSections[] = {
     {"mill", golden_mill},
     {"path", golden_path},
     {"frame", golden_frame},
+    {"safety", golden_safety},
     {"regress", golden_regress},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
