@@ -169,6 +169,13 @@ std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_
   return fixed_text(quotient, 3, false);
 }
 
+namespace {
+// A stretch of contact that goes on past its line, no deeper.
+std::string on_to(const SafetyEvent& e) {
+  return e.last_line > e.line ? ", and on (no deeper) to line " + std::to_string(e.last_line) : std::string();
+}
+}  // namespace
+
 std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitch_nm) {
   const std::string at = "X" + nm_to_mm_text(e.at.x_nm, 3) + " Y" + nm_to_mm_text(e.at.y_nm, 3) + " Z" + nm_to_mm_text(e.at.z_nm, 3);
   const std::string removed = volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 removed, " +
@@ -181,10 +188,10 @@ std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitc
     case SafetyKind::kIntoTable: return "the tool goes " + nm_to_mm_text(e.depth_nm, 3) + " mm into the table at " + at;
     case SafetyKind::kShank:
       return "the shank touches material: " + nm_to_mm_text(e.depth_nm, 3) + " mm above the flutes at " + at + ", " +
-             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
+             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all" + on_to(e);
     case SafetyKind::kHolder:
       return "the holder touches material: " + nm_to_mm_text(e.depth_nm, 3) + " mm deep at " + at + ", " +
-             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
+             volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all" + on_to(e);
     case SafetyKind::kFixture:
       return "the tool enters a fixture: " + nm_to_mm_text(e.depth_nm, 3) + " mm deep at " + at + ", " +
              volume_mm3_text(e.removed_lsb, lsb_nm, pitch_nm) + " mm3 in all";
@@ -206,6 +213,7 @@ std::string collisions_text(const RunReport& r) {
          ", \"line\": " + u64(e.line) + ", \"x_mm\": " + nm_to_mm_text(e.at.x_nm, 4) + ", \"y_mm\": " +
          nm_to_mm_text(e.at.y_nm, 4) + ", \"z_mm\": " + nm_to_mm_text(e.at.z_nm, 4) + ", \"depth_mm\": " +
          nm_to_mm_text(e.depth_nm, 4) + ", \"volume_mm3\": " + volume_mm3_text(e.removed_lsb, r.lsb_nm, r.pitch_nm) +
+         ", \"last_line\": " + u64(max_of(e.last_line, e.line)) +
          ", \"message\": " + quoted(safety_event_text(e, r.lsb_nm, r.pitch_nm)) + "}";
   }
   return o + (r.collisions.empty() ? "]},\n" : "\n    ]},\n");

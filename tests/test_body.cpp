@@ -90,10 +90,15 @@ TEST(body_ring_lowest_matches_double_oracle) {
     const int64_t mm = kNmPerMm;
     PointNm a{rng.range(-50 * mm, 50 * mm), rng.range(-50 * mm, 50 * mm), rng.range(-30 * mm, 30 * mm)};
     PointNm b = a;
-    switch (rng.range(0, 4)) {
+    switch (rng.range(0, 5)) {
       case 0: break;  // a point
       case 1: b.z_nm += rng.range(-20 * mm, 20 * mm); break;  // a plunge
       case 2: b.x_nm += rng.range(-60 * mm, 60 * mm); b.y_nm += rng.range(-60 * mm, 60 * mm); break;  // level
+      case 3:  // short, as most moves are: the ring covers much of the reach all along
+        b.x_nm += rng.range(-mm, mm);
+        b.y_nm += rng.range(-mm, mm);
+        b.z_nm += rng.range(-mm, mm);
+        break;
       default:
         b.x_nm += rng.range(-60 * mm, 60 * mm);
         b.y_nm += rng.range(-60 * mm, 60 * mm);

@@ -206,6 +206,32 @@ int64_t cone_minimizer(const BodyPiece& p, const Local& c, int64_t dh, int64_t d
 }  // namespace
 
 int64_t ring_lowest_nm(const BodyRing& g, const BodyPiece& p, int64_t x, int64_t y) {
+  // Covered all along: the disc of radius r0 about the column holds both
+  // ends, so the whole piece (it is convex), and the flat part is lowest at
+  // the lower end (a cone only rises from it). Most of a wide holder's
+  // columns over a short move; no root, no wide division.
+  if (g.r_in_nm == 0) {
+    const int64_t r0 = g.r0_nm;
+    const int64_t ax = x - p.a.x_nm, ay = y - p.a.y_nm, bx = x - p.b.x_nm, by = y - p.b.y_nm;
+    if (ax >= -r0 && ax <= r0 && ay >= -r0 && ay <= r0 && bx >= -r0 && bx <= r0 && by >= -r0 && by <= r0 &&
+        ax * ax + ay * ay <= r0 * r0 && bx * bx + by * by <= r0 * r0)
+      return min_of(p.a.z_nm, p.b.z_nm) + g.h0_nm;
+  }
+  // Out of reach (farther than r1 from the piece): no division either.
+  {
+    const int64_t r1 = g.r1_nm;
+    const int64_t ax = x - p.a.x_nm, ay = y - p.a.y_nm, bx = x - p.b.x_nm, by = y - p.b.y_nm;
+    const auto within = [r1](int64_t u, int64_t v) { return u >= -r1 && u <= r1 && v >= -r1 && v <= r1 && u * u + v * v <= r1 * r1; };
+    if (!within(ax, ay) && !within(bx, by)) {
+      if (p.len_q16 == 0) return kBodyNever;
+      const int64_t dot = ax * p.dx + ay * p.dy;
+      const uint64_t len2 = static_cast<uint64_t>(p.dx * p.dx) + static_cast<uint64_t>(p.dy * p.dy);
+      if (dot <= 0 || static_cast<uint64_t>(dot) >= len2) return kBodyNever;  // past an end, and not near it
+      const int64_t cross = ax * p.dy - ay * p.dx;
+      if (u128_less(mul_wide_u64(static_cast<uint64_t>(r1) * static_cast<uint64_t>(r1), len2), sq_u128(cross)))
+        return kBodyNever;
+    }
+  }
   const Local c = local_of(p, x, y);
   int64_t best = kBodyNever;
   if (p.len_q16 == 0) {  // a plunge: the distance stays, z runs from a to b

@@ -143,12 +143,13 @@ int64_t body_lowest(const ToolBody& body, const Batch& b, int64_t x, int64_t y, 
 // shank or the holder (or, for the fixture grid, of kind `as`). Tiles
 // (tile_max, or null) skip what lies wholly under the body.
 template <class H>
-void body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t* tile_max, const CanonRecord& r,
+bool body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t* tile_max, const CanonRecord& r,
                    const SafetyMove& m, bool fixture, bool* added) {
+  bool found = false;
   const ToolBody& body = *m.body;
   // Wholly over the highest top (a sound program's usual case): nothing to
   // do, before any piece is made.
-  if (div_floor(lowest_tip(r).z_nm + body.lowest_nm - g.z0_nm, g.lsb_nm) >= g.top_bound_lsb) return;
+  if (div_floor(lowest_tip(r).z_nm + body.lowest_nm - g.z0_nm, g.lsb_nm) >= g.top_bound_lsb) return false;
   BodyPieces pieces;
   pieces.init(r);
   Batch b;
@@ -187,6 +188,7 @@ void body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t
                                             : part == BodyPart::kShank ? SafetyKind::kShank : SafetyKind::kHolder;
             if ((kind == SafetyKind::kShank && !w->check_shank) || (kind == SafetyKind::kHolder && !w->check_holder))
               continue;
+            found = true;
             SafetyEvent* e = event_for(w, first, r.line, kind, added);
             if (e) add_overlap(e, depth, g.lsb_nm, PointNm{x, y, low});
           }
@@ -194,6 +196,59 @@ void body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t
       }
     }
   }
+  return found;
+}
+
+// True when the body over record r, its tip no lower than low_nm, is over
+// the bound of every tile in its reach: it touches nothing.
+template <class H>
+bool body_clear(const SafetyWatch* w, const DexelGrid<H>& g, const CanonRecord& r, const ToolBody& body, int64_t low_nm) {
+  const int64_t floor_lsb = div_floor(low_nm + body.lowest_nm - g.z0_nm, g.lsb_nm);
+  if (floor_lsb >= g.top_bound_lsb) return true;
+  if (!w->tile_max) return false;
+  BodyPieces pieces;
+  pieces.init(r);
+  Batch b;
+  while (fill_batch(&pieces, body.reach_nm, &b)) {
+    const GridRect rect = columns_in(g, b.bx0, b.bx1, b.by0, b.by1);
+    if (rect.empty()) continue;
+    for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj)
+      for (int32_t ti = rect.i0 >> kSafetyTileBits; ti <= (rect.i1 - 1) >> kSafetyTileBits; ++ti)
+        if (static_cast<int64_t>(w->tile_max[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) +
+                                             static_cast<size_t>(ti)]) > floor_lsb)
+          return false;
+  }
+  return true;
+}
+
+// Shank and holder contacts come in stretches: a tool too short for a deep
+// cut rubs on move after move. A stretch is looked at in full on its first
+// move and wherever the tool goes deeper than it has in the stretch (each
+// such line is a finding, the depth grows there); the moves between
+// lengthen the last finding (its last_line). It ends at a move whose body
+// is clear of every top in reach (the tile bounds, which only a look
+// tightens), or one that goes deeper and touches nothing. So a program that
+// rubs all along costs a full look at each new depth, not one a move.
+template <class H>
+void body_stretch(SafetyWatch* w, size_t first, const DexelGrid<H>& g, const CanonRecord& r, const SafetyMove& m,
+                  bool* added) {
+  const int64_t low = lowest_tip(r).z_nm;
+  if (w->body_stretch_open) {
+    if (body_clear(w, g, r, *m.body, low)) {
+      w->body_stretch_open = false;
+      return;
+    }
+    if (low >= w->body_stretch_low_nm) {  // no deeper: the stretch goes on
+      for (size_t k = 0; k < w->nevents; ++k)
+        if (w->events[k].line == w->body_stretch_line &&
+            (w->events[k].kind == SafetyKind::kShank || w->events[k].kind == SafetyKind::kHolder))
+          w->events[k].last_line = max_of(w->events[k].last_line, r.line);
+      return;
+    }
+  }
+  w->body_stretch_open = body_contacts(w, first, g, w->tile_max, r, m, false, added);
+  w->body_stretch_low_nm = low;
+  w->body_stretch_line = r.line;
 }
 
 // The fixture check: the cutter swept into the fixture grid exactly as
@@ -244,7 +299,7 @@ void fixture_contacts(SafetyWatch* w, size_t first, const CanonRecord& r, const 
     }
     f.dirty = GridRect::none();
   }
-  if (m.body->nrings > 0) body_contacts(w, first, f, nullptr, r, m, true, added);
+  if (m.body->nrings > 0) (void)body_contacts(w, first, f, nullptr, r, m, true, added);
 }
 
 // The tip's z where the cutter first covers (x, y) along r, or kBodyNever.
@@ -346,6 +401,7 @@ Status safety_watch_init(SafetyWatch* w, const DexelGrid<H>& g, uint32_t* shadow
   w->spindle_stretch_open = false;
   w->spindle_on_line = 0;
   for (uint32_t& l : w->unkept_line) l = 0;
+  w->body_stretch_open = false;
   return Status::kOk;
 }
 
@@ -364,8 +420,7 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
                       r.end.z_nm > r.start.z_nm;
   if (move && m.body && m.start_known && !rising) {
     if (w->fixtures) fixture_contacts(w, first, r, m, &added);
-    if ((w->check_holder || w->check_shank) && m.body->nrings > 0)
-      body_contacts(w, first, g, w->tile_max, r, m, false, &added);
+    if ((w->check_holder || w->check_shank) && m.body->nrings > 0) body_stretch(w, first, g, r, m, &added);
   }
   const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
   const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);

@@ -68,7 +68,8 @@ struct SafetyEvent {
   int64_t depth_nm = 0;       // below kinds: how far under the limit the tip went; removals: the deepest column's
                               // cut; contacts: the deepest overlap
   uint64_t columns = 0;       // removals, contacts: columns
-  uint32_t last_line = 0;     // spindle stopped: the stretch's last line that cut
+  uint32_t last_line = 0;     // spindle stopped: the stretch's last line that cut; shank, holder: the last
+                              // line of the stretch of contact it begins (safety.cpp, body_stretch)
 };
 
 // The state a record ran in, as the caller (the cut pass) knows it.
@@ -125,6 +126,10 @@ struct SafetyWatch {
   // line's: the cap is still the stretch's.
   uint32_t spindle_on_line = 0;
   uint32_t unkept_line[kSafetyKinds] = {};   // per kind, the last line counted past the list
+  // The shank and holder's stretch of contact (safety.cpp, body_stretch).
+  bool body_stretch_open = false;
+  int64_t body_stretch_low_nm = 0;   // the lowest tip looked at in it
+  uint32_t body_stretch_line = 0;    // the line of its last finding
 };
 
 // Starts a watch on g: the shadow takes g's tops (shadow_words >= nx * ny,

@@ -21,7 +21,7 @@ namespace {
 
 // Line 5 plunges a nocentre tool 2 mm, 6 another 5 mm under its hole; 7
 // runs its shank 2 mm over the flutes, 8 and 9 its holder 1 mm into the
-// stock (and the shank 6), 11 rapids through it, 13 cuts after M5 (one
+// stock (and the shank 6; line 9, no deeper, goes on their stretch), 11 rapids through it, 13 cuts after M5 (one
 // finding, though the next record cuts its end cap), 15 goes into the
 // clamp at X30, 16 below the stock, the clamp and the holder into the stock.
 const char kProgram[] =
@@ -167,7 +167,8 @@ void golden_safety(Out& out) {
   for (size_t k = 0; k < g_watch.nevents; ++k) {
     const SafetyEvent& e = g_watch.events[k];
     out.str(safety_kind_name(e.kind)).kv("line", e.line).kv("x", e.at.x_nm).kv("y", e.at.y_nm).kv("z", e.at.z_nm);
-    out.kv("depth", e.depth_nm).kv("columns", static_cast<int64_t>(e.columns)).kv("lsb", static_cast<int64_t>(e.removed_lsb)).end();
+    out.kv("depth", e.depth_nm).kv("columns", static_cast<int64_t>(e.columns)).kv("lsb", static_cast<int64_t>(e.removed_lsb));
+    out.kv("last_line", e.last_line).end();
   }
 }
 
