@@ -17,6 +17,7 @@
 #include "core/tool/tool.h"
 #include "display/error_colours.h"
 #include "display/backplot.h"
+#include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/golden.h"
@@ -208,6 +209,10 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
   if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
   else if (!with_fixtures) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
+  if (with_fixtures) {  // a safety finding marked on the clamp, as `run` marks one (magenta, over everything)
+    const ScreenRect m = marker_draw(fb, r.view, kFixtures[0].hi, 6, pixel_pack(fb.format, Rgb{255, 40, 255}));
+    out.str("frame-fixture-mark").kx("marked", frame_hash(fb)).kv("w", m.x1 - m.x0).kv("h", m.y1 - m.y0).end();
+  }
 }
 
 }  // namespace
