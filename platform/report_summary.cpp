@@ -40,6 +40,11 @@ std::string report_summary_text(const RunReport& r) {
     std::snprintf(b, sizeof b, "design   %" PRIu64 " gouge(s)\n", static_cast<uint64_t>(a.gouges_total));
     o += b;
   }
+  if (r.have_collisions) {
+    std::snprintf(b, sizeof b, "safety   %" PRIu64 " finding(s)%s\n", r.collisions_total,
+                  r.collisions_total ? " (on standard error)" : "");
+    o += b;
+  }
   if (!r.stopped_reason.empty()) {
     std::snprintf(b, sizeof b, "stopped  at the first %s, line %u\n", r.stopped_reason.c_str(), r.stopped_line);
     o += b;

@@ -39,6 +39,9 @@ TEST(safety_shank_above_the_flutes) {
   CHECK_EQ(r.code, 0);
   CHECK(has(r.err, "shank_bad.ngc:6:1: warning: the shank touches material: 3.000 mm above the flutes"));
   CHECK_EQ(warnings_in(r.err), 1);
+  // With no output the summary counts it.
+  r = run(slot("shank_bad.ngc", "-8") + " --stock 0,0,-30,40,40,0 --pitch 0.2 -q --tool flat:6,len=5");
+  CHECK(has(r.out, "safety   1 finding(s) (on standard error)"));
   r = run(slot("shank_good.ngc", "-5") + kBlock + " --tool flat:6,len=5");  // exactly the flute length
   CHECK_EQ(warnings_in(r.err), 0);
   // Deeper than the stick-out: the dexels keep the material over the tool,
