@@ -122,6 +122,19 @@ GridRect columns_in(const DexelGrid<H>& g, int64_t x0, int64_t x1, int64_t y0, i
                   static_cast<int32_t>(clamp<int64_t>(i1, 0, g.nx)), static_cast<int32_t>(clamp<int64_t>(j1, 0, g.ny))};
 }
 
+// Calls fn(batch, rect) for each batch of r's pieces whose reach (widened
+// by `reach`) meets g's columns, rect those columns; fn returns false to stop.
+template <class H, class Fn>
+void each_batch(const DexelGrid<H>& g, const CanonRecord& r, int64_t reach, Fn fn) {
+  BodyPieces pieces;
+  pieces.init(r);
+  Batch b;
+  while (fill_batch(&pieces, reach, &b)) {
+    const GridRect rect = columns_in(g, b.bx0, b.bx1, b.by0, b.by1);
+    if (!rect.empty() && !fn(b, rect)) return;
+  }
+}
+
 // The body's lowest point over the batch at a column, and its part.
 int64_t body_lowest(const ToolBody& body, const Batch& b, int64_t x, int64_t y, BodyPart* part) {
   int64_t best = kBodyNever;
@@ -150,15 +163,10 @@ bool body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t
   // Wholly over the highest top (a sound program's usual case): nothing to
   // do, before any piece is made.
   if (div_floor(lowest_tip(r).z_nm + body.lowest_nm - g.z0_nm, g.lsb_nm) >= g.top_bound_lsb) return false;
-  BodyPieces pieces;
-  pieces.init(r);
-  Batch b;
-  while (fill_batch(&pieces, body.reach_nm, &b)) {
-    const GridRect rect = columns_in(g, b.bx0, b.bx1, b.by0, b.by1);
-    if (rect.empty()) continue;
+  each_batch(g, r, body.reach_nm, [&](const Batch& b, const GridRect& rect) {
     // Tops at or under this (LSB) are under the body everywhere.
     const int64_t floor_lsb = div_floor(b.zmin + body.lowest_nm - g.z0_nm, g.lsb_nm);
-    if (floor_lsb >= g.top_bound_lsb) continue;
+    if (floor_lsb >= g.top_bound_lsb) return true;
     const int32_t ts = 1 << kSafetyTileBits;
     for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj) {
       for (int32_t ti = rect.i0 >> kSafetyTileBits; ti <= (rect.i1 - 1) >> kSafetyTileBits; ++ti) {
@@ -195,7 +203,8 @@ bool body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t
         }
       }
     }
-  }
+    return true;
+  });
   return found;
 }
 
@@ -206,19 +215,16 @@ bool body_clear(const SafetyWatch* w, const DexelGrid<H>& g, const CanonRecord& 
   const int64_t floor_lsb = div_floor(low_nm + body.lowest_nm - g.z0_nm, g.lsb_nm);
   if (floor_lsb >= g.top_bound_lsb) return true;
   if (!w->tile_max) return false;
-  BodyPieces pieces;
-  pieces.init(r);
-  Batch b;
-  while (fill_batch(&pieces, body.reach_nm, &b)) {
-    const GridRect rect = columns_in(g, b.bx0, b.bx1, b.by0, b.by1);
-    if (rect.empty()) continue;
+  bool clear = true;
+  each_batch(g, r, body.reach_nm, [&](const Batch&, const GridRect& rect) {
     for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj)
       for (int32_t ti = rect.i0 >> kSafetyTileBits; ti <= (rect.i1 - 1) >> kSafetyTileBits; ++ti)
         if (static_cast<int64_t>(w->tile_max[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) +
                                              static_cast<size_t>(ti)]) > floor_lsb)
-          return false;
-  }
-  return true;
+          clear = false;
+    return clear;
+  });
+  return clear;
 }
 
 // Shank and holder contacts come in stretches: a tool too short for a deep
