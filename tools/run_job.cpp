@@ -634,7 +634,7 @@ int run_job(RunOptions o) {
   cut.status.inch = o.inch;
   cut.status.tool_spec = o.tool_text;
   bool user_quit = false;
-  std::vector<PointNm> error_mark;
+  std::vector<PointNm> error_mark, stop_mark;
   {
     const double t0 = clock_now_s();
     if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
@@ -672,6 +672,10 @@ int run_job(RunOptions o) {
     if (stop_line) {  // the bad block's place, in amber on the last frames
       error_mark.push_back(mill.position());
       for (RenderOutput* out : w.outputs) out->add_marks(&error_mark, Rgb{255, 190, 0});
+    }
+    if (rep.stopped_reason == "collision" && safety.watch.nevents > 0) {  // the finding it stopped at, in red
+      stop_mark.push_back(safety.watch.events[safety.watch.nevents - 1].at);
+      for (RenderOutput* out : w.outputs) out->add_marks(&stop_mark, Rgb{255, 32, 24});
     }
     if (!o.design.empty()) print_gouges(grid, &design);
     if (safety_on) {
