@@ -8,6 +8,7 @@
 
 #include "core/check/body.h"
 #include "core/check/safety.h"
+#include "core/check/safety_pass.h"
 #include "core/cut/mill.h"
 #include "core/grid/grid.h"
 #include "core/motion/interp.h"
@@ -54,52 +55,6 @@ class OneTool : public ToolLibrary {
 
  private:
   Tool t_;
-};
-
-// The cut pass with the watch after every record, as `dexmill run` does.
-class Watched : public CanonSink {
- public:
-  Watched(Mill<uint16_t>* mill, DexelGrid<uint16_t>* g, SafetyWatch* w, const ToolProfile* p, const ToolBody* b)
-      : mill_(mill), g_(g), w_(w), profile_(p), body_(b) {}
-  void emit(const CanonRecord& r) override {
-    const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
-    if (move && r.line != last_line_) {
-      origin_ = SafetyOrigin{last_, mill_->position(), profile_};
-      have_origin_ = last_line_ != 0;
-    }
-    g_->dirty = GridRect::none();
-    mill_->emit(r);
-    SafetyMove m{r.line, r.kind == CanonKind::kTraverse, interp && interp->state().spindle_dir != 0, moved_};
-    m.plunge = safety_is_plunge(r);
-    m.end = r.end;
-    m.body = body_;
-    safety_watch_record(w_, *g_, g_->dirty, r, m, have_origin_ ? &origin_ : nullptr);
-    if (move) {
-      last_ = m;
-      moved_ = true;
-      last_line_ = r.line;
-    }
-  }
-  void finish() {
-    g_->dirty = GridRect::none();
-    mill_->finish();
-    CanonRecord cap{};
-    cap.kind = CanonKind::kDwell;
-    cap.line = last_.line;
-    safety_watch_record(w_, *g_, g_->dirty, cap, last_, nullptr);
-  }
-  const Interp* interp = nullptr;
-
- private:
-  Mill<uint16_t>* mill_;
-  DexelGrid<uint16_t>* g_;
-  SafetyWatch* w_;
-  const ToolProfile* profile_;
-  const ToolBody* body_;
-  SafetyMove last_{};
-  SafetyOrigin origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
-  bool have_origin_ = false, moved_ = false;
-  uint32_t last_line_ = 0;
 };
 
 SafetyWatch g_watch;  // 4 KB of events: static, not on a panel's stack
@@ -149,17 +104,13 @@ void golden_safety(Out& out) {
   g_watch.fixtures = &f;
   g_watch.fixture_boxes = &clamp;
   g_watch.nfixture_boxes = 1;
-  const ToolProfile profile = tool_profile(tool);
-  safety_watch_set_tool(&g_watch, profile);
-  ToolBody body;
-  tool_body_build(tool, &body);
   OneTool lib(tool);
   Mill<uint16_t> mill(&g, CutMode::kSweep, &lib, nullptr, 0);
   (void)mill.set_tool(tool);
-  Watched sink(&mill, &g, &g_watch, &profile, &body);
+  SafetyPass<uint16_t> sink(&mill, &g, &g_watch, &lib, tool);
   InterpOptions opt;
   Interp in(&sink, opt);
-  sink.interp = &in;
+  sink.set_interp(&in);
   const uint32_t errors = interp_run_text(&in, kProgram, strlen(kProgram), nullptr);
   sink.finish();
   out.str("safety").kv("events", static_cast<int64_t>(g_watch.nevents)).kv("total", static_cast<int64_t>(g_watch.total));

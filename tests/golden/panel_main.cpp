@@ -16,6 +16,8 @@
 #include <string.h>
 
 #include "core/assess/assess.h"
+#include "core/check/safety.h"
+#include "core/check/safety_pass.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
 #include "core/design/design.h"
@@ -24,6 +26,7 @@
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
 #include "display/error_colours.h"
+#include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
 #include "tests/golden/board.h"
@@ -282,6 +285,49 @@ bool overlay_frame(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
   return true;
 }
 
+// ==== SAFETY: the program again, with the checks a panel runs before the
+// machine does (issue 20): rapids into material, the spindle, the tool below
+// the block, the shank above the flutes, a clamp beside the block. The
+// grid comes out as the plain cut's; each finding is printed with its line
+// and marked in red on the frame.
+uint32_t g_shadow[kNx * kNy];
+constexpr size_t kTileWords = static_cast<size_t>((kNx >> kSafetyTileBits) + 1) * ((kNy >> kSafetyTileBits) + 1);
+uint32_t g_tiles[kTileWords];
+SafetyWatch g_watch;
+
+bool safety_pass(golden::Out& out, DexelGrid<height_t>* g, const ToolLibrary& lib, uint64_t plain_hash, PointNm* tip) {
+  grid_block_stock(g, grid_height_of_z(*g, kStockTopNm));
+  if (!ok(safety_watch_init(&g_watch, *g, g_shadow, kNx * kNy, g_tiles, kTileWords))) {
+    out.str("panel FAIL safety set-up").end();
+    return false;
+  }
+  g_watch.bottom_nm = g->z0_nm;
+  g_watch.check_shank = g_watch.check_holder = g_watch.check_plunge = true;
+  Tool first;
+  (void)lib.tool(1, &first);
+  Mill<height_t> mill(g, CutMode::kSweep, &lib, g_cutter_words, kCutterWords);
+  (void)mill.set_tool(first);
+  SafetyPass<height_t> pass(&mill, g, &g_watch, &lib, first);
+  InterpOptions opt;
+  Interp in(&pass, opt);
+  pass.set_interp(&in);
+  const int errors = static_cast<int>(interp_run_text(&in, kProgram, strlen(kProgram), nullptr));
+  pass.finish();
+  *tip = mill.position();
+  out.str("panel safety").kv("findings", static_cast<int64_t>(g_watch.total)).kv("errors", errors);
+  out.kv("same_grid", grid_hash(*g) == plain_hash ? 1 : 0).end();
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  renderer_set_colours(&g_renderer, nullptr);
+  render_full(&g_renderer, g, CutterPose{true, *tip});
+  for (size_t k = 0; k < g_watch.nevents; ++k) {
+    const SafetyEvent& e = g_watch.events[k];
+    out.str("panel finding ").str(safety_kind_name(e.kind)).kv("line", e.line).kv("depth_um", e.depth_nm / kNmPerUm).end();
+    (void)marker_draw(fb, g_renderer.view, e.at, 6, pixel_pack(fb.format, Rgb{255, 32, 24}));
+  }
+  out.str("panel safety frame").kx("hash", frame_hash(fb)).end();
+  return errors == 0 && grid_hash(*g) == plain_hash;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -327,6 +373,9 @@ int main(int, char**) {
   const uint64_t t5 = golden::board_instructions();
   const bool overlaid = assessed && overlay_frame(out, &g, mill.position());
   const uint64_t t6 = golden::board_instructions();
+  PointNm tip{0, 0, 0};
+  const bool checked = overlaid && safety_pass(out, &g, lib, hash, &tip);
+  const uint64_t t7 = golden::board_instructions();
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
@@ -335,6 +384,7 @@ int main(int, char**) {
     info_instructions(out, "render(480x272)", t4 - t3, 0);
     info_instructions(out, "assess+error_frame(480x272)", t5 - t4, 0);
     info_instructions(out, "overlay(2 frames+blend)", t6 - t5, 0);
+    info_instructions(out, "cut+safety checks+frame", t7 - t6, 0);
   }
-  return (errors == 0 && drawn && assessed && overlaid) ? 0 : 1;
+  return (errors == 0 && drawn && assessed && overlaid && checked) ? 0 : 1;
 }
