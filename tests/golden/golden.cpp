@@ -13,6 +13,7 @@ const Section kSections[] = {
     {"path", golden_path},
     {"frame", golden_frame},
     {"safety", golden_safety},
+    {"texture", golden_texture},
     {"regress", golden_regress},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];

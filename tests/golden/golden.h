@@ -67,6 +67,7 @@ void golden_mill(Out& out);   // golden_mill.cpp: a G-code program cut by core/m
 void golden_path(Out& out);   // golden_mill.cpp: the same program's canonical records and arc chords, hashed
 void golden_frame(Out& out);  // golden_frame.cpp: frames in both pixel and z formats, full and incremental
 void golden_safety(Out& out);  // golden_safety.cpp: one finding of each safety check, traced to its line
+void golden_texture(Out& out);  // golden_texture.cpp: noise, textures and material presets (core/material)
 void golden_regress(Out& out);  // golden_regress.cpp: regression cases named after their bug
 
 }  // namespace golden
