@@ -36,10 +36,10 @@ inline int64_t lattice_u(int64_t x_nm, int64_t feature_nm) {
   return muldiv_floor(clamp(x_nm, -kCoordLimitNm, kCoordLimitNm), static_cast<int64_t>(1) << kUFracBits, feature_nm);
 }
 
-inline uint32_t corner_u16(int64_t i, int64_t j, int64_t k, uint32_t seed) {
-  return noise_lattice_hash(static_cast<uint32_t>(static_cast<uint64_t>(i)), static_cast<uint32_t>(static_cast<uint64_t>(j)),
-                            static_cast<uint32_t>(static_cast<uint64_t>(k)), seed) >> 16;
-}
+// The three stages of noise_lattice_hash.
+inline uint32_t hash_i(uint32_t i, uint32_t seed) { return fmix32(seed ^ (i * 0x9e3779b1u)); }
+inline uint32_t hash_j(uint32_t h, uint32_t j) { return fmix32(h ^ (j * 0x85ebca77u)); }
+inline uint32_t hash_k(uint32_t h, uint32_t k) { return fmix32(h ^ (k * 0xc2b2ae3du)); }
 
 // a + (b - a) w for unsigned 16-bit a, b and w in q16 (0..65536), rounded to
 // nearest: never outside [min(a, b), max(a, b)], and below 2^32 throughout.
@@ -48,15 +48,23 @@ inline uint32_t blend_u16(uint32_t a, uint32_t b, uint32_t w_q16) {
 }
 
 // Noise at lattice coordinates with 16 fraction bits, as unsigned 16 bits.
+// The eight corner hashes share their first stages (noise_lattice_hash
+// mixes i, then j, then k): 2 + 4 + 8 finalisers instead of 24, same bits.
 uint32_t noise_u16(int64_t ux, int64_t uy, int64_t uz, uint32_t seed) {
-  const int64_t i = floor_shift(ux, 16), j = floor_shift(uy, 16), k = floor_shift(uz, 16);
+  const uint32_t i = static_cast<uint32_t>(static_cast<uint64_t>(floor_shift(ux, 16)));
+  const uint32_t j = static_cast<uint32_t>(static_cast<uint64_t>(floor_shift(uy, 16)));
+  const uint32_t k = static_cast<uint32_t>(static_cast<uint64_t>(floor_shift(uz, 16)));
   const uint32_t wx = noise_fade_q16(static_cast<uint32_t>(static_cast<uint64_t>(ux)) & 0xffffu);
   const uint32_t wy = noise_fade_q16(static_cast<uint32_t>(static_cast<uint64_t>(uy)) & 0xffffu);
   const uint32_t wz = noise_fade_q16(static_cast<uint32_t>(static_cast<uint64_t>(uz)) & 0xffffu);
+  uint32_t hx[2], hxy[2][2];
+  for (uint32_t dx = 0; dx < 2; ++dx) hx[dx] = hash_i(i + dx, seed);
+  for (uint32_t dx = 0; dx < 2; ++dx)
+    for (uint32_t dy = 0; dy < 2; ++dy) hxy[dx][dy] = hash_j(hx[dx], j + dy);
   uint32_t plane[2];
-  for (int dz = 0; dz < 2; ++dz) {
-    const uint32_t y0 = blend_u16(corner_u16(i, j, k + dz, seed), corner_u16(i + 1, j, k + dz, seed), wx);
-    const uint32_t y1 = blend_u16(corner_u16(i, j + 1, k + dz, seed), corner_u16(i + 1, j + 1, k + dz, seed), wx);
+  for (uint32_t dz = 0; dz < 2; ++dz) {
+    const uint32_t y0 = blend_u16(hash_k(hxy[0][0], k + dz) >> 16, hash_k(hxy[1][0], k + dz) >> 16, wx);
+    const uint32_t y1 = blend_u16(hash_k(hxy[0][1], k + dz) >> 16, hash_k(hxy[1][1], k + dz) >> 16, wx);
     plane[dz] = blend_u16(y0, y1, wy);
   }
   return blend_u16(plane[0], plane[1], wz);
@@ -82,13 +90,13 @@ inline int32_t octave_q15(const LatticeU& u, int32_t i, uint32_t seed) {
 }  // namespace
 
 uint32_t noise_lattice_hash(uint32_t i, uint32_t j, uint32_t k, uint32_t seed) {
-  uint32_t h = fmix32(seed ^ (i * 0x9e3779b1u));
-  h = fmix32(h ^ (j * 0x85ebca77u));
-  return fmix32(h ^ (k * 0xc2b2ae3du));
+  return hash_k(hash_j(hash_i(i, seed), j), k);
 }
 
 int32_t noise_lattice_value_q15(int64_t i, int64_t j, int64_t k, uint32_t seed) {
-  return static_cast<int32_t>(corner_u16(i, j, k, seed)) - kNoiseOne;
+  const uint32_t h = noise_lattice_hash(static_cast<uint32_t>(static_cast<uint64_t>(i)), static_cast<uint32_t>(static_cast<uint64_t>(j)),
+                                        static_cast<uint32_t>(static_cast<uint64_t>(k)), seed);
+  return static_cast<int32_t>(h >> 16) - kNoiseOne;
 }
 
 uint32_t noise_fade_q16(uint32_t t_q16) {
