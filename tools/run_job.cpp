@@ -499,21 +499,12 @@ int run_job(RunOptions o) {
 
   // -- the safety checks, on the grid as stocked
   RunSafety safety;
-  SafetyChoice checks;
-  checks.rapid = o.check_rapid;
-  checks.spindle = o.check_spindle;
-  checks.below = o.check_below;
-  checks.shank = o.check_shank;
-  checks.holder = o.check_holder;
-  checks.plunge = o.check_plunge;
+  SafetyChoice checks = o.checks;
   for (const Tool& t : scan.tools_seen) {  // what a tool describes is checked
     checks.shank = checks.shank || t.flute_length_nm > 0;
     checks.holder = checks.holder || t.holder_segments > 0;
     checks.plunge = checks.plunge || !t.centre_cutting;
   }
-  checks.has_table = o.have_table;
-  checks.table_nm = o.table_nm;
-  checks.fixtures = o.fixtures;
   const bool safety_on = checks.any();
   if (safety_on) {
     std::string why;
@@ -614,8 +605,8 @@ int run_job(RunOptions o) {
     for (RenderOutput* out : w.outputs) out->add_marks(&design.marks, Rgb{255, 32, 24});
   if (safety_on)  // the safety findings so far, in magenta
     for (RenderOutput* out : w.outputs) out->add_marks(&safety.marks, Rgb{255, 40, 255});
-  if (!o.fixtures.empty()) {  // in every frame, the error view's too
-    for (RenderOutput* out : w.outputs) out->set_fixtures(&o.fixtures);
+  if (!o.checks.fixtures.empty()) {  // in every frame, the error view's too
+    for (RenderOutput* out : w.outputs) out->set_fixtures(&o.checks.fixtures);
   }
   grid.dirty = grid.bounds();
   fan_out_dirty(&grid, w.outputs.data(), static_cast<int>(w.outputs.size()));

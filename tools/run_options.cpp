@@ -289,14 +289,14 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       for (const char* p = v; *p;) {
         const char* end = std::strchr(p, ',');
         const std::string word(p, end ? static_cast<size_t>(end - p) : std::strlen(p));
-        if (word == "rapid") o->check_rapid = true;
-        else if (word == "spindle") o->check_spindle = true;
-        else if (word == "below") o->check_below = true;
-        else if (word == "shank") o->check_shank = true;
-        else if (word == "holder") o->check_holder = true;
-        else if (word == "plunge") o->check_plunge = true;
-        else if (word == "all")
-          o->check_rapid = o->check_spindle = o->check_below = o->check_shank = o->check_holder = o->check_plunge = true;
+        SafetyChoice& c = o->checks;
+        if (word == "rapid") c.rapid = true;
+        else if (word == "spindle") c.spindle = true;
+        else if (word == "below") c.below = true;
+        else if (word == "shank") c.shank = true;
+        else if (word == "holder") c.holder = true;
+        else if (word == "plunge") c.plunge = true;
+        else if (word == "all") c.rapid = c.spindle = c.below = c.shank = c.holder = c.plunge = true;
         else
           return fail(kExitUsage, "--check takes rapid, spindle, below, shank, holder, plunge or all (comma-separated), not '%s'",
                       word.c_str());
@@ -306,12 +306,13 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       int64_t b[6];
       if (!parse_stock(v, b))
         return fail(kExitUsage, "--fixture needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1, not '%s'", v);
-      if (o->fixtures.size() >= static_cast<size_t>(kFixturesMax))
+      if (o->checks.fixtures.size() >= static_cast<size_t>(kFixturesMax))
         return fail(kExitUsage, "at most %d --fixture boxes", kFixturesMax);
-      o->fixtures.push_back(BoxNm{PointNm{b[0], b[1], b[2]}, PointNm{b[3], b[4], b[5]}});
+      o->checks.fixtures.push_back(BoxNm{PointNm{b[0], b[1], b[2]}, PointNm{b[3], b[4], b[5]}});
     } else if (name == "--table") {
-      if (!parse_scaled(v, kNmPerMm, &o->table_nm)) return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);
-      o->have_table = true;
+      if (!parse_scaled(v, kNmPerMm, &o->checks.table_nm))
+        return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);
+      o->checks.has_table = true;
     } else if (name == "--speed") {
       if (!parse_scaled(v, 1000, &o->speed_milli) || o->speed_milli < 1 || o->speed_milli > 1000000000)
         return fail(kExitUsage, "--speed needs simulated seconds per second from 0.001 to 1e6, not '%s'", v);
@@ -334,9 +335,10 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     o->stop_at_collision = true;
     o->stop_at_gouge = o->stop_at_gouge || !o->design.empty();
   }
-  if ((o->stop_at_collision || o->fail_on_collision) && !o->check_rapid && !o->check_spindle && !o->check_below &&
-      !o->have_table && !o->check_shank && !o->check_holder && !o->check_plunge && o->fixtures.empty())
-    o->check_rapid = o->check_spindle = o->check_below = o->check_shank = o->check_holder = o->check_plunge = true;
+  if ((o->stop_at_collision || o->fail_on_collision) && !o->checks.any()) {
+    SafetyChoice& c = o->checks;
+    c.rapid = c.spindle = c.below = c.shank = c.holder = c.plunge = true;
+  }
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
   if (o->color == RunOptions::Color::kError && o->design.empty())

@@ -19,6 +19,15 @@
 namespace dexmill {
 namespace cli {
 
+// Which safety checks, and their limits (tools/run_safety.h starts them).
+struct SafetyChoice {
+  bool rapid = false, spindle = false, below = false, shank = false, holder = false, plunge = false;
+  bool has_table = false;
+  int64_t table_nm = 0;
+  std::vector<BoxNm> fixtures;
+  bool any() const { return rapid || spindle || below || shank || holder || plunge || has_table || !fixtures.empty(); }
+};
+
 struct RunOptions {
   std::string file;              // input; "-" is standard input; empty: the built-in demo
   bool have_stock = false;
@@ -65,15 +74,10 @@ struct RunOptions {
   bool stop_at_gouge = false;    // --stop-at gouge|any: stop at the first gouge, exit 4
   bool stop_at_collision = false;  // --stop-at collision|any: stop at the first safety finding, exit 4
   bool fail_on_collision = false;  // --fail-on-collision
-  // Safety checks (core/check/safety.h): --check rapid,spindle,below|all,
-  // and --table Z (mm) for the table.
-  bool check_rapid = false, check_spindle = false, check_below = false;
-  // --check shank,holder,plunge; also on for a tool that gives a flute
-  // length, a holder or nocentre (what the user describes is checked).
-  bool check_shank = false, check_holder = false, check_plunge = false;
-  std::vector<BoxNm> fixtures;  // --fixture X0,Y0,Z0,X1,Y1,Z1 (repeatable), nm
-  bool have_table = false;
-  int64_t table_nm = 0;
+  // Safety checks (core/check/safety.h): --check rapid,spindle,below,
+  // shank,holder,plunge|all, --table Z, --fixture (repeatable). run_job also
+  // turns on what a tool describes (a flute length, a holder, nocentre).
+  SafetyChoice checks;
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)

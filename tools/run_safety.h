@@ -11,6 +11,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "platform/report_json.h"
+#include "tools/run_options.h"
 
 namespace dexmill {
 namespace cli {
@@ -26,14 +27,6 @@ struct RunSafety {
   size_t marked = 0;           // events already in marks
 };
 
-// Which checks, and their limits.
-struct SafetyChoice {
-  bool rapid = false, spindle = false, below = false, shank = false, holder = false, plunge = false;
-  bool has_table = false;
-  int64_t table_nm = 0;
-  std::vector<BoxNm> fixtures;
-  bool any() const { return rapid || spindle || below || shank || holder || plunge || has_table || !fixtures.empty(); }
-};
 
 // Starts the watch on the grid as stocked: the stock's bottom is the grid's
 // z0, the table (when has_table) at table_nm, the fixtures in a grid of
