@@ -33,13 +33,15 @@ bool RenderOutput::resize(const DexelGrid<height_t>& g, const FrameView& fb, std
   }
   if (have_tool_) renderer_set_tool(r_.get(), &profile_);
   renderer_set_colours(r_.get(), colours_);
-  if (fixtures_) set_fixtures(fixtures_);
+  if (fixtures_)  // at most kFixturesMax: run_options
+    (void)renderer_set_fixtures(r_.get(), fixtures_->data(), static_cast<int>(fixtures_->size()));
   return true;
 }
 
 void RenderOutput::set_fixtures(const std::vector<BoxNm>* f) {
   fixtures_ = f;
-  (void)renderer_set_fixtures(r_.get(), f->data(), static_cast<int>(f->size()));  // at most kFixturesMax: run_options
+  (void)renderer_set_fixtures(r_.get(), f->data(), static_cast<int>(f->size()));
+  set_camera(initial_camera());  // framed with the stock
 }
 
 void RenderOutput::set_colours(const SurfaceColours* c) {
@@ -130,11 +132,22 @@ void RenderOutput::share_view_of(const RenderOutput& other) {
 void RenderOutput::set_camera(const Camera& c) { renderer_set_camera(r_.get(), c); }
 
 Camera RenderOutput::initial_camera() const {
-  if (!choice_.angles) return renderer_fit(*r_, choice_.preset);
-  Camera c = camera_preset(ViewPreset::kIso);
-  c.azimuth_bam = choice_.azimuth_bam;
-  c.elevation_bam = choice_.elevation_bam;
-  camera_fit(&c, renderer_stock_box(*r_), fb_.width, fb_.height);
+  // The stock and the fixtures beside it (a clamp cut off at the frame's
+  // edge hides what the check found there).
+  BoxNm box = renderer_stock_box(*r_);
+  if (fixtures_)
+    for (const BoxNm& f : *fixtures_) {
+      box.lo = PointNm{min_of(box.lo.x_nm, min_of(f.lo.x_nm, f.hi.x_nm)), min_of(box.lo.y_nm, min_of(f.lo.y_nm, f.hi.y_nm)),
+                       min_of(box.lo.z_nm, min_of(f.lo.z_nm, f.hi.z_nm))};
+      box.hi = PointNm{max_of(box.hi.x_nm, max_of(f.lo.x_nm, f.hi.x_nm)), max_of(box.hi.y_nm, max_of(f.lo.y_nm, f.hi.y_nm)),
+                       max_of(box.hi.z_nm, max_of(f.lo.z_nm, f.hi.z_nm))};
+    }
+  Camera c = camera_preset(choice_.angles ? ViewPreset::kIso : choice_.preset);
+  if (choice_.angles) {
+    c.azimuth_bam = choice_.azimuth_bam;
+    c.elevation_bam = choice_.elevation_bam;
+  }
+  camera_fit(&c, box, fb_.width, fb_.height);
   return c;
 }
 
