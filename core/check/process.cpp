@@ -1,0 +1,113 @@
+// The process rules of an inhomogeneous stock; see process.h.
+#include "core/check/process.h"
+
+#include "core/material/column.h"
+
+namespace dexmill {
+
+const char* process_rule_name(ProcessRule r) {
+  switch (r) {
+    case ProcessRule::kFeed: return "feed";
+    case ProcessRule::kSpindle: return "spindle";
+    case ProcessRule::kCoolant: return "coolant";
+  }
+  return "";
+}
+
+namespace {
+
+// One violation per (line, rule, material): the kept one, or counted once.
+void violate(ProcessWatch* w, size_t first_of_call, const ProcessState& s, ProcessRule rule, uint8_t material,
+             int64_t value, PointNm at, bool* added) {
+  for (size_t k = first_of_call > 0 ? first_of_call - 1 : 0; k < w->nkept; ++k)
+    if (w->kept[k].line == s.line && w->kept[k].rule == rule && w->kept[k].material == material) return;
+  // Past the list: once a (line, rule, material), by the tally's count.
+  MaterialTally& t = w->tally[material];
+  const uint32_t key = s.line * 4u + static_cast<uint32_t>(rule);
+  if (w->nkept >= kProcessViolationsMax && t.last_counted == key) return;
+  t.last_counted = key;
+  ++t.violations;
+  ++w->total;
+  *added = true;
+  if (w->nkept >= kProcessViolationsMax) return;
+  ProcessViolation& v = w->kept[w->nkept++];
+  v.rule = rule;
+  v.line = s.line;
+  v.material = material;
+  v.value = value;
+  v.at = at;
+}
+
+}  // namespace
+
+template <class H>
+Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockComposition* comp, uint32_t* shadow,
+                          size_t shadow_words) {
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  if (!shadow || shadow_words < n) return Status::kBufferTooSmall;
+  for (size_t k = 0; k < n; ++k) shadow[k] = g.top[k];
+  w->comp = comp;
+  w->shadow = shadow;
+  w->nkept = 0;
+  w->total = 0;
+  for (MaterialTally& t : w->tally) t = MaterialTally{};
+  return Status::kOk;
+}
+
+template <class H>
+bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect changed, const ProcessState& s,
+                          const ProcessOrigin* prev) {
+  const size_t first = w->nkept;
+  bool added = false;
+  uint32_t mask_now = 0;  // the materials this record removed, for the time tallies
+  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
+  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
+  const StockComposition& c = *w->comp;
+  int64_t lengths[kCompositionMaxMaterials];
+  for (int32_t j = j0; j < j1; ++j) {
+    const size_t row = g.index(0, j);
+    for (int32_t i = i0; i < i1; ++i) {
+      uint32_t& was = w->shadow[row + static_cast<size_t>(i)];
+      const uint32_t now = g.top[row + static_cast<size_t>(i)];
+      if (now >= was) {
+        was = now;
+        continue;
+      }
+      const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
+      const int64_t z_lo = g.z0_nm + static_cast<int64_t>(now) * g.lsb_nm, z_hi = g.z0_nm + static_cast<int64_t>(was) * g.lsb_nm;
+      was = now;
+      const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, z_lo, g.lsb_nm);
+      const ProcessState& by = before ? prev->state : s;
+      const uint32_t mask = composition_column(c, x, y, z_lo, z_hi, lengths);
+      if (!before) mask_now |= mask;
+      for (int32_t m = 0; m < c.material_count; ++m) {
+        if (!(mask >> m & 1u)) continue;
+        w->tally[m].removed_nm_columns += static_cast<uint64_t>(lengths[m]);
+        const MaterialProcess& p = c.materials[m].process;
+        const uint8_t mi = static_cast<uint8_t>(m);
+        const PointNm at{x, y, z_lo};
+        if (by.feed_move && by.feed_nm_per_min > p.max_feed_nm_per_min)
+          violate(w, first, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
+        if (by.spindle_on && (by.spindle_rpm < p.spindle_min_rpm || by.spindle_rpm > p.spindle_max_rpm))
+          violate(w, first, by, ProcessRule::kSpindle, mi, by.spindle_rpm, at, &added);
+        if (by.coolant && !p.coolant_allowed) violate(w, first, by, ProcessRule::kCoolant, mi, by.coolant, at, &added);
+      }
+    }
+  }
+  // Cutting time: a record's whole time to each material it removed (an
+  // end cap's material, cut with the next record, adds no time).
+  for (int32_t m = 0; m < c.material_count; ++m)
+    if (mask_now >> m & 1u) w->tally[m].cut_time_us += s.time_us;
+  return added;
+}
+
+#define DEXMILL_PROCESS_INSTANTIATE(H)                                                                           \
+  template Status process_watch_init<H>(ProcessWatch*, const DexelGrid<H>&, const StockComposition*, uint32_t*, \
+                                        size_t);                                                               \
+  template bool process_watch_record<H>(ProcessWatch*, const DexelGrid<H>&, GridRect, const ProcessState&,     \
+                                        const ProcessOrigin*);
+DEXMILL_PROCESS_INSTANTIATE(uint8_t)
+DEXMILL_PROCESS_INSTANTIATE(uint16_t)
+DEXMILL_PROCESS_INSTANTIATE(uint32_t)
+
+}  // namespace dexmill

@@ -1,0 +1,105 @@
+// The process rules of an inhomogeneous stock (paper §2.6, issue 19): for
+// every record, the materials the cut actually removed (each lowered dexel
+// column's lost z range through the composition, core/material/column.h)
+// against the limits each material brings:
+// - a feed move (G1, arcs) faster than a removed material's max feed;
+// - a spindle speed (S, with M3/M4 on) outside a removed material's range;
+// - coolant (M7/M8) on while removing a material that forbids it (the
+//   paper's wood, which soaks it up).
+// Each is one violation per (line, rule, material), the first
+// kProcessViolationsMax kept, all counted. Per material the watch also
+// tallies the volume removed (sum of lengths, nm x columns: x pitch^2 is
+// the volume) and the cutting time of the records that removed it.
+//
+// Removals are compared against a shadow of the tops (caller memory), as the
+// safety watch does (core/check/safety.h); a deferred end cap cut by the
+// next record is charged to the move that brought the tool there
+// (profile_explains_cut).
+#ifndef DEXMILL_CORE_CHECK_PROCESS_H
+#define DEXMILL_CORE_CHECK_PROCESS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/grid/grid.h"
+#include "core/material/material.h"
+#include "core/motion/canon.h"
+#include "core/point.h"
+#include "core/status.h"
+#include "core/tool/tool.h"
+
+namespace dexmill {
+
+enum class ProcessRule : uint8_t { kFeed = 0, kSpindle = 1, kCoolant = 2 };
+constexpr int kProcessRules = 3;
+constexpr size_t kProcessViolationsMax = 64;
+
+// "feed", "spindle", "coolant".
+const char* process_rule_name(ProcessRule r);
+
+struct ProcessViolation {
+  ProcessRule rule = ProcessRule::kFeed;
+  uint32_t line = 0;
+  uint8_t material = 0;
+  int64_t value = 0;  // feed: nm/min; spindle: rpm; coolant: the M7/M8 bits
+  PointNm at{0, 0, 0};  // a column it removed there
+};
+
+// The state a record ran in, as the caller (the cut pass) knows it.
+struct ProcessState {
+  uint32_t line = 0;
+  bool feed_move = false;         // G1 or an arc (rapids are the safety checks' business)
+  int64_t feed_nm_per_min = 0;
+  int32_t spindle_rpm = 0;
+  bool spindle_on = false;        // M3/M4
+  uint8_t coolant = 0;            // bit 0 mist (M7), bit 1 flood (M8)
+  int64_t time_us = 0;            // the record's time
+};
+
+struct MaterialTally {
+  uint64_t removed_nm_columns = 0;  // sum over columns of the length removed, nm
+  int64_t cut_time_us = 0;
+  uint64_t violations = 0;
+  uint32_t last_counted = 0;        // line * 4 + rule of the last violation counted past the list
+};
+
+struct ProcessWatch {
+  const StockComposition* comp = nullptr;
+  uint32_t* shadow = nullptr;  // caller memory, nx * ny: the tops before the record
+  ProcessViolation kept[kProcessViolationsMax];
+  size_t nkept = 0;
+  uint64_t total = 0;
+  MaterialTally tally[kCompositionMaxMaterials];
+};
+
+// Where the move before left the tool (its deferred end cap is its).
+struct ProcessOrigin {
+  ProcessState state;
+  PointNm end;
+  const ToolProfile* tool;
+};
+
+// Starts a watch of g made of *comp (kBufferTooSmall: shadow_words < nx * ny).
+template <class H>
+Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockComposition* comp, uint32_t* shadow,
+                          size_t shadow_words);
+
+// After the cut of record r in state s, the columns it changed in g being
+// `changed`. True when a violation was added.
+template <class H>
+bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect changed, const ProcessState& s,
+                          const ProcessOrigin* prev);
+
+#define DEXMILL_PROCESS_EXTERN(H)                                                                               \
+  extern template Status process_watch_init<H>(ProcessWatch*, const DexelGrid<H>&, const StockComposition*,    \
+                                               uint32_t*, size_t);                                            \
+  extern template bool process_watch_record<H>(ProcessWatch*, const DexelGrid<H>&, GridRect, const ProcessState&, \
+                                               const ProcessOrigin*);
+DEXMILL_PROCESS_EXTERN(uint8_t)
+DEXMILL_PROCESS_EXTERN(uint16_t)
+DEXMILL_PROCESS_EXTERN(uint32_t)
+#undef DEXMILL_PROCESS_EXTERN
+
+}  // namespace dexmill
+
+#endif
