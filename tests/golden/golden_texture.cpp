@@ -1,9 +1,11 @@
 // Golden section "texture": the material layer (core/material, issue 19,
 // paper §2.6-2.7) pinned bit for bit: value noise and its fractal sums, each
 // procedural texture, and each preset's composition (material index and
-// colour), hashed over a grid of points around a 100 x 70 x 20 mm block.
+// colour, and the lengths of each material along vertical segments), hashed
+// over a grid of points around a 100 x 70 x 20 mm block.
 #include <stdint.h>
 
+#include "core/material/column.h"
 #include "core/material/material.h"
 #include "core/material/material_preset.h"
 #include "core/material/noise.h"
@@ -83,6 +85,24 @@ void golden_texture(Out& out) {
     });
     out.str("preset ").str(material_preset_name(i)).kv("materials", c.material_count);
     out.kx("material", hm.value()).kx("colours", hc.value()).end();
+  }
+  // Each grid column's segment from 5 mm below the block to near its top,
+  // the length in every material (core/material/column.h: what a cut
+  // removes), for the presets of more than one material.
+  for (int32_t i = 0; i < material_preset_count(); ++i) {
+    StockComposition c;
+    if (!material_preset(material_preset_name(i), stock, &c) || c.material_count < 2) continue;
+    Hash64 hl;
+    uint32_t any = 0;
+    for (int64_t cj = 0; cj < 8; ++cj)
+      for (int64_t ci = 0; ci < 13; ++ci) {
+        int64_t len[kCompositionMaxMaterials];
+        const uint32_t mask = composition_column(c, mm(10 * ci - 10), mm(10 * cj) + 3, mm(-5), mm(20) - 17 * ci, len);
+        any |= mask;
+        hl.uint_le(mask, 4);
+        for (int64_t l : len) hl.uint_le(static_cast<uint64_t>(l), 8);
+      }
+    out.str("columns ").str(material_preset_name(i)).kx("mask", any, 2).kx("lengths", hl.value()).end();
   }
 }
 
