@@ -219,6 +219,25 @@ std::string collisions_text(const RunReport& r) {
   return o + (r.collisions.empty() ? "]},\n" : "\n    ]},\n");
 }
 
+std::string materials_text(const RunReport& r) {
+  std::string o = "  \"materials\": {\"source\": " + quoted(r.material_source) + ", \"list\": [";
+  for (std::size_t k = 0; k < r.materials.size(); ++k) {
+    const ReportMaterial& m = r.materials[k];
+    char b[160];
+    std::snprintf(b, sizeof b, ", \"mass_g\": %.3f, \"cut_time_s\": %.3f, \"violations\": ", m.mass_g, m.cut_time_s);
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"name\": " + quoted(m.name) + ", \"removed_mm3\": " + m.removed_mm3 + b +
+         u64(m.violations) + "}";
+  }
+  o += std::string(r.materials.empty() ? "]" : "\n    ]") + ",\n    \"violations_total\": " + u64(r.material_violations_total) +
+       ", \"violations\": [";
+  for (std::size_t k = 0; k < r.material_violations.size(); ++k) {
+    const ReportViolation& v = r.material_violations[k];
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"rule\": " + quoted(v.rule) + ", \"line\": " + u64(v.line) +
+         ", \"material\": " + quoted(v.material) + ", \"message\": " + quoted(v.message) + "}";
+  }
+  return o + (r.material_violations.empty() ? "]},\n" : "\n    ]},\n");
+}
+
 }  // namespace
 
 std::string report_json_text(const RunReport& r) {
@@ -267,6 +286,7 @@ std::string report_json_text(const RunReport& r) {
   o += "  \"cut\": {\"instances\": " + u64(r.instances) + ", \"dexel_updates\": " + u64(r.dexel_updates) + "},\n";
   o += r.have_assessment ? assessment_text(r) : std::string("  \"assessment\": null,\n");
   o += r.have_collisions ? collisions_text(r) : std::string("  \"collisions\": null,\n");
+  o += r.have_materials ? materials_text(r) : std::string("  \"materials\": null,\n");
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

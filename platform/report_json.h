@@ -91,6 +91,20 @@ struct ReportAssessment {
   uint64_t gouges_total = 0;        // all of them
 };
 
+// A material of the stock (--material): what the cut took of it.
+struct ReportMaterial {
+  std::string name;
+  std::string removed_mm3;  // exact text
+  double mass_g = 0;
+  double cut_time_s = 0;
+  uint64_t violations = 0;
+};
+struct ReportViolation {
+  std::string rule;  // "feed", "spindle", "coolant"
+  uint32_t line = 0;
+  std::string material, message;
+};
+
 struct RunReport {
   std::string file;
   uint32_t lines = 0;
@@ -124,6 +138,12 @@ struct RunReport {
   std::vector<SafetyEvent> collisions;
   uint64_t collisions_total = 0;
   uint64_t rapid_removed_lsb = 0;
+  // The stock's materials and the process rules (--material), when given.
+  bool have_materials = false;
+  std::string material_source;
+  std::vector<ReportMaterial> materials;
+  std::vector<ReportViolation> material_violations;  // as kept
+  uint64_t material_violations_total = 0;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
 };
 

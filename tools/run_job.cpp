@@ -38,6 +38,7 @@
 #include "tools/run_outputs.h"
 #include "tools/run_path.h"
 #include "tools/run_render.h"
+#include "tools/run_material.h"
 #include "tools/run_safety.h"
 #include "tools/run_stock.h"
 
@@ -148,6 +149,7 @@ class CutSink final : public CanonSink {
     if (move && r.line != last_line_) {
       origin_ = GougeOrigin{last_line_, mill_->position(), &profile_};
       safety_origin_ = SafetyOrigin{last_move_, mill_->position(), &profile_};
+      process_origin_ = ProcessOrigin{last_process_, mill_->position(), &profile_};
       have_origin_ = last_line_ != 0;
     }
     mill_->emit(r);
@@ -169,7 +171,9 @@ class CutSink final : public CanonSink {
         moved_ = true;
       }
     }
+    const int64_t t_before = time.estimated_time_us();
     time.emit(r);
+    if (material) check_process(r, move, time.estimated_time_us() - t_before);
     status.line = r.line;
     status.pos = mill_->position();
     if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) status.feed_nm_per_min = r.feed_nm_per_min;
@@ -211,6 +215,11 @@ class CutSink final : public CanonSink {
       cap.line = last_move_.line;
       check_safety(cap, last_move_, nullptr);
     }
+    if (material) {  // and to the process rules, in the last move's state
+      ProcessState last = last_process_;
+      last.time_us = 0;
+      process_watch_record(&material->watch, *g_, g_->dirty, last, nullptr);
+    }
     fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
   }
   // One frame of the sequence; false (and frame_error set) on failure.
@@ -232,6 +241,7 @@ class CutSink final : public CanonSink {
   LiveStatus status;
   uint32_t stop_line = 0;        // the first bad block of a partial run (0: none)
   const Interp* interp = nullptr;  // the cut pass's, for the spindle's state
+  RunMaterial* material = nullptr;  // the process rules (null: no --material)
   bool count_path = false;       // keep path_done: the backplot's pieces cut so far
   uint32_t path_done = 0;
   bool stopped_at_error = false;
@@ -251,11 +261,29 @@ class CutSink final : public CanonSink {
   bool moved_ = false;       // a move has run: the tool's position is the program's, not assumed
   SafetyMove last_move_{};   // the last motion record's line and state
   SafetyOrigin safety_origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
+  ProcessState last_process_{};  // the last motion record's, for the process rules
+  ProcessOrigin process_origin_{ProcessState{}, PointNm{0, 0, 0}, nullptr};
   uint32_t last_line_ = 0;
   ToolProfile profile_{};  // the tool in the spindle
   ToolBody body_{};        // its shank and holder (core/check/body.h)
   GougeOrigin origin_{0, PointNm{0, 0, 0}, nullptr};
   bool have_origin_ = false;
+
+  // The process rules on what record r removed, in the interpreter's state.
+  void check_process(const CanonRecord& r, bool move, int64_t time_us) {
+    ProcessState s;
+    s.line = r.line;
+    s.feed_move = r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
+    s.feed_nm_per_min = r.feed_nm_per_min;
+    if (interp) {
+      s.spindle_rpm = interp->state().spindle_rpm;
+      s.spindle_on = interp->state().spindle_dir != 0;
+      s.coolant = interp->state().coolant;
+    }
+    s.time_us = time_us;
+    process_watch_record(&material->watch, *g_, g_->dirty, s, have_origin_ ? &process_origin_ : nullptr);
+    if (move) last_process_ = s;
+  }
 
   void check_safety(const CanonRecord& r, const SafetyMove& m, const SafetyOrigin* prev) {
     if (!safety_watch_record(&safety_->watch, *g_, g_->dirty, r, m, prev)) return;
@@ -505,6 +533,12 @@ int run_job(RunOptions o) {
     checks.holder = checks.holder || t.holder_segments > 0;
     checks.plunge = checks.plunge || !t.centre_cutting;
   }
+  // -- the stock's materials and their process rules
+  RunMaterial material;
+  if (!o.material.empty()) {
+    const int code = material_start(&material, o.material, BoxNm{plan.stock.lo, plan.stock.hi}, grid);
+    if (code != kExitOk) return code;
+  }
   const bool safety_on = checks.any();
   if (safety_on) {
     std::string why;
@@ -638,6 +672,7 @@ int run_job(RunOptions o) {
     opt.tools = have_table ? &table : nullptr;
     Interp interp(&cut, opt);
     cut.interp = &interp;
+    if (!o.material.empty()) cut.material = &material;
     GcodeRunner runner(&in, &interp, &quiet, true);
     Progress progress(stderr, !o.quiet && !is_live);
     while (runner.step()) {
@@ -672,6 +707,10 @@ int run_job(RunOptions o) {
     if (safety_on) {
       safety_print(safety, shown_name, grid);
       safety_to_report(safety, &rep);
+    }
+    if (!o.material.empty()) {
+      material_print(material, shown_name);
+      material_to_report(material, grid, &rep);
     }
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
     if (!cut.frame_error.empty()) return fail(kExitIo, "%s", cut.frame_error.c_str());

@@ -120,6 +120,10 @@ void run_usage(std::FILE* f) {
                "                             or the holder (holder=) touching material, a nocentre\n"
                "                             tool plunging; a tool that gives len=, holder= or\n"
                "                             nocentre has its check on without asking\n"
+               "  --material PRESET|FILE     what the stock is made of (presets: two-layer, marble,\n"
+               "                             wood, bronze, aluminium, wood-on-aluminium, ...): each\n"
+               "                             material's feed, spindle and coolant limits are checked\n"
+               "                             on what the cut removes; the report's materials\n"
                "  --table Z                  the table's Z (mm): the tool going below it is a finding\n"
                "  --fixture X0,Y0,Z0,X1,Y1,Z1  a box (mm) the tool and holder must never enter, drawn\n"
                "                             in steel blue (repeatable, up to 8)\n"
@@ -168,7 +172,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
@@ -302,6 +306,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                       word.c_str());
         p = end ? end + 1 : p + word.size();
       }
+    } else if (name == "--material") {
+      o->material = v;
     } else if (name == "--fixture") {
       int64_t b[6];
       if (!parse_stock(v, b))

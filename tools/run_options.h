@@ -78,6 +78,7 @@ struct RunOptions {
   // shank,holder,plunge|all, --table Z, --fixture (repeatable). run_job also
   // turns on what a tool describes (a flute length, a holder, nocentre).
   SafetyChoice checks;
+  std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)

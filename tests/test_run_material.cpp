@@ -1,0 +1,72 @@
+// `dexmill run --material` (issue 19): the process rules on programs the
+// test writes: a feed over a material's limit on exactly one line gives one
+// warning on that line, coolant in wood one on its line, a program within
+// the limits none; the report's materials (volume per material); presets,
+// and a bad material file's FILE:LINE:COL error.
+#include <string>
+
+#include "tests/run_cli_util.h"
+#include "tests/runner.h"
+
+namespace {
+
+using namespace run_cli;
+
+int warnings_in(const std::string& s) {
+  int n = 0;
+  for (size_t at = s.find("warning:"); at != std::string::npos; at = s.find("warning:", at + 1)) ++n;
+  return n;
+}
+
+const char* kSandwich =
+    "material alu plain max_feed=1200 spindle=8000..24000 density=2.7\n"
+    "material wood wood max_feed=3000 coolant=no density=0.7\n"
+    "layer -20 -10 alu\n"
+    "layer -10 0 wood\n";
+
+}  // namespace
+
+TEST(material_feed_spindle_coolant_on_their_lines) {
+  if (skip()) return;
+  const std::string mat = write_tmp("sandwich.txt", kSandwich);
+  // Line 6 runs 2000 mm/min through both layers (over alu's 1200); line 10
+  // floods the wood; line 13 runs 2000 in the wood alone (fine).
+  const std::string p = write_tmp("mat.ngc",
+                                  "G21 G90\nM3 S12000\nG0 Z5\nG0 X-5 Y10\nG1 Z-15 F300\nG1 X45 F2000\nG0 Z5\n"
+                                  "G0 X-5 Y20\nG1 Z-4 F300\nM8 G1 X45 F1000\nM9\nG0 X-5 Y30\nG1 X45 Z-4 F2000\nG0 Z5\nM2\n");
+  const std::string args = p + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --material " + mat;
+  Result r = run(args + " --report " + tmp_dir() + "/mat.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "mat.ngc:6:1: warning: feed 2000 mm/min over alu's limit 1200 mm/min"));
+  CHECK(has(r.err, "mat.ngc:10:1: warning: coolant on (M8) while cutting wood, which forbids it"));
+  CHECK_EQ(warnings_in(r.err), 2);
+  const std::string rep = slurp(tmp_dir() + "/mat.json");
+  CHECK(has(rep, "\"violations_total\": 2"));
+  CHECK(has(rep, "{\"name\": \"alu\""));
+  // The spindle over alu's range.
+  const std::string fast = write_tmp("fast.ngc", "G21 G90\nM3 S30000\nG0 X-5 Y10 Z5\nG1 Z-15 F300\nG1 X45 F1000\nG0 Z5\nM2\n");
+  r = run(fast + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --report /dev/null --material " + mat);
+  CHECK(has(r.err, "fast.ngc:5:1: warning: spindle 30000 rpm outside alu's range 8000..24000 rpm"));
+  // Within every limit: nothing.
+  const std::string calm = write_tmp("calm.ngc", "G21 G90\nM3 S12000\nG0 X-5 Y10 Z5\nG1 Z-15 F300\nG1 X45 F1000\nG0 Z5\nM2\n");
+  r = run(calm + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --report /dev/null --material " + mat);
+  CHECK_EQ(warnings_in(r.err), 0);
+  // Without --material the report says null.
+  r = run(calm + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --report " + tmp_dir() + "/nomat.json");
+  CHECK(has(slurp(tmp_dir() + "/nomat.json"), "\"materials\": null"));
+}
+
+TEST(material_presets_and_bad_files) {
+  if (skip()) return;
+  const std::string calm = write_tmp("calm2.ngc", "G21 G90\nM3 S12000\nG0 X-5 Y10 Z5\nG1 Z-5 F300\nG1 X45 F500\nG0 Z5\nM2\n");
+  const std::string base = calm + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --report /dev/null";
+  for (const char* preset : {"two-layer", "marble", "wood", "bronze", "aluminium", "wood-on-aluminium"})
+    CHECK_EQ(run(base + " --material " + preset).code, 0);
+  Result r = run(base + " --material marbel");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "is neither a preset"));
+  const std::string bad = write_tmp("bad.txt", "material a plain\nlayer -5 0 b\n");
+  r = run(base + " --material " + bad);
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.err, "bad.txt:2:12: error: no material named 'b'"));
+}
