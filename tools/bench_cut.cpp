@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/assess/gouge_watch.h"
+#include "core/check/process.h"
 #include "core/check/safety.h"
+#include "core/material/material_preset.h"
 #include "core/config.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
@@ -271,9 +273,35 @@ void run_safety(const char* name) {
       &watch.total);
 }
 
+// process-1k: what `dexmill run --material wood-on-aluminium` costs: every
+// column a move lowers looked up through the two layers (each move a feed
+// within every limit, so nothing is a violation).
+void run_process(const char* name) {
+  Job j;
+  if (!setup(name, "scale-1k", &j)) return;
+  std::vector<uint32_t> shadow(static_cast<size_t>(j.w.geo.nx) * j.w.geo.ny);
+  const BoxNm stock{PointNm{0, 0, 0}, PointNm{j.w.geo.nx * j.w.geo.pitch_nm, j.w.geo.ny * j.w.geo.pitch_nm, j.w.stock_top_nm}};
+  static StockComposition comp;
+  (void)material_preset("wood-on-aluminium", stock, &comp);
+  ProcessWatch watch;
+  watch_ratio(
+      name, "scale-1k", &j, [&] { (void)process_watch_init(&watch, j.g, &comp, shadow.data(), shadow.size()); },
+      [&](size_t k, GridRect changed) {
+        ProcessState s;
+        s.line = static_cast<uint32_t>(k);
+        s.feed_move = true;
+        s.feed_nm_per_min = 1000 * kNmPerMm;
+        s.spindle_rpm = 12000;
+        s.spindle_on = true;
+        process_watch_record(&watch, j.g, changed, s, nullptr);
+      },
+      &watch.total);
+}
+
 }  // namespace
 }  // namespace dexmill
 
+BENCH(process_1k, "process-1k", dexmill::run_process);
 BENCH(assess_w3, "assess-w3", dexmill::run_assess);
 BENCH(assess_1k, "assess-1k", dexmill::run_assess);
 BENCH(safety_w3, "safety-w3", dexmill::run_safety);
