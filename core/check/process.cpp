@@ -1,6 +1,7 @@
 // The process rules of an inhomogeneous stock; see process.h.
 #include "core/check/process.h"
 
+#include "core/check/removals.h"
 #include "core/material/column.h"
 
 namespace dexmill {
@@ -60,40 +61,28 @@ bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect chang
   const size_t first = w->nkept;
   bool added = false;
   uint32_t mask_now = 0;  // the materials this record removed, for the time tallies
-  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
-  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
   const StockComposition& c = *w->comp;
   int64_t lengths[kCompositionMaxMaterials];
-  for (int32_t j = j0; j < j1; ++j) {
-    const size_t row = g.index(0, j);
-    for (int32_t i = i0; i < i1; ++i) {
-      uint32_t& was = w->shadow[row + static_cast<size_t>(i)];
-      const uint32_t now = g.top[row + static_cast<size_t>(i)];
-      if (now >= was) {
-        was = now;
-        continue;
-      }
-      const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
-      const int64_t z_lo = g.z0_nm + static_cast<int64_t>(now) * g.lsb_nm, z_hi = g.z0_nm + static_cast<int64_t>(was) * g.lsb_nm;
-      was = now;
-      const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, z_lo, g.lsb_nm);
-      const ProcessState& by = before ? prev->state : s;
-      const uint32_t mask = composition_column(c, x, y, z_lo, z_hi, lengths);
-      if (!before) mask_now |= mask;
-      for (int32_t m = 0; m < c.material_count; ++m) {
-        if (!(mask >> m & 1u)) continue;
-        w->tally[m].removed_nm_columns += static_cast<uint64_t>(lengths[m]);
-        const MaterialProcess& p = c.materials[m].process;
-        const uint8_t mi = static_cast<uint8_t>(m);
-        const PointNm at{x, y, z_lo};
-        if (by.feed_move && by.feed_nm_per_min > p.max_feed_nm_per_min)
-          violate(w, first, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
-        if (by.spindle_on && (by.spindle_rpm < p.spindle_min_rpm || by.spindle_rpm > p.spindle_max_rpm))
-          violate(w, first, by, ProcessRule::kSpindle, mi, by.spindle_rpm, at, &added);
-        if (by.coolant && !p.coolant_allowed) violate(w, first, by, ProcessRule::kCoolant, mi, by.coolant, at, &added);
-      }
+  each_removal(w->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t was, uint32_t now) {
+    const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
+    const int64_t z_lo = g.z0_nm + static_cast<int64_t>(now) * g.lsb_nm, z_hi = g.z0_nm + static_cast<int64_t>(was) * g.lsb_nm;
+    const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, z_lo, g.lsb_nm);
+    const ProcessState& by = before ? prev->state : s;
+    const uint32_t mask = composition_column(c, x, y, z_lo, z_hi, lengths);
+    if (!before) mask_now |= mask;
+    for (int32_t m = 0; m < c.material_count; ++m) {
+      if (!(mask >> m & 1u)) continue;
+      w->tally[m].removed_nm_columns += static_cast<uint64_t>(lengths[m]);
+      const MaterialProcess& p = c.materials[m].process;
+      const uint8_t mi = static_cast<uint8_t>(m);
+      const PointNm at{x, y, z_lo};
+      if (by.feed_move && by.feed_nm_per_min > p.max_feed_nm_per_min)
+        violate(w, first, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
+      if (by.spindle_on && (by.spindle_rpm < p.spindle_min_rpm || by.spindle_rpm > p.spindle_max_rpm))
+        violate(w, first, by, ProcessRule::kSpindle, mi, by.spindle_rpm, at, &added);
+      if (by.coolant && !p.coolant_allowed) violate(w, first, by, ProcessRule::kCoolant, mi, by.coolant, at, &added);
     }
-  }
+  });
   // Cutting time: a record's whole time to each material it removed (an
   // end cap's material, cut with the next record, adds no time).
   for (int32_t m = 0; m < c.material_count; ++m)

@@ -1,6 +1,8 @@
 // Safety checks; see safety.h.
 #include "core/check/safety.h"
 
+#include "core/check/removals.h"
+
 #include "core/math/fixed.h"
 #include "core/motion/arc_chords.h"
 
@@ -466,80 +468,70 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
     }
     return added;
   }
-  for (int32_t j = j0; j < j1; ++j) {
-    const size_t row = g.index(0, j);
-    for (int32_t i = i0; i < i1; ++i) {
-      uint32_t& was = w->shadow[row + static_cast<size_t>(i)];
-      const uint32_t now = g.top[row + static_cast<size_t>(i)];
-      if (now >= was) {
-        was = now;
-        continue;
-      }
-      const uint64_t removed = was - now;
-      was = now;
-      const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm, z = g.z0_nm + now * g.lsb_nm;
-      const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, z, g.lsb_nm);
-      const SafetyMove& by = before ? prev->move : m;
-      if (by.rapid) w->rapid_removed_lsb += removed;
-      if (!by.start_known) continue;
-      // Above the flutes where the tool first stood over the column. A
-      // deferred end cap's (before) the shank disc found at its own record
-      // as material left (body_contacts): not twice.
-      if (!before && static_cast<int64_t>(was + removed) > shank_floor_lsb && flute_of(by) > 0) {
-        const int64_t zf = first_cover_z(r, by.body->cutter_r_nm, x, y);
-        if (zf != kBodyNever) {
-          const int64_t limit = zf + by.body->flute_nm, was_nm = z + static_cast<int64_t>(removed) * g.lsb_nm;
-          const int64_t depth = was_nm - max_of(limit, z);
-          if (depth > 0) {
-            SafetyEvent* e = event_for(w, first, by.line, SafetyKind::kShank, &added);
-            if (e) add_overlap(e, depth, g.lsb_nm, PointNm{x, y, limit});
-          }
+  each_removal(w->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t was, uint32_t now) {
+    const uint64_t removed = was - now;
+    const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm, z = g.z0_nm + now * g.lsb_nm;
+    const bool before = prev && prev->tool && profile_explains_cut(*prev->tool, prev->end, x, y, z, g.lsb_nm);
+    const SafetyMove& by = before ? prev->move : m;
+    if (by.rapid) w->rapid_removed_lsb += removed;
+    if (!by.start_known) return;
+    // Above the flutes where the tool first stood over the column. A
+    // deferred end cap's (before) the shank disc found at its own record
+    // as material left (body_contacts): not twice.
+    if (!before && static_cast<int64_t>(was) > shank_floor_lsb && flute_of(by) > 0) {
+      const int64_t zf = first_cover_z(r, by.body->cutter_r_nm, x, y);
+      if (zf != kBodyNever) {
+        const int64_t limit = zf + by.body->flute_nm, was_nm = z + static_cast<int64_t>(removed) * g.lsb_nm;
+        const int64_t depth = was_nm - max_of(limit, z);
+        if (depth > 0) {
+          SafetyEvent* e = event_for(w, first, by.line, SafetyKind::kShank, &added);
+          if (e) add_overlap(e, depth, g.lsb_nm, PointNm{x, y, limit});
         }
-      }
-      if (plunging(by) && static_cast<int64_t>(removed) * g.lsb_nm > kPlungeDepthNm) {
-        // At the axis: within a quarter of the radius, or the column nearest it.
-        const int64_t zone = max_of(by.body->cutter_r_nm / 4, g.pitch_nm * 71 / 100);
-        const int64_t ax = x - by.end.x_nm, ay = y - by.end.y_nm;
-        if (ax >= -zone && ax <= zone && ay >= -zone && ay <= zone && ax * ax + ay * ay <= zone * zone) {
-          SafetyEvent* e = event_for(w, first, by.line, SafetyKind::kPlunge, &added);
-          if (e) add_overlap(e, static_cast<int64_t>(removed) * g.lsb_nm, g.lsb_nm, PointNm{by.end.x_nm, by.end.y_nm, z});
-        }
-      }
-      SafetyEvent* e;
-      if (by.rapid && w->check_rapid) {
-        e = event_for(w, first, by.line, SafetyKind::kRapidIntoStock, &added);
-      } else if (!by.spindle_on && w->check_spindle) {
-        // One event a stretch: the open one, else a new one on this line.
-        if (!w->spindle_stretch_open || (w->spindle_on_line && by.line >= w->spindle_on_line)) {  // M3/M4 ended the last
-          w->spindle_stretch_open = true;
-          w->spindle_on_line = 0;
-          ++w->total;
-          added = true;
-          w->spindle_stretch = w->nevents;
-          e = nullptr;
-          if (w->nevents < kSafetyEventsMax) {
-            e = &w->events[w->nevents++];
-            *e = SafetyEvent{};
-            e->kind = SafetyKind::kSpindleStopped;
-            e->line = by.line;
-          }
-        } else {
-          e = w->spindle_stretch < w->nevents ? &w->events[w->spindle_stretch] : nullptr;
-        }
-        if (e) e->last_line = max_of(e->last_line, by.line);
-      } else {
-        continue;
-      }
-      if (!e) continue;
-      ++e->columns;
-      e->removed_lsb += removed;
-      const int64_t depth_nm = static_cast<int64_t>(removed) * g.lsb_nm;
-      if (e->columns == 1 || depth_nm > e->depth_nm) {  // the deepest cut column marks the event
-        e->depth_nm = depth_nm;
-        e->at = PointNm{x, y, z};
       }
     }
-  }
+    if (plunging(by) && static_cast<int64_t>(removed) * g.lsb_nm > kPlungeDepthNm) {
+      // At the axis: within a quarter of the radius, or the column nearest it.
+      const int64_t zone = max_of(by.body->cutter_r_nm / 4, g.pitch_nm * 71 / 100);
+      const int64_t ax = x - by.end.x_nm, ay = y - by.end.y_nm;
+      if (ax >= -zone && ax <= zone && ay >= -zone && ay <= zone && ax * ax + ay * ay <= zone * zone) {
+        SafetyEvent* e = event_for(w, first, by.line, SafetyKind::kPlunge, &added);
+        if (e) add_overlap(e, static_cast<int64_t>(removed) * g.lsb_nm, g.lsb_nm, PointNm{by.end.x_nm, by.end.y_nm, z});
+      }
+    }
+    SafetyEvent* e;
+    if (by.rapid && w->check_rapid) {
+      e = event_for(w, first, by.line, SafetyKind::kRapidIntoStock, &added);
+    } else if (!by.spindle_on && w->check_spindle) {
+      // One event a stretch: the open one, else a new one on this line.
+      if (!w->spindle_stretch_open || (w->spindle_on_line && by.line >= w->spindle_on_line)) {  // M3/M4 ended the last
+        w->spindle_stretch_open = true;
+        w->spindle_on_line = 0;
+        ++w->total;
+        added = true;
+        w->spindle_stretch = w->nevents;
+        e = nullptr;
+        if (w->nevents < kSafetyEventsMax) {
+          e = &w->events[w->nevents++];
+          *e = SafetyEvent{};
+          e->kind = SafetyKind::kSpindleStopped;
+          e->line = by.line;
+        }
+      } else {
+        e = w->spindle_stretch < w->nevents ? &w->events[w->spindle_stretch] : nullptr;
+      }
+      if (e) e->last_line = max_of(e->last_line, by.line);
+    } else {
+      return;
+    }
+    if (!e) return;
+    ++e->columns;
+    e->removed_lsb += removed;
+    const int64_t depth_nm = static_cast<int64_t>(removed) * g.lsb_nm;
+    if (e->columns == 1 || depth_nm > e->depth_nm) {  // the deepest cut column marks the event
+      e->depth_nm = depth_nm;
+      e->at = PointNm{x, y, z};
+    }
+  });
   return added || w->total != total_before;
 }
 
