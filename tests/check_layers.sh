@@ -23,7 +23,7 @@ allowed() {
     core/assess) echo "core/design core/grid core/tool core/math";;
     core/material) echo "core/math";;  # noise, textures, materials: maths only
     core/check) echo "core/motion core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; process rules: materials
-    display) echo "core/assess core/design core/grid core/tool core/math";;
+    display) echo "core/assess core/design core/grid core/tool core/math core/material";;
     *) echo "?";;
   esac
 }

@@ -3,7 +3,11 @@
 // warning on that line, coolant in wood one on its line, a program within
 // the limits none; the report's materials (volume per material); presets,
 // and a bad material file's FILE:LINE:COL error.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
@@ -69,4 +73,49 @@ TEST(material_presets_and_bad_files) {
   r = run(base + " --material " + bad);
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "bad.txt:2:12: error: no material named 'b'"));
+}
+
+namespace {
+
+// Pixels of a binary PPM (P6, maxval 255) as RGB triples; empty if not one.
+std::vector<unsigned char> ppm_rgb(const std::string& bytes) {
+  int w = 0, h = 0, maxval = 0, used = 0;
+  if (std::sscanf(bytes.c_str(), "P6 %d %d %d%n", &w, &h, &maxval, &used) != 3 || maxval != 255) return {};
+  const size_t at = static_cast<size_t>(used) + 1, n = static_cast<size_t>(w) * h * 3;
+  if (bytes.size() < at + n) return {};
+  return std::vector<unsigned char>(bytes.begin() + static_cast<long>(at), bytes.begin() + static_cast<long>(at + n));
+}
+
+// Yellowish pixels (any shade of the two-layer block's lower layer; the
+// workpiece grey, the black layer and the table are not).
+int yellowish(const std::vector<unsigned char>& px) {
+  int n = 0;
+  for (size_t k = 0; k + 2 < px.size(); k += 3) n += px[k] > 110 && px[k + 1] > 80 && px[k + 2] < 70;
+  return n;
+}
+
+}  // namespace
+
+// --color material (the default with --material): a hole drilled through
+// the black upper layer of the two-layer block shows the yellow one.
+TEST(material_colour_mode_shows_the_layer_cut_into) {
+  if (skip()) return;
+  const std::string shallow = write_tmp("shallow.ngc", "G21 G90\nM3 S12000\nG0 X20 Y20 Z5\nG1 Z-2 F300\nG0 Z5\nG0 X-40 Y-40\nM2\n");
+  const std::string deep = write_tmp("deep.ngc", "G21 G90\nM3 S12000\nG0 X20 Y20 Z5\nG1 Z-15 F300\nG0 Z5\nG0 X-40 Y-40\nM2\n");
+  const std::string opts = " --stock 0,0,-20,40,40,0 --pitch 0.25 --tool flat:12 --view top -q --material two-layer --image ";
+  Result r = run(shallow + opts + tmp_dir() + "/shallow.ppm");
+  CHECK_EQ(r.code, 0);
+  r = run(deep + opts + tmp_dir() + "/deep.ppm");
+  CHECK_EQ(r.code, 0);
+  const std::vector<unsigned char> a = ppm_rgb(slurp(tmp_dir() + "/shallow.ppm")), b = ppm_rgb(slurp(tmp_dir() + "/deep.ppm"));
+  CHECK(!a.empty() && !b.empty());
+  const int yellow_a = yellowish(a), yellow_b = yellowish(b);
+  std::printf("  yellow pixels: %d in the shallow hole's frame, %d in the deep one's\n", yellow_a, yellow_b);
+  CHECK_EQ(yellow_a, 0);
+  CHECK_GT(yellow_b, 1000);  // the 12 mm hole's floor, seen from above
+  // Plain keeps the grey; material needs --material.
+  r = run(deep + " --stock 0,0,-20,40,40,0 --pitch 0.25 --tool flat:12 --view top -q --material two-layer --color plain --image " +
+          tmp_dir() + "/plain.ppm");
+  CHECK_EQ(yellowish(ppm_rgb(slurp(tmp_dir() + "/plain.ppm"))), 0);
+  CHECK_EQ(run(deep + " --color material --report /dev/null").code, 2);
 }

@@ -38,6 +38,7 @@
 #include "tools/run_outputs.h"
 #include "tools/run_path.h"
 #include "tools/run_render.h"
+#include "display/material_colours.h"
 #include "tools/run_material.h"
 #include "tools/run_safety.h"
 #include "tools/run_stock.h"
@@ -633,6 +634,17 @@ int run_job(RunOptions o) {
       out->set_colours(&design.colours.colours);
       out->set_legend(&design.legend);
     }
+  }
+  // The material under each top (--color material), in every output but the error view.
+  MaterialColours<height_t> material_colours;
+  std::vector<uint8_t> material_cls;
+  std::vector<uint32_t> material_luts;
+  if (o.color == RunOptions::Color::kMaterial) {
+    material_cls.assign(static_cast<size_t>(grid.nx) * static_cast<size_t>(grid.ny), 0);
+    material_luts.assign(static_cast<size_t>(kMaxColourClasses) * kShadeLevels, 0);
+    material_colours_init(&material_colours, grid, *material.comp, material_cls.data(), material_luts.data());
+    for (RenderOutput* out : w.outputs)
+      if (out != error_out.get()) out->set_colours(&material_colours.colours);
   }
   // The gouges found so far, marked in every frame and live view.
   if (!o.design.empty())

@@ -105,8 +105,9 @@ void run_usage(std::FILE* f) {
                "  --design-z ZLOW,ZHIGH      a PGM design's black and white, mm (it spans the stock's XY)\n"
                "  --tolerance MM             |cut - design| within it is not an error (default 0.05)\n"
                "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
-               "  --color plain|error        what colours the surface: one colour, or cut - design in\n"
-               "                             bands (white within tolerance, greens left, reds gouged)\n"
+               "  --color plain|error|material  what colours the surface: one colour, cut - design in\n"
+               "                             bands (white within tolerance, greens left, reds gouged),\n"
+               "                             or the material under each top (the default with --material)\n"
                "  --error-image FILE.png     the final frame in the error view too (needs --design)\n"
                "  --overlay design|workpiece --image with the design translucent over the cut (shows\n"
                "                             gouges), or the cut translucent over the design (shows\n"
@@ -277,7 +278,9 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     } else if (name == "--color") {
       if (!std::strcmp(v, "plain")) o->color = RunOptions::Color::kPlain;
       else if (!std::strcmp(v, "error")) o->color = RunOptions::Color::kError;
-      else return fail(kExitUsage, "--color must be plain or error, not '%s'", v);
+      else if (!std::strcmp(v, "material")) o->color = RunOptions::Color::kMaterial;
+      else return fail(kExitUsage, "--color must be plain, error or material, not '%s'", v);
+      o->have_color = true;
     } else if (name == "--overlay") {
       if (!std::strcmp(v, "design")) o->overlay = RunOptions::Overlay::kDesign;
       else if (!std::strcmp(v, "workpiece")) o->overlay = RunOptions::Overlay::kWorkpiece;
@@ -347,6 +350,9 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   }
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
+  if (!o->material.empty() && !o->have_color) o->color = RunOptions::Color::kMaterial;
+  if (o->color == RunOptions::Color::kMaterial && o->material.empty())
+    return fail(kExitUsage, "--color material needs --material (what the stock is made of)");
   if (o->color == RunOptions::Color::kError && o->design.empty())
     return fail(kExitUsage, "--color error needs --design (the part to compare the cut with)");
   if (o->design_pgm && !o->have_design_z)
