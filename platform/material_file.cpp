@@ -302,10 +302,14 @@ bool material_file_parse(const char* name, const char* text, std::size_t n, cons
   return true;
 }
 
-bool material_file_load(const std::string& path, const BoxNm& stock, StockComposition* out, std::string* err) {
+MaterialLoad material_file_load(const std::string& path, const BoxNm& stock, StockComposition* out, std::string* err) {
   std::vector<unsigned char> bytes;
-  if (read_whole_file(path, kMaterialFileMaxBytes, &bytes, err) != ReadFile::kOk) return false;
-  return material_file_parse(path.c_str(), reinterpret_cast<const char*>(bytes.data()), bytes.size(), stock, out, err);
+  const ReadFile r = read_whole_file(path, kMaterialFileMaxBytes, &bytes, err);
+  if (r == ReadFile::kIoError) return MaterialLoad::kIoError;
+  if (r != ReadFile::kOk) return MaterialLoad::kInputError;
+  return material_file_parse(path.c_str(), reinterpret_cast<const char*>(bytes.data()), bytes.size(), stock, out, err)
+             ? MaterialLoad::kOk
+             : MaterialLoad::kInputError;
 }
 
 }  // namespace dexmill

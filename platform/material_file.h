@@ -46,8 +46,10 @@ constexpr std::size_t kMaterialFileMaxBytes = std::size_t{1} << 20;
 bool material_file_parse(const char* name, const char* text, std::size_t n, const BoxNm& stock,
                          StockComposition* out, std::string* err);
 
-// Reads and parses the file at `path` (too large, unreadable: an error too).
-bool material_file_load(const std::string& path, const BoxNm& stock, StockComposition* out, std::string* err);
+// Reads and parses the file at `path`: kIoError when it cannot be read,
+// kInputError when it is too large or wrong (*err the whole message).
+enum class MaterialLoad : uint8_t { kOk, kIoError, kInputError };
+MaterialLoad material_file_load(const std::string& path, const BoxNm& stock, StockComposition* out, std::string* err);
 
 }  // namespace dexmill
 

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace t {
 
@@ -101,5 +102,36 @@ void dump_frame(const FrameView& fb, const char* name) {
 SCENE_INSTANTIATE(uint8_t)
 SCENE_INSTANTIATE(uint16_t)
 SCENE_INSTANTIATE(uint32_t)
+
+int uncovered_changes(const FrameView& now, const FrameView& before, const RenderResult& res) {
+  int n = 0;
+  for (int32_t y = 0; y < now.height; ++y)
+    for (int32_t x = 0; x < now.width; ++x) {
+      if (frame_pixel(now, x, y) == frame_pixel(before, x, y)) continue;
+      bool in = false;
+      for (int k = 0; k < res.nrects; ++k)
+        in |= x >= res.rects[k].x0 && x < res.rects[k].x1 && y >= res.rects[k].y0 && y < res.rects[k].y1;
+      n += !in;
+    }
+  return n;
+}
+
+void report_first_difference(const char* what, int step, const FrameView& incremental, const FrameView& full,
+                             const char* prefix) {
+  int32_t fx = -1, fy = -1;
+  for (int32_t y = 0; y < incremental.height && fx < 0; ++y)
+    for (int32_t x = 0; x < incremental.width; ++x)
+      if (frame_pixel(incremental, x, y) != frame_pixel(full, x, y)) {
+        fx = x;
+        fy = y;
+        break;
+      }
+  if (fx < 0) return;
+  std::printf("%s: step %d: first differing pixel (%d, %d): incremental %08x, full %08x\n", what, step, fx, fy,
+              frame_pixel(incremental, fx, fy), frame_pixel(full, fx, fy));
+  const std::string base(prefix);
+  dump_frame(incremental, (base + "_actual").c_str());
+  dump_frame(full, (base + "_expected").c_str());
+}
 
 }  // namespace t

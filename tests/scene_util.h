@@ -66,6 +66,14 @@ bool init_renderer(dexmill::Renderer<H>* r, const DexelGrid<H>& g, TestFrame* f,
 // Writes the frame as DIR/NAME.ppm when DEXMILL_TEST_IMAGES=DIR is set.
 void dump_frame(const dexmill::FrameView& fb, const char* name);
 
+// Pixels that differ between `now` and `before` (same size and format)
+// outside every rectangle of res: what an incremental redraw failed to report.
+int uncovered_changes(const dexmill::FrameView& now, const dexmill::FrameView& before, const dexmill::RenderResult& res);
+// Prints the first pixel where an incremental frame differs from a full one
+// and dumps both as <prefix>_actual and <prefix>_expected.
+void report_first_difference(const char* what, int step, const dexmill::FrameView& incremental,
+                             const dexmill::FrameView& full, const char* prefix);
+
 }  // namespace t
 
 #endif

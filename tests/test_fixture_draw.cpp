@@ -294,30 +294,10 @@ void incremental_run(const IncCase& ic, uint64_t seed, int steps) {
     CHECK(!res.full);
     FrameView old = fa.fb;
     old.pixels = before.data();
-    for (int32_t py = 0; py < kH; ++py) {
-      for (int32_t px = 0; px < kW; ++px) {
-        if (frame_pixel(fa.fb, px, py) == frame_pixel(old, px, py)) continue;
-        bool in = false;
-        for (int k = 0; k < res.nrects; ++k)
-          in |= px >= res.rects[k].x0 && px < res.rects[k].x1 && py >= res.rects[k].y0 && py < res.rects[k].y1;
-        uncovered += !in;
-      }
-    }
+    uncovered += t::uncovered_changes(fa.fb, old, res);
     render_full(&rb, &tg.g, pose);
-    if (frame_hash(fa.fb) != frame_hash(fb.fb) && mismatches++ == 0) {
-      int32_t fx = -1, fy = -1;
-      for (int32_t py = 0; py < kH && fx < 0; ++py)
-        for (int32_t px = 0; px < kW; ++px)
-          if (frame_pixel(fa.fb, px, py) != frame_pixel(fb.fb, px, py)) {
-            fx = px;
-            fy = py;
-            break;
-          }
-      std::printf("%s: step %d: first differing pixel (%d, %d): incremental %08x, full %08x\n", ic.name, step, fx, fy,
-                  frame_pixel(fa.fb, fx, fy), frame_pixel(fb.fb, fx, fy));
-      t::dump_frame(fa.fb, "fixture_incremental_actual");
-      t::dump_frame(fb.fb, "fixture_incremental_expected");
-    }
+    if (frame_hash(fa.fb) != frame_hash(fb.fb) && mismatches++ == 0)
+      t::report_first_difference(ic.name, step, fa.fb, fb.fb, "fixture_incremental");
   }
   CHECK_EQ(mismatches, 0);
   CHECK_EQ(uncovered, 0);

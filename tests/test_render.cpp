@@ -121,31 +121,13 @@ void incremental_run(const IncCase& ic, uint64_t seed, int steps) {
     CHECK(!res.full);
     CHECK_EQ(tg.g.dirty.empty(), true);
     // Every pixel that changed lies in a returned rectangle.
-    for (int32_t y = 0; y < 240; ++y) {
-      for (int32_t x = 0; x < 320; ++x) {
-        FrameView old = fa.fb;
-        old.pixels = before.data();
-        if (frame_pixel(fa.fb, x, y) == frame_pixel(old, x, y)) continue;
-        bool in = false;
-        for (int k = 0; k < res.nrects; ++k)
-          in |= x >= res.rects[k].x0 && x < res.rects[k].x1 && y >= res.rects[k].y0 && y < res.rects[k].y1;
-        uncovered += !in;
-      }
-    }
+    FrameView old = fa.fb;
+    old.pixels = before.data();
+    uncovered += t::uncovered_changes(fa.fb, old, res);
     // And the frame equals a full redraw of the same scene.
     render_full(&rb, &tg.g, pose);
-    if (frame_hash(fa.fb) != frame_hash(fb.fb)) {
-      if (mismatches++ == 0) {
-        int32_t fx = -1, fy = -1;
-        for (int32_t y = 0; y < 240 && fx < 0; ++y)
-          for (int32_t x = 0; x < 320; ++x)
-            if (frame_pixel(fa.fb, x, y) != frame_pixel(fb.fb, x, y)) { fx = x; fy = y; break; }
-        std::printf("%s: step %d: first differing pixel (%d, %d): incremental %08x, full %08x\n", ic.name, step, fx, fy,
-                    frame_pixel(fa.fb, fx, fy), frame_pixel(fb.fb, fx, fy));
-        t::dump_frame(fa.fb, "incremental_actual");
-        t::dump_frame(fb.fb, "incremental_expected");
-      }
-    }
+    if (frame_hash(fa.fb) != frame_hash(fb.fb) && mismatches++ == 0)
+      t::report_first_difference(ic.name, step, fa.fb, fb.fb, "incremental");
   }
   CHECK_EQ(mismatches, 0);
   CHECK_EQ(uncovered, 0);

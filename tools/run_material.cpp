@@ -33,10 +33,10 @@ int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock, 
       return fail(kExitUsage, "--material '%s' is neither a preset (%s) nor a file", what.c_str(), names.c_str());
     }
     std::string err;
-    if (!material_file_load(what, stock, m->comp.get(), &err)) {
+    const MaterialLoad load = material_file_load(what, stock, m->comp.get(), &err);
+    if (load != MaterialLoad::kOk) {
       std::fprintf(stderr, "%s\n", err.c_str());
-      return err.find(": error: cannot read") != std::string::npos || err.rfind("dexmill:", 0) == 0 ? kExitIo
-                                                                                                     : kExitInput;
+      return load == MaterialLoad::kIoError ? kExitIo : kExitInput;
     }
     m->source = what;
   }

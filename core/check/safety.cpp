@@ -259,6 +259,26 @@ void body_stretch(SafetyWatch* w, size_t first, const DexelGrid<H>& g, const Can
   w->body_stretch_line = r.line;
 }
 
+// The fixture grid's column at (x, y): from the lowest bottom to the highest
+// top of the boxes over it, rounded outwards (a box is never thinner in the
+// grid than it is); none: a hole.
+void fixture_column(const DexelGrid<uint32_t>& f, const BoxNm* boxes, int n, int64_t x, int64_t y, uint32_t* top,
+                    uint32_t* bottom) {
+  int64_t lo = INT64_MAX, hi = INT64_MIN;
+  for (int k = 0; k < n; ++k) {
+    const BoxNm& b = boxes[k];
+    if (x < b.lo.x_nm || x > b.hi.x_nm || y < b.lo.y_nm || y > b.hi.y_nm) continue;
+    lo = min_of(lo, b.lo.z_nm);
+    hi = max_of(hi, b.hi.z_nm);
+  }
+  if (hi == INT64_MIN) {
+    *top = *bottom = 0;
+    return;
+  }
+  *bottom = static_cast<uint32_t>(clamp<int64_t>(div_floor(lo - f.z0_nm, f.lsb_nm), 0, f.top_bound_lsb));
+  *top = static_cast<uint32_t>(clamp<int64_t>(div_ceil(hi - f.z0_nm, f.lsb_nm), 0, f.top_bound_lsb));
+}
+
 // The fixture check: the cutter swept into the fixture grid exactly as
 // into the stock (what it would cut there is an overlap, then put back),
 // and the body's rings against it.
@@ -283,14 +303,9 @@ void fixture_contacts(SafetyWatch* w, size_t first, const CanonRecord& r, const 
       for (int32_t i = max_of(d.i0, int32_t{0}); i < min_of(d.i1, f.nx); ++i) {
         const size_t at = f.index(i, j);
         const uint32_t was_top = top[at], was_bottom = bottom[at];
-        DexelGrid<uint32_t> one = f;  // the column as the boxes make it
-        uint32_t t1 = 0, b1 = 0;
-        one.top = &t1;
-        one.bottom = &b1;
-        one.nx = one.ny = 1;
-        one.x0_nm = f.x0_nm + i * f.pitch_nm;
-        one.y0_nm = f.y0_nm + j * f.pitch_nm;
-        fixture_grid_fill(&one, w->fixture_boxes, w->nfixture_boxes);
+        const int64_t x = f.x0_nm + i * f.pitch_nm, y = f.y0_nm + j * f.pitch_nm;
+        uint32_t t1 = 0, b1 = 0;  // the column as the boxes make it
+        fixture_column(f, w->fixture_boxes, w->nfixture_boxes, x, y, &t1, &b1);
         if (was_top == t1 && was_bottom == b1) continue;
         // How much of the box the tool took: from the top down, all of it
         // (a hole: through), or from the bottom up (the shaft's top in it).
@@ -302,7 +317,7 @@ void fixture_contacts(SafetyWatch* w, size_t first, const CanonRecord& r, const 
         bottom[at] = b1;
         if (depth <= 0) continue;
         SafetyEvent* e = event_for(w, first, r.line, SafetyKind::kFixture, added);
-        if (e) add_overlap(e, depth, f.lsb_nm, PointNm{one.x0_nm, one.y0_nm, f.z0_nm + was_top * f.lsb_nm});
+        if (e) add_overlap(e, depth, f.lsb_nm, PointNm{x, y, f.z0_nm + was_top * f.lsb_nm});
       }
     }
     f.dirty = GridRect::none();
@@ -368,26 +383,11 @@ bool fixture_grid_size(const DexelGrid<H>& g, const BoxNm* boxes, int n, DexelGr
 }
 
 void fixture_grid_fill(DexelGrid<uint32_t>* f, const BoxNm* boxes, int n) {
-  for (int32_t j = 0; j < f->ny; ++j) {
+  for (int32_t j = 0; j < f->ny; ++j)
     for (int32_t i = 0; i < f->nx; ++i) {
-      const int64_t x = f->x0_nm + i * f->pitch_nm, y = f->y0_nm + j * f->pitch_nm;
-      int64_t lo = INT64_MAX, hi = INT64_MIN;
-      for (int k = 0; k < n; ++k) {
-        const BoxNm& b = boxes[k];
-        if (x < b.lo.x_nm || x > b.hi.x_nm || y < b.lo.y_nm || y > b.hi.y_nm) continue;
-        lo = min_of(lo, b.lo.z_nm);
-        hi = max_of(hi, b.hi.z_nm);
-      }
       const size_t at = f->index(i, j);
-      if (hi == INT64_MIN) {
-        f->top[at] = f->bottom[at] = 0;
-        continue;
-      }
-      // Rounded outwards: a box is never thinner in the grid than it is.
-      f->bottom[at] = static_cast<uint32_t>(clamp<int64_t>(div_floor(lo - f->z0_nm, f->lsb_nm), 0, f->top_bound_lsb));
-      f->top[at] = static_cast<uint32_t>(clamp<int64_t>(div_ceil(hi - f->z0_nm, f->lsb_nm), 0, f->top_bound_lsb));
+      fixture_column(*f, boxes, n, f->x0_nm + i * f->pitch_nm, f->y0_nm + j * f->pitch_nm, &f->top[at], &f->bottom[at]);
     }
-  }
 }
 
 template <class H>
