@@ -18,6 +18,11 @@ ClipVertex cut(const ClipVertex& in, const ClipVertex& out, int64_t d_in, int64_
   r.w = in.w + muldiv_round(out.w - in.w, d_in, den);
   r.depth = static_cast<int32_t>(in.depth + muldiv_round(static_cast<int64_t>(out.depth) - in.depth, d_in, den));
   r.shade = static_cast<int32_t>(in.shade + muldiv_round(static_cast<int64_t>(out.shade) - in.shade, d_in, den));
+  r.rgb = 0;
+  for (int k = 0; k < 24; k += 8) {
+    const int64_t a = (in.rgb >> k) & 0xFF, b = (out.rgb >> k) & 0xFF;
+    r.rgb |= static_cast<uint32_t>(a + muldiv_round(b - a, d_in, den)) << k;
+  }
   return r;
 }
 
@@ -29,6 +34,7 @@ constexpr int kMaxPoly = 3 + 5;
 RasterVertex clip_project(const Projector& p, const ClipVertex& v) {
   RasterVertex r;
   r.shade = v.shade;
+  r.rgb = v.rgb;
   if (p.kind == Projection::kOrthographic) {
     r.x_q4 = static_cast<int32_t>(v.x);
     r.y_q4 = static_cast<int32_t>(v.y);

@@ -11,7 +11,7 @@
 //
 // Crack-free clipping: an edge is always cut from its inside end towards its
 // outside end, so the two triangles sharing an edge make the same new vertex.
-// Depth and shade are interpolated linearly along the clipped edge in clip
+// Depth, shade and colour are interpolated linearly along the clipped edge in clip
 // space.
 #ifndef DEXMILL_DISPLAY_CLIP_H
 #define DEXMILL_DISPLAY_CLIP_H
@@ -29,6 +29,7 @@ struct ClipVertex {
   int64_t x, y, w;  // orthographic: screen q4 (w unused); perspective: camera space, U
   int32_t depth;    // orthographic only: depth units (perspective derives it from w)
   int32_t shade;
+  uint32_t rgb = 0;  // RasterVertex::rgb, interpolated channel by channel
 };
 
 // A clip plane: inside when a*x + b*y + c*w + e >= 0.

@@ -181,6 +181,7 @@ class CellDrawer {
     c.x = m.cx;
     c.y = m.cy;
     c.shade = shade;
+    c.rgb = m.r.rgb;
     if (v_.proj.kind == Projection::kOrthographic) {
       c.w = 1;
       c.depth = m.cw;
@@ -207,6 +208,7 @@ class CellDrawer {
       if (c.material) {
         finish(acc, t, &c.top);
         c.top.r.shade = top_shade_[k];
+        if (tex_) c.top.r.rgb = lit_rgb(*p_.lit, tex_->top_rgb[k], top_shade_[k]);
       }
       acc[0] += a.m[0][0];
       acc[1] += a.m[1][0];
@@ -243,16 +245,123 @@ class CellDrawer {
 
   // With a colour mode, the ramp of corner c's class.
   void use_class_of(const Corner* c) {
-    if (colours_) p_.target->lut = colours_->luts + static_cast<size_t>(colours_->cls[c->k]) * kShadeLevels;
+    if (colours_ && !tex_) p_.target->lut = colours_->luts + static_cast<size_t>(colours_->cls[c->k]) * kShadeLevels;
   }
 
   // A top triangle's class: its lowest corner's (the first of equals), so a
   // slope takes the colour of the floor it drops to: a gouge's walls show
   // red, a ridge left standing keeps its green on top and white flanks.
   void use_class_of_top(const Corner* a, const Corner* b, const Corner* c) {
-    if (!colours_) return;
+    if (!colours_ || tex_) return;
     const Corner* lo = g_.top[b->k] < g_.top[a->k] ? b : a;
     use_class_of(g_.top[c->k] < g_.top[lo->k] ? c : lo);
+  }
+
+  // Twice the screen area of a b c, positive when counterclockwise (front
+  // facing), as the rasterizer decides it.
+  static int64_t area2(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c) {
+    return (static_cast<int64_t>(c.x_q4) - a.x_q4) * (static_cast<int64_t>(b.y_q4) - a.y_q4) -
+           (static_cast<int64_t>(b.x_q4) - a.x_q4) * (static_cast<int64_t>(c.y_q4) - a.y_q4);
+  }
+
+  // A bottom vertex with shade s (and, textured, the colour of the column's
+  // lowest slab).
+  MeshVertex bottom_shaded(Corner* c, int32_t s) {
+    MeshVertex m = shaded(bottom(c), s);
+    if (tex_) {
+      const int32_t i = static_cast<int32_t>(c->k % static_cast<size_t>(g_.nx));
+      const int32_t j = static_cast<int32_t>(c->k / static_cast<size_t>(g_.nx));
+      m.r.rgb = lit_rgb(*p_.lit, tex_->colour_at(tex_->ctx, i, j, static_cast<uint32_t>(g_.bottom[c->k]) + 1), s);
+    }
+    return m;
+  }
+
+  // A point of a textured side face's vertical edge: its height, and the lit
+  // colours the strips below and above it take (equal but at a break).
+  struct EdgePoint {
+    MeshVertex v;
+    uint32_t h;
+    uint32_t lo, hi;
+  };
+  static constexpr int kEdgePointsMax = 2 + kWallSplitsMax + kTextureBreaksMax;
+
+  // The points of corner c's vertical edge, bottom to top (SurfaceTexture:
+  // lattice and breaks strictly between its bottom and top); returns how many.
+  int edge_points(Corner* c, int32_t shade, EdgePoint* out) {
+    const int32_t i = static_cast<int32_t>(c->k % static_cast<size_t>(g_.nx));
+    const int32_t j = static_cast<int32_t>(c->k / static_cast<size_t>(g_.nx));
+    const uint32_t b = g_.bottom[c->k], t = g_.top[c->k];
+    const SurfaceTexture& x = *tex_;
+    const LitRamp& lit = *p_.lit;
+    int n = 0;
+    auto add = [&](uint32_t h, uint32_t lo, uint32_t hi) {
+      EdgePoint& e = out[n++];
+      e.h = h;
+      place(i, j, h, &e.v);
+      e.v.r.shade = shade;
+      e.lo = lit_rgb(lit, lo, shade);
+      e.hi = lo == hi ? e.lo : lit_rgb(lit, hi, shade);
+    };
+    const uint32_t first = x.colour_at(x.ctx, i, j, b + 1);
+    add(b, first, first);
+    // The lattice, coarsened by powers of two until it fits the bound.
+    uint32_t step = x.split_lsb;
+    if (step) while ((t - b) / step > static_cast<uint32_t>(kWallSplitsMax)) step *= 2;
+    uint32_t h = step ? (b / step + 1) * step : t;
+    int32_t k = 0;
+    while (k < x.nbreaks && x.breaks_lsb[k] <= b) ++k;
+    for (;;) {
+      const uint32_t brk = k < x.nbreaks ? x.breaks_lsb[k] : t;
+      const uint32_t next = min_of(min_of(h, brk), t);
+      if (next >= t) break;
+      if (next == brk) {
+        add(brk, x.colour_at(x.ctx, i, j, brk), x.colour_at(x.ctx, i, j, brk + 1));
+        ++k;
+        if (h == brk) h += step;
+      } else {
+        const uint32_t col = x.colour_at(x.ctx, i, j, h);
+        add(h, col, col);
+        h += step;
+      }
+    }
+    add(t, x.top_rgb[c->k], x.top_rgb[c->k]);
+    return n;
+  }
+
+  // A side face between corners P (left, seen from the hole) and Q, split
+  // at both edges' points and zipped up from the bottoms: each triangle
+  // takes one edge's next point, the lower one first.
+  void textured_wall(Corner* P, Corner* Q) {
+    const int32_t sp = p_.shades->wall[P->k], sq = p_.shades->wall[Q->k];
+    // Back-facing (both halves, all on screen): nothing to evaluate.
+    const MeshVertex& pt = P->top;
+    const MeshVertex& qt = Q->top;
+    const MeshVertex& pb = bottom(P);
+    const MeshVertex& qb = bottom(Q);
+    if (p_.target->cull_back && (pt.oc | qt.oc | pb.oc | qb.oc) == 0 && area2(pt.r, pb.r, qb.r) <= 0 &&
+        area2(pt.r, qb.r, qt.r) <= 0)
+      return;
+    EdgePoint ep[kEdgePointsMax], eq[kEdgePointsMax];
+    const int np = edge_points(P, sp, ep), nq = edge_points(Q, sq, eq);
+    // A break point takes its colour above when the triangle reaches above
+    // it, else its colour below.
+    auto put = [this](const EdgePoint& x, const EdgePoint& y, const EdgePoint& z) {
+      const uint32_t top = max_of(x.h, max_of(y.h, z.h));
+      MeshVertex v[3] = {x.v, y.v, z.v};
+      const EdgePoint* e[3] = {&x, &y, &z};
+      for (int k = 0; k < 3; ++k) v[k].r.rgb = e[k]->h < top ? e[k]->hi : e[k]->lo;
+      tri(v[0], v[1], v[2]);
+    };
+    int a = 0, b = 0;
+    while (a < np - 1 || b < nq - 1) {
+      if (b == nq - 1 || (a < np - 1 && ep[a + 1].h <= eq[b + 1].h)) {
+        put(ep[a + 1], ep[a], eq[b]);
+        ++a;
+      } else {
+        put(ep[a], eq[b], eq[b + 1]);
+        ++b;
+      }
+    }
   }
 
   void cell(Corner* q[4], const CellCase& cc) {
@@ -260,7 +369,9 @@ class CellDrawer {
       use_class_of_top(q[cc.top[t][0]], q[cc.top[t][1]], q[cc.top[t][2]]);
       tri(q[cc.top[t][0]]->top, q[cc.top[t][1]]->top, q[cc.top[t][2]]->top);
     }
-    if (cc.has_wall) {
+    if (cc.has_wall && tex_) {
+      textured_wall(q[cc.wall[0]], q[cc.wall[1]]);
+    } else if (cc.has_wall) {
       // Left (P) and right (Q) seen from the hole: P top, P bottom, Q bottom, Q top.
       Corner* P = q[cc.wall[0]];
       Corner* Q = q[cc.wall[1]];
@@ -275,9 +386,9 @@ class CellDrawer {
       const int32_t s = p_.bottom_shade;
       for (int t = 0; t < cc.ntop; ++t) {  // turned over: seen from below
         use_class_of_top(q[cc.top[t][0]], q[cc.top[t][1]], q[cc.top[t][2]]);
-        const MeshVertex a = shaded(bottom(q[cc.top[t][0]]), s);
-        const MeshVertex b = shaded(bottom(q[cc.top[t][1]]), s);
-        const MeshVertex c = shaded(bottom(q[cc.top[t][2]]), s);
+        const MeshVertex a = bottom_shaded(q[cc.top[t][0]], s);
+        const MeshVertex b = bottom_shaded(q[cc.top[t][1]], s);
+        const MeshVertex c = bottom_shaded(q[cc.top[t][2]], s);
         tri(a, c, b);
       }
     }
@@ -288,6 +399,7 @@ class CellDrawer {
   const View& v_;
   const uint8_t* top_shade_;
   const SurfaceColours* colours_ = p_.colours;
+  const SurfaceTexture* tex_ = colours_ && p_.lit ? colours_->texture : nullptr;
   // Orthographic guard band in q4: planes x + e0 >= 0, -x + e1 >= 0, ...
   // (clip_set_planes).
   const int32_t gx0_ = static_cast<int32_t>(-v_.proj.plane[0].e), gx1_ = static_cast<int32_t>(v_.proj.plane[1].e);

@@ -51,6 +51,9 @@ struct MeshPass {
   bool bottoms = false;      // draw bottom faces
   RasterTarget* target = nullptr;
   const SurfaceColours* colours = nullptr;  // per-dexel classes, or null: target's lut throughout
+  // With colours->texture: the frame's lighting for colours per vertex (the
+  // target's vertex_rgb is then set).
+  const LitRamp* lit = nullptr;
 };
 
 // Block size in cells: the unit of incremental redraw (display/redraw.h).

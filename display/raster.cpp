@@ -134,48 +134,89 @@ struct Plane {
   }
 };
 
-// Writes one fragment (depth-tested); returns 1 when it passed.
-template <class Pix, class Z>
-inline uint32_t fragment(Pix* cp, Z* zp, uint32_t zv, uint32_t sv, const uint32_t* lut) {
+// Writes one fragment (depth-tested); returns 1 when it passed. The pixel
+// value is only worked out then.
+template <class Pix, class Z, class Value>
+inline uint32_t fragment(Pix* cp, Z* zp, uint32_t zv, const Value& value) {
   // 31-bit depth; a 16-bit buffer keeps its top 16 bits.
   const Z zs = static_cast<Z>(sizeof(Z) == 2 ? zv >> 15 : zv);
   if (zs < *zp) {
     *zp = zs;
-    *cp = static_cast<Pix>(lut[sv >> kShadeFrac]);
+    *cp = static_cast<Pix>(value());
     return 1;
   }
   return 0;
 }
 
-template <class Pix, class Z>
+// A pixel value from interpolated channels (kShadeFrac fraction bits each),
+// packed as pixel_pack does.
+template <class Pix>
+inline uint32_t pack_channels(uint32_t r, uint32_t g, uint32_t b) {
+  r >>= kShadeFrac;
+  g >>= kShadeFrac;
+  b >>= kShadeFrac;
+  if (sizeof(Pix) == 2) return (r >> 3) << 11 | (g >> 2) << 5 | b >> 3;
+  return 0xFF000000u | r << 16 | g << 8 | b;
+}
+
+inline int32_t channel(uint32_t rgb, int k) { return static_cast<int32_t>((rgb >> (16 - 8 * k)) & 0xFF); }
+
+// The attribute planes of a triangle: depth, and the shade or (kRgb) the
+// three colour channels.
+template <bool kRgb>
+struct Planes {
+  Plane z, s[kRgb ? 3 : 1];
+
+  void setup(const Tri& tri) {
+    z.setup(tri, tri.v[0]->depth, tri.v[1]->depth, tri.v[2]->depth, kDepthFrac, 0);
+    // Half a step of bias: the rounding error stays inside [0, 256).
+    for (int k = 0; k < (kRgb ? 3 : 1); ++k) {
+      const int32_t a0 = kRgb ? channel(tri.v[0]->rgb, k) : tri.v[0]->shade;
+      const int32_t a1 = kRgb ? channel(tri.v[1]->rgb, k) : tri.v[1]->shade;
+      const int32_t a2 = kRgb ? channel(tri.v[2]->rgb, k) : tri.v[2]->shade;
+      s[k].setup(tri, a0, a1, a2, kShadeFrac, 1 << (kShadeFrac - 1));
+    }
+  }
+};
+
+template <class Pix, class Z, bool kRgb>
 struct SpanFill {
   RasterTarget* t;
   const Tri* tri;
-  Plane z, s;
-  int32_t y_row;  // the row z.row and s.row hold
+  Planes<kRgb> p;
+  int32_t y_row;  // the row the planes' row values hold
   bool ready;
   uint32_t written;
 
   void operator()(int32_t y, int32_t x0, int32_t x1) {
+    constexpr int kN = kRgb ? 3 : 1;
     if (!ready) {
       // Set up on the first covered span only: many triangles of a fine grid
       // cover no pixel centre and never pay for the divisions.
-      z.setup(*tri, tri->v[0]->depth, tri->v[1]->depth, tri->v[2]->depth, kDepthFrac, 0);
-      // Half a shade step of bias: the rounding error stays inside [0, 256).
-      s.setup(*tri, tri->v[0]->shade, tri->v[1]->shade, tri->v[2]->shade, kShadeFrac, 1 << (kShadeFrac - 1));
+      p.setup(*tri);
       ready = true;
     }
     for (; y_row < y; ++y_row) {
-      z.row += static_cast<uint32_t>(z.gy);
-      s.row += static_cast<uint32_t>(s.gy);
+      p.z.row += static_cast<uint32_t>(p.z.gy);
+      for (int k = 0; k < kN; ++k) p.s[k].row += static_cast<uint32_t>(p.s[k].gy);
     }
     Pix* cp = reinterpret_cast<Pix*>(t->color + static_cast<ptrdiff_t>(y) * t->color_stride);
     Z* zp = reinterpret_cast<Z*>(t->z + static_cast<ptrdiff_t>(y) * t->z_stride);
-    const uint32_t zg = static_cast<uint32_t>(z.gx), sg = static_cast<uint32_t>(s.gx);
     const uint32_t dx = static_cast<uint32_t>(x0 - tri->bx0);
-    uint32_t zv = z.row + zg * dx, sv = s.row + sg * dx;
+    const uint32_t zg = static_cast<uint32_t>(p.z.gx);
+    uint32_t zv = p.z.row + zg * dx;
+    uint32_t sg[kN], sv[kN];
+    for (int k = 0; k < kN; ++k) {
+      sg[k] = static_cast<uint32_t>(p.s[k].gx);
+      sv[k] = p.s[k].row + sg[k] * dx;
+    }
     const uint32_t* lut = t->lut;
-    for (int32_t x = x0; x < x1; ++x, zv += zg, sv += sg) written += fragment(cp + x, zp + x, zv, sv, lut);
+    for (int32_t x = x0; x < x1; ++x, zv += zg) {
+      written += fragment(cp + x, zp + x, zv, [&] {
+        return kRgb ? pack_channels<Pix>(sv[0], sv[kN > 1 ? 1 : 0], sv[kN > 2 ? 2 : 0]) : lut[sv[0] >> kShadeFrac];
+      });
+      for (int k = 0; k < kN; ++k) sv[k] += sg[k];
+    }
   }
 };
 
@@ -188,9 +229,9 @@ struct SpanCount {
   }
 };
 
-template <class Pix, class Z>
+template <class Pix, class Z, bool kRgb>
 void fill(RasterTarget* t, const Tri& tri) {
-  SpanFill<Pix, Z> f{t, &tri, {}, {}, tri.by0, false, 0};
+  SpanFill<Pix, Z, kRgb> f{t, &tri, {}, tri.by0, false, 0};
   spans(tri, f);
   t->stats.pixels_written += f.written;
 }
@@ -202,8 +243,9 @@ void fill(RasterTarget* t, const Tri& tri) {
 // combinations of the vertices'; truncating towards vertex 0 keeps them
 // there, and the shade gets the plane path's half-step bias. The path is
 // chosen from the unclipped box, so a pixel gets the same value whatever
-// the clip rectangle.
-template <class Pix, class Z>
+// the clip rectangle. Colour channels (kRgb) share two q16 weights, one
+// division each per pixel instead of one per channel.
+template <class Pix, class Z, bool kRgb>
 void small(RasterTarget* t, const Tri& tri) {
   const RasterVertex& a = *tri.v[0];
   const RasterVertex& b = *tri.v[1];
@@ -214,6 +256,13 @@ void small(RasterTarget* t, const Tri& tri) {
   const int64_t dz1 = (b.depth - a.depth) * kZOne, dz2 = (c.depth - a.depth) * kZOne;
   const int64_t ds1 = (b.shade - a.shade) * kSOne, ds2 = (c.shade - a.shade) * kSOne;
   const int64_t z0 = a.depth * kZOne, s0 = a.shade * kSOne + kSOne / 2;
+  int32_t c0[3] = {}, c1[3] = {}, c2[3] = {};
+  if (kRgb)
+    for (int k = 0; k < 3; ++k) {
+      c0[k] = channel(a.rgb, k);
+      c1[k] = channel(b.rgb, k) - c0[k];
+      c2[k] = channel(c.rgb, k) - c0[k];
+    }
   uint32_t written = 0;
   int64_t r0 = tri.e[0], r1 = tri.e[1], r2 = tri.e[2];
   for (int32_t y = tri.by0; y <= tri.by1; ++y, r0 += tri.dy[0], r1 += tri.dy[1], r2 += tri.dy[2]) {
@@ -224,8 +273,15 @@ void small(RasterTarget* t, const Tri& tri) {
       if ((e0 | e1 | e2) < 0) continue;
       const int64_t w1 = e1 + tri.bias[1], w2 = e2 + tri.bias[2];
       const uint32_t zv = static_cast<uint32_t>(z0 + (w1 * dz1 + w2 * dz2) / tri.area2);
-      const uint32_t sv = static_cast<uint32_t>(s0 + (w1 * ds1 + w2 * ds2) / tri.area2);
-      written += fragment(cp + x, zp + x, zv, sv, t->lut);
+      written += fragment(cp + x, zp + x, zv, [&]() -> uint32_t {
+        if (!kRgb) return t->lut[static_cast<uint32_t>(s0 + (w1 * ds1 + w2 * ds2) / tri.area2) >> kShadeFrac];
+        // Weights in q16, each in [0, 2^16] and summing to at most 2^16.
+        const int64_t l1 = (w1 << 16) / tri.area2, l2 = (w2 << 16) / tri.area2;
+        uint32_t ch[3];
+        for (int k = 0; k < 3; ++k)
+          ch[k] = static_cast<uint32_t>((static_cast<int64_t>(c0[k]) << 16) + kSOne / 2 + l1 * c1[k] + l2 * c2[k]);
+        return pack_channels<Pix>(ch[0], ch[1], ch[2]);
+      });
     }
   }
   t->stats.pixels_written += written;
@@ -233,8 +289,13 @@ void small(RasterTarget* t, const Tri& tri) {
 
 template <class Pix, class Z>
 void draw(RasterTarget* t, const Tri& tri, bool is_small) {
-  if (is_small) small<Pix, Z>(t, tri);
-  else fill<Pix, Z>(t, tri);
+  if (t->vertex_rgb) {
+    if (is_small) small<Pix, Z, true>(t, tri);
+    else fill<Pix, Z, true>(t, tri);
+  } else {
+    if (is_small) small<Pix, Z, false>(t, tri);
+    else fill<Pix, Z, false>(t, tri);
+  }
 }
 
 }  // namespace

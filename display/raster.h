@@ -56,6 +56,7 @@ struct RasterVertex {
   int32_t x_q4, y_q4;  // screen position; pixel (px, py) has its centre at (16px + 8, 16py + 8)
   int32_t depth;       // [kDepthMargin, kDepthMax - kDepthMargin], smaller is nearer
   int32_t shade;       // 0 .. kShadeLevels - 1
+  uint32_t rgb = 0;    // with RasterTarget::vertex_rgb: the lit colour, 0x00RRGGBB
 };
 
 struct RasterStats {
@@ -75,6 +76,11 @@ struct RasterTarget {
   ScreenRect clip{0, 0, 0, 0};
   const uint32_t* lut = nullptr;  // kShadeLevels stored pixel values
   bool cull_back = true;          // drop triangles seen from behind (clockwise on screen)
+  // Colour per vertex (paper §2.7.1: a 3-D texture evaluated at the
+  // vertices, Gouraud between them): the three channels of RasterVertex::rgb
+  // are interpolated like the shade and packed per pixel; `lut` and `shade`
+  // are unused.
+  bool vertex_rgb = false;
   // Coverage count mode (the fill-rule tests, overdraw pictures): each
   // covered pixel adds 1 to the byte at `color` + y * color_stride + x; no
   // depth test, no depth or colour write.
@@ -82,7 +88,8 @@ struct RasterTarget {
   RasterStats stats;
 };
 
-// Depth-tested, Gouraud-shaded triangle. Front faces are counterclockwise
+// Depth-tested, Gouraud-shaded triangle (a shade through `lut`, or with
+// vertex_rgb a colour per vertex). Front faces are counterclockwise
 // as seen on the screen (x right, y down).
 void raster_triangle(RasterTarget* t, const RasterVertex& a, const RasterVertex& b, const RasterVertex& c);
 

@@ -75,6 +75,8 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
   pass.bottoms = r->view.sees_below;
   pass.target = t;
   pass.colours = r->colours;
+  pass.lit = &r->lit;
+  t->vertex_rgb = r->colours && r->colours->texture;
   for (int32_t n = 0; n < r->bny; ++n) {
     const int32_t by = r->j_desc ? r->bny - 1 - n : n;
     for (int32_t m = 0; m < r->bnx; ++m) {
@@ -85,6 +87,7 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
       mesh_draw_cells(pass, block_cells(g, bx, by), r->i_desc, r->j_desc, !inside, b.zlo_lsb, b.zhi_lsb);
     }
   }
+  t->vertex_rgb = false;
   // Fixtures after the stock: the stock draws as it does with none (nearest
   // blocks first, its own ties unchanged), and where a fixture's face and
   // the stock's meet at exactly the same depth the stock shows.
@@ -138,6 +141,7 @@ void prepare_view(Renderer<H>* r) {
   }
   if (const SurfaceColours* c = r->colours)
     for (int32_t k = 0; k < c->nclasses; ++k) shade_ramp(r->fb.format, c->colour[k], base, c->luts + static_cast<size_t>(k) * kShadeLevels);
+  lit_ramp(base, &r->lit);
   r->bottom_shade = shade_of_normal(r->light, UnitQ14{0, 0, -16384});
   cutter_light(r->tool, r->light, &r->cutter);
   r->i_desc = v.eye_q30[0] > 0;  // nearer cells first: fewer pixels shaded twice

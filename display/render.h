@@ -118,6 +118,7 @@ struct Renderer {
   int32_t bottom_shade = 0;
   RasterTarget target;
   const SurfaceColours* colours = nullptr;
+  LitRamp lit;                     // the light on colours per vertex (a texture)
 };
 
 // Scratch bytes for a grid's size, a frame size and a z format.

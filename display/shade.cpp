@@ -77,6 +77,20 @@ void shade_ramp(PixelFormat f, Rgb c, int32_t base, uint32_t lut[256]) {
   }
 }
 
+void lit_ramp(int32_t base, LitRamp* out) {
+  base = clamp<int32_t>(base, 1, 255);
+  for (int32_t i = 0; i < 256; ++i) {
+    if (i <= base) {
+      out->mul_q8[i] = static_cast<uint16_t>((i * 256 + base / 2) / base);
+      out->add_q8[i] = 0;
+    } else {  // t = (i - base) / (255 - base): c (1 - t) + 255 t
+      const int32_t t_q8 = ((i - base) * 256 + (255 - base) / 2) / (255 - base);
+      out->mul_q8[i] = static_cast<uint16_t>(256 - t_q8);
+      out->add_q8[i] = static_cast<uint16_t>(255 * t_q8);
+    }
+  }
+}
+
 template <class H>
 void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy) {
   static const int32_t kW[3] = {1, 2, 1};

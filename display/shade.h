@@ -58,6 +58,23 @@ int32_t shade_base_index(const Lighting& l);
 // colour, 255 white.
 void shade_ramp(PixelFormat f, Rgb colour, int32_t base_index, uint32_t lut[256]);
 
+// The same ramp applied to any colour, for colours per vertex (a 3-D
+// texture evaluated at the vertices, paper §2.7.1): a channel c at shade
+// index s becomes (c * mul_q8[s] + add_q8[s] + 128) >> 8, which is c s / base
+// up to the base index and c + (255 - c)(s - base) / (255 - base) above it,
+// within one step of shade_ramp's value (tests/test_shade.cpp).
+struct LitRamp {
+  uint16_t mul_q8[256];
+  uint16_t add_q8[256];
+};
+void lit_ramp(int32_t base_index, LitRamp* out);
+// The lit colour (0x00RRGGBB) of colour rgb (0x00RRGGBB) at shade s.
+inline uint32_t lit_rgb(const LitRamp& l, uint32_t rgb, int32_t s) {
+  const uint32_t m = l.mul_q8[s], a = l.add_q8[s] + 128u;
+  return ((((rgb >> 16) & 0xFF) * m + a) >> 8) << 16 | ((((rgb >> 8) & 0xFF) * m + a) >> 8) << 8 |
+         (((rgb & 0xFF) * m + a) >> 8);
+}
+
 // Per-dexel shades for the rasterizer: top vertices and side-face vertices,
 // one byte each, caller memory of nx*ny each.
 struct ShadeCache {

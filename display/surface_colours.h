@@ -17,6 +17,30 @@
 namespace dexmill {
 
 constexpr int32_t kMaxColourClasses = 8;
+constexpr int32_t kTextureBreaksMax = 16;
+// Figure 11's bound: a side face is split into at most this many strips
+// between lattice heights (plus one more per break it crosses).
+constexpr int32_t kWallSplitsMax = 16;
+
+// Colour per vertex (paper §2.7.1): a 3-D texture T(x, y, z) evaluated at
+// the surface's vertices and interpolated (Gouraud) times the lighting. The
+// side faces, long thin polygons from a top down to a bottom, would take
+// only two colours each way; they are split at heights (figure 11: "badly
+// behaved" polygons made "well behaved"): on a lattice of split_lsb (the
+// texture's feature scale; 0: none) and at breaks, heights where the colour
+// jumps (a layer's boundary), each drawn with the colour below it under it
+// and the colour above it over it. The split heights of a column depend on
+// that column alone, so two faces sharing a vertical edge share its
+// vertices (no cracks).
+struct SurfaceTexture {
+  const uint32_t* top_rgb = nullptr;  // per dexel: the colour under its top (0x00RRGGBB), kept by classify
+  // The colour of the one-LSB slab under height h_lsb in dexel (i, j)'s column.
+  uint32_t (*colour_at)(const void* ctx, int32_t i, int32_t j, uint32_t h_lsb) = nullptr;
+  const void* ctx = nullptr;
+  uint32_t split_lsb = 0;
+  uint32_t breaks_lsb[kTextureBreaksMax] = {};  // ascending; the colour changes between h - 1 and h
+  int32_t nbreaks = 0;
+};
 
 struct SurfaceColours {
   uint8_t* cls = nullptr;     // per dexel (nx*ny, row-major), caller memory; each < nclasses
@@ -27,6 +51,8 @@ struct SurfaceColours {
   // it for every rectangle it is about to redraw, before drawing.
   void (*classify)(void* ctx, GridRect r, uint8_t* cls) = nullptr;
   void* ctx = nullptr;
+  // Colours per vertex instead of one ramp per class (null: ramps).
+  const SurfaceTexture* texture = nullptr;
 };
 
 }  // namespace dexmill

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math/trig.h"
+#include "display/material_colours.h"
 #include "display/render.h"
 #include "tests/alloc_count.h"
 #include "tests/rng.h"
@@ -37,6 +38,47 @@ struct IncCase {
   int32_t az_mdeg, el_mdeg;
   int tool;  // drawn tool: 0 ball, 1 flat, 2 bull, 3 vbit
   bool colours = false;  // a colour mode: classes from the tops' heights
+  bool texture = false;  // colours per vertex: a material composition's textures
+};
+
+// A stock of several textures for the textured cases: a layers material (a
+// band boundary at 4 mm) under marble from 8 mm, a granite cylinder and a
+// wood box inserted.
+const StockComposition& textured_stock() {
+  static StockComposition c;
+  static bool made = false;
+  if (made) return c;
+  made = true;
+  composition_clear(&c);
+  Material m[4];
+  m[0].texture.kind = TextureKind::kLayers;
+  m[0].texture.layers.boundary_z_nm[0] = 4 * mm;
+  m[1].texture.kind = TextureKind::kMarble;
+  m[1].texture.marble.period_nm = 9 * mm;
+  m[2].texture.kind = TextureKind::kGranite;
+  m[3].texture.kind = TextureKind::kWood;
+  uint8_t k[4];
+  for (int n = 0; n < 4; ++n) CHECK(ok(composition_add_material(&c, m[n], &k[n])));
+  CHECK(ok(composition_add_layer(&c, -mm, 8 * mm, k[0])));
+  CHECK(ok(composition_add_layer(&c, 8 * mm, 30 * mm, k[1])));
+  CHECK(ok(composition_add_cylinder(&c, 30 * mm, 20 * mm, 7 * mm, 2 * mm, 14 * mm, k[2])));
+  CHECK(ok(composition_add_box(&c, BoxNm{PointNm{2 * mm, 2 * mm, 10 * mm}, PointNm{14 * mm, 12 * mm, 18 * mm}}, k[3])));
+  return c;
+}
+
+// The material colour mode, textured, over grid g.
+template <class H>
+struct TexturedColours {
+  MaterialColours<H> m;
+  std::vector<uint8_t> cls;
+  std::vector<uint32_t> luts, mem;
+  void init(const DexelGrid<H>& g, uint32_t uncut_top) {
+    cls.assign(size_t(g.nx) * g.ny, 0);
+    luts.assign(size_t(kMaxColourClasses) * kShadeLevels, 0);
+    mem.assign(material_texture_bytes(g) / 4 + 1, 0);
+    material_colours_init(&m, g, textured_stock(), cls.data(), luts.data());
+    material_colours_texture(&m, mem.data(), uncut_top);
+  }
 };
 
 // A colour mode for the test: eight classes by height (1 mm bands), so a cut
@@ -101,6 +143,13 @@ void incremental_run(const IncCase& ic, uint64_t seed, int steps) {
     renderer_set_colours(&ra, &ca.sc);
     renderer_set_colours(&rb, &cb.sc);
   }
+  TexturedColours<H> ta, tb;
+  if (ic.texture) {
+    ta.init(tg.g, tg.g.top[tg.g.index(1, 1)]);  // the stock's top: uncut tops tinted
+    tb.init(tg.g, tg.g.top[tg.g.index(1, 1)]);
+    renderer_set_colours(&ra, &ta.m.colours);
+    renderer_set_colours(&rb, &tb.m.colours);
+  }
   Rng rng(seed);
   CutterPose pose{true, PointNm{10 * mm, 10 * mm, 30 * mm}};
   render_full(&ra, &tg.g, pose);
@@ -147,10 +196,14 @@ TEST(incremental_equals_full_redraw) {
       {"low", PixelFormat::kXrgb8888, ZFormat::kZ32, Projection::kPerspective, 200000, 8000, 0},
       {"iso-colours", PixelFormat::kXrgb8888, ZFormat::kZ32, Projection::kOrthographic, -45000, 35264, 0, true},
       {"persp-colours", PixelFormat::kRgb565, ZFormat::kZ16, Projection::kPerspective, 30000, 40000, 2, true},
+      {"iso-texture", PixelFormat::kXrgb8888, ZFormat::kZ32, Projection::kOrthographic, -45000, 35264, 0, false, true},
+      {"persp-texture", PixelFormat::kRgb565, ZFormat::kZ16, Projection::kPerspective, 30000, 40000, 2, false, true},
+      {"below-texture", PixelFormat::kXrgb8888, ZFormat::kZ16, Projection::kOrthographic, 120000, -30000, 3, false, true},
   };
   uint64_t seed = 11;
   for (const IncCase& ic : cases) incremental_run<uint16_t>(ic, seed++, 100);
   incremental_run<uint8_t>(cases[0], seed++, 40);
+  incremental_run<uint8_t>(cases[7], seed++, 40);
   incremental_run<uint32_t>(cases[2], seed++, 40);
 }
 

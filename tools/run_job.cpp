@@ -638,11 +638,15 @@ int run_job(RunOptions o) {
   // The material under each top (--color material), in every output but the error view.
   MaterialColours<height_t> material_colours;
   std::vector<uint8_t> material_cls;
-  std::vector<uint32_t> material_luts;
+  std::vector<uint32_t> material_luts, material_texture;
   if (o.color == RunOptions::Color::kMaterial) {
     material_cls.assign(static_cast<size_t>(grid.nx) * static_cast<size_t>(grid.ny), 0);
     material_luts.assign(static_cast<size_t>(kMaxColourClasses) * kShadeLevels, 0);
     material_colours_init(&material_colours, grid, *material.comp, material_cls.data(), material_luts.data());
+    // Textured; uncut tops tinted on a block stock (an STL blank's tops vary).
+    material_texture.assign((material_texture_bytes(grid) + 3) / 4, 0);
+    material_colours_texture(&material_colours, material_texture.data(),
+                             o.stock_stl.empty() ? static_cast<uint32_t>(plan.top_lsb) : 0u);
     for (RenderOutput* out : w.outputs)
       if (out != error_out.get()) out->set_colours(&material_colours.colours);
   }
