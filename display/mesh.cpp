@@ -36,11 +36,22 @@ struct MeshVertex {
   uint8_t oc;          // clip outcode
 };
 
+// A point of a textured side face's vertical edge (SurfaceTexture): its
+// height and the colours (unlit) of the strips below and above it, equal
+// but at a break.
+struct EdgeColour {
+  uint32_t h, lo, hi;
+};
+constexpr int kEdgePointsMax = 2 + kWallSplitsMax + kTextureBreaksMax;
+
 struct Corner {
   MeshVertex top, bot;
   size_t k;       // dexel index
   bool material;
   bool has_bot;   // bot computed
+  uint8_t nedge;  // edge[0, nedge) worked out (0: not yet), kept while the
+                  // vertex row is: the faces on both sides of an edge share it
+  EdgeColour edge[kEdgePointsMax];
 };
 
 // kOrtho: the orthographic fast path (clip space is the screen; outcodes are
@@ -205,6 +216,7 @@ class CellDrawer {
       const H t = g_.top[k], b = g_.bottom[k];
       c.material = (t | b) != 0;
       c.has_bot = false;
+      c.nedge = 0;
       if (c.material) {
         finish(acc, t, &c.top);
         c.top.r.shade = top_shade_[k];
@@ -276,37 +288,37 @@ class CellDrawer {
     return m;
   }
 
-  // A point of a textured side face's vertical edge: its height, and the lit
-  // colours the strips below and above it take (equal but at a break).
   struct EdgePoint {
     MeshVertex v;
     uint32_t h;
-    uint32_t lo, hi;
+    uint32_t lo, hi;  // lit
   };
-  static constexpr int kEdgePointsMax = 2 + kWallSplitsMax + kTextureBreaksMax;
 
-  // The points of corner c's vertical edge, bottom to top (SurfaceTexture:
-  // lattice and breaks strictly between its bottom and top); returns how many.
-  int edge_points(Corner* c, int32_t shade, EdgePoint* out) {
+  // The colours along corner c's vertical edge, bottom to top: lattice and
+  // breaks strictly between its bottom and top (the texture evaluated once
+  // per edge and vertex row).
+  void edge_colours(Corner* c) {
+    if (c->nedge) return;
     const int32_t i = static_cast<int32_t>(c->k % static_cast<size_t>(g_.nx));
     const int32_t j = static_cast<int32_t>(c->k / static_cast<size_t>(g_.nx));
     const uint32_t b = g_.bottom[c->k], t = g_.top[c->k];
     const SurfaceTexture& x = *tex_;
-    const LitRamp& lit = *p_.lit;
     int n = 0;
-    auto add = [&](uint32_t h, uint32_t lo, uint32_t hi) {
-      EdgePoint& e = out[n++];
-      e.h = h;
-      place(i, j, h, &e.v);
-      e.v.r.shade = shade;
-      e.lo = lit_rgb(lit, lo, shade);
-      e.hi = lo == hi ? e.lo : lit_rgb(lit, hi, shade);
-    };
+    auto add = [&](uint32_t h, uint32_t lo, uint32_t hi) { c->edge[n++] = EdgeColour{h, lo, hi}; };
     const uint32_t first = x.colour_at(x.ctx, i, j, b + 1);
     add(b, first, first);
-    // The lattice, coarsened by powers of two until it fits the bound.
+    // The lattice, coarsened by powers of two until it fits the bound: at
+    // most kWallSplitsMax strips, and none much under kWallStripPx pixels
+    // on the screen (the edge's length decides, the same for both faces).
+    uint32_t limit = kWallSplitsMax;
+    const MeshVertex& bv = bottom(c);
+    if ((c->top.oc | bv.oc) == 0) {
+      const int32_t dx = c->top.r.x_q4 - bv.r.x_q4, dy = c->top.r.y_q4 - bv.r.y_q4;
+      const int32_t len_px = max_of(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy) >> kSubpixelBits;
+      limit = static_cast<uint32_t>(clamp<int32_t>(len_px / kWallStripPx, 1, kWallSplitsMax));
+    }
     uint32_t step = x.split_lsb;
-    if (step) while ((t - b) / step > static_cast<uint32_t>(kWallSplitsMax)) step *= 2;
+    if (step) while ((t - b) / step > limit) step *= 2;
     uint32_t h = step ? (b / step + 1) * step : t;
     int32_t k = 0;
     while (k < x.nbreaks && x.breaks_lsb[k] <= b) ++k;
@@ -325,7 +337,25 @@ class CellDrawer {
       }
     }
     add(t, x.top_rgb[c->k], x.top_rgb[c->k]);
-    return n;
+    c->nedge = static_cast<uint8_t>(n);
+  }
+
+  // Corner c's edge points placed and lit with `shade`; returns how many.
+  int edge_points(Corner* c, int32_t shade, EdgePoint* out) {
+    edge_colours(c);
+    const int32_t i = static_cast<int32_t>(c->k % static_cast<size_t>(g_.nx));
+    const int32_t j = static_cast<int32_t>(c->k / static_cast<size_t>(g_.nx));
+    const LitRamp& lit = *p_.lit;
+    for (int n = 0; n < c->nedge; ++n) {
+      const EdgeColour& e = c->edge[n];
+      EdgePoint& o = out[n];
+      o.h = e.h;
+      place(i, j, e.h, &o.v);
+      o.v.r.shade = shade;
+      o.lo = lit_rgb(lit, e.lo, shade);
+      o.hi = e.lo == e.hi ? o.lo : lit_rgb(lit, e.hi, shade);
+    }
+    return c->nedge;
   }
 
   // A side face between corners P (left, seen from the hole) and Q, split

@@ -19,8 +19,10 @@ namespace dexmill {
 constexpr int32_t kMaxColourClasses = 8;
 constexpr int32_t kTextureBreaksMax = 16;
 // Figure 11's bound: a side face is split into at most this many strips
-// between lattice heights (plus one more per break it crosses).
+// between lattice heights (plus one more per break it crosses), and into
+// no more than one per kWallStripPx pixels of its height on the screen.
 constexpr int32_t kWallSplitsMax = 16;
+constexpr int32_t kWallStripPx = 8;
 
 // Colour per vertex (paper §2.7.1): a 3-D texture T(x, y, z) evaluated at
 // the surface's vertices and interpolated (Gouraud) times the lighting. The
