@@ -275,8 +275,11 @@ void small(RasterTarget* t, const Tri& tri) {
       const uint32_t zv = static_cast<uint32_t>(z0 + (w1 * dz1 + w2 * dz2) / tri.area2);
       written += fragment(cp + x, zp + x, zv, [&]() -> uint32_t {
         if (!kRgb) return t->lut[static_cast<uint32_t>(s0 + (w1 * ds1 + w2 * ds2) / tri.area2) >> kShadeFrac];
-        // Weights in q16, each in [0, 2^16] and summing to at most 2^16.
-        const int64_t l1 = (w1 << 16) / tri.area2, l2 = (w2 << 16) / tri.area2;
+        // Weights in q16, each in [0, 2^16] and summing to at most 2^16;
+        // w < area2 < 2^13 here, so 32-bit divisions (one instruction on a
+        // Cortex-M4, where a 64-bit one is a library call).
+        const int32_t a2 = static_cast<int32_t>(tri.area2);
+        const int64_t l1 = static_cast<int32_t>(w1 << 16) / a2, l2 = static_cast<int32_t>(w2 << 16) / a2;
         uint32_t ch[3];
         for (int k = 0; k < 3; ++k)
           ch[k] = static_cast<uint32_t>((static_cast<int64_t>(c0[k]) << 16) + kSOne / 2 + l1 * c1[k] + l2 * c2[k]);

@@ -22,7 +22,7 @@ constexpr int32_t kTextureBreaksMax = 16;
 // between lattice heights (plus one more per break it crosses), and into
 // no more than one per kWallStripPx pixels of its height on the screen.
 constexpr int32_t kWallSplitsMax = 16;
-constexpr int32_t kWallStripPx = 8;
+constexpr int32_t kWallStripPx = 12;
 
 // Colour per vertex (paper §2.7.1): a 3-D texture T(x, y, z) evaluated at
 // the surface's vertices and interpolated (Gouraud) times the lighting. The

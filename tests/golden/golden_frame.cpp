@@ -15,7 +15,9 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "core/material/material_preset.h"
 #include "display/error_colours.h"
+#include "display/material_colours.h"
 #include "display/backplot.h"
 #include "display/marker.h"
 #include "display/overlay.h"
@@ -151,7 +153,23 @@ const BoxNm kFixtures[3] = {
     {PointNm{20 * kNmPerMm, 7 * kNmPerMm, 20 * kNmPerMm}, PointNm{26 * kNmPerMm, 13 * kNmPerMm, 22 * kNmPerMm + kNmPerMm / 2}},
 };
 
-void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false, bool with_fixtures = false) {
+// A material preset's textured colours over g (display/material_colours.h),
+// memory from the arena; false when it is short.
+bool material_view(Arena& a, const DexelGrid<uint16_t>& g, const char* preset, MaterialColours<uint16_t>* m) {
+  static StockComposition comp;
+  const size_t cells = static_cast<size_t>(g.nx) * g.ny;
+  const BoxNm box{PointNm{0, 0, 0}, PointNm{(g.nx - 1) * g.pitch_nm, (g.ny - 1) * g.pitch_nm, 20 * kNmPerMm}};
+  uint8_t* cls = a.take<uint8_t>(cells);
+  uint32_t* luts = a.take<uint32_t>(static_cast<size_t>(kMaxColourClasses) * kShadeLevels);
+  uint32_t* mem = a.take<uint32_t>(material_texture_bytes(g) / 4 + 1);
+  if (!cls || !luts || !mem || !material_preset(preset, box, &comp)) return false;
+  material_colours_init(m, g, comp, cls, luts);
+  material_colours_texture(m, mem, 40000);  // the stock's top: uncut tops tinted
+  return true;
+}
+
+void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false, bool with_fixtures = false,
+         const char* material = nullptr) {
   Arena& a = arena();
   a.reset();
   const size_t cells = static_cast<size_t>(kNx) * kNy;
@@ -196,19 +214,28 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
     }
     renderer_set_colours(&r, &ev.colours.colours);
   }
+  static MaterialColours<uint16_t> mc;
+  if (material) {
+    if (!material_view(a, g, material, &mc)) {
+      fail(out, "frame: material");
+      return;
+    }
+    renderer_set_colours(&r, &mc.colours);
+  }
   if (!ok(renderer_set_fixtures(&r, kFixtures, with_fixtures ? 3 : 0))) {
     fail(out, "frame: fixtures");
     return;
   }
   render_full(&r, &g, CutterPose{true, PointNm{18 * mm, 14 * mm, 12 * mm}});
-  out.str(with_error_view ? "frame-error" : (with_fixtures ? "frame-fixture" : "frame")).kv("view", static_cast<int64_t>(view));
+  out.str(material ? "frame-material " : "").str(material ? material : "");
+  out.str(material ? "" : (with_error_view ? "frame-error" : (with_fixtures ? "frame-fixture" : "frame"))).kv("view", static_cast<int64_t>(view));
   out.str(pf == PixelFormat::kRgb565 ? " rgb565" : " xrgb8888");
   out.str(zf == ZFormat::kZ16 ? " z16" : " z32").kx("full", frame_hash(fb));
   sweep_line(&g, st_tool, PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, &st, false);
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
   if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
-  else if (!with_fixtures) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
+  else if (!with_fixtures && !material) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   if (with_fixtures) {  // a safety finding marked on the clamp, as `run` marks one (magenta, over everything)
     const ScreenRect m = marker_draw(fb, r.view, kFixtures[0].hi, 6, pixel_pack(fb.format, Rgb{255, 40, 255}));
     out.str("frame-fixture-mark").kx("marked", frame_hash(fb)).kv("w", m.x1 - m.x0).kv("h", m.y1 - m.y0).end();
@@ -225,6 +252,12 @@ void golden_frame(Out& out) {
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, true);
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, true);
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, false, true);
+  // Issue 19: a texture per vertex, walls split (paper §2.7.1, figure 11).
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, false, false, "marble");
+  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso, false, false, "two-layer");
+  one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront, false, false, "wood");
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kIso, false, false, "bronze");
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kTop, false, false, "granite");
 }
 
 }  // namespace golden

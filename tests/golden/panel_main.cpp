@@ -25,7 +25,10 @@
 #include "core/motion/interp.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
+#include "core/cut/sweep.h"
+#include "core/material/material_preset.h"
 #include "display/error_colours.h"
+#include "display/material_colours.h"
 #include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
@@ -328,6 +331,74 @@ bool safety_pass(golden::Out& out, DexelGrid<height_t>* g, const ToolLibrary& li
   return errors == 0 && grid_hash(*g) == plain_hash;
 }
 
+// ==== MATERIAL: the frame in marble (issue 19, paper §2.7.1) ================
+// The same cut drawn in the marble preset's colours (a texture per vertex,
+// walls split), its hash equal to the host's; and the cost against plain
+// frames on the board: full frames (the texture of every top worked out on
+// the first, kept after), and one cut's incremental update each way (the
+// grid put back between the two).
+StockComposition g_marble;
+MaterialColours<height_t> g_marble_colours;
+uint8_t g_marble_cls[kNx * kNy];
+uint32_t g_marble_luts[kMaxColourClasses * kShadeLevels];
+uint32_t g_marble_texture[kNx * kNy * (sizeof(uint32_t) + sizeof(height_t)) / 4 + 1];
+height_t g_saved_top[kNx * kNy], g_saved_bottom[kNx * kNy];
+
+struct MaterialCost {
+  uint64_t first = 0, full = 0, plain_full = 0, plain_update = 0, update = 0;
+};
+
+bool material_frames(golden::Out& out, DexelGrid<height_t>* g, const ToolProfile& tool, PointNm tip, MaterialCost* cost) {
+  const BoxNm box{PointNm{0, 0, 0}, PointNm{kNx * kPitchNm, kNy * kPitchNm, kStockTopNm}};
+  if (!material_preset("marble", box, &g_marble) || material_texture_bytes(*g) > sizeof g_marble_texture) {
+    out.str("panel FAIL material set-up").end();
+    return false;
+  }
+  material_colours_init(&g_marble_colours, *g, g_marble, g_marble_cls, g_marble_luts);
+  material_colours_texture(&g_marble_colours, g_marble_texture, static_cast<uint32_t>(grid_height_of_z(*g, kStockTopNm)));
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  const CutterPose pose{true, tip};
+  uint64_t t = golden::board_instructions();
+  auto lap = [&t]() {
+    const uint64_t now = golden::board_instructions();
+    const uint64_t d = now - t;
+    t = now;
+    return d;
+  };
+  renderer_set_colours(&g_renderer, &g_marble_colours.colours);
+  render_full(&g_renderer, g, pose);
+  cost->first = lap();
+  const uint64_t marble_hash = frame_hash(fb);
+  render_full(&g_renderer, g, pose);
+  cost->full = lap();
+  renderer_set_colours(&g_renderer, nullptr);
+  render_full(&g_renderer, g, pose);
+  cost->plain_full = lap();
+  // One finishing move, plain and then in marble from the same grid.
+  SweepTool st;
+  if (!ok(sweep_tool_prepare(tool, g->lsb_nm, &st))) return false;
+  memcpy(g_saved_top, g->top, sizeof g_saved_top);
+  memcpy(g_saved_bottom, g->bottom, sizeof g_saved_bottom);
+  const PointNm a{mm(9), mm(9), mm(17)}, b{mm(39), mm(23), mm(15)};
+  CutStats cs;
+  sweep_line(g, st, a, b, &cs);
+  const GridRect changed = g->dirty;
+  (void)lap();
+  render_update(&g_renderer, g, CutterPose{true, b});
+  cost->plain_update = lap();
+  memcpy(g->top, g_saved_top, sizeof g_saved_top);
+  memcpy(g->bottom, g_saved_bottom, sizeof g_saved_bottom);
+  g->dirty = changed;
+  renderer_set_colours(&g_renderer, &g_marble_colours.colours);
+  render_full(&g_renderer, g, pose);
+  sweep_line(g, st, a, b, &cs);
+  (void)lap();
+  render_update(&g_renderer, g, CutterPose{true, b});
+  cost->update = lap();
+  out.str("panel marble frame").kx("hash", marble_hash).kx("after_cut", frame_hash(fb)).end();
+  return true;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -376,6 +447,8 @@ int main(int, char**) {
   PointNm tip{0, 0, 0};
   const bool checked = overlaid && safety_pass(out, &g, lib, hash, &tip);
   const uint64_t t7 = golden::board_instructions();
+  MaterialCost mcost;
+  const bool marbled = checked && material_frames(out, &g, prof, tip, &mcost);
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
@@ -385,6 +458,11 @@ int main(int, char**) {
     info_instructions(out, "assess+error_frame(480x272)", t5 - t4, 0);
     info_instructions(out, "overlay(2 frames+blend)", t6 - t5, 0);
     info_instructions(out, "cut+safety checks+frame", t7 - t6, 0);
+    info_instructions(out, "marble first frame(textures of all tops)", mcost.first, 0);
+    info_instructions(out, "marble full frame", mcost.full, 0);
+    info_instructions(out, "plain full frame", mcost.plain_full, 0);
+    info_instructions(out, "marble update(one cut)", mcost.update, 0);
+    info_instructions(out, "plain update(one cut)", mcost.plain_update, 0);
   }
-  return (errors == 0 && drawn && assessed && overlaid && checked) ? 0 : 1;
+  return (errors == 0 && drawn && assessed && overlaid && checked && marbled) ? 0 : 1;
 }
