@@ -166,6 +166,7 @@ GcodeFile::Read GcodeFile::next(const char** text, std::size_t* len, uint32_t* l
       if (!any) return Read::kEof;
       break;  // a last line with no line end
     }
+    if (!any) line_start_ = consumed_;
     any = true;
     const std::size_t e = find_eol();
     const std::size_t chunk = e - pos_;

@@ -68,6 +68,10 @@ class GcodeFile {
   // Progress: bytes consumed so far, and the file size (-1 when unknown,
   // e.g. a pipe).
   uint64_t bytes_read() const { return consumed_; }
+  // Where the line next() returned last begins: its first byte's offset
+  // in the input (a UTF-8 byte-order mark before line 1 counts). What a
+  // rewrite of the program (`dexmill optimize`) splices at.
+  uint64_t line_offset() const { return line_start_; }
   int64_t total_bytes() const { return total_; }
   // Name for messages: the path, or "<stdin>".
   const char* name() const { return name_; }
@@ -105,6 +109,7 @@ class GcodeFile {
   char line_[kGcodeMaxLine + 1];
   uint32_t line_no_ = 0;
   uint64_t consumed_ = 0;
+  uint64_t line_start_ = 0;
   int64_t total_ = -1;
 };
 

@@ -128,3 +128,26 @@ TEST(process_volume_by_material) {
   CHECK_EQ(r.w.tally[0].cut_time_us, 1000000);
   CHECK_EQ(r.w.tally[1].cut_time_us, 1000000);
 }
+
+// `dexmill optimize`'s input: per line, the lowest limit among what its feed
+// moves removed, whether or not the feed was over it; air, rapids and
+// untracked lines stay kNoFeedLimit.
+TEST(process_line_feed_limits) {
+  Rig r;
+  std::vector<int64_t> lim(8, 0);
+  process_watch_track_lines(&r.w, lim.data(), 7);  // lines 0..6; line 7 untracked
+  CHECK_EQ(lim[7], 0);
+  r.cut(-5, 45, 5, 15, feed(2, 2000));   // wood only
+  r.cut(-5, 45, 10, 5, feed(3, 1000));   // both layers, within both: alu's limit all the same
+  r.cut(-5, 45, 15, 25, feed(4, 9000));  // air
+  ProcessState rapid = feed(5, 9000);
+  rapid.feed_move = false;
+  r.cut(-5, 45, 30, 5, rapid);           // a rapid through both: no feed limit
+  r.cut(-5, 45, 35, 5, feed(7, 500));    // past the tracked lines
+  CHECK_EQ(lim[1], kNoFeedLimit);
+  CHECK_EQ(lim[2], 3000 * mm);
+  CHECK_EQ(lim[3], 1200 * mm);
+  CHECK_EQ(lim[4], kNoFeedLimit);
+  CHECK_EQ(lim[5], kNoFeedLimit);
+  CHECK_EQ(lim[7], 0);
+}

@@ -22,6 +22,7 @@ const Command kCommands[] = {
     {"path", cmd_path, "print the interpreted motion as a polyline"},
     {"check", cmd_check, "read and interpret a program, report errors only"},
     {"bench", cmd_bench, "run benchmarks, one result line each"},
+    {"optimize", cmd_optimize, "the program with feeds lowered to its materials' limits"},
 };
 
 void usage(FILE* f) {
@@ -31,6 +32,7 @@ void usage(FILE* f) {
                "  dexmill path FILE [--chord MM]     print the interpreted motion as a polyline\n"
                "  dexmill check FILE                 read and interpret a program, report errors only\n"
                "  dexmill bench [NAME...]            run benchmarks, one result line each\n"
+               "  dexmill optimize FILE --material M the program with feeds lowered to its materials' limits\n"
                "  dexmill --help | --version         (also `dexmill COMMAND --help`)\n\n"
                "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error, 4 a check\n"
                "you asked for failed (run --stop-at, --fail-on-gouge).\n");

@@ -46,8 +46,7 @@ int check_simulate(int argc, char** argv) {
   const int code = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
   if (code != kExitOk || help) return code;
   if (o.file.empty()) return fail(kExitUsage, "check --simulate needs a program FILE (or - for stdin)");
-  if (!o.image.empty() || !o.frames_dir.empty() || !o.heightmap.empty() || !o.stl.empty() || o.window ||
-      !o.fbdev.empty() || !o.error_image.empty())
+  if (run_draws(o))
     return fail(kExitUsage, "check --simulate writes no images or models (use dexmill run); --report is fine");
   o.fail_on_gouge = !o.design.empty();
   o.simulate_only = true;

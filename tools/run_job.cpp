@@ -42,6 +42,7 @@
 #include "tools/run_material.h"
 #include "tools/run_safety.h"
 #include "tools/run_stock.h"
+#include "tools/run_tool_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -345,6 +346,7 @@ int run_job(RunOptions o) {
   }
   if (!demo) {
     if (o.file == "-") shown_name = "<stdin>";
+    if (!o.shown_name.empty()) shown_name = o.shown_name;
     if (!input.open(o.file, &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = input.read_path();
   }
@@ -362,12 +364,8 @@ int run_job(RunOptions o) {
   ToolTableFile table;
   const bool have_table = !o.tools_file.empty() || demo;
   if (!o.tools_file.empty()) {
-    const ToolTableFile::Load l = table.load(o.tools_file.c_str(), o.inch);
-    if (l == ToolTableFile::Load::kIoError) return fail(kExitIo, "%s", table.message().c_str());
-    if (l == ToolTableFile::Load::kInputError) {
-      std::fprintf(stderr, "%s\n", table.message().c_str());
-      return kExitInput;
-    }
+    const int code = load_tool_table(o.tools_file, o.inch, &table);
+    if (code != kExitOk) return code;
   } else if (demo) {
     const char* t = demo_tool_table();
     if (table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
@@ -539,6 +537,10 @@ int run_job(RunOptions o) {
   if (!o.material.empty()) {
     const int code = material_start(&material, o.material, BoxNm{plan.stock.lo, plan.stock.hi}, grid);
     if (code != kExitOk) return code;
+    if (o.line_feed_limits) {  // `dexmill optimize`: lines 0 .. the last
+      o.line_feed_limits->assign(static_cast<size_t>(rep.lines) + 1, kNoFeedLimit);
+      process_watch_track_lines(&material.watch, o.line_feed_limits->data(), o.line_feed_limits->size());
+    }
   }
   const bool safety_on = checks.any();
   if (safety_on) {
@@ -725,7 +727,7 @@ int run_job(RunOptions o) {
       safety_to_report(safety, &rep);
     }
     if (!o.material.empty()) {
-      material_print(material, shown_name);
+      if (!o.line_feed_limits) material_print(material, shown_name);
       material_to_report(material, grid, &rep);
     }
     if (runner.io_error()) return fail(kExitIo, "%s", in.error());
@@ -787,7 +789,7 @@ int run_job(RunOptions o) {
     const uint64_t found = safety_on ? safety.watch.total : 0;
     std::fprintf(stderr, "%s: %llu safety finding(s)%s\n", shown_name.c_str(), static_cast<unsigned long long>(found),
                  o.design.empty() ? "" : (cut.gouged ? ", gouged the design" : ", no gouge"));
-  } else if (no_output) {
+  } else if (no_output && !o.line_feed_limits) {
     std::fputs(report_summary_text(rep).c_str(), stdout);
   }
   if (stop_line) return kExitInput;

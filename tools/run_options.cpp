@@ -141,6 +141,11 @@ void run_usage(std::FILE* f) {
                "--fail-on-gouge).\n");
 }
 
+bool run_draws(const RunOptions& o) {
+  return !o.image.empty() || !o.error_image.empty() || !o.frames_dir.empty() || !o.heightmap.empty() ||
+         !o.stl.empty() || o.window || !o.fbdev.empty();
+}
+
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   *help = false;
   {
@@ -176,7 +181,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
-    if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill run --help')", a);
+    if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", a, argv[0]);
     if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
     const char* v = argv[++i];
     const std::string name = a;

@@ -53,6 +53,14 @@ struct RunOptions {
   std::string fbdev;
   bool quiet = false;
   bool simulate_only = false;    // `check --simulate`: no summary, a verdict line on stderr
+  // `dexmill optimize`: the program's name in messages when `file` is a
+  // copy of it (a spooled standard input); empty: from `file`.
+  std::string shown_name;
+  // `dexmill optimize`: the cut fills this with each line's lowest max feed
+  // among the materials its feed moves removed (index = line,
+  // kNoFeedLimit: none; core/check/process.h); the run then prints neither
+  // the process warnings nor the summary.
+  std::vector<int64_t>* line_feed_limits = nullptr;
   // Live outputs (--window, --fbdev).
   bool exit_when_done = false;   // close the window after the program (fbdev always does)
   int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
@@ -84,8 +92,8 @@ struct RunOptions {
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
-  bool strict = false;
-  bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)           // --strict: an input error cuts nothing (else up to the bad block)
+  bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
+  bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)
 };
 
 // Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the
@@ -93,6 +101,11 @@ struct RunOptions {
 int parse_run_options(int argc, char** argv, RunOptions* out, bool* help);
 
 void run_usage(std::FILE* f);
+
+// True when o asks for a picture or a model (--image, --error-image,
+// --frames, --heightmap, --stl) or a live view: what the subcommands that
+// only simulate (`check --simulate`, `optimize`) refuse.
+bool run_draws(const RunOptions& o);
 
 }  // namespace cli
 }  // namespace dexmill

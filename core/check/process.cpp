@@ -52,7 +52,15 @@ Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockCom
   w->nkept = 0;
   w->total = 0;
   for (MaterialTally& t : w->tally) t = MaterialTally{};
+  w->line_feed_limit = nullptr;
+  w->line_feed_limits = 0;
   return Status::kOk;
+}
+
+void process_watch_track_lines(ProcessWatch* w, int64_t* limits, size_t n) {
+  for (size_t k = 0; k < n; ++k) limits[k] = kNoFeedLimit;
+  w->line_feed_limit = limits;
+  w->line_feed_limits = limits ? n : 0;
 }
 
 template <class H>
@@ -76,6 +84,10 @@ bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect chang
       const MaterialProcess& p = c.materials[m].process;
       const uint8_t mi = static_cast<uint8_t>(m);
       const PointNm at{x, y, z_lo};
+      // Every feed move's lowest limit, over it or not: the same materials,
+      // charged to the same line, as the feed rule below sees.
+      if (by.feed_move && by.line < w->line_feed_limits)
+        w->line_feed_limit[by.line] = min_of(w->line_feed_limit[by.line], p.max_feed_nm_per_min);
       if (by.feed_move && by.feed_nm_per_min > p.max_feed_nm_per_min)
         violate(w, first, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
       if (by.spindle_on && (by.spindle_rpm < p.spindle_min_rpm || by.spindle_rpm > p.spindle_max_rpm))

@@ -70,7 +70,16 @@ struct ProcessWatch {
   size_t nkept = 0;
   uint64_t total = 0;
   MaterialTally tally[kCompositionMaxMaterials];
+  // Optional (process_watch_track_lines), caller memory: per program line
+  // (the index), the lowest max feed among the materials that line's feed
+  // moves removed, charged as the feed rule charges them; what `dexmill
+  // optimize` lowers each line's feed to. null: not tracked.
+  int64_t* line_feed_limit = nullptr;
+  size_t line_feed_limits = 0;  // entries, lines 0 .. line_feed_limits - 1
 };
+
+// No material limits the line's feed (the line removed nothing by feeding).
+constexpr int64_t kNoFeedLimit = INT64_MAX;
 
 // Where the move before left the tool (its deferred end cap is its).
 struct ProcessOrigin {
@@ -83,6 +92,11 @@ struct ProcessOrigin {
 template <class H>
 Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockComposition* comp, uint32_t* shadow,
                           size_t shadow_words);
+
+// Tracks the lines' feed limits into limits[0, n), each set to kNoFeedLimit
+// here; lines past n are not tracked (the caller sizes it for the program).
+// After process_watch_init, which stops any tracking.
+void process_watch_track_lines(ProcessWatch* w, int64_t* limits, size_t n);
 
 // After the cut of record r in state s, the columns it changed in g being
 // `changed`. True when a violation was added.

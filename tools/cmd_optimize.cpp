@@ -1,0 +1,166 @@
+// `dexmill optimize FILE --material M [run options] [-o OUT]` (issue 19,
+// feed optimisation; Vericut sells it as OptiPath): the program with every
+// cutting move's feed lowered to the lowest max feed of the materials it
+// removes, never raised above what was programmed, only F words changed.
+// Three passes: the cut exactly as `dexmill run` makes it (tools/run_job.h,
+// which gives each line's limit), the rewrite (tools/optimize_pass.h), then
+// the output, written whole or not at all.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "platform/output_file.h"
+#include "platform/program_input.h"
+#include "platform/read_file.h"
+#include "tools/cli.h"
+#include "tools/feed_word.h"
+#include "tools/optimize_pass.h"
+#include "tools/run_job.h"
+#include "tools/run_options.h"
+#include "tools/run_tool_table.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+constexpr std::size_t kMaxProgramBytes = std::size_t(1) << 30;
+
+void usage(std::FILE* f) {
+  std::fprintf(f,
+               "usage: dexmill optimize FILE|- --material PRESET|FILE [run options] [-o OUT]\n\n"
+               "Writes the program to standard output (or OUT, replaced whole, which may be FILE\n"
+               "itself) with each cutting move's feed lowered to the lowest max_feed among the\n"
+               "materials it removes, as `dexmill run` cuts it with the same options (--stock,\n"
+               "--grid/--pitch, --tool/--tools, --units, --mode ...). A feed is never raised:\n"
+               "moves through air, rapids and moves within the limits keep theirs. Only F words\n"
+               "change: a lowered line gets its F changed or one added, and the next line that\n"
+               "runs at the programmed feed gets it back; every other byte stays as written.\n"
+               "A line's moves share one F, so a canned cycle's line runs at its slowest hole's\n"
+               "limit. Lowered feeds are written with at most 3 decimals (mm/min) or 4\n"
+               "(inch/min, under G20), rounded down; an inverse-time move (G93) gets its F\n"
+               "scaled by limit / rate, with 6 decimals, rounded down.\n\n"
+               "Prints on standard error the lines changed and the estimated time before and\n"
+               "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
+               "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n");
+}
+
+// Standard output is a regular file that is the program itself: the shell
+// emptied it before we ran (`dexmill optimize a.ngc ... > a.ngc`).
+bool stdout_is(const std::string& path) {
+  struct stat out, in;
+  return fstat(STDOUT_FILENO, &out) == 0 && S_ISREG(out.st_mode) && stat(path.c_str(), &in) == 0 &&
+         out.st_dev == in.st_dev && out.st_ino == in.st_ino;
+}
+
+// "1:23.4" (minutes, seconds), or "h:mm:ss" from an hour.
+std::string duration_text(int64_t us) {
+  char b[48];
+  const int64_t ds = (us + 50000) / 100000;  // tenths of a second
+  if (ds >= 36000)
+    std::snprintf(b, sizeof b, "%lld:%02lld:%02lld", static_cast<long long>(ds / 36000),
+                  static_cast<long long>(ds / 600 % 60), static_cast<long long>(ds / 10 % 60));
+  else
+    std::snprintf(b, sizeof b, "%lld:%02lld.%lld", static_cast<long long>(ds / 600), static_cast<long long>(ds / 10 % 60),
+                  static_cast<long long>(ds % 10));
+  return b;
+}
+
+void print_summary(const std::string& name, const OptimizeResult& r) {
+  std::string to;  // "2 to 1200 mm/min, 1 to 400 mm/min"
+  for (auto it = r.lowered_to.rbegin(); it != r.lowered_to.rend(); ++it)
+    to += std::string(to.empty() ? "" : ", ") + std::to_string(it->second) + " to " +
+          feed_number(it->first, false, 3).text + " mm/min";
+  std::fprintf(stderr, "%s: %u line(s) changed: %u feed(s) lowered%s, %u programmed feed(s) restored\n", name.c_str(),
+               r.lines_changed, r.lines_lowered, to.empty() ? "" : (" (" + to + ")").c_str(), r.lines_restored);
+  const double pct = r.before_us > 0 ? 100.0 * static_cast<double>(r.after_us - r.before_us) / static_cast<double>(r.before_us) : 0;
+  if (r.left_over)
+    std::fprintf(stderr, "%s: %u line(s) left over a limit (warned above)\n", name.c_str(), r.left_over);
+  std::fprintf(stderr, "%s: estimated time %s before, %s after (%+.1f%%)\n", name.c_str(), duration_text(r.before_us).c_str(),
+               duration_text(r.after_us).c_str(), pct);
+}
+
+}  // namespace
+
+int cmd_optimize(int argc, char** argv) {
+  // -o is optimize's own; the rest are run's options.
+  std::vector<char*> args;
+  std::string out_path = "-";
+  for (int i = 0; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+      usage(stdout);
+      return kExitOk;
+    }
+    if (i > 0 && (!std::strcmp(argv[i], "-o") || !std::strcmp(argv[i], "--output"))) {
+      if (i + 1 >= argc) return fail(kExitUsage, "%s needs a file (or - for standard output)", argv[i]);
+      out_path = argv[++i];
+      continue;
+    }
+    args.push_back(argv[i]);
+  }
+  RunOptions o;
+  bool help = false;
+  const int code = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
+  if (code != kExitOk || help) return code;
+  if (o.file.empty()) return fail(kExitUsage, "optimize needs a program FILE (or - for standard input)");
+  if (o.material.empty())
+    return fail(kExitUsage, "optimize needs --material PRESET|FILE: the feeds are lowered to its materials' limits");
+  if (run_draws(o) || !o.report.empty())
+    return fail(kExitUsage, "optimize writes the program only (use dexmill run for images, models and reports)");
+  if (o.stop_at_gouge || o.stop_at_collision || o.fail_on_gouge || o.fail_on_collision)
+    return fail(kExitUsage, "optimize cuts the whole program: --stop-at and --fail-on-* are run's");
+  if (out_path == "-" && o.file != "-" && stdout_is(o.file))
+    return fail(kExitUsage, "standard output is '%s' itself, which the shell has emptied already; write to another "
+                "file, or use -o %s", o.file.c_str(), o.file.c_str());
+
+  // The program as every pass reads it: a copy when it cannot be read twice.
+  ProgramInput input;
+  std::string err;
+  if (!input.open(o.file, &err)) return fail(kExitIo, "%s", err.c_str());
+  const std::string shown = o.file == "-" ? "<stdin>" : o.file;
+  o.shown_name = shown;
+  o.file = input.read_path();
+  o.strict = true;  // a program with an error is not rewritten
+  std::vector<int64_t> limits;
+  o.line_feed_limits = &limits;
+  const int cut = run_job(o);
+  if (cut != kExitOk) return cut;
+
+  std::vector<unsigned char> bytes;
+  const ReadFile rf = read_whole_file(input.read_path(), kMaxProgramBytes, &bytes, &err);
+  if (rf != ReadFile::kOk) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return rf == ReadFile::kTooLarge ? kExitInput : kExitIo;
+  }
+  ToolTableFile table;
+  if (!o.tools_file.empty()) {
+    const int t = load_tool_table(o.tools_file, o.inch, &table);
+    if (t != kExitOk) return t;
+  }
+  OptimizeInput in;
+  in.read_path = input.read_path();
+  in.shown_name = shown;
+  in.inch = o.inch;
+  in.tools = o.tools_file.empty() ? nullptr : &table;
+  in.limits = &limits;
+  in.time_model.rapid_nm_per_min = o.rapid_nm_per_min;
+  in.time_model.accel_nm_per_s2 = o.accel_nm_per_s2;
+  OptimizeResult res;
+  const int pass = optimize_pass(in, &res);
+  if (pass != kExitOk) return pass;
+  // The splices are at offsets of the file the passes read: it must be the
+  // one read into memory.
+  if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
+  const std::string program(bytes.begin(), bytes.end());
+  const std::string text = apply_splices(program, res.splices);
+  char e[1300];
+  if (!write_output(out_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
+  print_summary(shown, res);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill
