@@ -130,6 +130,8 @@ const char* demo_tool_table() {
 
 const char* demo_stock() { return "0,0,-20,100,70,0"; }
 
+const char* demo_material() { return "wood-on-aluminium"; }
+
 std::string demo_program() {
   Writer w;
   w.line("(dexmill demo: a 100 x 70 x 20 mm block, Z0 on its top, X0 Y0 at its front left corner)");
@@ -221,7 +223,9 @@ std::string demo_program() {
   w.line("(T3: spot drill, four through holes)");
   w.line("G0 Z10");
   w.line("T3 M6");
-  w.line("S3000 M3");
+  // 12000 rpm: the lowest the beech of the demo's block allows (and
+  // within the aluminium's range), so the process rules pass.
+  w.line("S12000 M3");
   w.line("G98 G81 X7 Y7 Z-22 R2 F200");
   w.line("X93");
   w.line("Y63");

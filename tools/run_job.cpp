@@ -333,6 +333,10 @@ int run_job(RunOptions o) {
       if (o.error_image.empty()) o.error_image = "out/error.ppm";
     }
     if (o.frames_dir.empty()) o.frames_dir = "out/frames";
+    if (o.material.empty()) {
+      o.material = demo_material();
+      if (!o.have_color) o.color = RunOptions::Color::kMaterial;
+    }
     if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
     read_path = shown_name = "out/demo.ngc";
     const std::string text = demo_program();
