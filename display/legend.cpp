@@ -56,17 +56,22 @@ void legend_draw_named(const FrameView& fb, const Rgb* colour, int32_t n, const 
   const ScreenRect band = legend_rect(fb);
   frame_fill(fb, band, pixel_pack(fb.format, Rgb{24, 28, 36}));
   const uint32_t ink = pixel_pack(fb.format, Rgb{230, 232, 236});
-  // One row of text in the middle of the strip; a swatch as tall as a glyph.
+  // One row of text in the middle of the strip; a swatch as tall as a
+  // glyph, half a cell before its name; two cells between entries, one
+  // when that makes them all fit.
   const int32_t y = band.y0 + (band.y1 - band.y0 - kFontCellH * s) / 2, swatch_w = 2 * kFontCellW * s;
+  const int32_t x0 = 4 * s, lead = swatch_w + kFontCellW * s / 2;
+  int32_t all = x0 - 2 * kFontCellW * s;
+  for (int32_t k = 0; k < n; ++k) all += lead + font_text_width(text_length(names[k]) + 2, s);
+  const int32_t gap = all <= fb.width ? 2 * kFontCellW * s : kFontCellW * s;
   const int32_t room = fb.width - font_text_width(3, s);  // "+N" after the last that fits
-  int32_t x = 4 * s, k = 0;
+  int32_t x = x0, k = 0;
   for (; k < n; ++k) {
     const size_t len = text_length(names[k]);
-    const int32_t end = x + swatch_w + font_text_width(len + 1, s);
-    if (end > room && k + 1 < n) break;
-    if (end > fb.width) break;
+    const int32_t end = x + lead + font_text_width(len, s);
+    if (end > (k + 1 < n ? room : fb.width)) break;
     frame_fill(fb, ScreenRect{x, y, x + swatch_w, y + (kFontCellH - 1) * s}, pixel_pack(fb.format, colour[k]));
-    x = font_draw(fb, x + swatch_w + kFontCellW * s / 2, y, names[k], len, ink, s) + 2 * kFontCellW * s;
+    x = font_draw(fb, x + lead, y, names[k], len, ink, s) + gap;
   }
   if (k < n) {
     const char more[3] = {'+', static_cast<char>('0' + (n - k)), 0};
