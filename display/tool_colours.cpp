@@ -1,7 +1,7 @@
 // The tool colour mode; see tool_colours.h.
 #include "display/tool_colours.h"
 
-#include "core/check/removals.h"
+#include "core/grid/removals.h"
 
 namespace dexmill {
 

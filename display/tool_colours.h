@@ -5,7 +5,7 @@
 // dexel is written as the cut happens: after every record the cutting
 // stage reports the rectangle it changed (tool_colours_record), and the
 // columns whose top went down there against a shadow of the tops
-// (core/check/removals.h) take the class of the tool in the spindle. The
+// (core/grid/removals.h) take the class of the tool in the spindle. The
 // renderer then has nothing to classify (classify is null). A column cut
 // through (now a hole) also gives its class to the uncut columns beside it,
 // whose side faces are the hole's walls. Nothing of
