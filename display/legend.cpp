@@ -50,4 +50,33 @@ void legend_draw(const FrameView& fb, const Rgb* colour, int32_t n, const char* 
   font_draw(fb, x0 + n * sw + 2 * s, sy0, title, text_length(title), ink, s);
 }
 
+void legend_draw_named(const FrameView& fb, const Rgb* colour, int32_t n, const char* const* names) {
+  if (n < 1 || n > kLegendMaxSwatches) return;
+  const int32_t s = legend_scale(fb);
+  const ScreenRect band = legend_rect(fb);
+  frame_fill(fb, band, pixel_pack(fb.format, Rgb{24, 28, 36}));
+  const uint32_t ink = pixel_pack(fb.format, Rgb{230, 232, 236});
+  // One row of text in the middle of the strip; a swatch as tall as a
+  // glyph, half a cell before its name; two cells between entries, one
+  // when that makes them all fit.
+  const int32_t y = band.y0 + (band.y1 - band.y0 - kFontCellH * s) / 2, swatch_w = 2 * kFontCellW * s;
+  const int32_t x0 = 4 * s, lead = swatch_w + kFontCellW * s / 2;
+  int32_t all = x0 - 2 * kFontCellW * s;
+  for (int32_t k = 0; k < n; ++k) all += lead + font_text_width(text_length(names[k]) + 2, s);
+  const int32_t gap = all <= fb.width ? 2 * kFontCellW * s : kFontCellW * s;
+  const int32_t room = fb.width - font_text_width(3, s);  // "+N" after the last that fits
+  int32_t x = x0, k = 0;
+  for (; k < n; ++k) {
+    const size_t len = text_length(names[k]);
+    const int32_t end = x + lead + font_text_width(len, s);
+    if (end > (k + 1 < n ? room : fb.width)) break;
+    frame_fill(fb, ScreenRect{x, y, x + swatch_w, y + (kFontCellH - 1) * s}, pixel_pack(fb.format, colour[k]));
+    x = font_draw(fb, x + lead, y, names[k], len, ink, s) + gap;
+  }
+  if (k < n) {
+    const char more[3] = {'+', static_cast<char>('0' + (n - k)), 0};
+    font_draw(fb, x, y, more, 2, ink, s);
+  }
+}
+
 }  // namespace dexmill

@@ -20,6 +20,12 @@ ScreenRect legend_rect(const FrameView& fb);
 // Draws the legend; n in 1..kLegendMaxSwatches, labels[n - 1] short texts.
 void legend_draw(const FrameView& fb, const Rgb* colour, int32_t n, const char* const* labels, const char* title);
 
+// The same strip with a name for each swatch instead of limits between them
+// (the tool colour mode: "UNCUT", "T1 FLAT 6", ...): swatch and name after
+// swatch and name, left to right; those that do not fit the frame's width
+// are left out and counted at the end ("+2"). n in 1..kLegendMaxSwatches.
+void legend_draw_named(const FrameView& fb, const Rgb* colour, int32_t n, const char* const* names);
+
 }  // namespace dexmill
 
 #endif

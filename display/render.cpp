@@ -339,7 +339,10 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
     const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
                      min_of<int32_t>(d.j1 + 2, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
-    classify(r, d);  // a class depends on its own dexel's top alone
+    // A class that looks at neighbours (surface_colours.h) recomputes them
+    // itself, up to kClassReach away: inside the cells redrawn below.
+    static_assert(kClassReach <= 2, "the cells redrawn reach two dexels past a change");
+    classify(r, d);
     const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
                          min_of<int32_t>(s.j1, g->ny - 1)};
     const int32_t bx0 = cells.i0 / kBlockCells, bx1 = (cells.i1 - 1) / kBlockCells;

@@ -3,7 +3,7 @@
 // class has its own ramp, and a face takes the ramp of one corner: a top
 // triangle its lowest corner's (a slope the colour of the floor it drops
 // to), a side face its own dexel's (a wall the colour of its top). The error view (§2.5.1, figure 10) is the
-// first mode; tool, slope and material colours are others. Off (null): one
+// first mode; tool, slope, thin and material colours are others. Off (null): one
 // ramp for the whole workpiece, as before, at the cost of one test a cell.
 #ifndef DEXMILL_DISPLAY_SURFACE_COLOURS_H
 #define DEXMILL_DISPLAY_SURFACE_COLOURS_H
@@ -51,11 +51,37 @@ struct SurfaceColours {
   Rgb colour[kMaxColourClasses];
   // Recomputes cls over r after the grid changed there; the renderer calls
   // it for every rectangle it is about to redraw, before drawing.
+  // A class may depend on the dexels up to kClassReach away (a slope's
+  // central differences): the callback recomputes r grown by its own reach
+  // (clipped to the grid), and the renderer redraws the cells that far past
+  // a change anyway (the normals' gradient and blur reach two dexels).
   void (*classify)(void* ctx, GridRect r, uint8_t* cls) = nullptr;
   void* ctx = nullptr;
   // Colours per vertex instead of one ramp per class (null: ramps).
   const SurfaceTexture* texture = nullptr;
 };
+
+// How far a class may look from its dexel (see classify above).
+constexpr int32_t kClassReach = 2;
+
+// Sets c to n classes of the given colours over caller memory (cls: a byte
+// a dexel; luts: n * kShadeLevels words), classified by fn(ctx, ...) (null:
+// the caller writes cls itself).
+inline void surface_colours_set(SurfaceColours* c, uint8_t* cls, uint32_t* luts, const Rgb* colour, int32_t n,
+                                void (*fn)(void*, GridRect, uint8_t*), void* ctx) {
+  c->cls = cls;
+  c->luts = luts;
+  c->nclasses = n < kMaxColourClasses ? n : kMaxColourClasses;
+  for (int32_t k = 0; k < c->nclasses; ++k) c->colour[k] = colour[k];
+  c->classify = fn;
+  c->ctx = ctx;
+}
+
+// r within g's dexels.
+template <class H>
+GridRect clip_to_grid(const DexelGrid<H>& g, GridRect r) {
+  return GridRect{r.i0 > 0 ? r.i0 : 0, r.j0 > 0 ? r.j0 : 0, r.i1 < g.nx ? r.i1 : g.nx, r.j1 < g.ny ? r.j1 : g.ny};
+}
 
 }  // namespace dexmill
 

@@ -126,4 +126,13 @@ void check_hash(const std::string& path, uint64_t want) {
   CHECK_EQ(got, want);
 }
 
+std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_rows) {
+  int w = 0, h = 0, maxval = 0, used = 0;
+  if (std::sscanf(bytes.c_str(), "P6 %d %d %d%n", &w, &h, &maxval, &used) != 3 || maxval != 255) return {};
+  const size_t at = static_cast<size_t>(used) + 1, n = static_cast<size_t>(w) * h * 3;
+  if (bytes.size() < at + n || skip_bottom_rows > h) return {};
+  const size_t kept = static_cast<size_t>(w) * (h - skip_bottom_rows) * 3;
+  return std::vector<unsigned char>(bytes.begin() + static_cast<long>(at), bytes.begin() + static_cast<long>(at + kept));
+}
+
 }  // namespace run_cli

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace run_cli {
 
@@ -38,6 +39,9 @@ bool skip();
 std::string assessment_of(const std::string& report);
 // CHECKs the file's hash (printing the new one when it differs).
 void check_hash(const std::string& path, uint64_t want);
+// Pixels of a binary PPM (P6, maxval 255) as RGB triples, row by row,
+// without its last `skip_bottom_rows` rows (a legend); empty if not one.
+std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_rows = 0);
 
 }  // namespace run_cli
 

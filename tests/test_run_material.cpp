@@ -77,15 +77,6 @@ TEST(material_presets_and_bad_files) {
 
 namespace {
 
-// Pixels of a binary PPM (P6, maxval 255) as RGB triples; empty if not one.
-std::vector<unsigned char> ppm_rgb(const std::string& bytes) {
-  int w = 0, h = 0, maxval = 0, used = 0;
-  if (std::sscanf(bytes.c_str(), "P6 %d %d %d%n", &w, &h, &maxval, &used) != 3 || maxval != 255) return {};
-  const size_t at = static_cast<size_t>(used) + 1, n = static_cast<size_t>(w) * h * 3;
-  if (bytes.size() < at + n) return {};
-  return std::vector<unsigned char>(bytes.begin() + static_cast<long>(at), bytes.begin() + static_cast<long>(at + n));
-}
-
 // Yellowish pixels (any shade of the two-layer block's lower layer; the
 // workpiece grey, the black layer and the table are not).
 int yellowish(const std::vector<unsigned char>& px) {

@@ -34,6 +34,7 @@
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/run_assess.h"
+#include "tools/run_colours.h"
 #include "tools/run_live.h"
 #include "tools/run_outputs.h"
 #include "tools/run_path.h"
@@ -155,6 +156,7 @@ class CutSink final : public CanonSink {
       have_origin_ = last_line_ != 0;
     }
     mill_->emit(r);
+    if (tool_colours) run_colours_record(tool_colours, g_->dirty);
     if (count_path) path_done += path_pieces(r);
     last_line_ = r.line;
     watch();
@@ -186,6 +188,7 @@ class CutSink final : public CanonSink {
         profile_ = tool_profile(t);
         tool_body_build(t, &body_);
         if (safety_) safety_watch_set_tool(&safety_->watch, profile_);
+        if (tool_colours) run_colours_tool_change(tool_colours, r.tool);
         char spec[kToolSpecTextMax];
         tool_spec_format(t, spec, sizeof spec);
         status.tool_spec = spec;
@@ -205,11 +208,13 @@ class CutSink final : public CanonSink {
   // are drawn either.
   void sync() {
     mill_->flush();
+    if (tool_colours) run_colours_note(tool_colours, g_->dirty);
     fan_out_dirty(g_, w_->outputs.data(), static_cast<int>(w_->outputs.size()));
   }
   // The end of the cut pass: the deferred cap for good, watched.
   void finish() {
     mill_->finish();
+    if (tool_colours) run_colours_record(tool_colours, g_->dirty);
     watch();
     if (safety_) {  // the deferred end cap, now cut for good, is the last move's
       CanonRecord cap{};
@@ -244,6 +249,7 @@ class CutSink final : public CanonSink {
   uint32_t stop_line = 0;        // the first bad block of a partial run (0: none)
   const Interp* interp = nullptr;  // the cut pass's, for the spindle's state
   RunMaterial* material = nullptr;  // the process rules (null: no --material)
+  RunColours* tool_colours = nullptr;  // --color tool: told what each record lowered (null: off)
   bool count_path = false;       // keep path_done: the backplot's pieces cut so far
   uint32_t path_done = 0;
   bool stopped_at_error = false;
@@ -656,6 +662,15 @@ int run_job(RunOptions o) {
     for (RenderOutput* out : w.outputs)
       if (out != error_out.get()) out->set_colours(&material_colours.colours);
   }
+  // --color tool|slope|thin, in every output but the error view.
+  RunColours colours;
+  run_colours_start(&colours, o, grid, lib);
+  if (const SurfaceColours* c = colours.colours())
+    for (RenderOutput* out : w.outputs)
+      if (out != error_out.get()) {
+        out->set_colours(c);
+        out->set_legend(&colours.legend);
+      }
   // The gouges found so far, marked in every frame and live view.
   if (!o.design.empty())
     for (RenderOutput* out : w.outputs) out->add_marks(&design.marks, Rgb{255, 32, 24});
@@ -671,6 +686,7 @@ int run_job(RunOptions o) {
   CutSink cut(&mill, &grid, &w, lib, o.design.empty() ? nullptr : &design, safety_on ? &safety : nullptr, o.tool,
               time_model);
   cut.stop_line = stop_line;
+  if (o.color == RunOptions::Color::kTool) cut.tool_colours = &colours;
   cut.count_path = want_path;
   if (want_path)
     for (RenderOutput* out : w.outputs) {

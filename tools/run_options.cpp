@@ -105,9 +105,15 @@ void run_usage(std::FILE* f) {
                "  --design-z ZLOW,ZHIGH      a PGM design's black and white, mm (it spans the stock's XY)\n"
                "  --tolerance MM             |cut - design| within it is not an error (default 0.05)\n"
                "  --tolerance-box X0,Y0,X1,Y1,TOL  another tolerance inside a box (repeatable)\n"
-               "  --color plain|error|material  what colours the surface: one colour, cut - design in\n"
-               "                             bands (white within tolerance, greens left, reds gouged),\n"
-               "                             or the material under each top (the default with --material)\n"
+               "  --color MODE               what colours the surface: plain (one colour), error (cut -\n"
+               "                             design in bands: white within tolerance, greens left, reds\n"
+               "                             gouged), material (the material under each top; the default\n"
+               "                             with --material), tool (each tool's cut in its own colour,\n"
+               "                             uncut stock grey), slope (flat, 5, 30, 60 degrees and over)\n"
+               "                             or thin (material thinner than --thin MM orange, than half\n"
+               "                             of it red)\n"
+               "  --thin MM                  the thickness --color thin highlights below (default 1);\n"
+               "                             alone, it means --color thin\n"
                "  --error-image FILE.png     the final frame in the error view too (needs --design)\n"
                "  --overlay design|workpiece --image with the design translucent over the cut (shows\n"
                "                             gouges), or the cut translucent over the design (shows\n"
@@ -178,7 +184,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
                                              "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                              "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                              "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
+                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
     bool known = false;
     for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
     if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", a, argv[0]);
@@ -284,8 +290,15 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!std::strcmp(v, "plain")) o->color = RunOptions::Color::kPlain;
       else if (!std::strcmp(v, "error")) o->color = RunOptions::Color::kError;
       else if (!std::strcmp(v, "material")) o->color = RunOptions::Color::kMaterial;
-      else return fail(kExitUsage, "--color must be plain, error or material, not '%s'", v);
+      else if (!std::strcmp(v, "tool")) o->color = RunOptions::Color::kTool;
+      else if (!std::strcmp(v, "slope")) o->color = RunOptions::Color::kSlope;
+      else if (!std::strcmp(v, "thin")) o->color = RunOptions::Color::kThin;
+      else return fail(kExitUsage, "--color must be plain, error, material, tool, slope or thin, not '%s'", v);
       o->have_color = true;
+    } else if (name == "--thin") {
+      if (!parse_scaled(v, kNmPerMm, &o->thin_nm) || o->thin_nm < 1000 || o->thin_nm > 1000 * kNmPerMm)
+        return fail(kExitUsage, "--thin needs a thickness in mm from 0.001 to 1000, not '%s'", v);
+      o->have_thin = true;
     } else if (name == "--overlay") {
       if (!std::strcmp(v, "design")) o->overlay = RunOptions::Overlay::kDesign;
       else if (!std::strcmp(v, "workpiece")) o->overlay = RunOptions::Overlay::kWorkpiece;
@@ -355,6 +368,13 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   }
   if ((o->stop_at_gouge || o->fail_on_gouge) && o->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)", o->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");
+  // --thin says which mode it is for: alone it is that mode, with another an error.
+  if (o->have_thin && o->have_color && o->color != RunOptions::Color::kThin)
+    return fail(kExitUsage, "--thin is the limit of --color thin; it does not go with another --color");
+  if (o->have_thin && !o->have_color) {
+    o->color = RunOptions::Color::kThin;
+    o->have_color = true;
+  }
   if (!o->material.empty() && !o->have_color) o->color = RunOptions::Color::kMaterial;
   if (o->color == RunOptions::Color::kMaterial && o->material.empty())
     return fail(kExitUsage, "--color material needs --material (what the stock is made of)");

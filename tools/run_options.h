@@ -75,9 +75,11 @@ struct RunOptions {
   int64_t design_offset_nm[3] = {};  // --design-offset X,Y,Z (STL)
   int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
   std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
-  // --color; with --material and no --color, material.
-  enum class Color : uint8_t { kPlain, kError, kMaterial } color = Color::kPlain;
+  // --color; with --material and no --color, material; --thin alone, thin.
+  enum class Color : uint8_t { kPlain, kError, kMaterial, kTool, kSlope, kThin } color = Color::kPlain;
   bool have_color = false;
+  int64_t thin_nm = kNmPerMm;    // --thin MM: --color thin highlights material thinner than this (1 mm)
+  bool have_thin = false;
   // --overlay: the design translucent over the cut (shows overcut), or the
   // cut translucent over the design (shows undercut), in --image.
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;

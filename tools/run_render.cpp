@@ -80,9 +80,10 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
     }
   }
   if (legend_) {
-    const char* labels[kLegendMaxSwatches - 1];
-    for (int32_t k = 0; k + 1 < legend_->n; ++k) labels[k] = legend_->labels[k].c_str();
-    legend_draw(fb_, legend_->colour, legend_->n, labels, legend_->title.c_str());
+    const char* labels[kLegendMaxSwatches];
+    for (int32_t k = 0; k < legend_->n; ++k) labels[k] = legend_->labels[k].c_str();
+    if (legend_->named) legend_draw_named(fb_, legend_->colour, legend_->n, labels);
+    else legend_draw(fb_, legend_->colour, legend_->n, labels, legend_->title.c_str());
     const ScreenRect l = legend_rect(fb_);
     if (res.nrects < kMaxDirtyRects) res.rects[res.nrects++] = l;
     else res.rects[res.nrects - 1] = rect_union(res.rects[res.nrects - 1], l);

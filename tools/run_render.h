@@ -44,12 +44,15 @@ class RenderOutput {
   void set_tool(const Tool& t);
   // A colour mode (null: the workpiece colour), kept across resizes.
   void set_colours(const SurfaceColours* c);
-  // A legend drawn over every frame (null: none).
+  // A legend drawn over every frame (null: none): limits between the
+  // swatches (labels[0, n - 1)) and a title, or a name for each swatch
+  // (named: labels[0, n)).
   struct Legend {
     Rgb colour[kLegendMaxSwatches];
     int32_t n = 0;
-    std::string labels[kLegendMaxSwatches - 1];
+    std::string labels[kLegendMaxSwatches];
     std::string title;
+    bool named = false;
   };
   void set_legend(const Legend* l) { legend_ = l; }
   // Points marked over every frame in `colour` (the gouges found so far in

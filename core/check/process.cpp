@@ -1,7 +1,7 @@
 // The process rules of an inhomogeneous stock; see process.h.
 #include "core/check/process.h"
 
-#include "core/check/removals.h"
+#include "core/grid/removals.h"
 #include "core/material/column.h"
 
 namespace dexmill {

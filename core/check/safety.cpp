@@ -1,7 +1,7 @@
 // Safety checks; see safety.h.
 #include "core/check/safety.h"
 
-#include "core/check/removals.h"
+#include "core/grid/removals.h"
 
 #include "core/math/fixed.h"
 #include "core/motion/arc_chords.h"

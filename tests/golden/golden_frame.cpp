@@ -7,6 +7,8 @@
 // pyramid on it) in the error view (paper §2.5, figure 10), with the
 // assessment's figures: E, sum of design tops, the band counts. And once,
 // the scene held in a vice with a clamp on its top (display/fixture_draw.h).
+// And the colour modes tool (the cuts by T1, the hole by T2, the update's by
+// T3), slope, and thin (under 16 mm: the cut floors), issue 19.
 #include <stdint.h>
 #include <string.h>
 
@@ -22,6 +24,9 @@
 #include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
+#include "display/slope_colours.h"
+#include "display/thin_colours.h"
+#include "display/tool_colours.h"
 #include "tests/golden/golden.h"
 
 using namespace dexmill;
@@ -153,6 +158,10 @@ const BoxNm kFixtures[3] = {
     {PointNm{20 * kNmPerMm, 7 * kNmPerMm, 20 * kNmPerMm}, PointNm{26 * kNmPerMm, 13 * kNmPerMm, 22 * kNmPerMm + kNmPerMm / 2}},
 };
 
+// What colours the frame: the workpiece colour, the error view, or the
+// colour modes of issue 19.
+enum class Colours { kPlain, kError, kTool, kSlope, kThin, kMaterial };
+
 // A material preset's textured colours over g (display/material_colours.h),
 // memory from the arena; false when it is short.
 bool material_view(Arena& a, const DexelGrid<uint16_t>& g, const char* preset, MaterialColours<uint16_t>* m) {
@@ -168,8 +177,60 @@ bool material_view(Arena& a, const DexelGrid<uint16_t>& g, const char* preset, M
   return true;
 }
 
-void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_view = false, bool with_fixtures = false,
-         const char* material = nullptr) {
+// The colour modes' state and memory (the error view has its own).
+struct ModeColours {
+  ToolColours<uint16_t> tool;
+  SlopeColours<uint16_t> slope;
+  ThinColours<uint16_t> thin;
+  MaterialColours<uint16_t> material;
+  const SurfaceColours* colours = nullptr;
+  // Sets mode c up over g as it is now (the stock, for tool); false when the arena is short.
+  bool init(Arena& a, Colours c, const DexelGrid<uint16_t>& g, const char* preset) {
+    colours = nullptr;
+    if (c == Colours::kPlain || c == Colours::kError) return true;  // no memory taken: the overlay needs it
+    if (c == Colours::kMaterial) {
+      colours = &material.colours;
+      return material_view(a, g, preset, &material);
+    }
+    const size_t cells = static_cast<size_t>(g.nx) * g.ny;
+    uint8_t* cls = a.take<uint8_t>(cells);
+    uint32_t* luts = a.take<uint32_t>(static_cast<size_t>(kMaxColourClasses) * kShadeLevels);
+    uint32_t* shadow = c == Colours::kTool ? a.take<uint32_t>(cells) : luts;
+    if (!cls || !luts || !shadow) return false;
+    if (c == Colours::kTool) {
+      tool_colours_init(&tool, g, 1, cls, shadow, luts);
+      colours = &tool.colours;
+    } else if (c == Colours::kSlope) {
+      slope_colours_init(&slope, g, cls, luts);
+      colours = &slope.colours;
+    } else if (c == Colours::kThin) {
+      thin_colours_init(&thin, g, 16 * kNmPerMm, cls, luts);
+      colours = &thin.colours;
+    }
+    return true;
+  }
+  // The cut pass's report of a record by tool `number` (tool mode only).
+  void record(Colours c, int32_t number, const DexelGrid<uint16_t>& g) {
+    if (c != Colours::kTool) return;
+    tool_colours_set_tool(&tool, number);
+    tool_colours_record(&tool, g.dirty);
+  }
+};
+
+const char* frame_name(Colours c, bool with_fixtures) {
+  switch (c) {
+    case Colours::kError: return "frame-error";
+    case Colours::kTool: return "frame-tool";
+    case Colours::kSlope: return "frame-slope";
+    case Colours::kThin: return "frame-thin";
+    case Colours::kMaterial: return "frame-material";
+    default: return with_fixtures ? "frame-fixture" : "frame";
+  }
+}
+
+void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, Colours colour = Colours::kPlain, bool with_fixtures = false,
+         const char* preset = nullptr) {
+  const bool with_error_view = colour == Colours::kError;
   Arena& a = arena();
   a.reset();
   const size_t cells = static_cast<size_t>(kNx) * kNy;
@@ -184,6 +245,11 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
     return;
   }
   grid_block_stock(&g, 40000);  // 20 mm
+  static ModeColours mc;
+  if (!mc.init(a, colour, g, preset)) {
+    fail(out, "frame: colour mode");
+    return;
+  }
   const Tool tool = ball6();
   const ToolProfile prof = tool_profile(tool);
   SweepTool st_tool;
@@ -192,7 +258,9 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
   const int64_t mm = kNmPerMm;
   sweep_line(&g, st_tool, PointNm{5 * mm, 5 * mm, 15 * mm}, PointNm{18 * mm, 6 * mm, 13 * mm}, &st);
   sweep_line(&g, st_tool, PointNm{18 * mm, 6 * mm, 13 * mm}, PointNm{18 * mm, 14 * mm, 12 * mm}, &st, false);
+  mc.record(colour, 1, g);
   sweep_line(&g, st_tool, PointNm{10 * mm, 14 * mm, 25 * mm}, PointNm{10 * mm, 14 * mm, -mm}, &st);  // hole
+  mc.record(colour, 2, g);
   RenderOptions opt;
   opt.zformat = zf;
   const size_t need = renderer_scratch_bytes(g, kW, kH, zf);
@@ -214,28 +282,23 @@ void one(Out& out, PixelFormat pf, ZFormat zf, ViewPreset view, bool with_error_
     }
     renderer_set_colours(&r, &ev.colours.colours);
   }
-  static MaterialColours<uint16_t> mc;
-  if (material) {
-    if (!material_view(a, g, material, &mc)) {
-      fail(out, "frame: material");
-      return;
-    }
-    renderer_set_colours(&r, &mc.colours);
-  }
+  if (mc.colours) renderer_set_colours(&r, mc.colours);
   if (!ok(renderer_set_fixtures(&r, kFixtures, with_fixtures ? 3 : 0))) {
     fail(out, "frame: fixtures");
     return;
   }
   render_full(&r, &g, CutterPose{true, PointNm{18 * mm, 14 * mm, 12 * mm}});
-  out.str(material ? "frame-material " : "").str(material ? material : "");
-  out.str(material ? "" : (with_error_view ? "frame-error" : (with_fixtures ? "frame-fixture" : "frame"))).kv("view", static_cast<int64_t>(view));
+  out.str(frame_name(colour, with_fixtures));
+  if (preset) out.str(" ").str(preset);
+  out.kv("view", static_cast<int64_t>(view));
   out.str(pf == PixelFormat::kRgb565 ? " rgb565" : " xrgb8888");
   out.str(zf == ZFormat::kZ16 ? " z16" : " z32").kx("full", frame_hash(fb));
   sweep_line(&g, st_tool, PointNm{18 * mm, 14 * mm, 12 * mm}, PointNm{6 * mm, 15 * mm, 14 * mm}, &st, false);
+  mc.record(colour, 3, g);
   const RenderResult res = render_update(&r, &g, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   out.kx("update", frame_hash(fb)).kv("rects", res.nrects).end();
   if (with_error_view) overlay(out, a, g, ev, r, fb, opt);
-  else if (!with_fixtures && !material) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
+  else if (!with_fixtures && colour == Colours::kPlain) backplot(out, r, g, fb, CutterPose{true, PointNm{6 * mm, 15 * mm, 14 * mm}});
   if (with_fixtures) {  // a safety finding marked on the clamp, as `run` marks one (magenta, over everything)
     const ScreenRect m = marker_draw(fb, r.view, kFixtures[0].hi, 6, pixel_pack(fb.format, Rgb{255, 40, 255}));
     out.str("frame-fixture-mark").kx("marked", frame_hash(fb)).kv("w", m.x1 - m.x0).kv("h", m.y1 - m.y0).end();
@@ -249,15 +312,18 @@ void golden_frame(Out& out) {
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso);
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kTop);
   one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront);
-  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, true);
-  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, true);
-  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, false, true);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kError);
+  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, Colours::kError);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kPlain, true);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kTool);
+  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, Colours::kSlope);
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kIso, Colours::kThin);
   // Issue 19: a texture per vertex, walls split (paper §2.7.1, figure 11).
-  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, false, false, "marble");
-  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso, false, false, "two-layer");
-  one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront, false, false, "wood");
-  one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kIso, false, false, "bronze");
-  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kTop, false, false, "granite");
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kMaterial, false, "marble");
+  one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso, Colours::kMaterial, false, "two-layer");
+  one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront, Colours::kMaterial, false, "wood");
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kIso, Colours::kMaterial, false, "bronze");
+  one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kTop, Colours::kMaterial, false, "granite");
 }
 
 }  // namespace golden

@@ -1,0 +1,63 @@
+// The colour modes `--color tool|slope|thin` of `dexmill run` (issue 19):
+// each mode's memory, its classes (display/tool_colours.h,
+// slope_colours.h, thin_colours.h) and its legend. `material` and `error`
+// are set up beside them in run_job (run_assess.h, display/material_colours.h).
+#ifndef DEXMILL_TOOLS_RUN_COLOURS_H
+#define DEXMILL_TOOLS_RUN_COLOURS_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "core/cut/mill.h"
+#include "core/grid/grid.h"
+#include "core/tool/tool.h"
+#include "display/slope_colours.h"
+#include "display/thin_colours.h"
+#include "display/tool_colours.h"
+#include "tools/run_options.h"
+#include "tools/run_render.h"
+
+namespace dexmill {
+namespace cli {
+
+// The tool in the spindle before any M6 (the --tool default): listed by its
+// shape alone.
+constexpr int32_t kInitialToolNumber = -1;
+
+struct RunColours {
+  RunOptions::Color mode = RunOptions::Color::kPlain;
+  std::vector<uint8_t> cls;      // a class a dexel
+  std::vector<uint32_t> luts;    // the renderer's ramps, kMaxColourClasses of them
+  std::vector<uint32_t> shadow;  // tool: the tops as of the last record
+  ToolColours<height_t> tool;
+  SlopeColours<height_t> slope;
+  ThinColours<height_t> thin;
+  RenderOutput::Legend legend;
+  const ToolLibrary* lib = nullptr;  // tool: names the tools in the legend
+  Tool initial;                      // tool: the one before any M6
+
+  // The mode's classes for the renderer; null for the modes set up elsewhere.
+  const SurfaceColours* colours() const;
+};
+
+// Sets up o.color's mode over g (as stocked) when it is tool, slope or
+// thin; nothing otherwise. c must stay where it is while outputs use it.
+void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib);
+
+// The tool mode's hooks in the cut pass (run_job's CutSink; null when the
+// mode is off, so that they cost nothing): after every record, with the
+// rectangle it changed; at a tool change (after recording the record that
+// made it); and for the changes a frame's flush shows.
+void run_colours_record(RunColours* c, GridRect changed);
+void run_colours_tool_change(RunColours* c, int32_t number);
+void run_colours_note(RunColours* c, GridRect changed);
+
+// "flat 6" for flat:6,len=20...: the kind and diameter of a tool's spec.
+std::string tool_short_name(const Tool& t);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
