@@ -212,6 +212,21 @@ TEST(clipping_changes_no_pixel) {
   }
 }
 
+// The oracle tests' triangles: vertices 1 and 2 moved by up to `size` q4
+// from vertex 0 (every other rep within 3 pixels of it: the small-triangle
+// path), turned counterclockwise; returns twice the area (0: degenerate).
+static double oracle_shape(Rng* rng, int rep, int32_t size, RasterVertex p[3]) {
+  p[1].x_q4 = p[0].x_q4 + int32_t(rng->range(-size, size));
+  p[2].y_q4 = p[0].y_q4 + int32_t(rng->range(-size, size));
+  if (rep % 2)
+    for (int k = 1; k < 3; ++k) {
+      p[k].x_q4 = p[0].x_q4 + int32_t(rng->range(-24, 24));
+      p[k].y_q4 = p[0].y_q4 + int32_t(rng->range(-24, 24));
+    }
+  if (area2(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
+  return double(area2(p[0], p[1], p[2]));
+}
+
 TEST(interpolation_against_double_oracle) {
   // Depth and shade at every covered pixel against barycentric interpolation
   // in double: depth within 2^-7 * (1 + pixels from vertex 0) + 1/2 units
@@ -226,17 +241,7 @@ TEST(interpolation_against_double_oracle) {
     for (RasterVertex& q : p)
       q = V(int32_t(rng.range(0, 16 * 64)), int32_t(rng.range(0, 16 * 64)),
             int32_t(rng.range(kDepthMargin, kDepthMax - kDepthMargin)), int32_t(rng.range(0, 255)));
-    p[1].x_q4 = p[0].x_q4 + int32_t(rng.range(-size, size));
-    p[2].y_q4 = p[0].y_q4 + int32_t(rng.range(-size, size));
-    if (rep % 2) {
-      // Within 3 pixels of vertex 0: the small-triangle path.
-      for (int k = 1; k < 3; ++k) {
-        p[k].x_q4 = p[0].x_q4 + int32_t(rng.range(-24, 24));
-        p[k].y_q4 = p[0].y_q4 + int32_t(rng.range(-24, 24));
-      }
-    }
-    if (area2(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
-    const double A = double(area2(p[0], p[1], p[2]));
+    const double A = oracle_shape(&rng, rep, size, p);
     if (A == 0) continue;
     raster_triangle(&c.t, p[0], p[1], p[2]);
     for (int32_t y = 0; y < 64; ++y) {
@@ -285,15 +290,7 @@ TEST(vertex_colours_against_double_oracle) {
       q = V(int32_t(rng.range(0, 16 * 64)), int32_t(rng.range(0, 16 * 64)), 1 << 20, 0);
       q.rgb = uint32_t(rng.range(0, 0xFFFFFF));
     }
-    p[1].x_q4 = p[0].x_q4 + int32_t(rng.range(-size, size));
-    p[2].y_q4 = p[0].y_q4 + int32_t(rng.range(-size, size));
-    if (rep % 2)
-      for (int k = 1; k < 3; ++k) {
-        p[k].x_q4 = p[0].x_q4 + int32_t(rng.range(-24, 24));
-        p[k].y_q4 = p[0].y_q4 + int32_t(rng.range(-24, 24));
-      }
-    if (area2(p[0], p[1], p[2]) < 0) std::swap(p[1], p[2]);
-    const double A = double(area2(p[0], p[1], p[2]));
+    const double A = oracle_shape(&rng, rep, size, p);
     if (A == 0) continue;
     raster_triangle(&c.t, p[0], p[1], p[2]);
     for (int32_t y = 0; y < 64; ++y)
