@@ -212,6 +212,24 @@ TEST(clipping_changes_no_pixel) {
   }
 }
 
+// Calls f(i, w, px, py) for every pixel of c (64 x 64) the triangle p
+// (twice its area A) covered: its index, the exact barycentric weights of
+// its centre (px, py, q4).
+template <class F>
+void each_covered(const Canvas& c, const RasterVertex p[3], double A, F f) {
+  for (int32_t y = 0; y < 64; ++y)
+    for (int32_t x = 0; x < 64; ++x) {
+      const size_t i = size_t(y) * 64 + x;
+      if (c.z[i] == 0xFFFFFFFFu) continue;
+      const double px = x * 16 + 8, py = y * 16 + 8;
+      auto E = [&](const RasterVertex& a, const RasterVertex& b) {
+        return (px - a.x_q4) * (b.y_q4 - a.y_q4) - (py - a.y_q4) * (b.x_q4 - a.x_q4);
+      };
+      const double w[3] = {E(p[1], p[2]) / A, E(p[2], p[0]) / A, E(p[0], p[1]) / A};
+      f(i, w, px, py);
+    }
+}
+
 // The oracle tests' triangles: vertices 1 and 2 moved by up to `size` q4
 // from vertex 0 (every other rep within 3 pixels of it: the small-triangle
 // path), turned counterclockwise; returns twice the area (0: degenerate).
@@ -244,25 +262,17 @@ TEST(interpolation_against_double_oracle) {
     const double A = oracle_shape(&rng, rep, size, p);
     if (A == 0) continue;
     raster_triangle(&c.t, p[0], p[1], p[2]);
-    for (int32_t y = 0; y < 64; ++y) {
-      for (int32_t x = 0; x < 64; ++x) {
-        const size_t i = size_t(y) * 64 + x;
-        if (c.z[i] == 0xFFFFFFFFu) continue;
-        const double px = x * 16 + 8, py = y * 16 + 8;
-        auto E = [&](const RasterVertex& a, const RasterVertex& b) {
-          return (px - a.x_q4) * (b.y_q4 - a.y_q4) - (py - a.y_q4) * (b.x_q4 - a.x_q4);
-        };
-        const double w0 = E(p[1], p[2]) / A, w1 = E(p[2], p[0]) / A, w2 = E(p[0], p[1]) / A;
-        const double z = w0 * p[0].depth + w1 * p[1].depth + w2 * p[2].depth;
-        const double s = w0 * p[0].shade + w1 * p[1].shade + w2 * p[2].shade;
-        const double dist = (std::fabs(px - p[0].x_q4) + std::fabs(py - p[0].y_q4)) / 16;
-        const double ez = std::fabs(c.z[i] / 128.0 - z), es = std::fabs(double(c.color[i] & 0xFF) - s);
-        worst_z = ez > worst_z ? ez : worst_z;
-        worst_s = es > worst_s ? es : worst_s;
-        CHECK_LE(ez, (1 + dist) / 128.0 + 0.5);
-        CHECK_LE(es, 1.0);
-      }
-    }
+    each_covered(c, p, A, [&](size_t i, const double w[3], double px, double py) {
+      const double w0 = w[0], w1 = w[1], w2 = w[2];
+      const double z = w0 * p[0].depth + w1 * p[1].depth + w2 * p[2].depth;
+      const double s = w0 * p[0].shade + w1 * p[1].shade + w2 * p[2].shade;
+      const double dist = (std::fabs(px - p[0].x_q4) + std::fabs(py - p[0].y_q4)) / 16;
+      const double ez = std::fabs(c.z[i] / 128.0 - z), es = std::fabs(double(c.color[i] & 0xFF) - s);
+      worst_z = ez > worst_z ? ez : worst_z;
+      worst_s = es > worst_s ? es : worst_s;
+      CHECK_LE(ez, (1 + dist) / 128.0 + 0.5);
+      CHECK_LE(es, 1.0);
+    });
   }
   std::printf("interpolation: worst depth error %.3f units, worst shade error %.3f levels\n", worst_z, worst_s);
 }
@@ -293,35 +303,27 @@ TEST(vertex_colours_against_double_oracle) {
     const double A = oracle_shape(&rng, rep, size, p);
     if (A == 0) continue;
     raster_triangle(&c.t, p[0], p[1], p[2]);
-    for (int32_t y = 0; y < 64; ++y)
-      for (int32_t x = 0; x < 64; ++x) {
-        const size_t i = size_t(y) * 64 + x;
-        if (c.z[i] == 0xFFFFFFFFu) continue;
-        const double px = x * 16 + 8, py = y * 16 + 8;
-        auto E = [&](const RasterVertex& a, const RasterVertex& b) {
-          return (px - a.x_q4) * (b.y_q4 - a.y_q4) - (py - a.y_q4) * (b.x_q4 - a.x_q4);
-        };
-        const double w[3] = {E(p[1], p[2]) / A, E(p[2], p[0]) / A, E(p[0], p[1]) / A};
-        for (int k = 0; k < 3; ++k) {
-          const int shift = 16 - 8 * k;
-          double want = 0;
-          for (int v = 0; v < 3; ++v) want += w[v] * double((p[v].rgb >> shift) & 0xFF);
-          double got;
-          if (c565) {
-            // The channel's top bits: compare in the stored precision.
-            const uint32_t v16 = px16[i];
-            const int bits = k == 1 ? 6 : 5;
-            const uint32_t stored = k == 0 ? v16 >> 11 : (k == 1 ? (v16 >> 5) & 63 : v16 & 31);
-            got = double(stored);
-            want = std::floor(std::floor(want + 0.5) / double(1 << (8 - bits)));
-          } else {
-            got = double((c.color[i] >> shift) & 0xFF);
-          }
-          const double e = std::fabs(got - want);
-          worst = e > worst ? e : worst;
-          CHECK_LE(e, 1.0);
+    each_covered(c, p, A, [&](size_t i, const double w[3], double, double) {
+      for (int k = 0; k < 3; ++k) {
+        const int shift = 16 - 8 * k;
+        double want = 0;
+        for (int v = 0; v < 3; ++v) want += w[v] * double((p[v].rgb >> shift) & 0xFF);
+        double got;
+        if (c565) {
+          // The channel's top bits: compare in the stored precision.
+          const uint32_t v16 = px16[i];
+          const int bits = k == 1 ? 6 : 5;
+          const uint32_t stored = k == 0 ? v16 >> 11 : (k == 1 ? (v16 >> 5) & 63 : v16 & 31);
+          got = double(stored);
+          want = std::floor(std::floor(want + 0.5) / double(1 << (8 - bits)));
+        } else {
+          got = double((c.color[i] >> shift) & 0xFF);
         }
+        const double e = std::fabs(got - want);
+        worst = e > worst ? e : worst;
+        CHECK_LE(e, 1.0);
       }
+    });
   }
   std::printf("vertex colours: worst channel error %.3f levels\n", worst);
 }
