@@ -21,6 +21,7 @@ allowed() {
     core/cut) echo "core/motion core/grid core/tool core/math";;
     core/design) echo "core/grid core/math";;
     core/assess) echo "core/design core/grid core/tool core/math";;
+    core/cam) echo "core/design core/grid core/tool core/math";;  # tool paths from a design part
     core/material) echo "core/math";;  # noise, textures, materials: maths only
     core/check) echo "core/motion core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; process rules: materials
     display) echo "core/assess core/design core/grid core/tool core/math core/material";;
