@@ -23,6 +23,7 @@ const Command kCommands[] = {
     {"check", cmd_check, "read and interpret a program, report errors only"},
     {"bench", cmd_bench, "run benchmarks, one result line each"},
     {"optimize", cmd_optimize, "the program with feeds lowered to its materials' limits"},
+    {"zig", cmd_zig, "a zig-milling finishing program from a design part"},
 };
 
 void usage(FILE* f) {
@@ -33,6 +34,7 @@ void usage(FILE* f) {
                "  dexmill check FILE                 read and interpret a program, report errors only\n"
                "  dexmill bench [NAME...]            run benchmarks, one result line each\n"
                "  dexmill optimize FILE --material M the program with feeds lowered to its materials' limits\n"
+               "  dexmill zig DESIGN --stock ...     a zig-milling finishing program from a design part\n"
                "  dexmill --help | --version         (also `dexmill COMMAND --help`)\n\n"
                "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error, 4 a check\n"
                "you asked for failed (run --stop-at, --fail-on-gouge).\n");

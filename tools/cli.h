@@ -17,6 +17,7 @@ int cmd_path(int argc, char** argv);
 int cmd_check(int argc, char** argv);
 int cmd_bench(int argc, char** argv);
 int cmd_optimize(int argc, char** argv);
+int cmd_zig(int argc, char** argv);
 
 // The value of --units: "mm" or "inch" into *inch; else prints the usage
 // error and returns false (the caller exits kExitUsage).

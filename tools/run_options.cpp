@@ -152,6 +152,17 @@ bool run_draws(const RunOptions& o) {
          !o.stl.empty() || o.window || !o.fbdev.empty();
 }
 
+bool run_option_takes_value(const char* a) {
+  static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
+                                           "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
+                                           "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
+                                           "--fbdev", "--hold", "--speed", "--design", "--design-z",
+                                           "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
+  for (const char* k : kWithValue)
+    if (!std::strcmp(a, k)) return true;
+  return false;
+}
+
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   *help = false;
   {
@@ -180,14 +191,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       have_file = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
-                                             "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
-                                             "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
-                                             "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                             "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
-    bool known = false;
-    for (const char* k : kWithValue) known = known || !std::strcmp(a, k);
-    if (!known) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", a, argv[0]);
+    if (!run_option_takes_value(a)) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", a, argv[0]);
     if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
     const char* v = argv[++i];
     const std::string name = a;

@@ -104,6 +104,9 @@ int parse_run_options(int argc, char** argv, RunOptions* out, bool* help);
 
 void run_usage(std::FILE* f);
 
+// True for the run options that take a value (the next argument).
+bool run_option_takes_value(const char* a);
+
 // True when o asks for a picture or a model (--image, --error-image,
 // --frames, --heightmap, --stl) or a live view: what the subcommands that
 // only simulate (`check --simulate`, `optimize`) refuse.

@@ -21,7 +21,7 @@ int32_t ladder_at(int32_t len, int32_t n, int32_t k) { return min_of(k * n, len 
 
 size_t zig_tool_words(const ToolProfile& p, const GridGeometry& geo) {
   const int64_t side = 2 * static_cast<int64_t>(reach_of(p, geo.pitch_nm)) + 3;
-  return static_cast<size_t>(2 * kZigPhases * side * side);
+  return static_cast<size_t>(2 * kZigPhases * side * (side + 1));
 }
 
 namespace {
@@ -46,8 +46,12 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
   if (!words || n < zig_tool_words(p, geo)) return Status::kBufferTooSmall;
   const int32_t side = 2 * reach + 3;
   const uint64_t r2_max = sq(p.radius_nm);
+  int32_t* spans = words + static_cast<size_t>(2) * kZigPhases * side * side;
   for (int32_t k = 0; k < kZigPhases; ++k)
     for (int32_t b = -reach - 1; b <= reach + 1; ++b) {
+      int32_t* span = spans + (static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * 2;
+      span[0] = side;
+      span[1] = -1;
       const uint64_t db2 = sq(static_cast<int64_t>(b) * geo.pitch_nm);
       for (int32_t a = -reach - 1; a <= reach + 1; ++a) {
         int32_t* h = words + ((static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * side +
@@ -60,13 +64,16 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
           inside &= r2[e] <= r2_max;
         }
         if (inside) {
-          // Convex in t: the secant of the interval after, extended back,
-          // bounds h from below at the start; the one before, extended on,
-          // at the end.
+          // Convex in t: the secant of the interval before, extended on,
+          // lies under h over this interval (exact at its start), and so
+          // does the one of the interval after, extended back (exact at
+          // its end); the one that gives more.
           const int64_t h0 = profile_height_r2_nm(p, r2[0]), h1 = profile_height_r2_nm(p, r2[1]);
           const int64_t h2 = profile_height_r2_nm(p, r2[2]), h3 = profile_height_r2_nm(p, r2[3]);
-          h[0] = lsb_floor(min_of(h1, 2 * h2 - h3), geo.lsb_nm);
-          h[1] = lsb_floor(min_of(h2, 2 * h1 - h0), geo.lsb_nm);
+          const int64_t before_end = 2 * h1 - h0, after_start = 2 * h2 - h3;
+          const bool before = h1 + before_end >= after_start + h2;
+          h[0] = lsb_floor(before ? h1 : after_start, geo.lsb_nm);
+          h[1] = lsb_floor(before ? before_end : h2, geo.lsb_nm);
           continue;
         }
         // Entering or leaving the radius nearby: h at the closest approach
@@ -76,10 +83,18 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
         const uint64_t r2c = sq(da) + db2;
         h[0] = h[1] = r2c > r2_max ? kZigMiss : lsb_floor(profile_height_r2_nm(p, r2c), geo.lsb_nm);
       }
+      // The row's columns under the tool (a disc: one run).
+      for (int32_t a = 0; a < side; ++a)
+        if (words[((static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * side + static_cast<size_t>(a)) * 2] !=
+            kZigMiss) {
+          span[0] = min_of(span[0], a);
+          span[1] = a;
+        }
     }
   out->reach_dex = reach;
   out->side = side;
   out->h_lsb = words;
+  out->span = spans;
   return Status::kOk;
 }
 
@@ -91,8 +106,10 @@ void zig_interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int3
   const int32_t b0 = max_of(-K - 1, -v), b1 = min_of(K + 1, nv - 1 - v);
   int64_t l = kZigNone, r = kZigNone;
   for (int32_t b = b0; b <= b1; ++b) {
-    const int32_t* h = t.h_lsb + (static_cast<size_t>(k) * t.side + static_cast<size_t>(b + K + 1)) * t.side * 2;
-    for (int32_t a = a0; a <= a1; ++a) {
+    const size_t row = static_cast<size_t>(k) * t.side + static_cast<size_t>(b + K + 1);
+    const int32_t* h = t.h_lsb + row * t.side * 2;
+    const int32_t* span = t.span + row * 2;
+    for (int32_t a = max_of(a0, span[0] - K - 1); a <= min_of(a1, span[1] - K - 1); ++a) {
       const int32_t* ha = h + static_cast<size_t>(a + K + 1) * 2;
       if (ha[0] == kZigMiss) continue;
       const size_t at = along_y ? d.index(v + b, u + a) : d.index(u + a, v + b);

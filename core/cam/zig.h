@@ -13,16 +13,17 @@
 // requirement along the way must stay under that chord. Along a stripe the
 // tip's distance r(t) to a column is convex in t and h is convex and
 // rising in r for every tool shape, so h(r(t)) is convex in t: on each
-// interval of 1 / kZigPhases of a pitch, the secants of the neighbouring
-// intervals, extended, lie under it. The tables hold those lower bounds at
-// each interval's two ends (floored to LSB; a column that enters or leaves
-// the tool's radius within two intervals takes h at its closest approach,
-// flat), so "chord >= top - bound at both ends of every interval, for every
-// column" guarantees chord >= requirement everywhere: no gouge from the
-// path itself, exactly, for any design. The price is tips raised by up to
-// about 2 h'' (pitch / kZigPhases)^2 over the exact requirement (2.4 nm for
-// a 1.5 mm ball at 0.25 mm), plus under 1 LSB of flooring; where the chord
-// dips under an interval's bound both of its ends are raised.
+// interval of 1 / kZigPhases of a pitch, the secant of the interval before
+// (or after), extended, lies under it. The tables hold that lower line's
+// values at each interval's two ends (floored to LSB; a column that enters
+// or leaves the tool's radius within two intervals takes h at its closest
+// approach, flat), so "chord >= top - line at both ends of every interval,
+// for every column" guarantees chord >= requirement everywhere: no gouge
+// from the path itself, exactly, for any design. The price is tips raised
+// by up to h'' (pitch / kZigPhases)^2 over the exact requirement at one end
+// of an interval (0.16 um for a 1.5 mm ball at 0.25 mm, h'' = 1 / R at the
+// tip), plus under 1 LSB of flooring; where the chord dips under an
+// interval's line both of its ends are raised.
 //
 // Integer only, no heap: the tables and a stripe's requirements are caller
 // memory.
@@ -52,6 +53,7 @@ struct ZigTool {
   int32_t reach_dex = 0;  // K: columns |a|, |b| <= K + 1 can be under the tool
   int32_t side = 0;       // 2K + 3
   const int32_t* h_lsb = nullptr;  // [k][b + K + 1][a + K + 1][end 0 or 1]
+  const int32_t* span = nullptr;   // [k][b + K + 1][2]: first and last a + K + 1 not kZigMiss (first > last: none)
 };
 
 // int32 words zig_tool_build needs for tool p at the geometry's pitch.

@@ -3,6 +3,7 @@
 #   tools/scripts/install-deps.sh            compilers for `make test` (g++, clang)
 #   tools/scripts/install-deps.sh window     + GLFW and Xvfb for the window test
 #   tools/scripts/install-deps.sh cross      + cross compilers, qemu, Cortex-M toolchain
+#   tools/scripts/install-deps.sh oracle     + LinuxCNC's stand-alone interpreter rs274 (oracle-check.sh --rs274)
 # Never installs g++-multilib: it removes the cross compilers (g++-12-multilib does not).
 set -eu
 pkgs="g++ clang make"
@@ -13,6 +14,7 @@ for extra in "$@"; do
                  g++-s390x-linux-gnu g++-mips-linux-gnu qemu-user gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
                  libnewlib-arm-none-eabi qemu-system-arm";;
     fuzz) pkgs="$pkgs libclang-rt-14-dev";;
+    oracle) pkgs="$pkgs linuxcnc-uspace";;
     *) echo "install-deps.sh: unknown set '$extra'" >&2; exit 2;;
   esac
 done

@@ -1,0 +1,145 @@
+// `dexmill zig` (issue 23): programs generated from design parts the test
+// writes (a PGM relief with a raised block, steep steps and a pit; an STL
+// pyramid) are simulated with the same options and --design: no gouge,
+// lifted or zigzag, along x or y, with a flat or a ball; the header says
+// how the program was made and how to simulate it; usage errors.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "tests/run_cli_util.h"
+#include "tests/runner.h"
+
+namespace {
+
+using namespace run_cli;
+
+// A 60 x 40 px relief: waves, a raised block with vertical sides, a pit.
+std::string relief_pgm() {
+  std::string s = "P5\n60 40\n255\n";
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 60; ++i) {
+      const double x = i / 60.0, y = j / 40.0;
+      double z = 0.5 + 0.25 * std::sin(6 * x) * std::cos(5 * y);
+      if (x > 0.3 && x < 0.5 && y > 0.3 && y < 0.6) z = 0.95;
+      if ((x - 0.75) * (x - 0.75) + (y - 0.5) * (y - 0.5) < 0.01) z = 0.1;
+      s.push_back(char(int(z * 255)));
+    }
+  return s;
+}
+
+struct Assessment {
+  bool ok = false;
+  std::string text;
+};
+
+// Generates with zig_args, simulates with run_args (the same stock, tool,
+// design options), returns the report's assessment.
+Assessment zig_then_run(const std::string& design, const std::string& shared, const std::string& zig_args, const char* name) {
+  Assessment a;
+  const std::string prog = tmp_dir() + "/" + name + ".ngc";
+  Result r = run_command("zig " + design + " " + shared + " " + zig_args + " -o " + prog);
+  CHECK_EQ(r.code, 0);
+  if (r.code != 0) {
+    std::printf("%s\n", r.err.c_str());
+    return a;
+  }
+  CHECK(has(r.err, "dexmill zig: grid"));
+  const std::string rep = tmp_dir() + "/" + name + ".json";
+  r = run(prog + " " + shared + " --design " + design + " -q --report " + rep);
+  CHECK_EQ(r.code, 0);
+  a.text = assessment_of(slurp(rep));
+  a.ok = r.code == 0;
+  return a;
+}
+
+}  // namespace
+
+TEST(zig_programs_cut_no_gouge) {
+  if (skip()) return;
+  std::string pgm = relief_pgm();
+  FILE* f = std::fopen((tmp_dir() + "/relief.pgm").c_str(), "wb");
+  std::fwrite(pgm.data(), 1, pgm.size(), f);
+  std::fclose(f);
+  const std::string design = tmp_dir() + "/relief.pgm";
+  struct Case {
+    const char* name;
+    const char* shared;
+    const char* zig;
+  } cases[] = {
+      {"ball-x", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25", ""},
+      {"ball-y-zigzag", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25",
+       "--direction y --zigzag --stepover 0.5 --step 0.75"},
+      {"flat-x", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool flat:3 --pitch 0.25", "--stepover 1"},
+      {"bull-zigzag", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool bull:6:1.5 --pitch 0.25", "--zigzag"},
+  };
+  for (const Case& c : cases) {
+    const Assessment a = zig_then_run(design, c.shared, c.zig, c.name);
+    if (!a.ok) continue;
+    // No column of the part cut below it (the gouge watch and the
+    // assessment agree), and most of the surface within 0.05 mm.
+    CHECK(has(a.text, "\"max_gouge\": null"));
+    CHECK(has(a.text, "\"gouges_total\": 0"));
+    if (!has(a.text, "\"max_gouge\": null")) std::printf("%s: %s\n", c.name, a.text.c_str());
+  }
+  // With an allowance the whole surface keeps at least that much.
+  const Assessment a = zig_then_run(design, "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25",
+                                    "--allowance 0.3", "allowance");
+  CHECK(has(a.text, "\"max_gouge\": null"));
+  CHECK(has(a.text, "\"within_tolerance_percent\": 0.00"));
+}
+
+TEST(zig_program_header_and_stl_design) {
+  if (skip()) return;
+  // A pyramid 10 mm high on a 40 x 40 mm plate 5 mm thick (ASCII STL).
+  const std::string stl = write_tmp("pyramid.stl",
+                                    "solid p\n"
+                                    "facet normal 0 0 1\nouter loop\nvertex 0 0 -15\nvertex 40 0 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
+                                    "facet normal 0 0 1\nouter loop\nvertex 40 0 -15\nvertex 40 40 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
+                                    "facet normal 0 0 1\nouter loop\nvertex 40 40 -15\nvertex 0 40 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
+                                    "facet normal 0 0 1\nouter loop\nvertex 0 40 -15\nvertex 0 0 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
+                                    "endsolid p\n");
+  const std::string shared = "--stock 0,0,-20,40,40,0 --tool ball:6 --pitch 0.25";
+  const Assessment a = zig_then_run(stl, shared, "--stepover 1", "pyramid");
+  CHECK(has(a.text, "\"max_gouge\": null"));
+  // The header: how it was made, how to simulate it; then plain G-code that
+  // dexmill reads without a warning.
+  const std::string prog = slurp(tmp_dir() + "/pyramid.ngc");
+  CHECK(has(prog, "(dexmill zig: "));
+  CHECK(has(prog, "tool ball:6, stripes along x every 1.0000 mm"));
+  CHECK(has(prog, "(simulate with: dexmill run PROGRAM --stock 0.000,0.000,-20.000,40.000,40.000,0.000 --pitch 0.2500"));
+  CHECK(has(prog, "G21 G90 G17 G94\nS12000 M3\nG0 Z5\n"));
+  Result r = run_command("check " + tmp_dir() + "/pyramid.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(r.err.empty());
+  // To standard output when no -o.
+  r = run_command("zig " + stl + " " + shared + " --stepover 4");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "M30\n"));
+}
+
+TEST(zig_usage_errors) {
+  if (skip()) return;
+  const std::string stl = write_tmp("flat.stl",
+                                    "solid f\nfacet normal 0 0 1\nouter loop\nvertex 0 0 -5\nvertex 10 0 -5\nvertex 10 10 -5\nendloop\n"
+                                    "endfacet\nendsolid f\n");
+  struct Case {
+    const char* args;
+    const char* message;
+  } cases[] = {
+      {"", "zig needs a DESIGN"},
+      {" --tool ball:3", "zig needs --stock"},
+      {" --stock 0,0,-10,10,10,0 --direction z", "--direction must be x or y"},
+      {" --stock 0,0,-10,10,10,0 --safe-z -1", "--safe-z must be above the stock's top"},
+      {" --stock 0,0,-10,10,10,0 --stepover 0", "--stepover needs a length in mm above 0"},
+      {" --stock 0,0,-10,10,10,0 --image x.png", "zig writes a program only"},
+      {" --stock 0,0,-10,10,10,0 --frobnicate", "unknown option '--frobnicate' (try 'dexmill zig --help')"},
+  };
+  for (const Case& c : cases) {
+    const std::string args = std::string("zig") + (c.args[0] ? " " + stl : "") + c.args;
+    const Result r = run_command(args);
+    CHECK_EQ(r.code, 2);
+    CHECK(has(r.err, c.message));
+    if (!has(r.err, c.message)) std::printf("%s -> %s\n", args.c_str(), r.err.c_str());
+  }
+}
