@@ -9,6 +9,9 @@
 # 2. With --rs274 (needs LinuxCNC's standalone interpreter `rs274`, Debian
 #    package linuxcnc-uspace): every tests/gcode/paths/*.ngc and every file of
 #    ../shared/corpus, traced by rs274 and compared the same way.
+#    Also the programs `dexmill zig` writes (issue 23: they must be plain
+#    RS274/NGC), from a relief the script draws: lifted and zigzag, along x
+#    and y.
 # A program that dexmill refuses as "not supported" is reported, not failed.
 # Exit 1 if any comparison differs.
 set -u
@@ -64,12 +67,30 @@ if [ $use_rs274 = 1 ]; then
     # A tool table with tools 0..999, all of length 0 (dexmill's path does not
     # apply tool lengths; without a table rs274 refuses unknown tools).
     for t in $(seq 0 999); do echo "T$t P$t Z0 D0"; done > "$tmp/tools.tbl"
+    # dexmill zig's programs, from a relief drawn here.
+    python3 - "$tmp/relief.pgm" <<'PY'
+import math, sys
+w, h = 48, 32
+px = bytes(int(255 * (0.5 + 0.25 * math.sin(6 * i / w) * math.cos(5 * j / h) + (0.3 if 14 < i < 24 and 9 < j < 19 else 0)) / 1.3)
+           for j in range(h) for i in range(w))
+open(sys.argv[1], "wb").write(b"P5\n%d %d\n255\n" % (w, h) + px)
+PY
+    zig_files=
+    for v in "lifted-x:" "zigzag-x:--zigzag" "lifted-y:--direction y" "zigzag-y:--zigzag --direction y --step 0.75"; do
+      out="$tmp/zig-${v%%:*}.ngc"
+      if "$dexmill" zig "$tmp/relief.pgm" --stock 0,0,-20,48,32,0 --design-z -14,-2 --tool ball:4 --pitch 0.5 ${v#*:} -o "$out" 2>/dev/null; then
+        zig_files="$zig_files $out"
+      else
+        echo "zig ${v%%:*}: dexmill zig failed"; failed=$((failed + 1))
+      fi
+    done
+    files="$files$zig_files"
     for f in $files; do
       # dexmill skips grbl `$` lines with a warning; LinuxCNC would stop
       # there, so it gets them as comments.
       sed -E 's/^[[:space:]]*\$(.*)$/(grbl $\1)/' "$f" > "$tmp/prog.ngc"
       ( cd "$tmp" && timeout 300 rs274 -t "$tmp/tools.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
-      name=${f#"$root"/}; name=${name#"$shared"/}
+      name=${f#"$root"/}; name=${name#"$shared"/}; name=${name#"$tmp"/}
       check "$name" "$f" "$tmp/trace"
     done
   fi
