@@ -106,7 +106,7 @@ TEST(zig_positions_against_double_oracle) {
     o.along_y = rep % 3 == 2;
     o.step_dex = 1 + rep % 3;
     o.stepover_dex = 1 + rep % 2;
-    std::vector<int64_t> scratch(zig_stripe_scratch(x.d, o)), z(size_t(zig_positions(x.d, o)));
+    std::vector<int64_t> scratch(zig_stripe_scratch(x.d, zt, o)), z(size_t(zig_positions(x.d, o)));
     const double lsb = double(x.geo.lsb_nm);
     for (int32_t s = 0; s < zig_stripe_count(x.d, o); ++s) {
       CHECK(ok(zig_stripe(x.d, zt, o, s, 0, scratch.data(), scratch.size(), z.data())));
@@ -183,7 +183,7 @@ TEST(zig_position_is_tight_where_nothing_raises_it) {
   // The allowance lifts every position by its LSB, rounded up.
   ZigOptions o;
   o.allowance_nm = 300000 + 1;
-  std::vector<int64_t> scratch(zig_stripe_scratch(x.d, o)), z(size_t(zig_positions(x.d, o)));
+  std::vector<int64_t> scratch(zig_stripe_scratch(x.d, zt, o)), z(size_t(zig_positions(x.d, o)));
   CHECK(ok(zig_stripe(x.d, zt, o, 2, 0, scratch.data(), scratch.size(), z.data())));
   CHECK_GE(z[0], 20000 + 601);
   CHECK_LE(z[0], 20000 + 601 + 3);

@@ -44,7 +44,7 @@ bool zig_program(const DesignGrid& d, const ToolProfile& p, const ZigProgramOpti
   }
   const ZigOptions& zo = o.zig;
   const int64_t floor_lsb = div_ceil(floor_nm - g.z0_nm, g.lsb_nm);
-  std::vector<int64_t> scratch(zig_stripe_scratch(d, zo));
+  std::vector<int64_t> scratch(zig_stripe_scratch(d, t, zo));
   const int32_t n = zig_positions(d, zo), stripes = zig_stripe_count(d, zo);
   std::vector<int64_t> z(static_cast<size_t>(n)), next(static_cast<size_t>(n));
   const char ua = zo.along_y ? 'Y' : 'X', va = zo.along_y ? 'X' : 'Y';

@@ -21,7 +21,7 @@ int32_t ladder_at(int32_t len, int32_t n, int32_t k) { return min_of(k * n, len 
 
 size_t zig_tool_words(const ToolProfile& p, const GridGeometry& geo) {
   const int64_t side = 2 * static_cast<int64_t>(reach_of(p, geo.pitch_nm)) + 3;
-  return static_cast<size_t>(2 * kZigPhases * side * (side + 1));
+  return static_cast<size_t>(kZigPhases * side * (2 * side + 3));
 }
 
 namespace {
@@ -49,9 +49,10 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
   int32_t* spans = words + static_cast<size_t>(2) * kZigPhases * side * side;
   for (int32_t k = 0; k < kZigPhases; ++k)
     for (int32_t b = -reach - 1; b <= reach + 1; ++b) {
-      int32_t* span = spans + (static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * 2;
+      int32_t* span = spans + (static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * 3;
       span[0] = side;
       span[1] = -1;
+      span[2] = INT32_MAX;
       const uint64_t db2 = sq(static_cast<int64_t>(b) * geo.pitch_nm);
       for (int32_t a = -reach - 1; a <= reach + 1; ++a) {
         int32_t* h = words + ((static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * side +
@@ -84,12 +85,14 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
         h[0] = h[1] = r2c > r2_max ? kZigMiss : lsb_floor(profile_height_r2_nm(p, r2c), geo.lsb_nm);
       }
       // The row's columns under the tool (a disc: one run).
-      for (int32_t a = 0; a < side; ++a)
-        if (words[((static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * side + static_cast<size_t>(a)) * 2] !=
-            kZigMiss) {
-          span[0] = min_of(span[0], a);
-          span[1] = a;
-        }
+      for (int32_t a = 0; a < side; ++a) {
+        const int32_t* h = words + ((static_cast<size_t>(k) * side + static_cast<size_t>(b + reach + 1)) * side +
+                                    static_cast<size_t>(a)) * 2;
+        if (h[0] == kZigMiss) continue;
+        span[0] = min_of(span[0], a);
+        span[1] = a;
+        span[2] = min_of(span[2], min_of(h[0], h[1]));
+      }
     }
   out->reach_dex = reach;
   out->side = side;
@@ -98,17 +101,30 @@ Status zig_tool_build(const ToolProfile& p, const GridGeometry& geo, int32_t* wo
   return Status::kOk;
 }
 
-void zig_interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int32_t u, int32_t v, int32_t k,
-                       int64_t* left, int64_t* right) {
+namespace {
+
+// zig_interval_need, with the rows' window maxima (wmax: per row offset b,
+// the highest design top over the columns a row of the footprint can
+// cover, for each u; null: none) to skip rows that cannot raise the need:
+// rows from the middle out, so that the first give a high bound.
+void interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int32_t u, int32_t v, int32_t k,
+                   const int32_t* wmax, int32_t len, int64_t* left, int64_t* right) {
   const int32_t K = t.reach_dex;
   const int32_t nu = along_y ? d.geo.ny : d.geo.nx, nv = along_y ? d.geo.nx : d.geo.ny;
   const int32_t a0 = max_of(-K - 1, -u), a1 = min_of(K + 1, nu - 1 - u);
   const int32_t b0 = max_of(-K - 1, -v), b1 = min_of(K + 1, nv - 1 - v);
   int64_t l = kZigNone, r = kZigNone;
-  for (int32_t b = b0; b <= b1; ++b) {
+  for (int32_t n = 0; n < 2 * K + 3; ++n) {
+    const int32_t b = n % 2 ? (n + 1) / 2 : -(n / 2);  // 0, 1, -1, 2, -2, ...
+    if (b < b0 || b > b1) continue;
     const size_t row = static_cast<size_t>(k) * t.side + static_cast<size_t>(b + K + 1);
+    const int32_t* span = t.span + row * 3;
+    if (span[0] > span[1]) continue;
+    if (wmax) {
+      const int32_t w = wmax[static_cast<size_t>(b + K + 1) * static_cast<size_t>(len) + static_cast<size_t>(u)];
+      if (w == kNoDesign || static_cast<int64_t>(w) - span[2] <= min_of(l, r)) continue;
+    }
     const int32_t* h = t.h_lsb + row * t.side * 2;
-    const int32_t* span = t.span + row * 2;
     for (int32_t a = max_of(a0, span[0] - K - 1); a <= min_of(a1, span[1] - K - 1); ++a) {
       const int32_t* ha = h + static_cast<size_t>(a + K + 1) * 2;
       if (ha[0] == kZigMiss) continue;
@@ -123,6 +139,39 @@ void zig_interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int3
   *right = r;
 }
 
+// wmax for stripe row v: for each row offset b and each u, the highest top
+// of row v + b over columns u - K - 1 .. u + K + 1 (kNoDesign: none), by
+// the van Herk / Gil-Werman block maxima (prefix and suffix maxima in
+// blocks of the window's width: two passes per row, whatever the width).
+void window_maxima(const DesignGrid& d, const ZigTool& t, bool along_y, int32_t v, int32_t len, int32_t* wmax,
+                   int32_t* pre, int32_t* suf) {
+  const int32_t K = t.reach_dex, w = 2 * K + 3, nv = along_y ? d.geo.nx : d.geo.ny;
+  for (int32_t b = -K - 1; b <= K + 1; ++b) {
+    int32_t* out = wmax + static_cast<size_t>(b + K + 1) * static_cast<size_t>(len);
+    if (v + b < 0 || v + b >= nv) {
+      for (int32_t u = 0; u < len; ++u) out[u] = kNoDesign;
+      continue;
+    }
+    auto top = [&](int32_t u) { return d.top_lsb[along_y ? d.index(v + b, u) : d.index(u, v + b)]; };
+    for (int32_t u = 0; u < len; ++u) pre[u] = u % w == 0 ? top(u) : max_of(pre[u - 1], top(u));
+    for (int32_t u = len - 1; u >= 0; --u) suf[u] = (u % w == w - 1 || u == len - 1) ? top(u) : max_of(suf[u + 1], top(u));
+    for (int32_t u = 0; u < len; ++u) {
+      const int32_t lo = max_of(u - K - 1, 0), hi = min_of(u + K + 1, len - 1);
+      // [lo, hi] spans at most two blocks: the suffix of lo's and the
+      // prefix of hi's, exactly; within one block the suffix reaches past
+      // hi, an upper bound, which is all the pruning needs.
+      out[u] = max_of(suf[lo], pre[hi]);
+    }
+  }
+}
+
+}  // namespace
+
+void zig_interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int32_t u, int32_t v, int32_t k,
+                       int64_t* left, int64_t* right) {
+  interval_need(d, t, along_y, u, v, k, nullptr, 0, left, right);
+}
+
 int32_t zig_stripe_count(const DesignGrid& d, const ZigOptions& o) {
   return ladder_count(across_n(d, o), max_of(o.stepover_dex, 1));
 }
@@ -134,20 +183,25 @@ int32_t zig_position_u(const DesignGrid& d, const ZigOptions& o, int32_t k) {
   return ladder_at(along_n(d, o), max_of(o.step_dex, 1), k);
 }
 
-size_t zig_stripe_scratch(const DesignGrid& d, const ZigOptions& o) {
-  return static_cast<size_t>(along_n(d, o) - 1) * kZigPhases * 2;
+size_t zig_stripe_scratch(const DesignGrid& d, const ZigTool& t, const ZigOptions& o) {
+  const size_t len = static_cast<size_t>(along_n(d, o));
+  return (len - 1) * kZigPhases * 2 + (static_cast<size_t>(t.side + 2) * len + 1) / 2;
 }
 
 Status zig_stripe(const DesignGrid& d, const ZigTool& t, const ZigOptions& o, int32_t s, int64_t floor_lsb,
                   int64_t* scratch, size_t scratch_words, int64_t* z_lsb) {
-  if (!scratch || scratch_words < zig_stripe_scratch(d, o)) return Status::kBufferTooSmall;
+  if (!scratch || scratch_words < zig_stripe_scratch(d, t, o)) return Status::kBufferTooSmall;
   const int32_t len = along_n(d, o), v = zig_stripe_row(d, o, s);
   // What each interval q (dexel q / K, interval q % K) asks of the chord at
-  // its left end (scratch[2q]) and its right end (scratch[2q + 1]).
+  // its left end (scratch[2q]) and its right end (scratch[2q + 1]); after
+  // them the rows' window maxima.
   const int32_t intervals = (len - 1) * kZigPhases;
+  int32_t* wmax = reinterpret_cast<int32_t*>(scratch + 2 * static_cast<size_t>(intervals));
+  int32_t* pre = wmax + static_cast<size_t>(t.side) * static_cast<size_t>(len);
+  window_maxima(d, t, o.along_y, v, len, wmax, pre, pre + len);
   for (int32_t q = 0; q < intervals; ++q) {
     int64_t l, r;
-    zig_interval_need(d, t, o.along_y, q / kZigPhases, v, q % kZigPhases, &l, &r);
+    interval_need(d, t, o.along_y, q / kZigPhases, v, q % kZigPhases, wmax, len, &l, &r);
     scratch[2 * q] = max_of(l, floor_lsb);
     scratch[2 * q + 1] = max_of(r, floor_lsb);
   }

@@ -53,7 +53,9 @@ struct ZigTool {
   int32_t reach_dex = 0;  // K: columns |a|, |b| <= K + 1 can be under the tool
   int32_t side = 0;       // 2K + 3
   const int32_t* h_lsb = nullptr;  // [k][b + K + 1][a + K + 1][end 0 or 1]
-  const int32_t* span = nullptr;   // [k][b + K + 1][2]: first and last a + K + 1 not kZigMiss (first > last: none)
+  // [k][b + K + 1][3]: the first and last a + K + 1 not kZigMiss (first >
+  // last: none), and the row's least h (to skip rows that cannot matter).
+  const int32_t* span = nullptr;
 };
 
 // int32 words zig_tool_build needs for tool p at the geometry's pitch.
@@ -85,8 +87,9 @@ int32_t zig_stripe_row(const DesignGrid& d, const ZigOptions& o, int32_t s);  //
 int32_t zig_positions(const DesignGrid& d, const ZigOptions& o);              // per stripe
 int32_t zig_position_u(const DesignGrid& d, const ZigOptions& o, int32_t k);  // u of position k
 
-// int64 words of scratch zig_stripe needs (one stripe's interval needs).
-size_t zig_stripe_scratch(const DesignGrid& d, const ZigOptions& o);
+// int64 words of scratch zig_stripe needs (one stripe's interval needs and
+// the window maxima of the rows under the tool).
+size_t zig_stripe_scratch(const DesignGrid& d, const ZigTool& t, const ZigOptions& o);
 
 // The tips of stripe s, z_lsb[k] for position k (zig_positions of them):
 // what the intervals on both sides ask at each position, raised where the
