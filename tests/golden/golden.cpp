@@ -15,6 +15,7 @@ const Section kSections[] = {
     {"safety", golden_safety},
     {"texture", golden_texture},
     {"regress", golden_regress},
+    {"builtin", golden_builtin},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
 

@@ -69,6 +69,7 @@ void golden_frame(Out& out);  // golden_frame.cpp: frames in both pixel and z fo
 void golden_safety(Out& out);  // golden_safety.cpp: one finding of each safety check, traced to its line
 void golden_texture(Out& out);  // golden_texture.cpp: noise, textures and material presets (core/material)
 void golden_regress(Out& out);  // golden_regress.cpp: regression cases named after their bug
+void golden_builtin(Out& out);  // golden_builtin.cpp: the built-in design parts (the paper's four workpieces)
 
 }  // namespace golden
 
