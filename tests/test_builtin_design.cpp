@@ -13,9 +13,11 @@
 
 #include "core/design/builtin.h"
 #include "core/design/builtin_font.h"
+#include "core/design/builtin_shape.h"
 #include "core/material/material_preset.h"
 #include "display/font.h"
 #include "platform/pgm.h"
+#include "tests/rng.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -295,4 +297,63 @@ TEST(builtin_tsuba_structure) {
   CHECK_EQ(height_at(b, c - 25 * sa, c + 25 * ca), vein);
   // A bead between two petals (on the 45-degree line).
   CHECK_GT(height_at(b, c + 29 * 0.70710678, c + 29 * 0.70710678), plate);
+}
+
+// The shape kit against a double oracle, within each function's stated
+// bound (core/design/builtin_shape.h), over the sizes the designs use
+// (up to 128 mm) and beyond.
+TEST(builtin_shape_kit_bounds) {
+  t::Rng rng(23);
+  const double q30 = 1073741824.0, pi = 3.14159265358979323846;
+  for (int n = 0; n < 20000; ++n) {
+    const int64_t span = rng.range(0, 1) ? 200 * kMm : 2 * kMm;
+    const int64_t ax = rng.range(1000, span), ay = rng.range(1000, span);
+    const int64_t dx = rng.range(-2 * span, 2 * span), dy = rng.range(-2 * span, 2 * span);
+    const double e = std::pow(double(dx) / ax, 2) + std::pow(double(dy) / ay, 2);
+    if (e < 3.99) CHECK_NEAR(ellipse_q30(dx, dy, ax, ay), e * q30, 1.0);
+    else CHECK_GE(ellipse_q30(dx, dy, ax, ay), static_cast<int64_t>(3.98 * q30));
+    const int64_t u = rng.range(-1000, kQ30One + 1000);
+    const double v = 1.0 - std::max(0.0, u / q30);
+    CHECK_NEAR(bump_q30(u), u >= kQ30One ? 0.0 : v * v * v * q30, 2.0);
+    const int64_t h = rng.range(-(int64_t{1} << 31) + 1, (int64_t{1} << 31) - 1), f = rng.range(-4 * kQ30One, 4 * kQ30One);
+    CHECK_NEAR(scale_nm(h, f), double(h) * f / q30, 0.5);
+    const int64_t r = rng.range(1, span), sd = rng.range(-2 * r, 2 * r);
+    CHECK_NEAR(round_profile_nm(sd, r), std::llabs(sd) < r ? std::sqrt(double(r) * r - double(sd) * sd) : 0.0, 0.5);
+    // Segments, including degenerate and very short ones.
+    const int64_t x0 = rng.range(-span, span), y0 = rng.range(-span, span);
+    const int64_t x1 = rng.range(0, 3) ? rng.range(-span, span) : x0 + rng.range(-2, 2), y1 = rng.range(-span, span);
+    const int64_t px = rng.range(-span, span), py = rng.range(-span, span);
+    const double bx = double(x1 - x0), by = double(y1 - y0), len2 = bx * bx + by * by;
+    double tt = len2 > 0 ? ((px - x0) * bx + (py - y0) * by) / len2 : 0;
+    tt = std::min(1.0, std::max(0.0, tt));
+    CHECK_NEAR(segment_distance_nm(px, py, x0, y0, x1, y1), std::hypot(px - (x0 + tt * bx), py - (y0 + tt * by)), 1.0);
+    // Phases and sines.
+    const int64_t period = rng.range(1000, span), x = rng.range(-100 * span, 100 * span);
+    double ph = std::fmod(double(x), double(period));
+    if (ph < 0) ph += period;
+    const double bam = ph / period * 4294967296.0;
+    const uint32_t got = phase_bam(x, period);
+    const double dbam = std::remainder(double(got) - bam, 4294967296.0);
+    CHECK_LE(std::abs(dbam), 0.5 + 1e-6);
+    const int64_t amp = rng.range(-span, span);
+    CHECK_NEAR(sine_nm(amp, got), amp * std::sin(double(got) / 4294967296.0 * 2 * pi), 0.5 + 2e-9 * std::abs(double(amp)));
+    // Arcs: the distance to the arc's points, by dense sampling's closed form.
+    const int64_t ar = rng.range(1000, span / 2);
+    const uint32_t a0 = static_cast<uint32_t>(rng.next()), a1 = static_cast<uint32_t>(rng.next());
+    const int64_t qx = rng.range(-span / 2, span / 2), qy = rng.range(-span / 2, span / 2);
+    const double th0 = a0 / 4294967296.0 * 2 * pi, sweep = static_cast<uint32_t>(a1 - a0) / 4294967296.0 * 2 * pi;
+    double th = std::atan2(double(qy), double(qx)) - th0;
+    th = std::fmod(th + 4 * pi, 2 * pi);
+    double want;
+    if (th <= sweep) want = std::abs(std::hypot(double(qx), double(qy)) - ar);
+    else want = std::min(std::hypot(qx - ar * std::cos(th0), qy - ar * std::sin(th0)),
+                         std::hypot(qx - ar * std::cos(th0 + sweep), qy - ar * std::sin(th0 + sweep)));
+    CHECK_NEAR(arc_distance_nm(qx, qy, ar, a0, a1), want, 2.0 + 4e-9 * ar);
+  }
+  // Rounded rectangles: corners cut on the radius, edges kept.
+  CHECK(in_rounded_rect(0, 5, 0, 0, 10, 10, 3));
+  CHECK(!in_rounded_rect(0, 0, 0, 0, 10, 10, 3));
+  CHECK(in_rounded_rect(1, 1, 0, 0, 10, 10, 2));   // (1,1) is sqrt(2) from the corner centre (2,2)
+  CHECK(!in_rounded_rect(1, 0, 0, 0, 10, 10, 3));  // 2^2 + 3^2 = 13 > 3^2 from the corner centre (3,3)
+  CHECK(!in_rounded_rect(11, 5, 0, 0, 10, 10, 3));
 }
