@@ -490,7 +490,7 @@ TEST(run_design_bad_files_exit_1_with_the_reason) {
   }
   // Usage: the option's own checks.
   const char* usage[][2] = {
-      {"--design %/x.obj", "--design needs an .stl mesh or a .pgm height image"},
+      {"--design %/x.obj", "--design needs an .stl mesh, a .pgm height image or a built-in part's name"},
       {"--design %/bad.pgm", "a PGM design needs --design-z"},
       {"--design %/pd.stl --design-z 0,1", "--design-z is for PGM designs"},
       {"--tolerance-box 0,0,1,1,0.1", "--tolerance-box needs --design"},

@@ -2,6 +2,7 @@
 // (tools/run_job.h). With no FILE it runs the built-in demo.
 #include "tools/cli.h"
 #include "tools/run_job.h"
+#include "tools/run_demo.h"
 #include "tools/run_options.h"
 
 namespace dexmill {
@@ -12,6 +13,7 @@ int cmd_run(int argc, char** argv) {
   bool help = false;
   const int code = parse_run_options(argc, argv, &o, &help);
   if (code != kExitOk || help) return code;
+  if (!o.demo.empty()) return run_demo(o);
   return run_job(o);
 }
 

@@ -5,6 +5,8 @@
 // touches but does not cut into it (core/cam/zig.h), written as plain
 // RS274/NGC (tools/zig_program.h). Simulating the program with the same
 // options and --design reports no gouge (tests/test_zig_cli.cpp).
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,7 +21,7 @@
 #include "tools/run_assess.h"
 #include "tools/run_options.h"
 #include "tools/run_stock.h"
-#include "tools/zig_program.h"
+#include "tools/zig_job.h"
 
 namespace dexmill {
 namespace cli {
@@ -33,8 +35,9 @@ void usage(std::FILE* f) {
                "each the lowest at which the tool touches but does not cut into the design\n"
                "sampled on the grid `dexmill run` uses for the same --stock, --pitch/--grid and\n"
                "--tool; straight moves between positions never dip into the design.\n"
-               "DESIGN: an STL (mm, machine coordinates; --design-offset X,Y,Z) or a PGM height\n"
-               "image over the stock's XY (--design-z ZLOW,ZHIGH).\n\n"
+               "DESIGN: an STL (mm, machine coordinates; --design-offset X,Y,Z), a PGM height\n"
+               "image over the stock's XY (--design-z ZLOW,ZHIGH), or a built-in part (panel,\n"
+               "smiley, freeform, tsuba: its block, pitch and ball unless given; see run --demo).\n\n"
                "  --tool SPEC          the cutter (ball:D, flat:D, bull:D:R; default ball:3)\n"
                "  --stepover MM        between stripes (default: one dexel pitch), whole pitches\n"
                "  --step MM            between positions along a stripe (default: one pitch)\n"
@@ -133,58 +136,35 @@ int cmd_zig(int argc, char** argv) {
     }
     rest.push_back(argv[i]);
   }
-  if (z.design.empty()) return fail(kExitUsage, "zig needs a DESIGN (an STL, or a PGM with --design-z)");
-  rest.push_back(design_flag);
-  rest.push_back(const_cast<char*>(z.design.c_str()));
+  if (z.design.empty()) return fail(kExitUsage, "zig needs a DESIGN (an STL, a PGM with --design-z, or a built-in part)");
+  // A built-in part's name, unless a file of that name is there.
+  struct stat sb;
+  const BuiltinDesign* builtin = stat(z.design.c_str(), &sb) != 0 ? builtin_design_find(z.design.c_str()) : nullptr;
+  if (!builtin) {
+    rest.push_back(design_flag);
+    rest.push_back(const_cast<char*>(z.design.c_str()));
+  }
   RunOptions o;
   bool help = false;
   const int code = parse_run_options(static_cast<int>(rest.size()), rest.data(), &o, &help);
   if (code != kExitOk || help) return code;
-  if (!have_tool) (void)tool_spec_parse("ball:3", 6, &o.tool);
-  if (!o.have_stock) return fail(kExitUsage, "zig needs --stock X0,Y0,Z0,X1,Y1,Z1 (the block the design is cut from)");
+  if (builtin) builtin_setup(*builtin, have_tool, &o);
+  else if (!have_tool) (void)tool_spec_parse("ball:3", 6, &o.tool);
   if (run_draws(o) || !o.report.empty() || !o.file.empty())
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");
 
-  // The grid `run` would use for this stock and tool.
-  const StockBox stock{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
-  const int64_t pitch_nm = o.pitch_nm || o.grid_nx ? o.pitch_nm : default_pitch_nm(stock, o.tool.diameter_nm);
-  GridPlan plan;
-  std::string err;
-  if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
-  RunDesign d;
-  const int dcode = load_design(o, plan, "", &d);
-  if (dcode != kExitOk) return dcode;
-  if (!design_columns(d.grid)) return fail(kExitInput, "%s: the design covers no dexel of the stock", z.design.c_str());
-  const int64_t p = plan.geo.pitch_nm;
-  z.prog.zig.stepover_dex = static_cast<int32_t>(max_of<int64_t>(1, z.stepover_nm ? div_round(z.stepover_nm, p) : 1));
-  z.prog.zig.step_dex = static_cast<int32_t>(max_of<int64_t>(1, z.step_nm ? div_round(z.step_nm, p) : 1));
-  z.prog.safe_z_nm = z.have_safe ? z.safe_z_nm : stock.hi.z_nm + 5 * kNmPerMm;
-  if (z.prog.safe_z_nm <= stock.hi.z_nm) return fail(kExitUsage, "--safe-z must be above the stock's top");
-  // The lowest the tool goes where no design is under it: the design's
-  // lowest top.
-  int64_t lowest = INT64_MAX;
-  for (int32_t t : d.tops)
-    if (t != kNoDesign) lowest = min_of<int64_t>(lowest, t);
-  const int64_t floor_nm = plan.geo.z0_nm + lowest * plan.geo.lsb_nm;
-  char spec[kToolSpecTextMax];
-  tool_spec_format(o.tool, spec, sizeof spec);
-  z.prog.header = "dexmill zig: " + z.design + ", tool " + spec + ", stripes along " + (z.prog.zig.along_y ? "y" : "x") +
-                  " every " + nm_to_mm_text(z.prog.zig.stepover_dex * p, 4) + " mm, a position every " +
-                  nm_to_mm_text(z.prog.zig.step_dex * p, 4) + " mm, " + (z.prog.zigzag ? "zigzag" : "lifted returns") +
-                  (z.prog.zig.allowance_nm ? ", allowance " + nm_to_mm_text(z.prog.zig.allowance_nm, 4) + " mm" : "") +
-                  "\nsimulate with: dexmill run PROGRAM --stock " + nm_to_mm_text(o.stock_nm[0], 3) + "," +
-                  nm_to_mm_text(o.stock_nm[1], 3) + "," + nm_to_mm_text(o.stock_nm[2], 3) + "," +
-                  nm_to_mm_text(o.stock_nm[3], 3) + "," + nm_to_mm_text(o.stock_nm[4], 3) + "," +
-                  nm_to_mm_text(o.stock_nm[5], 3) + " --pitch " + nm_to_mm_text(p, 4) + " --tool " + spec + " --design " +
-                  z.design;
-  if (o.design_pgm)
-    z.prog.header += " --design-z " + nm_to_mm_text(o.design_z_nm[0], 3) + "," + nm_to_mm_text(o.design_z_nm[1], 3);
-  else if (o.design_offset_nm[0] || o.design_offset_nm[1] || o.design_offset_nm[2])
-    z.prog.header += " --design-offset " + nm_to_mm_text(o.design_offset_nm[0], 3) + "," +
-                     nm_to_mm_text(o.design_offset_nm[1], 3) + "," + nm_to_mm_text(o.design_offset_nm[2], 3);
+  if (!o.have_stock) return fail(kExitUsage, "zig needs --stock X0,Y0,Z0,X1,Y1,Z1 (the block the design is cut from)");
+  ZigJob job;
+  job.prog = z.prog;
+  job.stepover_nm = z.stepover_nm;
+  job.step_nm = z.step_nm;
+  job.safe_z_nm = z.safe_z_nm;
+  job.have_safe = z.have_safe;
   std::string text;
   ZigProgramStats st;
-  if (!zig_program(d.grid, tool_profile(o.tool), z.prog, floor_nm, &text, &st, &err)) return fail(kExitUsage, "%s", err.c_str());
+  GridPlan plan;
+  const int gcode = zig_generate(o, &job, &text, &st, &plan);
+  if (gcode != kExitOk) return gcode;
   char e[1300];
   if (z.out == "-") {
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
@@ -192,9 +172,7 @@ int cmd_zig(int argc, char** argv) {
   } else if (!write_output(z.out.c_str(), text.data(), text.size(), e, sizeof e)) {
     return fail(kExitIo, "%s", e);
   }
-  std::fprintf(stderr, "dexmill zig: grid %d x %d at %s mm, %u stripes, %llu positions, %llu moves, %.3f s (%.0f positions/s)\n",
-               plan.geo.nx, plan.geo.ny, nm_to_mm_text(p, 4).c_str(), st.stripes, static_cast<unsigned long long>(st.positions),
-               static_cast<unsigned long long>(st.moves), st.seconds, st.seconds > 0 ? static_cast<double>(st.positions) / st.seconds : 0.0);
+  zig_print_stats(plan, st);
   return kExitOk;
 }
 

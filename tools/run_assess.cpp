@@ -26,7 +26,7 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
   d->opt.boxes = o.tolerance_boxes.data();
   d->opt.nboxes = o.tolerance_boxes.size();
   d->report.file = o.design;
-  d->report.kind = o.demo_design ? "demo" : o.design_pgm ? "pgm" : "stl";
+  d->report.kind = o.demo_design ? "demo" : o.builtin ? "builtin" : o.design_pgm ? "pgm" : "stl";
   d->report.tolerance_nm = o.tolerance_nm;
   d->report.tolerance_boxes = o.tolerance_boxes.size();
   std::string err;
@@ -38,6 +38,19 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
         int32_t z_um;
         if (demo_design_top_um(static_cast<int32_t>(div_round(x, 1000)), static_cast<int32_t>(div_round(y, 1000)), &z_um))
           d->tops[d->grid.index(i, j)] = static_cast<int32_t>(div_round(z_um * int64_t{1000} - plan.geo.z0_nm, plan.geo.lsb_nm));
+      }
+  } else if (o.builtin) {
+    // A built-in part (core/design/builtin.h): its height over each axis
+    // that lies on the part (x and y from its first dexel's axis; its
+    // block's top at Z0, as builtin_setup places it).
+    const BuiltinDesign& b = *o.builtin;
+    for (int32_t j = 0; j < plan.geo.ny; ++j)
+      for (int32_t i = 0; i < plan.geo.nx; ++i) {
+        const int64_t x = plan.geo.x0_nm + i * plan.geo.pitch_nm, y = plan.geo.y0_nm + j * plan.geo.pitch_nm;
+        if (x < 0 || y < 0 || x > (b.nx - 1) * b.pitch_nm || y > (b.ny - 1) * b.pitch_nm) continue;
+        // Heights from the block's bottom; the block's top is at Z0.
+        const int64_t z = b.height_nm(x, y) - b.stock_height_nm;
+        d->tops[d->grid.index(i, j)] = static_cast<int32_t>(div_round(z - plan.geo.z0_nm, plan.geo.lsb_nm));
       }
   } else if (o.design_pgm) {
     PgmImage img;

@@ -76,6 +76,10 @@ void run_usage(std::FILE* f) {
                "Simulates milling a G-code program into a block of stock and writes what you ask\n"
                "for. With no FILE it runs the built-in demo (writes out/demo.ngc, out/final.ppm\n"
                "and out/frames/).\n\n"
+               "  --demo NAME|list           one of the paper's workpieces end to end: its design part,\n"
+               "                             a zig-milling program made from it (dexmill zig), cut from\n"
+               "                             its material, drawn, assessed; writes out/NAME/ (program,\n"
+               "                             final.png, error.png, frames/, report.json)\n"
                "  --stock X0,Y0,Z0,X1,Y1,Z1  stock box, mm, machine coordinates (default: from the program)\n"
                "  --stock FILE.stl           a pre-machined blank: its mesh's tops over its bounding box\n"
                "  --grid NXxNY | --pitch MM  dexel resolution (default: a 32nd of the smallest tool,\n"
@@ -157,7 +161,7 @@ bool run_option_takes_value(const char* a) {
                                            "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                            "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                            "--fbdev", "--hold", "--speed", "--design", "--design-z",
-                                           "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material"};
+                                           "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material", "--demo"};
   for (const char* k : kWithValue)
     if (!std::strcmp(a, k)) return true;
   return false;
@@ -213,6 +217,7 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       const ToolSpecError e = tool_spec_parse(v, std::strlen(v), &o->tool);
       if (e != ToolSpecError::kOk) return fail(kExitUsage, "bad --tool '%s': %s", v, tool_spec_message(e));
       o->tool_text = v;
+      o->tool_given = true;
     } else if (name == "--tools") {
       o->tools_file = v;
     } else if (name == "--units") {
@@ -271,9 +276,10 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!parse_scaled(v, 1000, &o->hold_ms) || o->hold_ms < 0 || o->hold_ms > 3600000)
         return fail(kExitUsage, "--hold needs seconds from 0 to 3600, not '%s'", v);
     } else if (name == "--design") {
-      if (!ends_with(v, ".stl") && !ends_with(v, ".pgm"))
-        return fail(kExitUsage, "--design needs an .stl mesh or a .pgm height image, not '%s'", v);
-      o->design = v;
+      o->builtin = ends_with(v, ".stl") || ends_with(v, ".pgm") ? nullptr : builtin_design_find(v);
+      if (!ends_with(v, ".stl") && !ends_with(v, ".pgm") && !o->builtin)
+        return fail(kExitUsage, "--design needs an .stl mesh, a .pgm height image or a built-in part's name, not '%s'", v);
+      o->design = o->builtin ? std::string("(built-in part ") + v + ")" : v;
       o->design_pgm = ends_with(v, ".pgm");
     } else if (name == "--design-z") {
       if (!parse_mm_list(v, 2, o->design_z_nm) || o->design_z_nm[0] >= o->design_z_nm[1])
@@ -333,6 +339,13 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       }
     } else if (name == "--material") {
       o->material = v;
+    } else if (name == "--demo") {
+      if (std::strcmp(v, "list") && !builtin_design_find(v)) {
+        std::string names;
+        for (int32_t k = 0; k < builtin_design_count(); ++k) names += std::string(k ? ", " : "") + builtin_design_at(k).name;
+        return fail(kExitUsage, "--demo must be list or one of %s, not '%s'", names.c_str(), v);
+      }
+      o->demo = v;
     } else if (name == "--fixture") {
       int64_t b[6];
       if (!parse_stock(v, b))
@@ -354,6 +367,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
     return fail(kExitUsage, "give --view or --azimuth/--elevation, not both");
   if (have_every && o->frames_dir.empty()) return fail(kExitUsage, "--every needs --frames DIR");
   if (o->window && !o->fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
+  if (!o->demo.empty() && (!o->file.empty() || !o->design.empty()))
+    return fail(kExitUsage, "--demo cuts its own program from its own design: give no FILE and no --design");
   if (o->design.empty() && (o->have_design_z || !o->tolerance_boxes.empty()))
     return fail(kExitUsage, "%s needs --design", o->have_design_z ? "--design-z" : "--tolerance-box");
   if (!o->error_image.empty() && o->design.empty() && !o->file.empty())

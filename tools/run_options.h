@@ -12,6 +12,7 @@
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
 #include "core/motion/summary.h"
+#include "core/design/builtin.h"
 #include "core/tool/tool.h"
 #include "display/camera.h"
 #include "platform/image_file.h"
@@ -37,6 +38,7 @@ struct RunOptions {
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   Tool tool;                     // --tool (default flat:6)
   std::string tool_text = "flat:6";
+  bool tool_given = false;       // --tool was given
   std::string tools_file;        // --tools
   bool inch = false;             // --units inch
   CutMode mode = CutMode::kSweep;
@@ -68,6 +70,10 @@ struct RunOptions {
   // The design part to assess against (paper §2.5).
   std::string design;            // --design FILE.stl|FILE.pgm
   bool demo_design = false;      // the built-in demo's own part (tools/demo_program.h), no file
+  // --demo NAME: one of the paper's workpieces (core/design/builtin.h) cut
+  // end to end; the design of `builtin` is used when it is set.
+  std::string demo;
+  const BuiltinDesign* builtin = nullptr;
   std::string error_image;       // --error-image FILE.ppm: the final frame in the error view
   bool design_pgm = false;       // by the extension
   bool have_design_z = false;

@@ -1,0 +1,40 @@
+// `dexmill zig`'s job, shared with `dexmill run --demo` (issue 23): a
+// zig-milling program for the design a RunOptions names (a file, or a
+// built-in part of core/design/builtin.h) on the grid `run` would use for
+// its stock, pitch or grid and tool.
+#ifndef DEXMILL_TOOLS_ZIG_JOB_H
+#define DEXMILL_TOOLS_ZIG_JOB_H
+
+#include <string>
+
+#include "core/design/builtin.h"
+#include "tools/run_options.h"
+#include "tools/run_stock.h"
+#include "tools/zig_program.h"
+
+namespace dexmill {
+namespace cli {
+
+struct ZigJob {
+  ZigProgramOptions prog;
+  int64_t stepover_nm = 0, step_nm = 0;  // 0: one pitch
+  int64_t safe_z_nm = 0;
+  bool have_safe = false;                // else the stock's top + 5 mm
+};
+
+// Sets o up for built-in part b: its block as the stock, its pitch (unless
+// o gives --pitch or --grid), its ball (unless tool_given), its material
+// (unless o gives one), and b as the design.
+void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o);
+
+// The program for o's design, stock, grid and tool into *text; the grid
+// used into *plan. Returns an exit status (the message printed).
+int zig_generate(const RunOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan);
+
+// "dexmill zig: grid ..., N stripes, N positions, N moves, T s" on stderr.
+void zig_print_stats(const GridPlan& plan, const ZigProgramStats& st);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
