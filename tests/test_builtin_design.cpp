@@ -229,17 +229,17 @@ TEST(builtin_smiley_cuts_through_the_black) {
   CHECK_GT(height_at(b, cx, cy + 24), height_at(b, 1, 1));  // the face is raised
   // Only eyes and mouth show yellow: every column below the boundary is at
   // the cut floor, and they cover about the eyes' and mouth's area
-  // (2 x pi 3.75 x 6 + 7.5 x 15.5 x 130 deg + pi 3.75^2 = 449 mm^2).
+  // (2 x pi 4.5 x 6.5 + 9 x 15.5 x 130 deg + pi 4.5^2 = 564 mm^2).
   int32_t yellow = 0;
   for (int32_t t : f.top)
     if (static_cast<int64_t>(t) * f.d.geo.lsb_nm < boundary) {
       ++yellow;
       CHECK_EQ(t, f.lsb_of(b.floor_nm));
     }
-  CHECK_NEAR(yellow * 0.25, 449.0, 20.0);
+  CHECK_NEAR(yellow * 0.25, 564.0, 25.0);
   // The eyebrows are grooves in the black, narrower than the 6 mm ball.
-  const int64_t brow = height_at(b, cx - 9.5, cy + 8.5 + 9);
-  CHECK_LT(brow, height_at(b, cx - 9.5, cy + 8.5 + 10.5));
+  const int64_t brow = height_at(b, cx - 9.5, cy + 8.5 + 10);
+  CHECK_LT(brow, height_at(b, cx - 9.5, cy + 8.5 + 11.5));
   CHECK_GT(brow, boundary);
 }
 

@@ -56,7 +56,7 @@ int64_t freeform_height_nm(int64_t x_nm, int64_t y_nm) {
 }  // namespace
 
 const BuiltinDesign kBuiltinFreeform = {
-    "freeform", "the paper's free-form surface (figures 14-15): smooth hills and a hollow (256x256, marble)",
+    "freeform", "the paper's free-form surface (figures 14-15): smooth hills and a hollow",
     256, 256, kPitchNm, 30 * kNmPerMm, 6, "marble", freeform_height_nm, kFloorNm};
 
 }  // namespace dexmill

@@ -101,7 +101,7 @@ int64_t panel_height_nm(int64_t x_nm, int64_t y_nm) {
 }  // namespace
 
 const BuiltinDesign kBuiltinPanel = {
-    "panel", "the paper's instrument panel: rim, two gauges, buttons, engraved lettering (80x40, aluminium)",
+    "panel", "the paper's instrument panel: rim, two gauges, buttons, engraved lettering",
     80, 40, kPitchNm, 10 * kNmPerMm, 9, "aluminium", panel_height_nm, kDialNm};
 
 }  // namespace dexmill

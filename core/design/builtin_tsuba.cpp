@@ -45,12 +45,12 @@ constexpr int64_t kHitsuFlatNm = 9500 * kNmPerUm, kHitsuAxNm = 4 * kNmPerMm, kHi
 constexpr int64_t kTongueRadiusNm = 1200 * kNmPerUm;
 
 // The chrysanthemum: eight petals on axes at 22.5 + 45 k degrees, each an
-// ellipse 14 mm long (centred 25 mm out) and 9 mm wide domed 1.2 mm above
+// ellipse 14 mm long (centred 25 mm out) and 9 mm wide domed 1.5 mm above
 // the plate, a vein 0.6 mm wide and 0.5 mm deep along its axis; beads of
 // 1.3 mm radius at 29 mm out between them.
 constexpr int64_t kFlowerInnerNm = 17 * kNmPerMm, kFlowerOuterNm = 32500 * kNmPerUm;
 constexpr int64_t kPetalMidNm = 25 * kNmPerMm, kPetalAlongNm = 7 * kNmPerMm, kPetalAcrossNm = 4500 * kNmPerUm;
-constexpr int64_t kPetalDomeNm = 1200 * kNmPerUm;
+constexpr int64_t kPetalDomeNm = 1500 * kNmPerUm;
 constexpr int64_t kVeinHalfNm = 300 * kNmPerUm, kVeinDepthNm = 500 * kNmPerUm;
 constexpr int64_t kVeinFromNm = 19500 * kNmPerUm, kVeinToNm = 30 * kNmPerMm;
 constexpr int64_t kBeadOutNm = 29 * kNmPerMm, kBeadRadiusNm = 1300 * kNmPerUm;
@@ -82,7 +82,7 @@ int64_t flower_nm(int64_t dx, int64_t dy) {
   const int64_t across = scale_nm(dy, axis.cos_q30) - scale_nm(dx, axis.sin_q30);
   const int64_t u = ellipse_q30(along - kPetalMidNm, across, kPetalAlongNm, kPetalAcrossNm);
   if (u < kQ30One) {
-    // An ellipsoid's dome: 1.2 mm sqrt(1 - u), sqrt in q30 to 1 LSB.
+    // An ellipsoid's dome: 1.5 mm sqrt(1 - u), sqrt in q30 to 1 LSB.
     int64_t h = scale_nm(kPetalDomeNm, isqrt_u64(static_cast<uint64_t>(kQ30One - u) << 30));
     if (static_cast<int64_t>(abs_u64(across)) <= kVeinHalfNm && along >= kVeinFromNm && along <= kVeinToNm)
       h -= kVeinDepthNm;
@@ -108,7 +108,7 @@ int64_t tsuba_height_nm(int64_t x_nm, int64_t y_nm) {
 }  // namespace
 
 const BuiltinDesign kBuiltinTsuba = {
-    "tsuba", "a sword guard (figure 16): rim, tang slot, side holes, chrysanthemum relief (192x192, bronze)",
+    "tsuba", "a sword guard (figure 16): rim, tang slot, side holes, chrysanthemum relief",
     192, 192, kPitchNm, 8 * kNmPerMm, 8, "bronze", tsuba_height_nm, kFloorNm};
 
 }  // namespace dexmill
