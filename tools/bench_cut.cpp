@@ -19,6 +19,7 @@
 #include "core/grid/grid.h"
 #include "core/tool/cutter.h"
 #include "tools/bench.h"
+#include "tools/bench_job.h"
 #include "tools/workloads.h"
 
 namespace dexmill {
@@ -30,44 +31,6 @@ double paper_cut_seconds(const char* name) {
   if (!std::strcmp(name, "paper-w2")) return 9 * 60 + 42;
   if (!std::strcmp(name, "paper-w3")) return 34 * 60 + 16;
   return 0;
-}
-
-struct Job {
-  Workload w;
-  std::vector<height_t> stock, top, bottom;
-  DexelGrid<height_t> g;
-  std::vector<int32_t> cutter_words;
-  CutterDexels cutter;
-  SweepTool sweep_tool;
-};
-
-bool prepare(const char* name, Job* j) {
-  if (!make_workload(name, &j->w)) return false;
-  const size_t n = static_cast<size_t>(j->w.geo.nx) * j->w.geo.ny;
-  j->top.assign(n, 0);
-  j->bottom.assign(n, 0);
-  if (!ok(grid_init(&j->g, j->w.geo, j->top.data(), j->bottom.data(), n))) return false;
-  grid_block_stock(&j->g, grid_height_of_z(j->g, j->w.stock_top_nm));
-  j->stock = j->top;
-  ToolProfile p = tool_profile(j->w.tool);
-  j->cutter_words.resize(cutter_storage_words(cutter_reach_dex(p, j->g.pitch_nm)));
-  if (!ok(cutter_build(p, j->g.pitch_nm, j->g.lsb_nm, j->cutter_words.data(), j->cutter_words.size(), &j->cutter)))
-    return false;
-  return ok(sweep_tool_prepare(p, j->g.lsb_nm, &j->sweep_tool));
-}
-
-// The job of workload `name` for benchmark `bench`; says so when it cannot
-// be set up.
-bool setup(const char* bench, const char* name, Job* j) {
-  if (prepare(name, j)) return true;
-  std::fprintf(stderr, "dexmill: error: bench %s: set-up failed\n", bench);
-  return false;
-}
-
-void reset(Job* j) {
-  j->top = j->stock;
-  std::fill(j->bottom.begin(), j->bottom.end(), 0);
-  j->g.dirty = GridRect::none();
 }
 
 // The path as one polyline, as core/cut/mill.h cuts a program: stamping leaves
