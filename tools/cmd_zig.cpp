@@ -46,7 +46,8 @@ void usage(std::FILE* f) {
                "                       returns, the paper's way)\n"
                "  --safe-z MM          rapids between stripes (default: stock top + 5)\n"
                "  --feed MM/MIN        cutting feed (default 1000); --plunge-feed (default 300)\n"
-               "  --spindle RPM        (default 12000)\n"
+               "  --spindle RPM        (default 12000); with --material PRESET (a built-in part\n"
+               "                       brings its own) and none of these three, within its limits\n"
                "  --allowance MM       stock left above the design (default 0)\n"
                "  --pitch MM, --grid NXxNY, --units mm|inch: as for run\n\n"
                "Prints the grid, positions, moves and time taken on standard error. Exit 0 ok,\n"
@@ -59,6 +60,7 @@ struct ZigArgs {
   ZigProgramOptions prog;
   int64_t stepover_nm = 0, step_nm = 0, safe_z_nm = 0;
   bool have_safe = false;
+  bool feeds_given = false;  // --feed, --plunge-feed or --spindle
 };
 
 bool parse_mm(const char* v, int64_t* nm, bool positive) {
@@ -108,9 +110,11 @@ int cmd_zig(int argc, char** argv) {
         if (!parse_signed_mm(v, &z.safe_z_nm)) return fail(kExitUsage, "--safe-z needs a height in mm, not '%s'", v);
         z.have_safe = true;
       } else if (!std::strcmp(a, "--feed") || !std::strcmp(a, "--plunge-feed")) {
+        z.feeds_given = true;
         if (!parse_mm(v, &nm, true)) return fail(kExitUsage, "%s needs a feed in mm/min above 0, not '%s'", a, v);
         (a[2] == 'f' ? z.prog.feed_nm_per_min : z.prog.plunge_nm_per_min) = nm;
       } else if (!std::strcmp(a, "--spindle")) {
+        z.feeds_given = true;
         char* end = nullptr;
         const long rpm = std::strtol(v, &end, 10);
         if (!end || *end || rpm < 1 || rpm > 1000000) return fail(kExitUsage, "--spindle needs whole rpm, not '%s'", v);
@@ -149,6 +153,7 @@ int cmd_zig(int argc, char** argv) {
   const int code = parse_run_options(static_cast<int>(rest.size()), rest.data(), &o, &help);
   if (code != kExitOk || help) return code;
   if (builtin) builtin_setup(*builtin, have_tool, &o);
+  if (!z.feeds_given) zig_fit_to_material(o, &z.prog);
   else if (!have_tool) (void)tool_spec_parse("ball:3", 6, &o.tool);
   if (run_draws(o) || !o.report.empty() || !o.file.empty())
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");

@@ -5,8 +5,6 @@
 #include <string>
 
 #include "core/design/builtin.h"
-#include "core/material/material_preset.h"
-#include "core/math/fixed.h"
 #include "platform/frame_files.h"
 #include "platform/output_file.h"
 #include "platform/report_json.h"
@@ -16,30 +14,6 @@
 
 namespace dexmill {
 namespace cli {
-namespace {
-
-// Feeds and spindle speed within every limit of the demo's material preset
-// (paper §2.6: the process rules then pass): the lowest max feed (at most
-// 1000 mm/min), a third of it to plunge, a speed inside every range.
-void fit_to_material(const RunOptions& o, ZigProgramOptions* p) {
-  static StockComposition comp;
-  const BoxNm box{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
-  if (!material_preset(o.material.c_str(), box, &comp)) return;  // a file: its own business
-  int64_t feed = p->feed_nm_per_min;
-  int32_t lo = 0, hi = INT32_MAX;
-  for (int32_t k = 0; k < comp.material_count; ++k) {
-    const MaterialProcess& m = comp.materials[k].process;
-    feed = min_of(feed, m.max_feed_nm_per_min);
-    lo = max_of(lo, m.spindle_min_rpm);
-    hi = min_of(hi, m.spindle_max_rpm);
-  }
-  p->feed_nm_per_min = feed;
-  p->plunge_nm_per_min = feed / 3;
-  if (lo <= hi) p->spindle_rpm = clamp(p->spindle_rpm, lo, hi);
-}
-
-}  // namespace
-
 int run_demo(RunOptions o) {
   if (o.demo == "list") {
     for (int32_t k = 0; k < builtin_design_count(); ++k) {
@@ -58,7 +32,7 @@ int run_demo(RunOptions o) {
   // The paper's path: stripes one dexel apart, a position on every dexel,
   // the tool lifted at the end of each and returned at rapid.
   ZigJob job;
-  fit_to_material(o, &job.prog);
+  zig_fit_to_material(o, &job.prog);
   std::string text;
   ZigProgramStats st;
   GridPlan plan;

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "core/material/material_preset.h"
 #include "core/math/fixed.h"
 #include "core/tool/spec.h"
 #include "platform/report_json.h"
@@ -34,6 +35,23 @@ void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o) {
     o->tool_text = spec;
   }
   if (o->material.empty()) o->material = b.material;
+}
+
+void zig_fit_to_material(const RunOptions& o, ZigProgramOptions* p) {
+  static StockComposition comp;
+  const BoxNm box{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
+  if (!material_preset(o.material.c_str(), box, &comp)) return;  // a file: its own business
+  int64_t feed = p->feed_nm_per_min;
+  int32_t lo = 0, hi = INT32_MAX;
+  for (int32_t k = 0; k < comp.material_count; ++k) {
+    const MaterialProcess& m = comp.materials[k].process;
+    feed = min_of(feed, m.max_feed_nm_per_min);
+    lo = max_of(lo, m.spindle_min_rpm);
+    hi = min_of(hi, m.spindle_max_rpm);
+  }
+  p->feed_nm_per_min = feed;
+  p->plunge_nm_per_min = feed / 3;
+  if (lo <= hi) p->spindle_rpm = clamp(p->spindle_rpm, lo, hi);
 }
 
 int zig_generate(const RunOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan_out) {

@@ -27,6 +27,12 @@ struct ZigJob {
 // (unless o gives one), and b as the design.
 void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o);
 
+// Feeds and spindle speed within every limit of o's material preset (paper
+// §2.6: the process rules then pass): the lowest max feed (at most the
+// feed already set), a third of it to plunge, a speed inside every range.
+// Nothing for a material file or none.
+void zig_fit_to_material(const RunOptions& o, ZigProgramOptions* p);
+
 // The program for o's design, stock, grid and tool into *text; the grid
 // used into *plan. Returns an exit status (the message printed).
 int zig_generate(const RunOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan);
