@@ -5,8 +5,13 @@
 // part gives the demo's program; --design takes a built-in part; usage
 // errors. The four demos' grids and frames are pinned in the golden section
 // "demo" on every xcheck target.
-#include <string>
 #include <sys/stat.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
@@ -75,4 +80,48 @@ TEST(demo_usage_errors) {
     CHECK_EQ(r.code, 2);
     CHECK(has(r.err, c.message));
   }
+}
+
+TEST(zig_leftover_matches_the_scallop_the_stepover_predicts) {
+  if (skip()) return;
+  // The free-form part with stripes two dexels apart (1 mm): the rows
+  // between stripes keep the cusp a 3 mm ball leaves one pitch (0.5 mm)
+  // off its pass, R - sqrt(R^2 - p^2) = 0.0858 mm on a flat, more on a
+  // slope (at most h / cos^2 of the steepest slope, tan 0.63: 0.120 mm).
+  // The dexel model sees it at those rows: most of the columns between
+  // stripes (half of all) keep more than 0.02 mm, none more than the bound,
+  // none is gouged.
+  const double R = 1.5, p = 0.5, flat = R - std::sqrt(R * R - p * p), bound = flat * (1 + 0.63 * 0.63);
+  Result r = run_command("zig freeform --stepover 1 -o " + tmp_dir() + "/ff.ngc");
+  CHECK_EQ(r.code, 0);
+  r = run(tmp_dir() + "/ff.ngc --stock 0,0,-30,127.5,127.5,0 --pitch 0.5 --tool ball:3 --design freeform -q --report " +
+          tmp_dir() + "/ff.json");
+  CHECK_EQ(r.code, 0);
+  const std::string a = assessment_of(slurp(tmp_dir() + "/ff.json"));
+  CHECK(has(a, "\"max_gouge\": null"));
+  // The histogram: columns per band, edges -1 -0.5 -0.2 -0.1 -0.05 -0.02
+  // -0.01 0.01 0.02 0.05 0.1 0.2 0.5 1 (mm): bin k lies under edge k.
+  const size_t at = a.find("\"columns\": [");
+  CHECK(at != std::string::npos);
+  if (at == std::string::npos) return;
+  std::vector<long> bins;
+  for (const char* q = a.c_str() + at + 12; *q && *q != ']';) {
+    bins.push_back(std::strtol(q, const_cast<char**>(&q), 10));
+    while (*q == ',' || *q == ' ') ++q;
+  }
+  CHECK_EQ(bins.size(), size_t(15));
+  if (bins.size() != 15) return;
+  long total = 0, over_002 = 0;
+  for (size_t k = 0; k < bins.size(); ++k) total += bins[k];
+  for (size_t k = 9; k < bins.size(); ++k) over_002 += bins[k];
+  CHECK_GT(over_002, total / 2 * 7 / 10);
+  CHECK_EQ(bins[12] + bins[13] + bins[14], 0);  // nothing over 0.2 mm
+  const size_t m = a.find("\"max_leftover\": {\"mm\": ");
+  CHECK(m != std::string::npos);
+  if (m == std::string::npos) return;
+  const double worst = std::atof(a.c_str() + m + 23);
+  CHECK_GT(worst, flat);
+  CHECK_LE(worst, bound);
+  std::printf("scallop: predicted %.4f mm on a flat (%.4f bound on the slopes), largest left %.4f mm, %ld of %ld columns over 0.02 mm\n",
+              flat, bound, worst, over_002, total);
 }

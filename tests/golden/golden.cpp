@@ -16,6 +16,7 @@ const Section kSections[] = {
     {"texture", golden_texture},
     {"regress", golden_regress},
     {"builtin", golden_builtin},
+    {"demo", golden_demo},
 };
 const size_t kSectionCount = sizeof kSections / sizeof kSections[0];
 
@@ -28,7 +29,7 @@ int g_failures = 0;
 // Enough for every section: the largest users are the tool section's 12 mm
 // V-bit at a 0.13 mm pitch (17 484 cutter words, 70 KiB) and the m=32
 // stamp-test grid (2 x 82 x 62 x 4 bytes plus four cutters, 46 KiB).
-constexpr size_t kArenaBytes = 256 * 1024;
+constexpr size_t kArenaBytes = 2048 * 1024;  // the demo section's 256 x 256 workpiece with its frame
 alignas(8) unsigned char g_arena_bytes[kArenaBytes];
 Arena g_arena;
 }  // namespace

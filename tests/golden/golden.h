@@ -70,6 +70,7 @@ void golden_safety(Out& out);  // golden_safety.cpp: one finding of each safety 
 void golden_texture(Out& out);  // golden_texture.cpp: noise, textures and material presets (core/material)
 void golden_regress(Out& out);  // golden_regress.cpp: regression cases named after their bug
 void golden_builtin(Out& out);  // golden_builtin.cpp: the built-in design parts (the paper's four workpieces)
+void golden_demo(Out& out);  // golden_demo.cpp: the paper's four workpieces cut by their zig paths, assessed, drawn
 
 }  // namespace golden
 

@@ -10,8 +10,8 @@
 #    package linuxcnc-uspace): every tests/gcode/paths/*.ngc and every file of
 #    ../shared/corpus, traced by rs274 and compared the same way.
 #    Also the programs `dexmill zig` writes (issue 23: they must be plain
-#    RS274/NGC), from a relief the script draws: lifted and zigzag, along x
-#    and y.
+#    RS274/NGC), from a relief the script draws (lifted and zigzag, along x
+#    and y) and for the four built-in parts of run --demo.
 # A program that dexmill refuses as "not supported" is reported, not failed.
 # Exit 1 if any comparison differs.
 set -u
@@ -83,6 +83,10 @@ PY
       else
         echo "zig ${v%%:*}: dexmill zig failed"; failed=$((failed + 1))
       fi
+    done
+    for n in panel smiley freeform tsuba; do  # the --demo parts' programs
+      if "$dexmill" zig "$n" -o "$tmp/zig-$n.ngc" 2>/dev/null; then zig_files="$zig_files $tmp/zig-$n.ngc"
+      else echo "zig $n: dexmill zig failed"; failed=$((failed + 1)); fi
     done
     files="$files$zig_files"
     for f in $files; do
