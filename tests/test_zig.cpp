@@ -12,6 +12,7 @@
 #include "core/cam/zig.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
+#include "tests/scene_util.h"
 
 using namespace dexmill;
 
@@ -74,22 +75,12 @@ double exact_need(const Design& x, const ToolProfile& p, bool along_y, double tu
   return need;
 }
 
-Tool tool_of(ToolKind kind, int64_t d_nm, int64_t corner_nm = 0) {
-  Tool t;
-  t.kind = kind;
-  t.diameter_nm = d_nm;
-  t.corner_radius_nm = corner_nm;
-  t.flute_length_nm = 20 * mm;
-  t.length_nm = 40 * mm;
-  return t;
-}
 
 }  // namespace
 
 TEST(zig_positions_against_double_oracle) {
   t::Rng rng(23);
-  const Tool tools[] = {tool_of(ToolKind::kBall, 3 * mm), tool_of(ToolKind::kBall, 6 * mm), tool_of(ToolKind::kFlat, 2 * mm),
-                        tool_of(ToolKind::kBullNose, 4 * mm, mm)};
+  const Tool tools[] = {t::ball_tool(3 * mm), t::ball_tool(6 * mm), t::flat_tool(2 * mm), t::bull_tool(4 * mm, mm)};
   double worst_low = 0, worst_high = 0, worst_dip = 0;
   int checked = 0;
   for (int rep = 0; rep < 8; ++rep) {
@@ -152,7 +143,7 @@ TEST(zig_position_is_tight_where_nothing_raises_it) {
   CHECK(ok(design_init(&x.d, x.geo, x.tops.data(), x.tops.size())));
   for (int32_t& t : x.tops) t = 20000;
   x.tops[x.d.index(16, 10)] = 26000;  // a spike 3 mm high
-  const ToolProfile p = tool_profile(tool_of(ToolKind::kBall, 4 * mm));
+  const ToolProfile p = tool_profile(t::ball_tool(4 * mm));
   std::vector<int32_t> words(zig_tool_words(p, x.geo));
   ZigTool zt;
   CHECK(ok(zig_tool_build(p, x.geo, words.data(), words.size(), &zt)));

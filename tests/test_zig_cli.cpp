@@ -116,6 +116,17 @@ TEST(zig_program_header_and_stl_design) {
   r = run_command("zig " + stl + " " + shared + " --stepover 4");
   CHECK_EQ(r.code, 0);
   CHECK(has(r.out, "M30\n"));
+  // Without --tool, a 3 mm ball; without a material, the default feeds.
+  r = run_command("zig " + stl + " --stock 0,0,-20,40,40,0 --stepover 4");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, ", tool ball:3, "));
+  CHECK(has(r.out, "S12000 M3"));
+  CHECK(has(r.out, " F300\n"));
+  // With a material preset, within its limits (bronze: 400 mm/min, 1500..8000 rpm).
+  r = run_command("zig " + stl + " --stock 0,0,-20,40,40,0 --stepover 4 --material bronze");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "S8000 M3"));
+  CHECK(has(r.out, " F400\n"));
 }
 
 TEST(zig_usage_errors) {

@@ -57,9 +57,7 @@ void usage(std::FILE* f) {
 // Options of zig's own; the rest go to run's parser.
 struct ZigArgs {
   std::string design, out = "-";
-  ZigProgramOptions prog;
-  int64_t stepover_nm = 0, step_nm = 0, safe_z_nm = 0;
-  bool have_safe = false;
+  ZigJob job;
   bool feeds_given = false;  // --feed, --plunge-feed or --spindle
 };
 
@@ -102,30 +100,30 @@ int cmd_zig(int argc, char** argv) {
         z.out = v;
       } else if (!std::strcmp(a, "--stepover") || !std::strcmp(a, "--step")) {
         if (!parse_mm(v, &nm, true)) return fail(kExitUsage, "%s needs a length in mm above 0, not '%s'", a, v);
-        (a[6] == 'o' ? z.stepover_nm : z.step_nm) = nm;
+        (a[6] == 'o' ? z.job.stepover_nm : z.job.step_nm) = nm;
       } else if (!std::strcmp(a, "--direction")) {
         if (std::strcmp(v, "x") && std::strcmp(v, "y")) return fail(kExitUsage, "--direction must be x or y, not '%s'", v);
-        z.prog.zig.along_y = v[0] == 'y';
+        z.job.prog.zig.along_y = v[0] == 'y';
       } else if (!std::strcmp(a, "--safe-z")) {
-        if (!parse_signed_mm(v, &z.safe_z_nm)) return fail(kExitUsage, "--safe-z needs a height in mm, not '%s'", v);
-        z.have_safe = true;
+        if (!parse_signed_mm(v, &z.job.safe_z_nm)) return fail(kExitUsage, "--safe-z needs a height in mm, not '%s'", v);
+        z.job.have_safe = true;
       } else if (!std::strcmp(a, "--feed") || !std::strcmp(a, "--plunge-feed")) {
         z.feeds_given = true;
         if (!parse_mm(v, &nm, true)) return fail(kExitUsage, "%s needs a feed in mm/min above 0, not '%s'", a, v);
-        (a[2] == 'f' ? z.prog.feed_nm_per_min : z.prog.plunge_nm_per_min) = nm;
+        (a[2] == 'f' ? z.job.prog.feed_nm_per_min : z.job.prog.plunge_nm_per_min) = nm;
       } else if (!std::strcmp(a, "--spindle")) {
         z.feeds_given = true;
         char* end = nullptr;
         const long rpm = std::strtol(v, &end, 10);
         if (!end || *end || rpm < 1 || rpm > 1000000) return fail(kExitUsage, "--spindle needs whole rpm, not '%s'", v);
-        z.prog.spindle_rpm = static_cast<int32_t>(rpm);
+        z.job.prog.spindle_rpm = static_cast<int32_t>(rpm);
       } else {
-        if (!parse_mm(v, &z.prog.zig.allowance_nm, false)) return fail(kExitUsage, "--allowance needs mm >= 0, not '%s'", v);
+        if (!parse_mm(v, &z.job.prog.zig.allowance_nm, false)) return fail(kExitUsage, "--allowance needs mm >= 0, not '%s'", v);
       }
       continue;
     }
     if (!std::strcmp(a, "--zigzag")) {
-      z.prog.zigzag = true;
+      z.job.prog.zigzag = true;
       continue;
     }
     if (!std::strcmp(a, "--tool")) have_tool = true;
@@ -153,22 +151,16 @@ int cmd_zig(int argc, char** argv) {
   const int code = parse_run_options(static_cast<int>(rest.size()), rest.data(), &o, &help);
   if (code != kExitOk || help) return code;
   if (builtin) builtin_setup(*builtin, have_tool, &o);
-  if (!z.feeds_given) zig_fit_to_material(o, &z.prog);
   else if (!have_tool) (void)tool_spec_parse("ball:3", 6, &o.tool);
+  if (!z.feeds_given) zig_fit_to_material(o, &z.job.prog);
   if (run_draws(o) || !o.report.empty() || !o.file.empty())
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");
 
   if (!o.have_stock) return fail(kExitUsage, "zig needs --stock X0,Y0,Z0,X1,Y1,Z1 (the block the design is cut from)");
-  ZigJob job;
-  job.prog = z.prog;
-  job.stepover_nm = z.stepover_nm;
-  job.step_nm = z.step_nm;
-  job.safe_z_nm = z.safe_z_nm;
-  job.have_safe = z.have_safe;
   std::string text;
   ZigProgramStats st;
   GridPlan plan;
-  const int gcode = zig_generate(o, &job, &text, &st, &plan);
+  const int gcode = zig_generate(o, &z.job, &text, &st, &plan);
   if (gcode != kExitOk) return gcode;
   char e[1300];
   if (z.out == "-") {
