@@ -116,8 +116,11 @@ namespace {
 // Adds the height of z (nm) to the breaks when it lies inside the grid's range.
 template <class H>
 void add_break(const DexelGrid<H>& g, int64_t z_nm, SurfaceTexture* t) {
+  // Bounds may be open (a layer up to INT64_MAX): compare before subtracting.
+  const int64_t top_nm = g.z0_nm + static_cast<int64_t>(static_cast<H>(~H{0})) * g.lsb_nm;
+  if (z_nm <= g.z0_nm || z_nm > top_nm || t->nbreaks >= kTextureBreaksMax) return;
   const int64_t h = div_round(z_nm - g.z0_nm, g.lsb_nm);
-  if (h <= 0 || h > static_cast<int64_t>(static_cast<H>(~H{0})) || t->nbreaks >= kTextureBreaksMax) return;
+  if (h <= 0) return;
   int32_t k = t->nbreaks;  // insertion, ascending, no duplicates
   while (k > 0 && t->breaks_lsb[k - 1] > static_cast<uint32_t>(h)) --k;
   if (k > 0 && t->breaks_lsb[k - 1] == static_cast<uint32_t>(h)) return;
