@@ -219,6 +219,15 @@ void GcodeStderrMessages::warning(const GcodeDiag& d) {
   std::fprintf(out_, "%s\n", line);
 }
 
+void GcodeNotes::message(uint32_t line, int kind, const char* text) {
+  static const char* const kKinds[] = {"note", "debug", "print", "message"};
+  const char* k = kKinds[kind >= 1 && kind <= 3 ? kind : 0];
+  kept.push_back(Note{line, k, text});
+  if (print_) std::fprintf(stderr, "%s:%u: %s: %s\n", file_, line, k, text);
+}
+
+std::unique_ptr<ParamStore> gcode_param_store() { return std::unique_ptr<ParamStore>(new ParamStore()); }
+
 bool GcodeRunner::step() {
   if (done_) return false;
   const char* text = nullptr;

@@ -37,6 +37,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "core/gcode/block.h"
 #include "core/gcode/error.h"
@@ -141,6 +144,29 @@ class GcodeStderrMessages final : public GcodeMessages {
   const char* file_;
   std::FILE* out_;
 };
+
+// A program's message comments (issue 21: DEBUG, PRINT, MSG, with their
+// parameters substituted), printed as `FILE:LINE: debug|print|message: TEXT`
+// on stderr when `print`, and kept for the report.
+class GcodeNotes final : public GcodeMessageSink {
+ public:
+  explicit GcodeNotes(const char* file_name, bool print = true) : file_(file_name), print_(print) {}
+  void message(uint32_t line, int kind, const char* text) override;
+  struct Note {
+    uint32_t line;
+    const char* kind;  // "debug", "print", "message"
+    std::string text;
+  };
+  std::vector<Note> kept;
+
+ private:
+  const char* file_;
+  bool print_;
+};
+
+// The parameters of one run of a program (core/gcode/params.h, about
+// 57 KB), for InterpOptions::params.
+std::unique_ptr<ParamStore> gcode_param_store();
 
 // Feeds a file to an interpreter one line per step().
 class GcodeRunner {

@@ -255,6 +255,11 @@ std::string report_json_text(const RunReport& r) {
   diags(&o, "errors", r.errors);
   diags(&o, "warnings", r.warnings);
   o += "  \"warnings_total\": " + u64(r.warnings_total) + ",\n";
+  o += "  \"messages\": [";
+  for (std::size_t k = 0; k < r.messages.size(); ++k)
+    o += std::string(k ? ",\n    " : "\n    ") + "{\"line\": " + u64(r.messages[k].line) + ", \"kind\": " +
+         quoted(r.messages[k].kind) + ", \"text\": " + quoted(r.messages[k].text) + "}";
+  o += r.messages.empty() ? "],\n" : "\n  ],\n";
   if (r.have_stock)
     o += "  \"stock\": {\"min_mm\": " + point_mm(r.stock_lo) + ", \"max_mm\": " + point_mm(r.stock_hi) +
          ", \"source\": " + quoted(r.stock_source) + "},\n";

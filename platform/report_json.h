@@ -13,6 +13,8 @@
 //                   cut, "error" at the bad block a partial run stopped before
 //   errors          [{line, column, message}]          input errors
 //   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept)
+//   messages        [{line, kind, text}]: the program's DEBUG, PRINT and MSG comments
+//                   (kind "debug"|"print"|"message"; the first 100)
 //   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
 //   grid            {nx, ny, pitch_mm, lsb_mm, height_bits}
 //   mode            "sweep"|"stamp"
@@ -112,6 +114,11 @@ struct RunReport {
   uint64_t rapid = 0, feed = 0, arc = 0, dwell = 0, tool_change = 0;
   std::vector<ReportDiag> errors, warnings;
   uint64_t warnings_total = 0;
+  struct Message {
+    uint32_t line;
+    std::string kind, text;
+  };
+  std::vector<Message> messages;
   bool have_stock = false;
   PointNm stock_lo{0, 0, 0}, stock_hi{0, 0, 0};
   std::string stock_source;

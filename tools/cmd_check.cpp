@@ -94,9 +94,13 @@ int cmd_check(int argc, char** argv) {
   GcodeFile in;
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   GcodeStderrMessages msgs(in.name());
+  GcodeNotes notes(in.name());
+  const std::unique_ptr<ParamStore> params = gcode_param_store();
   InterpOptions opt;
   opt.inch = inch;
   opt.warnings = &msgs;
+  opt.params = params.get();
+  opt.messages = &notes;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);

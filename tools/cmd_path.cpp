@@ -116,9 +116,13 @@ int cmd_path(int argc, char** argv) {
   static char outbuf[1 << 16];
   std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
   GcodeStderrMessages msgs(in.name());
+  GcodeNotes notes(in.name());
+  const std::unique_ptr<ParamStore> params = gcode_param_store();
   InterpOptions opt;
   opt.inch = inch;
   opt.warnings = &msgs;
+  opt.params = params.get();
+  opt.messages = &notes;
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -31,9 +31,11 @@ std::string mm_per_min(int64_t nm_per_min) { return feed_number(nm_per_min, fals
 int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   GcodeFile file;
   if (!file.open(in.read_path.c_str())) return fail(kExitIo, "%s", file.error());
+  const std::unique_ptr<ParamStore> params = gcode_param_store();
   InterpOptions opt;
   opt.inch = in.inch;
   opt.tools = in.tools;  // warnings were printed by the cut's reading
+  opt.params = params.get();
   LineRecords sink;
   Interp interp(&sink, opt);
   MotionSummary before(in.time_model), after(in.time_model);

@@ -403,6 +403,7 @@ int run_job(RunOptions o) {
 
   // -- scan pass
   RunMessages scan_msgs(shown_name, true);
+  GcodeNotes notes(shown_name.c_str());  // a program's messages, printed once (this pass)
   MotionTimeModel time_model;
   time_model.rapid_nm_per_min = o.rapid_nm_per_min;
   time_model.accel_nm_per_s2 = o.accel_nm_per_s2;
@@ -416,10 +417,13 @@ int run_job(RunOptions o) {
     const double t0 = clock_now_s();
     GcodeFile in;
     if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
+    const std::unique_ptr<ParamStore> params = gcode_param_store();
     InterpOptions opt;
     opt.inch = o.inch;
     opt.warnings = &scan_msgs;
     opt.tools = have_table ? &table : nullptr;
+    opt.params = params.get();
+    opt.messages = &notes;
     Interp interp(&scan, opt);
     scan.interp = &interp;
     GcodeRunner runner(&in, &interp, &scan_msgs, true);
@@ -446,6 +450,8 @@ int run_job(RunOptions o) {
   rep.tool_change = sum.count(CanonKind::kToolChange);
   rep.errors = scan_msgs.error_list;
   rep.warnings = scan_msgs.warning_list;
+  for (const GcodeNotes::Note& n : notes.kept)
+    if (rep.messages.size() < 100) rep.messages.push_back(RunReport::Message{n.line, n.kind, n.text});
   rep.warnings_total = scan_msgs.warnings();
   rep.tools_used = scan.used;
   rep.estimated_us = sum.estimated_time_us();
@@ -705,9 +711,11 @@ int run_job(RunOptions o) {
     GcodeFile in;
     if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
     RunMessages quiet(shown_name, false);
+    const std::unique_ptr<ParamStore> params = gcode_param_store();
     InterpOptions opt;
     opt.inch = o.inch;
     opt.tools = have_table ? &table : nullptr;
+    opt.params = params.get();
     Interp interp(&cut, opt);
     cut.interp = &interp;
     if (!o.material.empty()) cut.material = &material;

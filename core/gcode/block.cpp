@@ -5,6 +5,7 @@
 
 #include <string.h>
 
+#include "core/gcode/expr.h"
 #include "core/gcode/lex.h"
 
 namespace dexmill {
@@ -94,6 +95,85 @@ MKind classify_m(int64_t tenths, uint8_t* group) {
   return MKind::kUnknown;
 }
 
+// A parameter assignment read from the line, made after it.
+struct Assignment {
+  ParamRef ref;
+  GValue value;
+  uint16_t col;
+};
+
+// "#123" or "#<name>", for diagnostics (out: kParamNameMax + 4 bytes).
+void param_ref_text(const ParamRef& r, char* out) {
+  size_t k = 0;
+  out[k++] = '#';
+  if (r.named) {
+    out[k++] = '<';
+    for (size_t i = 0; r.name[i] && k < kParamNameMax + 1; ++i) out[k++] = r.name[i];
+    out[k++] = '>';
+  } else {
+    char tmp[8];
+    int t = 0;
+    int64_t v = r.number;
+    do { tmp[t++] = static_cast<char>('0' + v % 10); v /= 10; } while (v && t < 8);
+    while (t) out[k++] = tmp[--t];
+  }
+  out[k] = 0;
+}
+
+// Appends to out[*k, cap - 1).
+struct Appender {
+  char* out;
+  size_t cap, k;
+  void put(char c) {
+    if (k + 1 < cap) out[k++] = c;
+  }
+  // A value as LinuxCNC's %lf: 6 decimals, rounded.
+  void value(int64_t e9) {
+    int64_t v = e9 / 1000 + (e9 % 1000 >= 500 ? 1 : (e9 % 1000 <= -500 ? -1 : 0));
+    if (v < 0) put('-');
+    uint64_t u = static_cast<uint64_t>(v < 0 ? -v : v);
+    char tmp[24];
+    int t = 0;
+    for (int i = 0; i < 6; ++i, u /= 10) tmp[t++] = static_cast<char>('0' + u % 10);
+    tmp[t++] = '.';
+    do { tmp[t++] = static_cast<char>('0' + u % 10); u /= 10; } while (u);
+    while (t) put(tmp[--t]);
+  }
+};
+
+// The message text with #n and #<name> replaced by their values (when
+// `substitute`: DEBUG and PRINT), "######" for a name never set.
+void format_message(const char* s, size_t n, const ParamStore& p, bool substitute, char* out) {
+  Appender a{out, kGcodeMessageMax, 0};
+  for (size_t i = 0; i < n;) {
+    if (substitute && s[i] == '#' && i + 1 < n && (s[i + 1] == '<' || (s[i + 1] >= '0' && s[i + 1] <= '9'))) {
+      GValue v{0};
+      bool known = true;
+      if (s[i + 1] == '<') {
+        size_t e = i + 2;
+        while (e < n && s[e] != '>') ++e;
+        if (e >= n) {
+          a.put(s[i++]);
+          continue;
+        }
+        known = param_get_named(p, s + i + 2, e - i - 2, &v, &known) == GcodeError::kOk && known;
+        i = e + 1;
+      } else {
+        int64_t num = 0;
+        size_t e = i + 1;
+        while (e < n && s[e] >= '0' && s[e] <= '9' && num < 100000) num = num * 10 + (s[e++] - '0');
+        known = param_get(p, num, &v) == GcodeError::kOk;
+        i = e;
+      }
+      if (known) a.value(v.e9);
+      else for (int k = 0; k < 6; ++k) a.put('#');
+      continue;
+    }
+    a.put(s[i++]);
+  }
+  out[a.k] = 0;
+}
+
 GcodeError fail(GcodeDiag* d, GcodeError e, uint16_t col, const char* word) {
   d->code = e;
   d->col = col;
@@ -132,6 +212,11 @@ void gcode_code_text(char letter, int32_t tenths, char* buf) {
 
 GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* b, GcodeLineKind* kind,
                             GcodeDiag* d) {
+  return gcode_read_block(s, n, line, b, kind, d, nullptr);
+}
+
+GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* b, GcodeLineKind* kind,
+                            GcodeDiag* d, ParamStore* params) {
   d->line = line;
   d->col = 1;
   d->word[0] = 0;
@@ -143,6 +228,8 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
   b->coolant_bits = 0;
   b->m_count = 0;
   b->first_col = 1;
+  b->message_kind = GcodeMessage::kNone;
+  b->message[0] = 0;
   for (int i = 0; i < kGGroupCount; ++i) b->g[i] = -1;
   for (int i = 0; i < kMGroupCount; ++i) b->m[i] = -1;
 
@@ -201,8 +288,11 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
 
   GcodeScanner sc(s, n);
   sc.set_pos(i);
+  sc.set_params(params);
   bool first = true;
   bool after_word = false;  // a word other than N was read
+  Assignment assign[kGcodeAssignMax];
+  int nassign = 0;
   for (;;) {
     GcodeWord w;
     GcodeError e = sc.next(&w, d);
@@ -220,6 +310,23 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
       return e;
     }
     if (!w.letter) break;
+    if (w.letter == '#') {  // #n = value: made after the line
+      if (nassign >= kGcodeAssignMax) return fail(d, GcodeError::kTooManyAssignments, w.col, "#");
+      size_t at = sc.pos();
+      Assignment& a = assign[nassign++];
+      a.col = w.col;
+      e = expr_read_param_ref(s, n, &at, *params, &a.ref, d);
+      if (e != GcodeError::kOk) return e;
+      while (at < n && is_blank(s[at])) ++at;
+      if (at >= n || s[at] != '=') return fail(d, GcodeError::kExprSyntax, static_cast<uint16_t>(at + 1), "#");
+      ++at;
+      e = expr_read_value(s, n, &at, *params, &a.value, d);
+      if (e != GcodeError::kOk) return e;
+      sc.set_pos(at);
+      first = false;
+      after_word = true;
+      continue;
+    }
     if (first) b->first_col = w.col;
     char code_text[16];
     if (w.letter == 'N') {
@@ -290,6 +397,20 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
     b->has |= 1u << li;
     b->value[li] = w.value;
     b->col[li] = w.col;
+  }
+  for (int k = 0; k < nassign; ++k) {
+    const Assignment& a = assign[k];
+    const GcodeError e = a.ref.named ? param_set_named(params, a.ref.name, strlen(a.ref.name), a.value)
+                                     : param_set(params, a.ref.number, a.value);
+    if (e != GcodeError::kOk) {
+      char word[kParamNameMax + 4];
+      param_ref_text(a.ref, word);
+      return fail(d, e, a.col, word);
+    }
+  }
+  if (params && sc.message_kind()) {
+    b->message_kind = static_cast<GcodeMessage>(sc.message_kind());
+    format_message(s + sc.message_at(), sc.message_len(), *params, b->message_kind != GcodeMessage::kMsg, b->message);
   }
   return GcodeError::kOk;
 }

@@ -11,12 +11,20 @@
 #include <stdint.h>
 
 #include "core/gcode/error.h"
+#include "core/gcode/params.h"
 #include "core/math/decimal.h"
 
 namespace dexmill {
 
 // Longest line accepted, in bytes without the line end (LinuxCNC: 256).
 constexpr size_t kGcodeMaxLine = 256;
+// A message comment's text, with its parameters substituted (bytes, NUL
+// included; longer text is cut).
+constexpr size_t kGcodeMessageMax = 160;
+// Parameter assignments on one line (LinuxCNC has no fixed limit).
+constexpr int kGcodeAssignMax = 32;
+
+enum class GcodeMessage : uint8_t { kNone = 0, kDebug = 1, kPrint = 2, kMsg = 3 };
 
 // Modal groups of G codes (numbers as in RS274/NGC and LinuxCNC).
 enum GGroup : uint8_t {
@@ -65,6 +73,11 @@ struct GcodeBlock {
   uint8_t coolant_bits;
   uint8_t m_count;
   uint16_t first_col;          // column of the first word (1 if none)
+  // A (DEBUG,...), (PRINT,...) or (MSG,...) comment (read with parameters):
+  // DEBUG and PRINT with #n and #<name> replaced by their values after the
+  // line's assignments, as LinuxCNC prints them (6 decimals).
+  GcodeMessage message_kind;
+  char message[kGcodeMessageMax];
 
   bool has_word(char letter) const { return (has >> (letter - 'A')) & 1u; }
   uint16_t col_of(char letter) const { return col[letter - 'A']; }
@@ -91,6 +104,12 @@ enum class GcodeLineKind : uint8_t {
 // unspecified. `line` is stored in b->line and d->line.
 [[nodiscard]] GcodeError gcode_read_block(const char* text, size_t len, uint32_t line, GcodeBlock* b,
                                           GcodeLineKind* kind, GcodeDiag* d);
+// The same with parameters (issue 21): values may be computed from them,
+// and the line's assignments (#n = value, #<name> = value) are made after
+// the whole line was read (values on the line see the old ones), only when
+// the line has no error.
+[[nodiscard]] GcodeError gcode_read_block(const char* text, size_t len, uint32_t line, GcodeBlock* b,
+                                          GcodeLineKind* kind, GcodeDiag* d, ParamStore* params);
 
 // The modal group (GGroup) of a G code LinuxCNC knows, in tenths; -1 if none.
 int gcode_g_group(int64_t tenths);

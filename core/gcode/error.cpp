@@ -30,6 +30,18 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kNotText: return "not a text file (binary data, such as the byte {w}; G-code is plain text)";
     case GcodeError::kUtf16Text: return "the file is UTF-16 text; save it as UTF-8 or ASCII";
     case GcodeError::kMisplacedOword: return "'{w}' in the middle of a block: o-words start their line (a 0 typed as O?)";
+    case GcodeError::kExprDivideByZero: return "{w}: division by zero";
+    case GcodeError::kExprDomain: return "{w}: argument outside the function's domain (a root or power of a negative, LN of 0 or less, ACOS/ASIN beyond 1)";
+    case GcodeError::kExprOutOfRange: return "{w}: result out of range (beyond 1e9)";
+    case GcodeError::kExprSyntax: return "bad expression at '{w}' (an unknown operator, or a missing ']')";
+    case GcodeError::kExprUnknownFunction: return "unknown function '{w}'";
+    case GcodeError::kParamNumberRange: return "parameter {w} out of range (#1 to #5602)";
+    case GcodeError::kParamUnknownName: return "named parameter {w} used before it was set";
+    case GcodeError::kParamReadOnly: return "parameter {w} is read-only (the interpreter's own value)";
+    case GcodeError::kParamNameTooLong: return "parameter name {w} is empty or longer than 31 characters";
+    case GcodeError::kTooManyNamedParams: return "{w}: more than 200 named parameters (dexmill's fixed limit)";
+    case GcodeError::kTooManyAssignments: return "{w}: more than 32 parameter assignments on one line";
+    case GcodeError::kExprTooDeep: return "{w}: expression nested deeper than 16 (dexmill's fixed limit)";
     case GcodeError::kFeedZero: return "{w}: feed move with zero feed rate (set F first; G93 and G94 set F to 0)";
     case GcodeError::kInverseTimeNoF: return "{w}: F word missing in inverse time mode (G93 needs F on every feed move)";
     case GcodeError::kArcNoCentre: return "{w}: R, I, J and K words all missing for arc";

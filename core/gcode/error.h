@@ -39,6 +39,19 @@ enum class GcodeError : uint8_t {
   kNotText = 19,
   kUtf16Text = 20,
   kMisplacedOword = 21,
+  // parameters and expressions (issue 21)
+  kExprDivideByZero = 22,
+  kExprDomain = 23,
+  kExprOutOfRange = 24,
+  kExprSyntax = 25,
+  kExprUnknownFunction = 26,
+  kParamNumberRange = 27,
+  kParamUnknownName = 28,
+  kParamReadOnly = 29,
+  kParamNameTooLong = 30,
+  kTooManyNamedParams = 31,
+  kTooManyAssignments = 32,
+  kExprTooDeep = 33,
   // -- checking the block (40..99)
   kFeedZero = 40,
   kInverseTimeNoF = 41,
@@ -127,6 +140,17 @@ class GcodeDiagSink {
 
  protected:
   ~GcodeDiagSink() = default;
+};
+
+// Where a program's message comments go (DEBUG, PRINT, MSG; issue 21):
+// kind 1 DEBUG, 2 PRINT, 3 MSG (core/gcode/block.h GcodeMessage), the text
+// as LinuxCNC would show it.
+class GcodeMessageSink {
+ public:
+  virtual void message(uint32_t line, int kind, const char* text) = 0;
+
+ protected:
+  ~GcodeMessageSink() = default;
 };
 
 }  // namespace dexmill

@@ -1,6 +1,8 @@
 // The word scanner; see lex.h.
 #include "core/gcode/lex.h"
 
+#include "core/gcode/expr.h"
+
 namespace dexmill {
 
 namespace {
@@ -56,12 +58,34 @@ GcodeError GcodeScanner::skip_blank_and_comments(GcodeDiag* d) {
         gcode_set_word(d, "(", 1);
         return GcodeError::kUnterminatedComment;
       }
+      if (params_) note_message(open + 1, i);
       pos_ = i + 1;
     } else {
       break;
     }
   }
   return GcodeError::kOk;
+}
+
+// LinuxCNC's message comments: (DEBUG,text) (PRINT,text) (MSG,text), the
+// keyword in any case, blanks before the comma allowed.
+void GcodeScanner::note_message(size_t from, size_t to) {
+  static const char* const kKinds[] = {"DEBUG", "PRINT", "MSG"};
+  size_t i = from;
+  while (i < to && is_blank(s_[i])) ++i;
+  const char first = i < to ? upper(s_[i]) : 0;
+  if (first != 'D' && first != 'P' && first != 'M') return;  // most comments
+  for (uint8_t k = 0; k < 3; ++k) {
+    size_t j = i, c = 0;
+    while (kKinds[k][c] && j < to && upper(s_[j]) == kKinds[k][c]) ++j, ++c;
+    if (kKinds[k][c]) continue;
+    while (j < to && is_blank(s_[j])) ++j;
+    if (j >= to || s_[j] != ',') continue;
+    msg_kind_ = static_cast<uint8_t>(k + 1);
+    msg_at_ = j + 1;
+    msg_len_ = to - (j + 1);
+    return;
+  }
 }
 
 bool GcodeScanner::at_end() {
@@ -90,6 +114,11 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
     if (c == 'E') bad = GcodeError::kUnknownWord;
     if (c == 'O') bad = GcodeError::kUnsupportedOword;
   } else if (c == '#') {
+    if (params_) {  // an assignment: the block reader's
+      w->letter = '#';
+      w->col = static_cast<uint16_t>(start + 1);
+      return GcodeError::kOk;
+    }
     bad = GcodeError::kUnsupportedParameter;
   } else if (c == '[') {
     bad = GcodeError::kUnsupportedExpression;
@@ -106,6 +135,18 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   pos_ = start + 1;
   Decimal v{0, 0};
   DecimalParse r = decimal_parse(s_, n_, &pos_, &v);
+  // Not a plain number: with parameters, a computed value (#1, [1+2],
+  // SIN[30], -#1); a plain number, the usual word, pays nothing for it.
+  if (r != DecimalParse::kOk && params_ && !polar && expr_starts_computed(s_, n_, start + 1)) {
+    pos_ = start + 1;
+    GValue g;
+    const GcodeError ee = expr_read_value(s_, n_, &pos_, *params_, &g, d);
+    if (ee != GcodeError::kOk) return ee;
+    w->letter = c;
+    w->value = gvalue_to_decimal(g);
+    w->col = static_cast<uint16_t>(start + 1);
+    return GcodeError::kOk;
+  }
   size_t i = start + 1;
   while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
   // A value LinuxCNC would compute: X[1+2], X#1.

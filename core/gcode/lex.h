@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "core/gcode/error.h"
+#include "core/gcode/params.h"
 #include "core/math/decimal.h"
 
 namespace dexmill {
@@ -30,6 +31,17 @@ class GcodeScanner {
 
   // Skips white space and comments; true if only those remain.
   [[nodiscard]] bool at_end();
+  // With parameters (issue 21): a word's value may be computed (#1, [1+2],
+  // SIN[30]) from them, '#' at a word's start is an assignment (w->letter
+  // '#', the position left at it for the block reader), and message
+  // comments (DEBUG, PRINT, MSG) are noted. Null: those are refused as not
+  // supported (the reader's uses that run no program).
+  void set_params(const ParamStore* p) { params_ = p; }
+  // The last message comment met: kind 0 none, 1 DEBUG, 2 PRINT, 3 MSG; its
+  // text after the comma.
+  uint8_t message_kind() const { return msg_kind_; }
+  size_t message_at() const { return msg_at_; }
+  size_t message_len() const { return msg_len_; }
   // Current byte offset (for the block reader's special line forms).
   size_t pos() const { return pos_; }
   void set_pos(size_t p) { pos_ = p; }
@@ -39,12 +51,16 @@ class GcodeScanner {
 
  private:
   GcodeError skip_blank_and_comments(GcodeDiag* d);
+  void note_message(size_t from, size_t to);
 
   const char* s_;
   size_t n_;
   size_t pos_ = 0;
   GcodeError pending_ = GcodeError::kOk;
   uint16_t pending_col_ = 0;
+  const ParamStore* params_ = nullptr;
+  uint8_t msg_kind_ = 0;
+  size_t msg_at_ = 0, msg_len_ = 0;
 };
 
 // A lenient walk over a line that may not read (for telling which parts of

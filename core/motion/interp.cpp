@@ -216,6 +216,11 @@ void Interp::reset() {
   any_failed_ = false;
   suspect_ = 0;
   warned_after_end_ = false;
+  if (ParamStore* p = options_.params) {
+    params_clear(p);
+    p->system.read = &Interp::read_param;
+    p->system.ctx = this;
+  }
 }
 
 void Interp::emit(CanonRecord* r) {
@@ -240,7 +245,8 @@ void Interp::warn(GcodeError code, uint32_t line, uint16_t col, const char* word
 GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, GcodeDiag* diag) {
   GcodeBlock block;
   GcodeLineKind kind;
-  GcodeError e = gcode_read_block(text, len, line, &block, &kind, diag);
+  // Nothing after the end is read, not even an assignment.
+  GcodeError e = gcode_read_block(text, len, line, &block, &kind, diag, state_.ended ? nullptr : options_.params);
   diag->follow_on = false;
   if (state_.ended) {
     // RS274/NGC: nothing after the end is read. Say so once if it looks like code.
@@ -296,6 +302,8 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
   }
   run.commit();
   suspect_ = suspect_after(suspect_, set);
+  if (block.message_kind != GcodeMessage::kNone && options_.messages)
+    options_.messages->message(line, static_cast<int>(block.message_kind), block.message);
   return GcodeError::kOk;
 }
 

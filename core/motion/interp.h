@@ -30,6 +30,7 @@
 
 #include "core/gcode/block.h"
 #include "core/gcode/error.h"
+#include "core/gcode/params.h"
 #include "core/math/decimal.h"
 #include "core/motion/canon.h"
 #include "core/point.h"
@@ -55,6 +56,11 @@ struct InterpOptions {
   bool inch = false;                  // units before any G20/G21
   const ToolTable* tools = nullptr;   // for G43 H; null: lengths are 0
   GcodeDiagSink* warnings = nullptr;  // null: warnings are dropped
+  // Parameters and expressions (issue 21): caller memory (about 57 KB,
+  // core/gcode/params.h), cleared at reset. Null: a program that uses them
+  // is refused as not supported (a panel without the memory).
+  ParamStore* params = nullptr;
+  GcodeMessageSink* messages = nullptr;  // DEBUG/PRINT/MSG comments; null: dropped
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.
@@ -127,6 +133,8 @@ class Interp {
  private:
   void emit(CanonRecord* r);
   void warn(GcodeError code, uint32_t line, uint16_t col, const char* word);
+  // The interpreter's own parameters (core/motion/interp_params.cpp).
+  static bool read_param(const void* ctx, int32_t n, const char* name, GValue* out);
 
   CanonSink* sink_;
   InterpOptions options_;
