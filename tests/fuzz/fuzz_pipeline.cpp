@@ -271,6 +271,10 @@ void run(const PipelineHeader& h, const char* text, size_t n) {
   iopt.tools = have_table ? &table : nullptr;
   NoWarnings warnings;
   iopt.warnings = &warnings;
+  // Parameters and expressions (issue 21) are read too: the fuzzer feeds
+  // them (gcode.dict: #, [ ], functions, operators).
+  static ParamStore params;
+  iopt.params = &params;
   const int64_t sagitta_nm = max_of<int64_t>(geo.pitch_nm / 4, 1000);
   static std::vector<PathSegment> path;
   path.clear();
