@@ -419,6 +419,7 @@ int run_job(RunOptions o) {
     InterpOptions opt;
     opt.inch = o.inch;
     opt.warnings = &scan_msgs;
+    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     opt.tools = have_table ? &table : nullptr;
     Interp interp(&scan, opt);
     scan.interp = &interp;
@@ -708,6 +709,7 @@ int run_job(RunOptions o) {
     InterpOptions opt;
     opt.inch = o.inch;
     opt.tools = have_table ? &table : nullptr;
+    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     Interp interp(&cut, opt);
     cut.interp = &interp;
     if (!o.material.empty()) cut.material = &material;
