@@ -33,7 +33,7 @@ enum GGroup : uint8_t {
   kGCoordSystem = 10, // G54..G59.3 (group 12)
   kGPathControl = 11, // G61 G61.1 G64 (group 13)
   kGSpindleMode = 12, // G97 (group 14)
-  kGLathe = 13,       // G7 G8 (group 15: lathe diameter/radius mode; read, no effect on a mill)
+  kGLathe = 13,       // G7 G8 (group 15: lathe diameter/radius mode; G7 halves X words, as LinuxCNC)
   kGGroupCount = 14,
 };
 
