@@ -168,3 +168,29 @@ TEST(cli_check_reports_each_root_error_once) {
   CHECK(has(r.out, ":1:257: error: line is longer than 256 characters\n"));
   CHECK(has(r.out, ": 1 more error(s) not shown"));
 }
+
+TEST(cli_default_feed) {
+  if (!CHECK(t::dexmill_binary() != nullptr)) return;
+  // A grbl-style program that cuts before any F (issue 21).
+  const char* prog = "G21\nG0 X1\nG1 X2\nG1 X3\nM2\n";
+  Result r = sh(std::string("path ") + kIn, prog);
+  CHECK_EQ(r.code, 1);
+  CHECK(has(r.out, ":3:1: error: G1: feed move with zero feed rate"));
+  r = sh(std::string("path --default-feed 800 ") + kIn, prog);
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, ":3:1: warning: G1: feed move with no F in force: it and any later one take --default-feed "
+                   "(800.0000 mm/min)\n"));
+  CHECK(has(r.out, "feed 3.00000 0.00000 0.00000\n"));
+  r = sh(std::string("check --default-feed 800 ") + kIn, prog);
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "warning: G1: feed move with no F"));
+  r = sh(std::string("run ") + kIn + " --default-feed 800 --stock 0,-5,-5,10,5,0 --grid 16x16 -q", prog);
+  CHECK_EQ(r.code, 0);
+  for (const char* bad : {"0", "-5", "fast", "1000001"}) {
+    r = sh(std::string("path --default-feed ") + bad + " " + kIn, prog);
+    CHECK_EQ(r.code, 2);
+    CHECK(has(r.out, "--default-feed needs a feed in mm/min"));
+  }
+  r = sh(std::string("run --default-feed x ") + kIn);
+  CHECK_EQ(r.code, 2);
+}

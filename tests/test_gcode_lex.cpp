@@ -30,8 +30,10 @@ TEST(lex_case_spaces_leading_zeros) {
   CHECK_EQ(read("G 1 X 1 0", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.g[kGMotion], 10);
   CHECK_EQ(b.val('X').mant, 10);
-  CHECK_EQ(read("G38.2 Z-1 F10", &b, &k, &d), GcodeError::kUnsupportedGcode);
-  CHECK_EQ(std::strcmp(d.word, "G38.2"), 0);
+  CHECK_EQ(read("G38.2 Z-1 F10", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(b.g[kGMotion], 382);
+  CHECK_EQ(read("G33 Z-1 K1", &b, &k, &d), GcodeError::kUnsupportedGcode);
+  CHECK_EQ(std::strcmp(d.word, "G33"), 0);
 }
 
 TEST(lex_comments_anywhere) {

@@ -294,8 +294,12 @@ TEST(interp_large_numbers_are_errors) {
   CHECK_EQ(run("G21 F1\nG0 X1\nG2 X1 I99999", &rec, &d), GcodeError::kOk);  // 100 km radius? no: 99.999 m
   CHECK_EQ(run("G21 F1\nG2 X1 I100001", &rec, &d), GcodeError::kNumberTooLarge);
   CHECK_EQ(run("G21 F1\nG81 X1 Z-1 R1 L1000001", &rec, &d), GcodeError::kNumberTooLarge);
-  CHECK_EQ(run("G21 F1\nG83 X1 Z-9000 R1 Q0.000001", &rec, &d), GcodeError::kNumberTooLarge);
-  CHECK_EQ(run("G21\nS1000001 M3", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ(run("G21 F1\nG83 X1 Z-9000 R1 Q0.000001", &rec, &d), GcodeError::kCyclePeckCount);
+  // F and S: LinuxCNC takes any; dexmill up to 1e9 (a warning above 1e6).
+  CHECK_EQ(run("G21\nS1000000000 M3", &rec, &d), GcodeError::kOk);
+  CHECK_EQ(run("G21\nS1000000001 M3", &rec, &d), GcodeError::kNumberTooLarge);
+  CHECK_EQ(run("G20\nG1 X1 F1000000000", &rec, &d), GcodeError::kOk);
+  CHECK_EQ(run("G21\nG1 X1 F1000000001", &rec, &d), GcodeError::kNumberTooLarge);
   CHECK_EQ(run("G21\nT2147483648", &rec, &d), GcodeError::kNumberTooLarge);
   CHECK_EQ(run("G21\nG4 P1000001", &rec, &d), GcodeError::kNumberTooLarge);
   CHECK_EQ(run("G21 F1\nG0 X1\nG2 X1 I-1 P10001", &rec, &d), GcodeError::kNumberTooLarge);

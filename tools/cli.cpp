@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "core/math/decimal.h"
 #include "platform/process.h"
 
 namespace dexmill {
@@ -56,6 +57,16 @@ bool parse_units(const char* value, bool* inch) {
   if (!std::strcmp(value, "mm")) *inch = false;
   else if (!std::strcmp(value, "inch")) *inch = true;
   else return fail(kExitUsage, "--units must be mm or inch, not '%s'", value), false;
+  return true;
+}
+
+bool parse_default_feed(const char* value, int64_t* nm_per_min) {
+  Decimal d;
+  std::size_t pos = 0, n = std::strlen(value);
+  const bool number = n && decimal_parse(value, n, &pos, &d) == DecimalParse::kOk && pos == n;
+  *nm_per_min = number ? decimal_to_nm(d, false) : 0;
+  if (*nm_per_min < 1000 || *nm_per_min > 1000000 * 1000000LL)
+    return fail(kExitUsage, "--default-feed needs a feed in mm/min, from 0.001 to 1000000, not '%s'", value), false;
   return true;
 }
 

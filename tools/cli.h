@@ -2,6 +2,8 @@
 #ifndef DEXMILL_TOOLS_CLI_H
 #define DEXMILL_TOOLS_CLI_H
 
+#include <stdint.h>
+
 namespace dexmill {
 namespace cli {
 
@@ -22,6 +24,11 @@ int cmd_zig(int argc, char** argv);
 // The value of --units: "mm" or "inch" into *inch; else prints the usage
 // error and returns false (the caller exits kExitUsage).
 bool parse_units(const char* value, bool* inch);
+
+// The value of --default-feed, mm/min, into *nm_per_min (nm/min): the
+// controller's feed for moves made with no F in force. Else prints the
+// usage error and returns false.
+bool parse_default_feed(const char* value, int64_t* nm_per_min);
 
 // A non-option argument of `dexmill CMD`: the one input file, into *file.
 // Returns kExitOk, or prints the usage error for an unknown option or a

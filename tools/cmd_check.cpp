@@ -21,14 +21,16 @@ namespace {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N] [--follow-ons]\n\n"
+               "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N] [--follow-ons]\n"
+               "                            [--default-feed MM/MIN]\n\n"
                "Reads and interprets the program as `path` does, reporting every error\n"
                "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
                "error is skipped and changes nothing; errors that may only follow from\n"
                "an earlier one (a G1 after the bad line that set F) are counted, not\n"
                "shown. Exit 0 clean, 1 with errors.\n"
                "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
-               "--follow-ons: show those errors too, marked (they count towards N).\n\n"
+               "--follow-ons: show those errors too, marked (they count towards N).\n"
+               "--default-feed: the controller's feed for moves made with no F in force.\n\n"
                "       dexmill check --simulate FILE [run options]\n\n"
                "Cuts the program as `run` does with the safety checks (all unless --check\n"
                "names some) and, with --design, the gouge watch; writes no image. The findings\n"
@@ -62,6 +64,7 @@ int cmd_check(int argc, char** argv) {
   bool inch = false;
   long max_errors = 100;
   bool follow_ons = false;
+  int64_t default_feed = 0;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -72,6 +75,11 @@ int cmd_check(int argc, char** argv) {
       if (i + 1 >= argc) return fail(kExitUsage, "--units needs a value");
       const char* v = argv[++i];
       if (!parse_units(v, &inch)) return kExitUsage;
+      continue;
+    }
+    if (!std::strcmp(a, "--default-feed")) {
+      if (i + 1 >= argc) return fail(kExitUsage, "--default-feed needs a value");
+      if (!parse_default_feed(argv[++i], &default_feed)) return kExitUsage;
       continue;
     }
     if (!std::strcmp(a, "--follow-ons")) {
@@ -101,6 +109,7 @@ int cmd_check(int argc, char** argv) {
   opt.warnings = &msgs;
   opt.params = params.get();
   opt.messages = &notes;
+  opt.default_feed_nm_per_min = default_feed;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);

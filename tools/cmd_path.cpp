@@ -69,11 +69,13 @@ class PathPrinter final : public CanonSink {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch]\n\n"
+               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n\n"
                "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
                "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
                "<= --chord mm (default 0.001). --units: units before any G20/G21 (mm).\n"
+               "--default-feed: the controller's feed for moves made with no F in force\n"
+               "(warned once; without it such a move is an error).\n"
                "Stops at the first error (exit 1).\n");
 }
 
@@ -83,17 +85,22 @@ int cmd_path(int argc, char** argv) {
   const char* file = nullptr;
   int64_t chord_nm = 1000;
   bool inch = false;
+  int64_t default_feed = 0;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
       return kExitOk;
     }
-    if (!std::strcmp(a, "--chord") || !std::strcmp(a, "--units")) {
+    if (!std::strcmp(a, "--chord") || !std::strcmp(a, "--units") || !std::strcmp(a, "--default-feed")) {
       if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
       const char* v = argv[++i];
       if (!std::strcmp(a, "--units")) {
         if (!parse_units(v, &inch)) return kExitUsage;
+        continue;
+      }
+      if (!std::strcmp(a, "--default-feed")) {
+        if (!parse_default_feed(v, &default_feed)) return kExitUsage;
         continue;
       }
       Decimal d;
@@ -123,6 +130,7 @@ int cmd_path(int argc, char** argv) {
   opt.warnings = &msgs;
   opt.params = params.get();
   opt.messages = &notes;
+  opt.default_feed_nm_per_min = default_feed;
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -421,6 +421,7 @@ int run_job(RunOptions o) {
     InterpOptions opt;
     opt.inch = o.inch;
     opt.warnings = &scan_msgs;
+    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     opt.tools = have_table ? &table : nullptr;
     opt.params = params.get();
     opt.messages = &notes;
@@ -716,6 +717,7 @@ int run_job(RunOptions o) {
     opt.inch = o.inch;
     opt.tools = have_table ? &table : nullptr;
     opt.params = params.get();
+    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     Interp interp(&cut, opt);
     cut.interp = &interp;
     if (!o.material.empty()) cut.material = &material;

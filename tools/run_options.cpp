@@ -89,6 +89,8 @@ void run_usage(std::FILE* f) {
                "  --units mm|inch            units of programs that never say G20/G21 (default mm)\n"
                "  --mode sweep|stamp         exact swept envelopes or instances of motion (default sweep)\n"
                "  --rapid MM/MIN             rapid rate for the time estimate (default 5000)\n"
+               "  --default-feed MM/MIN      the controller's feed for moves made with no F in force\n"
+               "                             (warned once; default: none, such a move is an error)\n"
                "  --accel MM/S2              time estimate with every move speeding up from rest and\n"
                "                             slowing to rest at this acceleration (default: none)\n"
                "  --image FILE.png|FILE.ppm  final frame (the extension picks the format; - is stdout)\n"
@@ -158,7 +160,7 @@ bool run_draws(const RunOptions& o) {
 
 bool run_option_takes_value(const char* a) {
   static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
-                                           "--mode", "--rapid", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
+                                           "--mode", "--rapid", "--default-feed", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                            "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                            "--fbdev", "--hold", "--speed", "--design", "--design-z",
                                            "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material", "--demo"};
@@ -230,6 +232,8 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!parse_scaled(v, kNmPerMm, &o->rapid_nm_per_min) || o->rapid_nm_per_min < kNmPerMm ||
           o->rapid_nm_per_min > 1000000 * kNmPerMm)
         return fail(kExitUsage, "--rapid needs the machine's rapid rate in mm/min, from 1 to 1000000, not '%s'", v);
+    } else if (name == "--default-feed") {
+      if (!parse_default_feed(v, &o->default_feed_nm_per_min)) return kExitUsage;
     } else if (name == "--accel") {
       if (!parse_scaled(v, kNmPerMm, &o->accel_nm_per_s2) || o->accel_nm_per_s2 < kNmPerMm ||
           o->accel_nm_per_s2 > 1000000 * kNmPerMm)

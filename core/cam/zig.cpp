@@ -156,7 +156,7 @@ void window_maxima(const DesignGrid& d, const ZigTool& t, bool along_y, int32_t 
     for (int32_t u = 0; u < len; ++u) pre[u] = u % w == 0 ? top(u) : max_of(pre[u - 1], top(u));
     for (int32_t u = len - 1; u >= 0; --u) suf[u] = (u % w == w - 1 || u == len - 1) ? top(u) : max_of(suf[u + 1], top(u));
     for (int32_t u = 0; u < len; ++u) {
-      const int32_t lo = max_of(u - K - 1, 0), hi = min_of(u + K + 1, len - 1);
+      const int32_t lo = max_of<int32_t>(u - K - 1, 0), hi = min_of<int32_t>(u + K + 1, len - 1);
       // [lo, hi] spans at most two blocks: the suffix of lo's and the
       // prefix of hi's, exactly; within one block the suffix reaches past
       // hi, an upper bound, which is all the pruning needs.
@@ -173,14 +173,14 @@ void zig_interval_need(const DesignGrid& d, const ZigTool& t, bool along_y, int3
 }
 
 int32_t zig_stripe_count(const DesignGrid& d, const ZigOptions& o) {
-  return ladder_count(across_n(d, o), max_of(o.stepover_dex, 1));
+  return ladder_count(across_n(d, o), max_of<int32_t>(o.stepover_dex, 1));
 }
 int32_t zig_stripe_row(const DesignGrid& d, const ZigOptions& o, int32_t s) {
-  return ladder_at(across_n(d, o), max_of(o.stepover_dex, 1), s);
+  return ladder_at(across_n(d, o), max_of<int32_t>(o.stepover_dex, 1), s);
 }
-int32_t zig_positions(const DesignGrid& d, const ZigOptions& o) { return ladder_count(along_n(d, o), max_of(o.step_dex, 1)); }
+int32_t zig_positions(const DesignGrid& d, const ZigOptions& o) { return ladder_count(along_n(d, o), max_of<int32_t>(o.step_dex, 1)); }
 int32_t zig_position_u(const DesignGrid& d, const ZigOptions& o, int32_t k) {
-  return ladder_at(along_n(d, o), max_of(o.step_dex, 1), k);
+  return ladder_at(along_n(d, o), max_of<int32_t>(o.step_dex, 1), k);
 }
 
 size_t zig_stripe_scratch(const DesignGrid& d, const ZigTool& t, const ZigOptions& o) {

@@ -27,8 +27,8 @@ constexpr GInfo kGCodes[] = {
     {20, kGMotion, Support::kYes},         {30, kGMotion, Support::kYes},
     {40, kGNonModal, Support::kYes},       {50, kGMotion, Support::kUnsupported},
     {51, kGMotion, Support::kUnsupported}, {52, kGMotion, Support::kUnsupported},
-    {53, kGMotion, Support::kUnsupported}, {70, kGNonModal, Support::kUnsupported},
-    {80, kGNonModal, Support::kUnsupported}, {100, kGNonModal, Support::kYes},
+    {53, kGMotion, Support::kUnsupported}, {70, kGLathe, Support::kYes},
+    {80, kGLathe, Support::kYes}, {100, kGNonModal, Support::kYes},
     {170, kGPlane, Support::kYes},         {171, kGPlane, Support::kUnsupported},
     {180, kGPlane, Support::kYes},         {181, kGPlane, Support::kUnsupported},
     {190, kGPlane, Support::kYes},         {191, kGPlane, Support::kUnsupported},
@@ -36,8 +36,8 @@ constexpr GInfo kGCodes[] = {
     {280, kGNonModal, Support::kYes},      {281, kGNonModal, Support::kYes},
     {300, kGNonModal, Support::kYes},      {301, kGNonModal, Support::kYes},
     {330, kGMotion, Support::kUnsupported}, {331, kGMotion, Support::kUnsupported},
-    {382, kGMotion, Support::kUnsupported}, {383, kGMotion, Support::kUnsupported},
-    {384, kGMotion, Support::kUnsupported}, {385, kGMotion, Support::kUnsupported},
+    {382, kGMotion, Support::kYes},        {383, kGMotion, Support::kYes},
+    {384, kGMotion, Support::kYes},        {385, kGMotion, Support::kYes},
     {400, kGCutterComp, Support::kYes},    {410, kGCutterComp, Support::kCutterComp},
     {411, kGCutterComp, Support::kCutterComp}, {420, kGCutterComp, Support::kCutterComp},
     {421, kGCutterComp, Support::kCutterComp}, {430, kGToolLength, Support::kYes},
@@ -50,12 +50,12 @@ constexpr GInfo kGCodes[] = {
     {592, kGCoordSystem, Support::kYes},   {593, kGCoordSystem, Support::kYes},
     {610, kGPathControl, Support::kYes},   {611, kGPathControl, Support::kYes},
     {640, kGPathControl, Support::kYes},   {730, kGMotion, Support::kYes},
-    {740, kGMotion, Support::kUnsupported}, {760, kGMotion, Support::kUnsupported},
+    {740, kGMotion, Support::kYes}, {760, kGMotion, Support::kUnsupported},
     {800, kGMotion, Support::kYes},        {810, kGMotion, Support::kYes},
     {820, kGMotion, Support::kYes},        {830, kGMotion, Support::kYes},
-    {840, kGMotion, Support::kUnsupported}, {850, kGMotion, Support::kYes},
-    {860, kGMotion, Support::kUnsupported}, {870, kGMotion, Support::kUnsupported},
-    {880, kGMotion, Support::kUnsupported}, {890, kGMotion, Support::kYes},
+    {840, kGMotion, Support::kYes}, {850, kGMotion, Support::kYes},
+    {860, kGMotion, Support::kYes},        {870, kGMotion, Support::kYes},
+    {880, kGMotion, Support::kYes}, {890, kGMotion, Support::kYes},
     {900, kGDistance, Support::kYes},      {901, kGArcDistance, Support::kYes},
     {910, kGDistance, Support::kYes},      {911, kGArcDistance, Support::kYes},
     {920, kGNonModal, Support::kYes},      {921, kGNonModal, Support::kYes},
@@ -88,7 +88,11 @@ MKind classify_m(int64_t tenths, uint8_t* group) {
     case 70: case 71: case 72: case 73: *group = kMUser; return MKind::kUnsupported;
     default: break;
   }
-  if (m >= 100 && m <= 199) {
+  // M100-M199 are LinuxCNC's user M codes (a file each); any other M code
+  // below 200 that it does not define itself a machine may define by a
+  // remap (an accessory's M code, Centroid's M25): both read, then skipped
+  // with a warning. M98/M99 (subroutines) are not such codes.
+  if (m <= 199 && m != 98 && m != 99) {
     *group = kMUser;
     return MKind::kIgnore;
   }

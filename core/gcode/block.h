@@ -41,7 +41,8 @@ enum GGroup : uint8_t {
   kGCoordSystem = 10, // G54..G59.3 (group 12)
   kGPathControl = 11, // G61 G61.1 G64 (group 13)
   kGSpindleMode = 12, // G97 (group 14)
-  kGGroupCount = 13,
+  kGLathe = 13,       // G7 G8 (group 15: lathe diameter/radius mode; G7 halves X words, as LinuxCNC)
+  kGGroupCount = 14,
 };
 
 // Groups of M codes we keep apart (LinuxCNC numbering in comments).
@@ -52,7 +53,7 @@ enum MGroup : uint8_t {
   kMCoolant,       // group 8: M7 M8 M9 (M7 and M8 may share a block)
   kMOverride,      // group 9: M48..M53
   kMIo,            // group 5: M62..M68
-  kMUser,          // group 10: M100..M199
+  kMUser,          // group 10: M100..M199, and other M codes a machine may remap (M25)
   kMGroupCount,
 };
 

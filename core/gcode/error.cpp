@@ -9,7 +9,7 @@ namespace dexmill {
 const char* gcode_error_template(GcodeError e) {
   switch (e) {
     case GcodeError::kOk: return "no error";
-    case GcodeError::kLineTooLong: return "line is longer than {a} characters";
+    case GcodeError::kLineTooLong: return "line is longer than {n} characters";
     case GcodeError::kBadCharacter: return "unexpected character '{w}' (not part of any G-code word)";
     case GcodeError::kUnknownWord: return "unknown word starting with '{w}'";
     case GcodeError::kMissingNumber: return "'{w}' is not followed by a number";
@@ -79,6 +79,15 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kG10PNeeded: return "{w}: G10 L2/L20 needs a P word";
     case GcodeError::kLineNumberTooLarge: return "line number {w} is too large";
     case GcodeError::kG53Incremental: return "{w}: G53 cannot be used in incremental distance mode (G91)";
+    case GcodeError::kCycleNoIjk:
+      return "{w}: I, J and K words needed (the offset out of the hole's axis, and the top of the back bore)";
+    case GcodeError::kCycleSpindleStopped: return "{w}: the spindle is not turning (M3 or M4 first)";
+    case GcodeError::kCycleSpindleWrongWay:
+      return "{w}: the spindle turns the wrong way (G84 taps with M3 clockwise, G74 with M4)";
+    case GcodeError::kCyclePeckCount:
+      return "{w}: Q makes {n} pecks down {b} mm, more than the 1000000 a block may make (is Q in the right units?)";
+    case GcodeError::kProbeNoAxis: return "{w}: probe move without X, Y or Z";
+    case GcodeError::kProbeTooClose: return "{w}: the probe move ends where it starts";
     case GcodeError::kUnsupportedOword: return "o-word subroutines and control flow ('{w}') are not supported";
     case GcodeError::kUnsupportedParameter: return "# parameters are not supported";
     case GcodeError::kUnsupportedExpression: return "[ ] expressions are not supported";
@@ -96,6 +105,27 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kWarnNoClosingPercent: return "the file ends without the % that closes its opening %: was it cut short?";
     case GcodeError::kWarnEmptyProgram: return "the program is empty (no G-code in it)";
     case GcodeError::kWarnNoMotion: return "the program makes no move";
+    case GcodeError::kWarnDefaultFeed:
+      return "{w}: feed move with no F in force: it and any later one take --default-feed ({a} mm/min)";
+    case GcodeError::kWarnFastFeed:
+      return "{w}: feed above 1000000 mm/min, taken as written (the machine clamps it to its maximum velocity); "
+             "the time estimate counts it as 1000000 mm/min";
+    case GcodeError::kWarnFastSpindle: return "{w}: spindle speed above 1000000 rpm, taken as written";
+    case GcodeError::kWarnProbe:
+      return "{w}: probe moves are simulated to their end points; the machine stops where the probe touches";
+    case GcodeError::kWarnTapPlane:
+      return "{w} in G18/G19: LinuxCNC 2.9 taps to a point with the plane's axes swapped (its "
+             "convert_cycle_g74_g84); simulated as it moves";
+    case GcodeError::kWarnCycleLevelMoved:
+      return "{w}: the offsets changed during this canned-cycle series: G98 returns to the initial level "
+             "in program coordinates, as LinuxCNC does, now {a} mm in the machine (was {b} mm)";
+    case GcodeError::kWarnMcodeMachine:
+      return "{w} is no LinuxCNC M code (a machine may define it, by a remap): skipped, what it does is not simulated";
+    case GcodeError::kWarnDiameterMode:
+      return "{w}: lathe diameter mode: X words are diameters until G8 (LinuxCNC halves them, on a mill too)";
+    case GcodeError::kWarnManualRetract:
+      return "{w}: the operator retracts the tool by hand at the program stop; the next move starts from the "
+             "bottom, as in LinuxCNC";
   }
   return "unknown error";
 }
@@ -136,7 +166,7 @@ size_t gcode_format_message(const GcodeDiag& d, char* buf, size_t n) {
   for (; *t; ++t) {
     if (t[0] == '{' && t[1] && t[2] == '}') {
       if (t[1] == 'w') o.puts(d.word);
-      else if (t[1] == 'a' && d.code == GcodeError::kLineTooLong) {
+      else if (t[1] == 'n') {
         char digits[24];
         int k = 0;
         uint64_t v = abs_u64(d.a_nm);

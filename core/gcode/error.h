@@ -87,6 +87,12 @@ enum class GcodeError : uint8_t {
   kG10PNeeded = 71,
   kLineNumberTooLarge = 72,
   kG53Incremental = 73,
+  kCycleNoIjk = 74,
+  kCycleSpindleStopped = 75,
+  kCycleSpindleWrongWay = 76,
+  kCyclePeckCount = 77,
+  kProbeNoAxis = 78,
+  kProbeTooClose = 79,
   // -- recognised but not supported (100..139)
   kUnsupportedOword = 100,
   kUnsupportedParameter = 101,
@@ -106,6 +112,15 @@ enum class GcodeError : uint8_t {
   kWarnNoClosingPercent = 145,
   kWarnEmptyProgram = 146,
   kWarnNoMotion = 147,
+  kWarnDefaultFeed = 148,
+  kWarnFastFeed = 149,
+  kWarnFastSpindle = 150,
+  kWarnProbe = 151,
+  kWarnTapPlane = 152,
+  kWarnCycleLevelMoved = 153,
+  kWarnMcodeMachine = 154,
+  kWarnManualRetract = 155,
+  kWarnDiameterMode = 156,
 };
 
 // Stable number of an error, for messages and tests.
@@ -126,7 +141,8 @@ struct GcodeDiag {
 };
 
 // The template of a message: `{w}` stands for diag.word, `{a}`/`{b}` for
-// a_nm/b_nm printed in mm with 4 decimals. Never null.
+// a_nm/b_nm printed in mm with 4 decimals, `{n}` for a_nm as a whole
+// number (a count). Never null.
 const char* gcode_error_template(GcodeError e);
 
 // Writes the message of `d` (without file, line or column) into buf, NUL

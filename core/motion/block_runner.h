@@ -5,7 +5,7 @@
 // nothing (STYLE.md habit 3). The steps live by phase, after LinuxCNC's
 // interp_convert: interp.cpp (order of execution, unused words, commit),
 // interp_modes.cpp (modal groups, G4, G10/G28/G30/G92), interp_moves.cpp
-// (G0/G1, G2/G3, canned cycles).
+// (G0/G1, G2/G3, G38.x), interp_cycles.cpp (canned cycles).
 #ifndef DEXMILL_CORE_MOTION_BLOCK_RUNNER_H
 #define DEXMILL_CORE_MOTION_BLOCK_RUNNER_H
 
@@ -20,8 +20,13 @@ namespace dexmill {
 namespace interp_detail {
 
 
-constexpr int64_t kMaxFeedUnitsPerMin = 1000000;
-constexpr int64_t kMaxSpindleRpm = 1000000;
+// F and S: LinuxCNC takes any value (the machine clamps to its maximum
+// velocity); these bounds only keep the arithmetic in range. Above
+// kFastFeedNmPerMin / kFastSpindleRpm a program gets one warning each.
+constexpr int64_t kMaxFeedUnitsPerMin = 1000000000;
+constexpr int64_t kMaxSpindleRpm = 1000000000;
+constexpr int64_t kFastFeedNmPerMin = 1000000LL * 1000000;  // 1e6 mm/min
+constexpr int64_t kFastSpindleRpm = 1000000;
 constexpr int64_t kMaxDwellS = 1000000;
 constexpr int64_t kMaxRepeats = 1000000;
 constexpr int64_t kMaxTurns = 10000;
@@ -30,10 +35,25 @@ constexpr int64_t kMaxCycleMoves = 10000000;
 
 inline int64_t& axis_ref(PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
 inline int64_t axis_val(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
-inline bool is_cycle(int m) { return m == 730 || m == 810 || m == 820 || m == 830 || m == 850 || m == 890; }
+inline bool is_cycle(int m) { return m == 730 || m == 740 || (m >= 810 && m <= 890 && m % 10 == 0); }
+inline bool is_probe(int m) { return m >= 382 && m <= 385; }
 // |v|, saturating: INT64_MIN (a saturated huge number) stays beyond every limit.
 inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : (v < 0 ? -v : v); }
 constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
+// Where the tool is (InterpState::stray).
+inline PointNm tool_at(const InterpState& s) {
+  return PointNm{s.pos.x_nm + s.stray.x_nm, s.pos.y_nm + s.stray.y_nm, s.pos.z_nm + s.stray.z_nm};
+}
+// Warnings a program gets once (Interp::warned_once_).
+enum WarnOnce : uint8_t {
+  kOnceDefaultFeed = 1 << 0,
+  kOnceFastFeed = 1 << 1,
+  kOnceFastSpindle = 1 << 2,
+  kOnceProbe = 1 << 3,
+  kOnceTapPlane = 1 << 4,
+  kOnceManualRetract = 1 << 5,
+  kOnceDiameter = 1 << 6,
+};
 inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
 inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
 inline int plane_axis_c(Plane p) { return p == Plane::kXY ? 2 : p == Plane::kZX ? 1 : 0; }
@@ -93,6 +113,15 @@ struct Plan {
   int16_t stop = -1;  // M0/M1/M2/M30/M60 in tenths
 };
 
+// A canned cycle's words, from the block or kept from the last one.
+struct CycleWords {
+  int64_t r_raw, z_raw;  // R and the plane axis's word as written, nm
+  int64_t repeats;       // L
+  int64_t q;             // G73/G83 peck, nm
+  int64_t p_ms;          // dwell
+  int64_t ijk[3];        // G87's I, J, K, nm
+};
+
 // Checks one block against a copy of the state; commit() applies it.
 struct BlockRunner {
   Interp& in;
@@ -123,10 +152,12 @@ struct BlockRunner {
     return fail(e, col, w);
   }
 
-  // A length word in the block's units, range-checked against `limit`.
+  // A length word in the block's units, range-checked against `limit`
+  // (an X word halved in G7, as LinuxCNC reads it).
   GcodeError length(char letter, int64_t* nm, int64_t limit = kGcodeMaxCoordNm) {
     const Decimal& v = b.val(letter);
     *nm = decimal_to_nm(v, nx.inch);
+    if (letter == 'X' && nx.diameter_x) *nm = div_round(*nm, 2);  // G7: a diameter
     if (abs64(*nm) > limit) return fail_letter(GcodeError::kNumberTooLarge, letter);
     return GcodeError::kOk;
   }
@@ -151,6 +182,8 @@ struct BlockRunner {
     return axis_val(nx.work_offset[nx.coord_system], axis) + axis_val(nx.g92, axis);
   }
   uint16_t motion_col() const { return b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.first_col; }
+  // A warning the program gets once (WarnOnce), quoting `word` and a length.
+  void warn_once(uint8_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm = 0);
 
   GcodeError run();
   GcodeError run_modes();
@@ -159,6 +192,14 @@ struct BlockRunner {
   GcodeError run_straight(int motion, bool g53);
   GcodeError run_arc(int motion);
   GcodeError run_cycle(int motion);
+  GcodeError cycle_words(int motion, const char* w, CycleWords* out);
+  GcodeError cycle_spindle(int motion, const char* w);
+  GcodeError cycle_check_range(const char* w);
+  void cycle_warnings(int motion, const char* w);
+  GcodeError run_probe(int motion);
+  // A feed move needs a feed rate: F in force, else --default-feed (one
+  // warning, at the first such move), else kFeedZero.
+  GcodeError need_feed(uint16_t col, const char* word);
   GcodeError run_home(int g0);
   GcodeError check_unused(int g0, int motion);
   void commit();

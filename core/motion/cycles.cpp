@@ -15,6 +15,37 @@ int64_t cycle_peck_count(int64_t r_c, int64_t bottom_c, int64_t q_nm) {
 
 namespace {
 
+// The tapping feeds of G74/G84. LinuxCNC 2.9's convert_cycle_g74_g84 hands
+// cycle_feed the coordinates in the order of the other vertical plane when
+// G18 or G19 is in force, so the tap goes to the point whose plane
+// coordinates are (a, b, c) in G19's axes (in G18) or G18's (in G19). That
+// is the move its canonical output gives and the machine makes; dexmill
+// follows it (and warns, interp_moves.cpp).
+PointNm cycle_tap_point(Plane pl, int64_t a, int64_t b, int64_t c) {
+  const Plane used = pl == Plane::kZX ? Plane::kYZ : pl == Plane::kYZ ? Plane::kZX : Plane::kXY;
+  return plane_point(used, a, b, c);
+}
+
+// G87 back boring (convert_cycle_g87): in beside the hole with the spindle
+// stopped, under the part, over to the hole's axis, feed up to the top of
+// the counterbore and back, then out the same way.
+void back_bore(const CyclePlan& p, int64_t a, int64_t b, CycleOut* out) {
+  auto at = [&](int64_t pa, int64_t pb, int64_t c) { return plane_point(p.plane, pa, pb, c); };
+  const int64_t oa = a + p.off_a, ob = b + p.off_b;
+  out->move(CanonKind::kTraverse, at(oa, ob, p.r_c));
+  out->spindle(0);  // LinuxCNC also orients the spindle here (ORIENT_SPINDLE)
+  out->move(CanonKind::kTraverse, at(oa, ob, p.bottom_c));
+  out->move(CanonKind::kTraverse, at(a, b, p.bottom_c));
+  out->spindle(p.spindle_rpm);
+  out->move(CanonKind::kFeed, at(a, b, p.middle_c));
+  out->move(CanonKind::kFeed, at(a, b, p.bottom_c));
+  out->spindle(0);
+  out->move(CanonKind::kTraverse, at(oa, ob, p.bottom_c));
+  out->move(CanonKind::kTraverse, at(oa, ob, p.clear_c));
+  out->move(CanonKind::kTraverse, at(a, b, p.clear_c));
+  out->spindle(p.spindle_rpm);
+}
+
 void hole(const CyclePlan& p, int64_t a, int64_t b, CycleOut* out) {
   auto at = [&](int64_t c) { return plane_point(p.plane, a, b, c); };
   switch (p.code) {
@@ -39,10 +70,39 @@ void hole(const CyclePlan& p, int64_t a, int64_t b, CycleOut* out) {
       out->move(CanonKind::kTraverse, at(p.clear_c));
       break;
     }
+    case 840:    // right-hand tap: in at F, reverse the spindle, dwell, out at F to
+    case 740: {  // the clearance level, restore the spindle (G74: the other way round)
+      out->move(CanonKind::kFeed, cycle_tap_point(p.plane, a, b, p.bottom_c));
+      out->spindle(0);
+      out->spindle(-p.spindle_rpm);
+      out->dwell(p.dwell_ms);
+      out->move(CanonKind::kFeed, cycle_tap_point(p.plane, a, b, p.clear_c));
+      out->spindle(0);
+      out->spindle(p.spindle_rpm);
+      break;
+    }
     case 850:  // bore: feed in, feed out to R
       out->move(CanonKind::kFeed, at(p.bottom_c));
       out->move(CanonKind::kFeed, at(p.r_c));
       out->move(CanonKind::kTraverse, at(p.clear_c));
+      break;
+    case 860:  // bore, dwell, stop the spindle, rapid out, restart it
+      out->move(CanonKind::kFeed, at(p.bottom_c));
+      out->dwell(p.dwell_ms);
+      out->spindle(0);
+      out->move(CanonKind::kTraverse, at(p.clear_c));
+      out->spindle(p.spindle_rpm);
+      break;
+    case 870:
+      back_bore(p, a, b, out);
+      break;
+    case 880:  // bore, dwell, stop the spindle, program stop (the operator
+               // retracts by hand), restart it; no retract move
+      out->move(CanonKind::kFeed, at(p.bottom_c));
+      out->dwell(p.dwell_ms);
+      out->spindle(0);
+      out->pause();
+      out->spindle(p.spindle_rpm);
       break;
     case 890:  // bore with dwell: feed in, dwell, feed out to the clearance level
       out->move(CanonKind::kFeed, at(p.bottom_c));
@@ -71,6 +131,13 @@ void cycle_emit(const CyclePlan& p, CycleOut* out) {
     }
     hole(p, a, b, out);
   }
+}
+
+PointNm cycle_last_point(const CyclePlan& p) {
+  const int64_t a = p.a + p.inc_a * p.repeats, b = p.b + p.inc_b * p.repeats;
+  if (p.code == 880) return plane_point(p.plane, a, b, p.bottom_c);
+  if (p.code == 840 || p.code == 740) return cycle_tap_point(p.plane, a, b, p.clear_c);
+  return plane_point(p.plane, a, b, p.clear_c);
 }
 
 }  // namespace dexmill

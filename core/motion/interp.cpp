@@ -59,6 +59,9 @@ GcodeError BlockRunner::run() {
     e = run_motion(motion);
     if (e != GcodeError::kOk) return e;
   }
+  // A move starts from where the tool is (cur.pos + cur.stray) and ends
+  // where the interpreter reckons; only cycles leave the two apart.
+  if (plan.motion != Plan::kNone && plan.motion != Plan::kCycle) nx.stray = PointNm{0, 0, 0};
   if (b.m[kMStop] >= 0) {
     plan.stop = b.m[kMStop];
     if (plan.stop == 20 || plan.stop == 300) nx.ended = true;
@@ -72,17 +75,19 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
   const bool cycle = is_cycle(motion);
   const bool user_m = b.m[kMUser] >= 0 || b.m[kMIo] >= 0;
   const int path = b.g[kGPathControl];
-  if (!arc) {
+  if (!arc && motion != 870) {  // G87 takes I, J, K (its offset and the back bore's top)
     const char ijk[3] = {'I', 'J', 'K'};
     for (char c : ijk)
       if (b.has_word(c)) return fail_letter(GcodeError::kWordUnused, c);
   }
   if (b.has_word('R') && !arc && !cycle && g0 != 100) return fail_letter(GcodeError::kWordUnused, 'R');
-  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || motion == 820 || motion == 890 || user_m))
+  const bool dwell_cycle = motion == 740 || motion == 820 || motion == 840 || motion == 860 || motion == 880 || motion == 890;
+  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m))
     return fail_letter(GcodeError::kWordUnused, 'P');
   if (b.has_word('Q') && !(motion == 730 || motion == 830 || path == 640 || b.m[kMToolChange] == 610 || user_m))
     return fail_letter(GcodeError::kWordUnused, 'Q');
-  if (b.has_word('L') && !(g0 == 100 || cycle)) return fail_letter(GcodeError::kWordUnused, 'L');
+  // LinuxCNC 2.9 takes no L with G74 (its check of L lists every cycle but it).
+  if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740))) return fail_letter(GcodeError::kWordUnused, 'L');
   if (b.has_word('H') && b.g[kGToolLength] != 430) return fail_letter(GcodeError::kWordUnused, 'H');
   if (b.has_word('D')) return fail_letter(GcodeError::kWordUnused, 'D');
   return GcodeError::kOk;
@@ -110,6 +115,18 @@ struct CycleRecords final : CycleOut {
     emit(in, base);
     base->dwell_ms = 0;
   }
+  // The spindle a cycle stops, reverses or restarts: later records carry it.
+  void spindle(int32_t rpm) override {
+    base->kind = CanonKind::kSpindle;
+    base->start = base->end = at;
+    base->spindle_rpm = rpm;
+    emit(in, base);
+  }
+  void pause() override {
+    base->kind = CanonKind::kPause;
+    base->start = base->end = at;
+    emit(in, base);
+  }
 };
 
 // Length of an arc or helix record, nm (for G93 feed rates).
@@ -130,7 +147,7 @@ int64_t arc_length(const CanonRecord& r) {
 
 void BlockRunner::commit() {
   Interp& I = in;
-  const PointNm start = cur.pos;
+  const PointNm start = tool_at(cur);
   I.state_ = nx;
   CanonRecord r{};
   r.line = b.line;
@@ -196,10 +213,16 @@ void BlockRunner::commit() {
     }
   }
   if (plan.stop >= 0) {
-    r.start = r.end = nx.pos;
+    r.start = r.end = tool_at(nx);
     r.kind = (plan.stop == 20 || plan.stop == 300) ? CanonKind::kEnd : CanonKind::kPause;
     I.emit(&r);
   }
+}
+
+void BlockRunner::warn_once(uint8_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm) {
+  if (in.warned_once_ & bit) return;
+  in.warned_once_ = static_cast<uint8_t>(in.warned_once_ | bit);
+  in.warn(e, b.line, col, word, a_nm);
 }
 
 Interp::Interp(CanonSink* sink, const InterpOptions& options) : sink_(sink), options_(options) { reset(); }
@@ -221,6 +244,7 @@ void Interp::reset() {
     p->system.read = &Interp::read_param;
     p->system.ctx = this;
   }
+  warned_once_ = 0;
 }
 
 void Interp::emit(CanonRecord* r) {
@@ -230,10 +254,12 @@ void Interp::emit(CanonRecord* r) {
   if (sink_) sink_->emit(*r);
 }
 
-void Interp::warn(GcodeError code, uint32_t line, uint16_t col, const char* word) {
+void Interp::warn(GcodeError code, uint32_t line, uint16_t col, const char* word, int64_t a_nm, int64_t b_nm) {
   if (!options_.warnings) return;
   GcodeDiag d{};
   d.code = code;
+  d.a_nm = a_nm;
+  d.b_nm = b_nm;
   d.line = line;
   d.col = col ? col : 1;
   int i = 0;
@@ -285,7 +311,8 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
     if (block.m[g] >= 0) {
       char w[16];
       gcode_code_text('M', block.m[g], w);
-      warn(GcodeError::kWarnMcodeIgnored, line, block.m_col[g], w);
+      const bool remap = g == kMUser && block.m[g] < 1000;  // not one of LinuxCNC's M100-M199
+      warn(remap ? GcodeError::kWarnMcodeMachine : GcodeError::kWarnMcodeIgnored, line, block.m_col[g], w);
     }
   }
   if (block.m[kMSpindle] == 190) warn(GcodeError::kWarnMcodeIgnored, line, block.m_col[kMSpindle], "M19");

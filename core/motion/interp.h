@@ -20,7 +20,8 @@
 // beyond the +-10 m range", never wrap-around):
 //   every length word and every resulting position: |v| <= 10 m (1e10 nm),
 //   except arc centres (I, J, K, absolute or not) and R: <= 100 m;
-//   F <= 1e6 units/min; S <= 1e6 rpm; G4 P <= 1e6 s; L <= 1e6 repeats;
+//   F <= 1e9 units/min and S <= 1e9 rpm (LinuxCNC takes any: above 1e6 mm/min
+//   or 1e6 rpm a program gets one warning); G4 P <= 1e6 s; L <= 1e6 repeats;
 //   arc P (turns) <= 10000; T, H <= 1e9 (integers >= 0).
 #ifndef DEXMILL_CORE_MOTION_INTERP_H
 #define DEXMILL_CORE_MOTION_INTERP_H
@@ -61,15 +62,24 @@ struct InterpOptions {
   // is refused as not supported (a panel without the memory).
   ParamStore* params = nullptr;
   GcodeMessageSink* messages = nullptr;  // DEBUG/PRINT/MSG comments; null: dropped
+  // A controller's default feed (nm/min) for feed moves made while no F is
+  // in force (before the first F, after G93/G94 cleared it); 0: none, such a
+  // move is an error as in LinuxCNC. One warning, at the first such move.
+  int64_t default_feed_nm_per_min = 0;
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.
 struct InterpState {
   PointNm pos;              // controlled point, path frame (see above), nm
+  // Where the tool really is, minus pos: zero except after a cycle that
+  // leaves it elsewhere than LinuxCNC's interpreter reckons (G88 at the
+  // bottom, G74/G84 in G18/G19; cycles.h). The next move starts there.
+  PointNm stray;
   int16_t motion;           // modal motion code in tenths (G0 = 0 ... G89 = 890; G80 = 800)
   Plane plane;
   bool inch;                // G20
   bool incremental;         // G91
+  bool diameter_x;          // G7 (lathe diameter mode): LinuxCNC halves every X word, on a mill too
   bool arc_absolute;        // G90.1
   bool inverse_time;        // G93
   bool retract_to_r;        // G99
@@ -88,9 +98,11 @@ struct InterpState {
   PointNm g28_home, g30_home;  // machine positions stored by G28.1/G30.1
   // Canned cycles (RS274/NGC: R and Z are sticky while the cycle repeats).
   bool cycle_level_set;     // the initial level (G98) is remembered
-  int64_t cycle_level_nm;   // that level on the plane's axis, path frame
+  int64_t cycle_level_nm;   // that level on the plane's axis, program frame (LinuxCNC's cycle_il)
+  int64_t cycle_level_path_nm;  // the same in the path frame when last used (to tell when offsets moved it)
   int64_t cycle_r_nm, cycle_z_nm, cycle_q_nm;  // last R, Z, Q as written (nm)
-  int64_t cycle_p_ms;       // last P (dwell) of G82/G89
+  int64_t cycle_p_ms;       // last P (dwell) of G74/G82/G84/G86/G88/G89
+  int64_t cycle_ijk_nm[3];  // last I, J, K of G87 as written (nm)
   bool ended;               // after M2/M30 or a closing %
   bool percent_open;        // a first % line was seen
 };
@@ -132,7 +144,7 @@ class Interp {
 
  private:
   void emit(CanonRecord* r);
-  void warn(GcodeError code, uint32_t line, uint16_t col, const char* word);
+  void warn(GcodeError code, uint32_t line, uint16_t col, const char* word, int64_t a_nm = 0, int64_t b_nm = 0);
   // The interpreter's own parameters (core/motion/interp_params.cpp).
   static bool read_param(const void* ctx, int32_t n, const char* name, GValue* out);
 
@@ -145,6 +157,7 @@ class Interp {
   bool any_failed_ = false;   // a block failed
   uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)
   bool warned_after_end_ = false;
+  uint8_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
 
   friend struct BlockRunner;
 };

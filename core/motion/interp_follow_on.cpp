@@ -99,7 +99,9 @@ uint16_t facets_written(const char* text, size_t len) {
       case 'F': f |= kFacetFeed; break;
       case 'T': f |= kFacetTool; break;
       case 'H': f |= kFacetOffsets; break;
-      case 'R': case 'P': case 'Q': case 'L': f |= kFacetMotion; break;  // sticky cycle values
+      case 'R': case 'P': case 'Q': case 'L': case 'I': case 'J': case 'K':
+        f |= kFacetMotion;  // sticky cycle values (G87 keeps I, J, K)
+        break;
       default: break;
     }
   }
@@ -116,7 +118,8 @@ uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect)
     // A cycle's sticky values are fresh only when the block gives them.
     const bool fresh = !is_cycle(gm) || (b.has_word('R') && b.has_word(plane_letter) &&
                                          ((gm != 730 && gm != 830) || b.has_word('Q')) &&
-                                         ((gm != 820 && gm != 890) || b.has_word('P')));
+                                         ((gm != 820 && gm != 860 && gm != 880 && gm != 890) || b.has_word('P')) &&
+                                         (gm != 870 || (b.has_word('I') && b.has_word('J') && b.has_word('K'))));
     if (fresh) f |= kFacetMotion;
   }
   if (b.g[kGFeedMode] >= 0 || b.has_word('F')) f |= kFacetFeed;
@@ -186,15 +189,19 @@ ErrorFacets error_facets(GcodeError e, const GcodeBlock& b) {
       // The arc's start is the position before the block, whatever it sets.
       return {kWhere | kFacetArcDistance | kFacetPlane | kFacetMotion, kFacetPosition, 0};
     case GcodeError::kCycleRBelowZ:
+    case GcodeError::kCyclePeckCount:
       // So is the initial level an incremental R counts from.
       return {kWhere | kFacetPlane | kFacetMotion, kFacetPosition, 0};
     case GcodeError::kPositionOutOfRange:
       return {kWhere, 0, 0};
+    case GcodeError::kProbeTooClose:
+      return {kWhere, kFacetPosition, 0};
     case GcodeError::kCycleNoR:
     case GcodeError::kCycleNoZ:
     case GcodeError::kCycleNoQ:
     case GcodeError::kCycleNoP:
     case GcodeError::kCycleQNotPositive:
+    case GcodeError::kCycleNoIjk:
       // Whether the sticky values were there: the motion before the block.
       return {kFacetPlane, kFacetMotion, 0};
     case GcodeError::kG43NoTool:

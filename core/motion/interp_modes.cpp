@@ -10,6 +10,11 @@ GcodeError BlockRunner::run_modes() {
   GcodeError e;
   // Units first: every length of the block is in the units the block sets.
   if (b.g[kGUnits] >= 0) nx.inch = b.g[kGUnits] == 200;
+  // G7/G8 before any X word is read: LinuxCNC halves X in the block that says G7.
+  if (b.g[kGLathe] >= 0) {
+    nx.diameter_x = b.g[kGLathe] == 70;
+    if (nx.diameter_x && !cur.diameter_x) warn_once(kOnceDiameter, GcodeError::kWarnDiameterMode, b.g_col[kGLathe], "G7");
+  }
   if (b.g[kGFeedMode] >= 0) {
     // LinuxCNC sets F to 0 on every G93 or G94 (the block's own F comes after).
     nx.inverse_time = b.g[kGFeedMode] == 930;
@@ -23,6 +28,7 @@ GcodeError BlockRunner::run_modes() {
       plan.inverse_f = f;
     } else {
       nx.feed_nm_per_min = decimal_to_nm(f, nx.inch);
+      if (nx.feed_nm_per_min > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, b.col_of('F'), "F");
     }
   }
   if (b.has_word('S')) {
@@ -30,6 +36,7 @@ GcodeError BlockRunner::run_modes() {
     if (decimal_is_negative(s)) return fail_letter(GcodeError::kNegativeValue, 'S');
     int64_t rpm = decimal_scale(s, 1);
     if (rpm > kMaxSpindleRpm) return fail_letter(GcodeError::kNumberTooLarge, 'S');
+    if (rpm > kFastSpindleRpm) warn_once(kOnceFastSpindle, GcodeError::kWarnFastSpindle, b.col_of('S'), "S");
     nx.spindle_rpm = static_cast<int32_t>(rpm);
   }
   if (b.has_word('T')) {

@@ -1,7 +1,7 @@
 // The interpreter's moves: G0/G1 (with G53), G2/G3 in either format (the
-// checks of arc_center.h), and the canned cycles G73/G81-G83/G85/G89 (their
-// moves from cycles.h), each checked against the range limits before the
-// block commits.
+// checks of arc_center.h) and the probe moves G38.2-G38.5, each checked
+// against the range limits before the block commits (the canned cycles are
+// in interp_cycles.cpp).
 #include "core/motion/arc_center.h"
 #include "core/motion/arc_chords.h"
 #include "core/motion/block_runner.h"
@@ -21,7 +21,37 @@ GcodeError BlockRunner::run_motion(int motion) {
   if (motion == 0 || motion == 10) return run_straight(motion, b.g[kGNonModal] == 530);
   if (motion == 20 || motion == 30) return run_arc(motion);
   if (!b.has_axis() && b.g[kGMotion] < 0) return GcodeError::kOk;
+  if (is_probe(motion)) return run_probe(motion);
   return run_cycle(motion);
+}
+
+GcodeError BlockRunner::need_feed(uint16_t col, const char* word) {
+  if (nx.feed_nm_per_min != 0) return GcodeError::kOk;
+  const int64_t standin = in.options_.default_feed_nm_per_min;
+  if (standin <= 0) return fail(GcodeError::kFeedZero, col, word);
+  // A controller's default feed (grbl and Fusion 360 programs count on one).
+  nx.feed_nm_per_min = standin;
+  warn_once(kOnceDefaultFeed, GcodeError::kWarnDefaultFeed, col, word, standin);
+  return GcodeError::kOk;
+}
+
+// G38.2-G38.5 (LinuxCNC's convert_probe): a straight move at F towards the
+// target, STRAIGHT_PROBE in its canonical output. The machine stops where
+// the probe touches (or, G38.2/G38.4, fails when it does not) and LinuxCNC
+// reads its position there; a preview cannot know where that is, so the
+// move is simulated to its end point, with a warning.
+GcodeError BlockRunner::run_probe(int motion) {
+  GcodeError e;
+  char w[16];
+  gcode_code_text('G', static_cast<int16_t>(motion), w);
+  const uint16_t col = motion_col();
+  if (!b.has_axis()) return fail(GcodeError::kProbeNoAxis, col, w);
+  // G93 leaves no F in force: LinuxCNC says "zero feed rate" too.
+  if (nx.inverse_time) return fail(GcodeError::kFeedZero, col, w);
+  if ((e = run_straight(motion, false)) != GcodeError::kOk) return e;
+  if (plan.target == cur.pos) return fail(GcodeError::kProbeTooClose, col, w);
+  warn_once(kOnceProbe, GcodeError::kWarnProbe, col, w);
+  return GcodeError::kOk;
 }
 
 GcodeError BlockRunner::run_straight(int motion, bool g53) {
@@ -39,15 +69,15 @@ GcodeError BlockRunner::run_straight(int motion, bool g53) {
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(motion), w);
   if ((e = check_pos(to, motion_col(), w)) != GcodeError::kOk) return e;
-  if (motion == 10) {
+  if (motion != 0) {  // G1, or a probe move
     if (nx.inverse_time && !b.has_word('F')) return fail(GcodeError::kInverseTimeNoF, motion_col(), w);
-    if (!nx.inverse_time && nx.feed_nm_per_min == 0) return fail(GcodeError::kFeedZero, motion_col(), w);
+    if (!nx.inverse_time && (e = need_feed(motion_col(), w)) != GcodeError::kOk) return e;
     if (nx.inverse_time && decimal_is_zero(plan.inverse_f)) return fail_letter(GcodeError::kFeedZero, 'F');
   }
   plan.motion = Plan::kStraight;
   plan.straight_kind = motion == 0 ? CanonKind::kTraverse : CanonKind::kFeed;
   plan.target = to;
-  plan.inverse_time = nx.inverse_time && motion == 10;
+  plan.inverse_time = nx.inverse_time && motion != 0;
   nx.pos = to;
   return GcodeError::kOk;
 }
@@ -82,7 +112,7 @@ GcodeError BlockRunner::run_arc(int motion) {
     if (turns > kMaxTurns) return fail_letter(GcodeError::kNumberTooLarge, 'P');
   }
   if (nx.inverse_time && !b.has_word('F')) return fail(GcodeError::kInverseTimeNoF, col, w);
-  if (!nx.inverse_time && nx.feed_nm_per_min == 0) return fail(GcodeError::kFeedZero, col, w);
+  if (!nx.inverse_time && (e = need_feed(col, w)) != GcodeError::kOk) return e;
   if (nx.inverse_time && decimal_is_zero(plan.inverse_f)) return fail_letter(GcodeError::kFeedZero, 'F');
   const ArcPlanar p{axis_val(cur.pos, ia), axis_val(cur.pos, ib), axis_val(to, ia), axis_val(to, ib)};
   int64_t ca, cb;
@@ -116,118 +146,6 @@ GcodeError BlockRunner::run_arc(int motion) {
   plan.arc.turns = static_cast<int32_t>(motion == 20 ? -turns : turns);
   plan.inverse_time = nx.inverse_time;
   nx.pos = to;
-  return GcodeError::kOk;
-}
-
-GcodeError BlockRunner::run_cycle(int motion) {
-  GcodeError e;
-  char w[16];
-  gcode_code_text('G', static_cast<int16_t>(motion), w);
-  const uint16_t col = motion_col();
-  if (nx.inverse_time) return fail(GcodeError::kCycleInverseTime, col, w);
-  if (nx.feed_nm_per_min == 0) return fail(GcodeError::kFeedZero, col, w);
-  const bool same = cur.motion == motion;
-  const Plane pl = nx.plane;
-  const int ia = plane_axis_a(pl), ib = plane_axis_b(pl), ic = plane_axis_c(pl);
-  const char lc = kAxisLetter[ic];
-  int64_t r_raw = cur.cycle_r_nm, z_raw = cur.cycle_z_nm;
-  if (b.has_word('R')) {
-    if ((e = length('R', &r_raw)) != GcodeError::kOk) return e;
-  } else if (!same) {
-    return fail(GcodeError::kCycleNoR, col, w);
-  }
-  if (b.has_word(lc)) {
-    if ((e = length(lc, &z_raw)) != GcodeError::kOk) return e;
-  } else if (!same) {
-    return fail(GcodeError::kCycleNoZ, col, w);
-  }
-  int64_t repeats = 1;
-  if (b.has_word('L')) {
-    if ((e = integer('L', 0, kMaxRepeats, &repeats)) != GcodeError::kOk) return e;
-    if (repeats == 0) return fail_letter(GcodeError::kCycleZeroRepeats, 'L');
-  }
-  int64_t q = cur.cycle_q_nm, p_ms = cur.cycle_p_ms;
-  if (motion == 730 || motion == 830) {
-    if (b.has_word('Q')) {
-      if ((e = length('Q', &q)) != GcodeError::kOk) return e;
-    } else if (!same) {
-      return fail(GcodeError::kCycleNoQ, col, w);
-    }
-    if (q <= 0) return b.has_word('Q') ? fail_letter(GcodeError::kCycleQNotPositive, 'Q')
-                                       : fail(GcodeError::kCycleQNotPositive, col, w);
-  }
-  if (motion == 820 || motion == 890) {
-    if (b.has_word('P')) {
-      const Decimal& pv = b.val('P');
-      if (decimal_is_negative(pv)) return fail_letter(GcodeError::kNegativeValue, 'P');
-      p_ms = decimal_scale(pv, 1000);
-      if (p_ms > kMaxDwellS * 1000) return fail_letter(GcodeError::kNumberTooLarge, 'P');
-    } else if (!same) {
-      return fail(GcodeError::kCycleNoP, col, w);
-    }
-  }
-  CyclePlan& c = plan.cycle;
-  c.code = static_cast<int16_t>(motion);
-  c.plane = pl;
-  c.repeats = repeats;
-  c.q_nm = q;
-  c.dwell_ms = p_ms;
-  c.start_a = axis_val(cur.pos, ia);
-  c.start_b = axis_val(cur.pos, ib);
-  const int64_t cur_c = axis_val(cur.pos, ic);
-  int64_t old_c = cur.cycle_level_set ? cur.cycle_level_nm : cur_c;
-  nx.cycle_level_set = true;
-  nx.cycle_level_nm = old_c;
-  int64_t va = 0, vb = 0;
-  const char la = kAxisLetter[ia], lb = kAxisLetter[ib];
-  if (b.has_word(la) && (e = length(la, &va)) != GcodeError::kOk) return e;
-  if (b.has_word(lb) && (e = length(lb, &vb)) != GcodeError::kOk) return e;
-  if (nx.incremental) {
-    // RS274/NGC: X, Y and R are increments from the current point and the
-    // initial level, Z an increment from R.
-    c.inc_a = va;
-    c.inc_b = vb;
-    c.a = c.start_a;
-    c.b = c.start_b;
-    c.r_c = r_raw + old_c;
-    c.bottom_c = c.r_c + z_raw;
-  } else {
-    c.inc_a = c.inc_b = 0;
-    c.a = b.has_word(la) ? va + offset(ia) : c.start_a;
-    c.b = b.has_word(lb) ? vb + offset(ib) : c.start_b;
-    c.r_c = r_raw + offset(ic);
-    c.bottom_c = z_raw + offset(ic);
-  }
-  if (c.r_c < c.bottom_c) {
-    d->a_nm = c.r_c;
-    d->b_nm = c.bottom_c;
-    return fail(GcodeError::kCycleRBelowZ, col, w);
-  }
-  c.current_c = cur_c;
-  c.raise_first = old_c < c.r_c;
-  if (c.raise_first) {
-    old_c = c.r_c;
-    c.current_c = c.r_c;
-  }
-  c.clear_c = nx.retract_to_r ? c.r_c : old_c;
-  // Range: the holes lie on a line, so its ends bound it; levels likewise.
-  const int64_t last_a = c.a + c.inc_a * repeats, last_b = c.b + c.inc_b * repeats;
-  const int64_t levels[4] = {c.r_c, c.bottom_c, c.clear_c, c.current_c};
-  for (int64_t lv : levels) {
-    if ((e = check_pos(plane_point(pl, last_a, last_b, lv), col, w)) != GcodeError::kOk) return e;
-    if ((e = check_pos(plane_point(pl, c.a + c.inc_a, c.b + c.inc_b, lv), col, w)) != GcodeError::kOk) return e;
-  }
-  if (motion == 730 || motion == 830) {
-    const int64_t pecks = cycle_peck_count(c.r_c, c.bottom_c, q);
-    if (pecks > kMaxCycleMoves / repeats) return b.has_word('Q') ? fail_letter(GcodeError::kNumberTooLarge, 'Q')
-                                                                 : fail(GcodeError::kNumberTooLarge, col, w);
-  }
-  nx.cycle_r_nm = r_raw;
-  nx.cycle_z_nm = z_raw;
-  nx.cycle_q_nm = q;
-  nx.cycle_p_ms = p_ms;
-  plan.motion = Plan::kCycle;
-  nx.pos = plane_point(pl, last_a, last_b, c.clear_c);
   return GcodeError::kOk;
 }
 

@@ -75,6 +75,7 @@ void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t
   motion_.add(a);
   motion_.add(b);
   if (len < 0) len = distance_nm(a, b);
+  if (feed) rate = min_of(rate, model_.max_feed_nm_per_min);
   const int64_t us = move_time_us(model_, len, rate);
   if (feed) {
     feed_.add(a);

