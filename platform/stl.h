@@ -1,15 +1,12 @@
 // The final workpiece as a closed binary STL, for comparison with the CAD
-// model. The surface is the display's (display/mesh.h, kCellCases): per cell
-// of four neighbouring dexels, its top triangles at the dexels' tops, the
-// same triangles turned over at their bottoms, and side walls where material
-// meets holes (the stock's border dexels are holes, so the outer walls come
-// from the same rule). Every edge is shared by exactly two triangles, with
-// opposite directions (consistently outward normals). Material one dexel
-// wide has no width in that surface (its two walls would meet on the
-// dexel's axis) and is left out, so the solid is 2-manifold; it holds no
-// volume in the surface either way.
+// model: the cell surface of platform/stl_cells.h (tops, bottoms turned
+// over, walls where material meets holes) with coplanar cells merged into
+// larger faces (platform/stl_merge.h): flat floors and untouched tops,
+// straight walls. Every edge is shared by exactly two triangles with
+// opposite directions, and the solid is the cell surface's to the last bit.
 //
-// Streaming: one pass counts the triangles (the header needs the count), a
+// Streaming: one pass counts the triangles (the header needs the count
+// first, and standard output or a pipe cannot be rewound to patch it), a
 // second writes them through a small buffer; no mesh is held in memory.
 // Coordinates are machine millimetres as float32, the same integer grid
 // point always giving the same float, so shared vertices match bit for bit.

@@ -806,10 +806,16 @@ int run_job(RunOptions o) {
   }
   const double t_files = clock_now_s();
   if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), formats.heightmap, grid, e, sizeof e)) return fail(kExitIo, "%s", e);
-  if (!o.stl.empty() && !write_stl(o.stl.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
+  double stl_s = 0;
+  if (!o.stl.empty()) {
+    const double t_stl = clock_now_s();
+    if (!write_stl(o.stl.c_str(), grid, e, sizeof e)) return fail(kExitIo, "%s", e);
+    stl_s = clock_now_s() - t_stl;
+  }
   write_s += clock_now_s() - t_files;
   rep.timing.emplace_back("render", render_s);
   rep.timing.emplace_back("write", write_s);
+  if (!o.stl.empty()) rep.timing.emplace_back("stl", stl_s);  // a part of write
   if (!write_report()) return kExitIo;
   if (is_live && !user_quit && !live.wait_done(&grid, cut.pose(), cut.status))
     return fail(kExitIo, "%s", live.error().c_str());
