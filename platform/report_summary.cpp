@@ -45,6 +45,11 @@ std::string report_summary_text(const RunReport& r) {
                   r.collisions_total ? " (on standard error)" : "");
     o += b;
   }
+  if (r.have_materials) {  // the process rules' warnings are counted apart from the G-code's
+    std::snprintf(b, sizeof b, "process  %" PRIu64 " rule violation(s)%s\n", r.material_violations_total,
+                  r.material_violations_total ? " (on standard error)" : "");
+    o += b;
+  }
   if (!r.stopped_reason.empty()) {
     std::snprintf(b, sizeof b, "stopped  at the first %s, line %u\n", r.stopped_reason.c_str(), r.stopped_line);
     o += b;

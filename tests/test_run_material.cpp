@@ -47,6 +47,10 @@ TEST(material_feed_spindle_coolant_on_their_lines) {
   const std::string rep = slurp(tmp_dir() + "/mat.json");
   CHECK(has(rep, "\"violations_total\": 2"));
   CHECK(has(rep, "{\"name\": \"alu\""));
+  // With no output, the summary counts them apart from the G-code's warnings.
+  r = run(p + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 --material " + mat);
+  CHECK(has(r.out, "process  2 rule violation(s) (on standard error)"));
+  CHECK(has(r.out, "warnings 0\n"));
   // The spindle over alu's range.
   const std::string fast = write_tmp("fast.ngc", "G21 G90\nM3 S30000\nG0 X-5 Y10 Z5\nG1 Z-15 F300\nG1 X45 F1000\nG0 Z5\nM2\n");
   r = run(fast + " --stock 0,0,-20,40,40,0 --pitch 0.2 --tool flat:6 -q --report /dev/null --material " + mat);
