@@ -97,13 +97,22 @@ struct ArcGrid : fixtures::TestGrid<uint16_t> {
 
 // Backward bound of sweep.h, widened to the chord bound (1 um) when the arc
 // is cut as chords.
+// A sweep past a full turn becomes a record of several turns (G2/G3 P):
+// |turns| = ceil(|sweep| / 2 pi).
+CanonRecord turns_record(double cx, double cy, double ra, double a0, double sweep, double z0, double z1) {
+  CanonRecord r = arc_record(cx, cy, ra, a0, sweep, z0, z1);
+  const int32_t n = static_cast<int32_t>(std::ceil(std::fabs(sweep) / (2 * M_PI) - 1e-12));
+  r.arc.turns = sweep > 0 ? n : -n;
+  return r;
+}
+
 int check_arc(const Tool& tool, const char* name, double cx, double cy, double ra, double a0, double sweep, double z0,
               double z1, double slack_nm) {
   ArcGrid ag;
   SweepTool swt;
   sweep_tool_prepare(tool_profile(tool), 500, &swt);
   CutStats st;
-  sweep_arc(&ag.g, swt, arc_record(cx, cy, ra, a0, sweep, z0, z1), &st);
+  sweep_arc(&ag.g, swt, turns_record(cx, cy, ra, a0, sweep, z0, z1), &st);
   int bad = 0;
   for (int32_t j = 0; j < 64; ++j) {
     for (int32_t i = 0; i < 64; ++i) {
@@ -170,6 +179,38 @@ TEST(sweep_arc_helix_exact_against_oracle) {
     }
   }
   CHECK_EQ(bad, 0);
+}
+
+TEST(sweep_arc_helix_of_many_turns_cuts_its_dominant_turn) {
+  // Issue 24: a helix of several turns about Z cuts what its last turn
+  // (descending; ascending: its first) cuts, every other position having
+  // a twin one turn away, lower: exact against the oracle over the whole
+  // path, descending, ascending and level, ending on the start's angle or
+  // not; and its cost is one turn's, whatever the turns.
+  std::mt19937_64 rng(79);
+  const Tool tools[] = {tool_of(ToolKind::kBall, mm(6)), tool_of(ToolKind::kFlat, mm(4))};
+  int bad = 0;
+  for (int t = 0; t < 2; ++t)
+    for (int it = 0; it < 6; ++it) {
+      const double ra = 3.6e6 + double(rng() % 3000000), a0 = double(rng() % 6283) / 1000.0;
+      const double turns = 2 + it / 2 + (it % 2 ? 0.0 : double(rng() % 900) / 1000.0);
+      const double sweep = (it % 3 == 1 ? -1.0 : 1.0) * 2 * M_PI * turns;
+      const double z0 = 12e6 + double(rng() % 4000000);
+      const double z1 = it % 3 == 2 ? z0 : z0 + (it % 2 ? 1.0 : -1.0) * (1e6 + double(rng() % 5000000));
+      bad += check_arc(tools[t], t ? "flat4-turns" : "ball6-turns", 8e6, 8e6, ra, a0, sweep, z0, z1, 2.0);
+    }
+  CHECK_EQ(bad, 0);
+  // The cost: a thousand turns visit what two do.
+  uint64_t visits[2];
+  for (int k = 0; k < 2; ++k) {
+    ArcGrid ag;
+    SweepTool swt;
+    sweep_tool_prepare(tool_profile(tools[0]), 500, &swt);
+    CutStats st;
+    sweep_arc(&ag.g, swt, turns_record(8e6, 8e6, 5e6, 0, 2 * M_PI * (k ? 1000 : 2), 20e6, 10e6), &st);
+    visits[k] = st.dexel_updates + st.instances;
+  }
+  CHECK_EQ(visits[0], visits[1]);
 }
 
 TEST(sweep_arc_visits_only_the_ring_within_reach) {

@@ -289,8 +289,45 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
 
 }  // namespace
 
+// A helix of several turns about Z (G2/G3 with P in G17) sweeps the same XY
+// path every turn, each turn lower (or higher) than the one before: every
+// position of a descending helix has its twin one turn later, at the same XY
+// and lower, so the last full turn alone cuts everything the whole helix
+// cuts; an ascending helix's first turn, a level one's any turn. The one
+// turn that does, into *one; false when the arc has at most one turn
+// (issue 24: a 10 000-turn helix cost 10 000 turns).
+bool dominant_turn(const CanonRecord& arc, bool* start_cap, CanonRecord* one) {
+  if (arc.arc.plane != Plane::kXY || (arc.arc.turns >= -1 && arc.arc.turns <= 1)) return false;
+  const int dir = arc.arc.turns < 0 ? -1 : 1;
+  const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
+  const uint32_t phi_a = atan2_bam(arc.start.y_nm - cy, arc.start.x_nm - cx);
+  const uint32_t phi_b = atan2_bam(arc.end.y_nm - cy, arc.end.x_nm - cx);
+  uint64_t last = static_cast<uint32_t>(dir > 0 ? phi_b - phi_a : phi_a - phi_b);  // the span past the full turns
+  const bool same_xy = arc.start.x_nm == arc.end.x_nm && arc.start.y_nm == arc.end.y_nm;
+  if (same_xy || last == 0) last = static_cast<uint64_t>(1) << 32;
+  const uint64_t extra = static_cast<uint64_t>(dir * arc.arc.turns - 1);
+  const uint64_t total_bam = extra * (static_cast<uint64_t>(1) << 32) + last;  // < 2^63 for |turns| < 2^31
+  const int64_t dz = arc.end.z_nm - arc.start.z_nm;
+  // One turn's share of the descent (a full turn is 2^32 of total_bam).
+  const int64_t turn_dz = muldiv_round(dz, static_cast<int64_t>(1) << 32, static_cast<int64_t>(total_bam));
+  *one = arc;
+  one->arc.turns = dir;
+  if (dz < 0) {  // the last turn: from B's place one turn back, down to B
+    one->start = PointNm{arc.end.x_nm, arc.end.y_nm, arc.end.z_nm - turn_dz};
+    *start_cap = true;  // it starts mid-path: its first position is the path's own
+  } else {         // the first turn (and, level, any turn): from A round to A
+    one->end = PointNm{arc.start.x_nm, arc.start.y_nm, arc.start.z_nm + turn_dz};
+  }
+  return true;
+}
+
 template <class H>
 void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap) {
+  CanonRecord one;
+  if (dominant_turn(arc, &start_cap, &one)) {
+    sweep_arc(g, t, one, st, start_cap);
+    return;
+  }
   const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
   const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
   const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
