@@ -28,8 +28,9 @@ constexpr int32_t kWallStripPx = 12;
 // the surface's vertices and interpolated (Gouraud) times the lighting. The
 // side faces, long thin polygons from a top down to a bottom, would take
 // only two colours each way; they are split at heights (figure 11: "badly
-// behaved" polygons made "well behaved"): on a lattice of split_lsb (the
-// texture's feature scale; 0: none) and at breaks, heights where the colour
+// behaved" polygons made "well behaved"): on a lattice of split_lsb (set
+// by the colour mode: material_colours, a 16th of the stock's height; 0:
+// none) and at breaks, heights where the colour
 // jumps (a layer's boundary), each drawn with the colour below it under it
 // and the colour above it over it. The split heights of a column depend on
 // that column alone, so two faces sharing a vertical edge share its

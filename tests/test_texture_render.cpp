@@ -134,8 +134,6 @@ TEST(split_walls_leave_no_crack) {
   static Scene plain, tex;
   plain.draw(false);
   tex.draw(true);
-  const uint32_t bg_corner = plain.at(0, 0);
-  (void)bg_corner;
   int differ = 0, covered = 0, pinholes = 0;
   auto is_bg = [](const Scene& s, int32_t x, int32_t y) { return s.r.target.z && reinterpret_cast<const uint32_t*>(s.r.target.z + y * s.r.target.z_stride)[x] == 0xFFFFFFFFu; };
   for (int32_t y = 1; y < 149; ++y)

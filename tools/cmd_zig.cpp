@@ -8,7 +8,6 @@
 #include <sys/stat.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -61,19 +60,9 @@ struct ZigArgs {
   bool feeds_given = false;  // --feed, --plunge-feed or --spindle
 };
 
-bool parse_mm(const char* v, int64_t* nm, bool positive) {
-  char* end = nullptr;
-  const double d = std::strtod(v, &end);
-  if (!end || *end || !(d == d) || d < 0 || (positive && d <= 0) || d > 1e6) return false;
-  *nm = static_cast<int64_t>(d * 1e6 + 0.5);
-  return true;
-}
-bool parse_signed_mm(const char* v, int64_t* nm) {
-  char* end = nullptr;
-  const double d = std::strtod(v, &end);
-  if (!end || *end || !(d == d) || d < -1e6 || d > 1e6) return false;
-  *nm = static_cast<int64_t>(d * 1e6 + (d < 0 ? -0.5 : 0.5));
-  return true;
+// A length or feed in mm (mm/min) as written, within [min_nm, 1e6 mm].
+bool parse_mm(const char* v, int64_t min_nm, int64_t* nm) {
+  return parse_scaled(v, kNmPerMm, nm) && *nm >= min_nm && *nm <= 1000000 * kNmPerMm;
 }
 
 }  // namespace
@@ -82,7 +71,6 @@ int cmd_zig(int argc, char** argv) {
   ZigArgs z;
   std::vector<char*> rest{argv[0]};
   static char design_flag[] = "--design";
-  bool have_tool = false;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -99,26 +87,27 @@ int cmd_zig(int argc, char** argv) {
       if (!std::strcmp(a, "-o")) {
         z.out = v;
       } else if (!std::strcmp(a, "--stepover") || !std::strcmp(a, "--step")) {
-        if (!parse_mm(v, &nm, true)) return fail(kExitUsage, "%s needs a length in mm above 0, not '%s'", a, v);
-        (a[6] == 'o' ? z.job.stepover_nm : z.job.step_nm) = nm;
+        if (!parse_mm(v, 1, &nm)) return fail(kExitUsage, "%s needs a length in mm above 0, not '%s'", a, v);
+        (!std::strcmp(a, "--stepover") ? z.job.stepover_nm : z.job.step_nm) = nm;
       } else if (!std::strcmp(a, "--direction")) {
         if (std::strcmp(v, "x") && std::strcmp(v, "y")) return fail(kExitUsage, "--direction must be x or y, not '%s'", v);
         z.job.prog.zig.along_y = v[0] == 'y';
       } else if (!std::strcmp(a, "--safe-z")) {
-        if (!parse_signed_mm(v, &z.job.safe_z_nm)) return fail(kExitUsage, "--safe-z needs a height in mm, not '%s'", v);
+        if (!parse_mm(v, -1000000 * kNmPerMm, &z.job.safe_z_nm))
+          return fail(kExitUsage, "--safe-z needs a height in mm, not '%s'", v);
         z.job.have_safe = true;
       } else if (!std::strcmp(a, "--feed") || !std::strcmp(a, "--plunge-feed")) {
         z.feeds_given = true;
-        if (!parse_mm(v, &nm, true)) return fail(kExitUsage, "%s needs a feed in mm/min above 0, not '%s'", a, v);
-        (a[2] == 'f' ? z.job.prog.feed_nm_per_min : z.job.prog.plunge_nm_per_min) = nm;
+        if (!parse_mm(v, 1, &nm)) return fail(kExitUsage, "%s needs a feed in mm/min above 0, not '%s'", a, v);
+        (!std::strcmp(a, "--feed") ? z.job.prog.feed_nm_per_min : z.job.prog.plunge_nm_per_min) = nm;
       } else if (!std::strcmp(a, "--spindle")) {
         z.feeds_given = true;
-        char* end = nullptr;
-        const long rpm = std::strtol(v, &end, 10);
-        if (!end || *end || rpm < 1 || rpm > 1000000) return fail(kExitUsage, "--spindle needs whole rpm, not '%s'", v);
+        int64_t rpm = 0;
+        if (!parse_scaled(v, 1, &rpm) || std::strchr(v, '.') || rpm < 1 || rpm > 1000000)
+          return fail(kExitUsage, "--spindle needs whole rpm, not '%s'", v);
         z.job.prog.spindle_rpm = static_cast<int32_t>(rpm);
       } else {
-        if (!parse_mm(v, &z.job.prog.zig.allowance_nm, false)) return fail(kExitUsage, "--allowance needs mm >= 0, not '%s'", v);
+        if (!parse_mm(v, 0, &z.job.prog.zig.allowance_nm)) return fail(kExitUsage, "--allowance needs mm >= 0, not '%s'", v);
       }
       continue;
     }
@@ -126,7 +115,6 @@ int cmd_zig(int argc, char** argv) {
       z.job.prog.zigzag = true;
       continue;
     }
-    if (!std::strcmp(a, "--tool")) have_tool = true;
     if (run_option_takes_value(a) && i + 1 < argc) {  // run's, with its value
       rest.push_back(argv[i]);
       rest.push_back(argv[++i]);
@@ -150,8 +138,8 @@ int cmd_zig(int argc, char** argv) {
   bool help = false;
   const int code = parse_run_options(static_cast<int>(rest.size()), rest.data(), &o, &help);
   if (code != kExitOk || help) return code;
-  if (builtin) builtin_setup(*builtin, have_tool, &o);
-  else if (!have_tool) (void)tool_spec_parse("ball:3", 6, &o.tool);
+  if (builtin) builtin_setup(*builtin, o.tool_given, &o);
+  else if (!o.tool_given) (void)tool_spec_parse("ball:3", 6, &o.tool);
   if (!z.feeds_given) zig_fit_to_material(o, &z.job.prog);
   if (run_draws(o) || !o.report.empty() || !o.file.empty())
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");

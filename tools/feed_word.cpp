@@ -9,6 +9,7 @@ std::string decimal_text(Decimal d) {
     d.mant /= 10;
     --d.frac;
   }
+  if (d.mant < 0) return "-" + decimal_text(Decimal{-d.mant, d.frac});
   const int64_t unit = pow10_i64(d.frac);
   std::string t = std::to_string(d.mant / unit);
   if (d.frac > 0) {

@@ -14,8 +14,8 @@
 namespace dexmill {
 namespace cli {
 
-// A non-negative decimal as G-code text: "1200", "47.244", "0.5" (no
-// trailing zeros, no exponent).
+// A decimal as G-code text: "1200", "47.244", "-0.5" (no trailing zeros,
+// no exponent).
 std::string decimal_text(Decimal d);
 
 struct FeedNumber {

@@ -16,9 +16,6 @@
 
 namespace dexmill {
 namespace cli {
-namespace {
-
-// A decimal number as written, scaled (1e6 for mm -> nm, 1000 for s -> ms).
 bool parse_scaled(const char* s, std::size_t n, int64_t scale, int64_t* out) {
   Decimal d;
   std::size_t pos = 0;
@@ -27,6 +24,8 @@ bool parse_scaled(const char* s, std::size_t n, int64_t scale, int64_t* out) {
   return true;
 }
 bool parse_scaled(const char* s, int64_t scale, int64_t* out) { return parse_scaled(s, std::strlen(s), scale, out); }
+
+namespace {
 
 // "AxB" with both whole numbers in [lo, hi].
 bool parse_pair(const char* s, int64_t lo, int64_t hi, int32_t* a, int32_t* b) {

@@ -111,6 +111,12 @@ int parse_run_options(int argc, char** argv, RunOptions* out, bool* help);
 
 void run_usage(std::FILE* f);
 
+// A decimal number as written (exactly, never through floating point),
+// times `scale` (1e6 for mm -> nm, 1000 for s -> ms), rounded to nearest;
+// false when s[0, n) is anything else.
+bool parse_scaled(const char* s, std::size_t n, int64_t scale, int64_t* out);
+bool parse_scaled(const char* s, int64_t scale, int64_t* out);
+
 // True for the run options that take a value (the next argument).
 bool run_option_takes_value(const char* a);
 

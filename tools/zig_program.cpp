@@ -1,26 +1,18 @@
 // The zig-milling program; see zig_program.h.
 #include "tools/zig_program.h"
 
-#include <cinttypes>
-#include <cstdio>
 #include <vector>
 
 #include "core/math/fixed.h"
 #include "platform/clock.h"
+#include "tools/feed_word.h"
 
 namespace dexmill {
 namespace cli {
 namespace {
 
-// nm as mm with the trailing zeros of its 6 decimals dropped: exact.
-std::string mm(int64_t nm) {
-  const uint64_t a = static_cast<uint64_t>(nm < 0 ? -nm : nm);
-  char b[40];
-  int n = std::snprintf(b, sizeof b, "%s%" PRIu64 ".%06" PRIu64, nm < 0 ? "-" : "", a / 1000000, a % 1000000);
-  while (n > 0 && b[n - 1] == '0') --n;
-  if (n > 0 && b[n - 1] == '.') --n;
-  return std::string(b, static_cast<size_t>(n));
-}
+// nm as mm, exact (6 decimals, trailing zeros dropped).
+std::string mm(int64_t nm) { return decimal_text(Decimal{nm, 6}); }
 
 struct Writer {
   std::string* text;

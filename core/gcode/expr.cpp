@@ -9,8 +9,8 @@
 namespace dexmill {
 namespace {
 
-inline bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-inline char up(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+inline bool blank(char c) { return gcode_is_blank(c); }
+inline char up(char c) { return gcode_upper(c); }
 inline bool alpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
 struct Func {

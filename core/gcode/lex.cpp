@@ -7,8 +7,8 @@ namespace dexmill {
 
 namespace {
 
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-inline char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+inline bool is_blank(char c) { return gcode_is_blank(c); }
+inline char upper(char c) { return gcode_upper(c); }
 
 void set_diag(GcodeDiag* d, GcodeError e, size_t pos) {
   d->code = e;

@@ -15,6 +15,12 @@
 
 namespace dexmill {
 
+// White space RS274/NGC skips between (and inside) words, and letters in
+// either case: the one definition the scanner, the block reader and the
+// expression reader share.
+inline bool gcode_is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline char gcode_upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
 struct GcodeWord {
   char letter;     // 'A'..'Z' (upper case); 0 at the end of the line
   Decimal value;

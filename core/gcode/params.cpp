@@ -1,20 +1,17 @@
 // Parameters; see params.h.
 #include "core/gcode/params.h"
 
+#include <string.h>
+
 namespace dexmill {
 namespace {
-
-bool same(const char* a, const char* b) {
-  while (*a && *a == *b) ++a, ++b;
-  return *a == *b;
-}
 
 // The stored entry of a folded name visible at the current level (a global,
 // or a local of this level), or -1.
 int32_t find(const ParamStore& p, const char* folded) {
   const bool global = folded[0] == '_';
   for (int32_t k = 0; k < p.nnamed; ++k)
-    if (same(p.named[k].name, folded) && (global || p.named[k].level == p.level)) return k;
+    if (!strcmp(p.named[k].name, folded) && (global || p.named[k].level == p.level)) return k;
   return -1;
 }
 

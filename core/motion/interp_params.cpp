@@ -10,16 +10,13 @@
 // _selected_tool _selected_pocket _coord_system _motion_mode _plane
 // _spindle_on _spindle_cw _flood _mist _ccomp _tool_offset _retract_r_plane
 // _retract_old_z, and _value (0 until subroutines return values).
+#include <string.h>
+
 #include "core/math/fixed.h"
 #include "core/motion/interp.h"
 
 namespace dexmill {
 namespace {
-
-bool same(const char* a, const char* b) {
-  while (*a && *a == *b) ++a, ++b;
-  return *a == *b;
-}
 
 int64_t axis_nm(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : axis == 2 ? p.z_nm : 0; }
 
@@ -58,7 +55,7 @@ bool numbered(const InterpState& s, int32_t n, int64_t* e9) {
 bool named(const InterpState& s, const char* name, int64_t* e9) {
   static const char* const kAxes[9] = {"_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v", "_w"};
   for (int a = 0; a < 9; ++a)
-    if (same(name, kAxes[a])) return *e9 = position(s, a), true;
+    if (!strcmp(name, kAxes[a])) return *e9 = position(s, a), true;
   struct Flag {
     const char* name;
     int64_t value;
@@ -92,7 +89,7 @@ bool named(const InterpState& s, const char* name, int64_t* e9) {
       {"_value", 0},
   };
   for (const Flag& f : flags)
-    if (same(name, f.name)) return *e9 = f.value, true;
+    if (!strcmp(name, f.name)) return *e9 = f.value, true;
   return false;
 }
 
