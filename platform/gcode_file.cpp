@@ -12,10 +12,21 @@
 namespace dexmill {
 
 GcodeFile::~GcodeFile() {
-  if (f_ && owned_) std::fclose(f_);
+  if (tee_) std::fclose(tee_);
+  files_[cur_].f = f_;
+  files_[cur_].owned = owned_;
+  for (uint16_t k = 0; k < nfiles_; ++k)
+    if (files_[k].f && files_[k].owned) std::fclose(files_[k].f);
 }
 
-bool GcodeFile::open(const char* path) {
+bool GcodeFile::open(const char* path, const char* shown) {
+  if (!open_one(path)) return false;
+  if (shown) std::snprintf(name_, sizeof name_, "%s", shown);
+  files_[0].name = name_;
+  return true;
+}
+
+bool GcodeFile::open_one(const char* path) {
   if (!std::strcmp(path, "-")) {
     if (standard_input_closed()) {
       std::snprintf(error_, sizeof error_, "standard input is closed: there is no program to read");
@@ -36,6 +47,10 @@ bool GcodeFile::open(const char* path) {
   struct stat st;
   if (fstat(fileno(f_), &st) == 0) {
     if (S_ISREG(st.st_mode)) total_ = static_cast<int64_t>(st.st_size);
+    // A pipe or a device cannot seek: what is read is copied (an anonymous
+    // temporary file) as it is read, so a loop can go back. Memory stays
+    // flat; the copy grows only as far as the program is read.
+    else tee_ = std::tmpfile();
     if (S_ISDIR(st.st_mode)) {
       std::snprintf(error_, sizeof error_, "cannot read '%s': Is a directory", path);
       return false;
@@ -46,7 +61,26 @@ bool GcodeFile::open(const char* path) {
 
 bool GcodeFile::fill() {
   if (eof_) return false;
-  end_ = std::fread(buf_, 1, sizeof buf_, f_);
+  if (cur_ == 0 && tee_ && read_off_ < teed_) {
+    // Read again after a seek back: from the copy.
+    const uint64_t want = teed_ - read_off_ < sizeof buf_ ? teed_ - read_off_ : sizeof buf_;
+    end_ = std::fseek(tee_, static_cast<long>(read_off_), SEEK_SET) == 0
+               ? std::fread(buf_, 1, static_cast<std::size_t>(want), tee_)
+               : 0;
+    if (end_ == 0) std::snprintf(error_, sizeof error_, "cannot read back '%s': %s", name_, std::strerror(errno));
+  } else {
+    end_ = std::fread(buf_, 1, sizeof buf_, f_);
+    if (cur_ == 0 && tee_ && end_) {
+      // Keep what a pipe gave, for loops and calls to read again.
+      if (std::fseek(tee_, 0, SEEK_END) != 0 || std::fwrite(buf_, 1, end_, tee_) != end_) {
+        std::fclose(tee_);
+        tee_ = nullptr;  // a later seek back fails with an error naming the line
+      } else {
+        teed_ += end_;
+      }
+    }
+  }
+  read_off_ += end_;
   pos_ = 0;
   if (end_ == 0) {
     eof_ = true;
@@ -190,11 +224,86 @@ GcodeFile::Read GcodeFile::next(const char** text, std::size_t* len, uint32_t* l
     }
   }
   *line_no = ++line_no_;
+  // The LF of a CRLF whose CR ended the line is taken now, so that
+  // line_next() is where the next line starts.
+  if (pending_lf_) (void)more();
   if (n > 0 && line_[n - 1] == '\r') --n;  // CRLF
   if (n > kGcodeMaxLine) return Read::kTooLong;
   *text = line_;
   *len = n;
   return Read::kLine;
+}
+
+// Makes `file` the one read (its reading state is set by the caller).
+void GcodeFile::switch_to(uint16_t file) {
+  if (file == cur_) return;
+  Opened& was = files_[cur_];
+  was.f = f_;
+  was.owned = owned_;
+  was.started = started_;
+  was.cr_lines = cr_lines_;
+  was.read_off = read_off_;
+  const Opened& to = files_[file];
+  f_ = to.f;
+  owned_ = to.owned;
+  started_ = to.started;
+  cr_lines_ = to.cr_lines;
+  read_off_ = to.read_off;
+  std::snprintf(name_, sizeof name_, "%s", to.name.c_str());
+  cur_ = file;
+}
+
+void GcodeFile::restart_buffer(uint64_t offset, uint32_t line) {
+  pos_ = end_ = 0;
+  eof_ = false;
+  pending_lf_ = false;
+  skipping_ = false;
+  consumed_ = offset;
+  line_start_ = offset;
+  line_no_ = line;
+}
+
+bool GcodeFile::seek(const SourcePos& p) {
+  if (p.file >= nfiles_ || p.line == 0) return false;
+  // A loop's head is usually still in the buffer: no read at all.
+  const uint64_t base = consumed_ - pos_;
+  if (p.file == cur_ && end_ > 0 && p.offset >= base && p.offset <= base + end_) {
+    pos_ = static_cast<std::size_t>(p.offset - base);
+    consumed_ = line_start_ = p.offset;
+    line_no_ = p.line - 1;
+    pending_lf_ = skipping_ = false;
+    return true;
+  }
+  switch_to(p.file);
+  if (p.file == 0 && tee_) {
+    if (p.offset > teed_) return false;
+  } else if (std::fseek(f_, static_cast<long>(p.offset), SEEK_SET) != 0) {
+    return false;
+  }
+  read_off_ = p.offset;
+  restart_buffer(p.offset, p.line - 1);
+  return true;
+}
+
+bool GcodeFile::open_subroutine(const char* name, SourcePos* start) {
+  if (nfiles_ > kSubFilesMax) return false;
+  for (const std::string& dir : sub_path_) {
+    const std::string path = dir + "/" + name + ".ngc";
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) continue;
+    struct stat st;
+    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
+      std::fclose(f);
+      continue;
+    }
+    const uint16_t k = nfiles_++;
+    files_[k] = Opened{f, true, false, false, 0, path};
+    switch_to(k);
+    restart_buffer(0, 0);
+    *start = SourcePos{0, 1, k};
+    return true;
+  }
+  return false;
 }
 
 std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n) {
@@ -226,7 +335,12 @@ void GcodeNotes::message(uint32_t line, int kind, const char* text) {
   if (print_) std::fprintf(stderr, "%s:%u: %s: %s\n", file_, line, k, text);
 }
 
-std::unique_ptr<ParamStore> gcode_param_store() { return std::unique_ptr<ParamStore>(new ParamStore()); }
+std::unique_ptr<GcodeMemory> gcode_memory() { return std::unique_ptr<GcodeMemory>(new GcodeMemory()); }
+
+void GcodeRunner::show_file() {
+  shown_file_ = file_->file_index();
+  messages_->set_file(file_->name());
+}
 
 bool GcodeRunner::step() {
   if (done_) return false;
@@ -236,7 +350,11 @@ bool GcodeRunner::step() {
   GcodeFile::Read r = file_->next(&text, &len, &line_no);
   if (r == GcodeFile::Read::kEof) {
     done_ = true;
-    interp_->end_of_input(lines_);
+    GcodeDiag d{};
+    // What is left unclosed is reported at its line in the program (a
+    // subroutine file may have ended before its sub was found).
+    if (shown_file_ != 0) messages_->set_file(file_->program_name());
+    if (interp_->end_of_input(last_line_, &d) != GcodeError::kOk) messages_->error(d);
     return false;
   }
   if (r == GcodeFile::Read::kIoError) {
@@ -259,6 +377,8 @@ bool GcodeRunner::step() {
     return false;
   }
   ++lines_;
+  if (file_->file_index() == 0 && line_no > last_line_) last_line_ = line_no;
+  if (file_->file_index() != shown_file_) show_file();
   GcodeError e;
   if (r == GcodeFile::Read::kTooLong) {
     e = GcodeError::kLineTooLong;
@@ -273,7 +393,7 @@ bool GcodeRunner::step() {
   }
   if (e != GcodeError::kOk && d.follow_on) ++follow_ons_;  // maybe a consequence of an error already reported
   if (e != GcodeError::kOk && (!d.follow_on || show_follow_ons_)) {
-    d.line = line_no;
+    if (!d.line) d.line = line_no;  // the interpreter names another line for an endless loop
     messages_->error(d);
     if (stop_at_first_error_) {
       done_ = true;

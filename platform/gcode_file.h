@@ -43,11 +43,16 @@
 
 #include "core/gcode/block.h"
 #include "core/gcode/error.h"
+#include "core/gcode/source.h"
 #include "core/motion/interp.h"
 
 namespace dexmill {
 
-class GcodeFile {
+// Also the program's GcodeSource (core/gcode/source.h): o-word loops and
+// calls seek back in it, and `o<name> call` opens NAME.ngc from the
+// subroutine path. A pipe (standard input) is copied to an anonymous
+// temporary file as it is read, so it can be read again too.
+class GcodeFile final : public GcodeSource {
  public:
   GcodeFile() = default;
   GcodeFile(const GcodeFile&) = delete;
@@ -55,7 +60,23 @@ class GcodeFile {
   ~GcodeFile();
 
   // Opens `path`, or standard input for "-". False on failure (see error()).
-  bool open(const char* path);
+  // `shown` (when not null) is the name messages give it (ProgramInput's
+  // copy of standard input is "<stdin>").
+  bool open(const char* path, const char* shown = nullptr);
+
+  // GcodeSource: positions of the line next() returned last.
+  SourcePos line_start() const override { return SourcePos{line_start_, line_no_, cur_}; }
+  SourcePos line_next() const override { return SourcePos{consumed_, line_no_ + 1, cur_}; }
+  bool seek(const SourcePos& p) override;
+  bool open_subroutine(const char* name, SourcePos* start) override;
+  // Directories searched for NAME.ngc (LinuxCNC's SUBROUTINE_PATH), in order.
+  void set_subroutine_path(std::vector<std::string> dirs) { sub_path_ = std::move(dirs); }
+  // The program's name for messages (name() is the current file's).
+  const char* program_name() const { return files_[0].name.c_str(); }
+  // The file the last line came from (0: the program).
+  uint16_t file_index() const { return cur_; }
+  // Subroutine files open at once (each is opened once and kept).
+  static constexpr int kSubFilesMax = 16;
 
   enum class Read : uint8_t {
     kLine,     // *text/*len hold the line, without its line end
@@ -94,6 +115,27 @@ class GcodeFile {
   bool more();
   std::size_t find_eol() const;
   void take_eol();
+  bool open_one(const char* path);
+  void switch_to(uint16_t file);
+  void restart_buffer(uint64_t offset, uint32_t line);
+
+  // What is kept of each file while another is read.
+  struct Opened {
+    std::FILE* f = nullptr;
+    bool owned = false;
+    bool started = false;
+    bool cr_lines = false;
+    uint64_t read_off = 0;
+    std::string name;
+  };
+  Opened files_[kSubFilesMax + 1];
+  uint16_t nfiles_ = 1;
+  uint16_t cur_ = 0;
+  std::vector<std::string> sub_path_;
+  // The program read from a pipe: its copy so far (see open()).
+  std::FILE* tee_ = nullptr;
+  uint64_t teed_ = 0;
+  uint64_t read_off_ = 0;  // offset in the current file of the next byte fill() reads
 
   std::FILE* f_ = nullptr;
   bool owned_ = false;
@@ -120,6 +162,8 @@ class GcodeFile {
 class GcodeMessages : public GcodeDiagSink {
  public:
   virtual void error(const GcodeDiag& d) = 0;
+  // Diagnostics from now on are of this file (a subroutine file's lines).
+  virtual void set_file(const char* name) { (void)name; }
   uint32_t errors() const { return errors_; }
   uint32_t warnings() const { return warnings_; }
 
@@ -139,6 +183,7 @@ class GcodeStderrMessages final : public GcodeMessages {
   explicit GcodeStderrMessages(const char* file_name, std::FILE* out = stderr) : file_(file_name), out_(out) {}
   void error(const GcodeDiag& d) override;
   void warning(const GcodeDiag& d) override;
+  void set_file(const char* name) override { file_ = name; }
 
  private:
   const char* file_;
@@ -164,15 +209,27 @@ class GcodeNotes final : public GcodeMessageSink {
   bool print_;
 };
 
-// The parameters of one run of a program (core/gcode/params.h, about
-// 57 KB), for InterpOptions::params.
-std::unique_ptr<ParamStore> gcode_param_store();
+// The memory of one run of a program (about 68 KB): its parameters
+// (core/gcode/params.h) and its o-word control flow
+// (core/motion/oword_store.h), for InterpOptions::params and ::control.
+struct GcodeMemory {
+  ParamStore params;
+  OwordStore control;
+  void attach(InterpOptions* opt) {
+    opt->params = &params;
+    opt->control = &control;
+  }
+};
+std::unique_ptr<GcodeMemory> gcode_memory();
 
-// Feeds a file to an interpreter one line per step().
+// Feeds a file to an interpreter one line per step(); the file is the
+// interpreter's source (Interp::set_source), so loops and calls read it again.
 class GcodeRunner {
  public:
   GcodeRunner(GcodeFile* file, Interp* interp, GcodeMessages* messages, bool stop_at_first_error)
-      : file_(file), interp_(interp), messages_(messages), stop_at_first_error_(stop_at_first_error) {}
+      : file_(file), interp_(interp), messages_(messages), stop_at_first_error_(stop_at_first_error) {
+    interp->set_source(file);
+  }
 
   // Reads and interprets one line. False when there is nothing more to do:
   // end of file, an I/O error, an input that is not text (one error for it
@@ -194,6 +251,8 @@ class GcodeRunner {
   void show_follow_ons(bool on) { show_follow_ons_ = on; }
 
  private:
+  void show_file();
+
   GcodeFile* file_;
   Interp* interp_;
   GcodeMessages* messages_;
@@ -201,6 +260,8 @@ class GcodeRunner {
   bool done_ = false;
   bool io_error_ = false;
   uint32_t lines_ = 0;
+  uint32_t last_line_ = 0;  // the program file's last line number read
+  uint16_t shown_file_ = 0;  // the file messages name
   uint32_t follow_ons_ = 0;
   bool show_follow_ons_ = false;
 };

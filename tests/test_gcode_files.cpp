@@ -64,12 +64,13 @@ std::string read_file(const std::string& path) {
   return s;
 }
 
-}  // namespace
-
-TEST(gcode_bad_corpus) {
-  const std::string dir = std::string(t::tests_dir()) + "/gcode/bad";
+// Each program of `sub` (tests/gcode/SUB/*.ngc) gives the error its first
+// line expects. With `memory`, the interpreter reads parameters and o-words
+// (as `dexmill path` does); without, as a panel without that memory.
+void check_bad_programs(const char* sub, std::size_t at_least, bool memory) {
+  const std::string dir = std::string(t::tests_dir()) + "/gcode/" + sub;
   const auto files = list(dir, ".ngc");
-  CHECK_GE(files.size(), 30u);
+  CHECK_GE(files.size(), at_least);
   for (const auto& name : files) {
     const std::string path = dir + "/" + name;
     std::string first = read_file(path);
@@ -85,6 +86,8 @@ TEST(gcode_bad_corpus) {
     Collect msgs;
     InterpOptions opt;
     opt.warnings = &msgs;
+    const std::unique_ptr<GcodeMemory> mem = gcode_memory();
+    if (memory) mem->attach(&opt);
     Interp interp(nullptr, opt);
     GcodeRunner runner(&file, &interp, &msgs, true);
     runner.run_all();
@@ -95,6 +98,14 @@ TEST(gcode_bad_corpus) {
     }
   }
 }
+
+}  // namespace
+
+TEST(gcode_bad_corpus) { check_bad_programs("bad", 30, false); }
+
+// O-word control flow's errors, each at the line where LinuxCNC 2.9's rs274
+// gives its own (checked when they were written).
+TEST(gcode_bad_control_flow) { check_bad_programs("bad_flow", 22, true); }
 
 TEST(gcode_golden_paths) {
   const char* bin = t::dexmill_binary();

@@ -59,3 +59,15 @@ TEST(params_errors_are_file_line_col) {
     CHECK(has(r.err, c.message));
   }
 }
+
+// #5061-#5070 after a probe move: its end point (the machine's contact
+// point cannot be known), in the coordinates in force then, and 1.
+TEST(params_probe_results_are_the_end_point) {
+  if (skip()) return;
+  const std::string p = write_tmp("probe_params.ngc",
+                                  "G21 G90\nG10 L2 P1 X10\nG54\nG0 X5 Y5 Z5\nG38.2 Z-2 F50\n"
+                                  "G0 X[#5061 + 1] Y#5062 Z[#5063 + #5070]\nM2\n");
+  const Result r = run_command("path " + p);
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "feed 15.00000 5.00000 -2.00000\nrapid 16.00000 5.00000 -1.00000"));
+}

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tools/cli.h"
+#include "tools/read_options.h"
 #include "tools/run_job.h"
 #include "tools/run_options.h"
 
@@ -21,8 +22,9 @@ namespace {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N] [--follow-ons]\n"
-               "                            [--default-feed MM/MIN]\n\n"
+               "usage: dexmill check FILE|- [--max-errors N] [--follow-ons] [--units mm|inch]\n"
+               "                            [--default-feed MM/MIN] [--subroutine-path DIR]\n"
+               "                            [--max-blocks N]\n\n"
                "Reads and interprets the program as `path` does, reporting every error\n"
                "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
                "error is skipped and changes nothing; errors that may only follow from\n"
@@ -30,11 +32,12 @@ void usage(std::FILE* f) {
                "shown. Exit 0 clean, 1 with errors.\n"
                "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
                "--follow-ons: show those errors too, marked (they count towards N).\n"
-               "--default-feed: the controller's feed for moves made with no F in force.\n\n"
+               "%s\n"
                "       dexmill check --simulate FILE [run options]\n\n"
                "Cuts the program as `run` does with the safety checks (all unless --check\n"
                "names some) and, with --design, the gouge watch; writes no image. The findings\n"
-               "are warnings; exit 4 when there is one, 0 when clean, 1 with input errors.\n");
+               "are warnings; exit 4 when there is one, 0 when clean, 1 with input errors.\n",
+               kReadOptionsUsage);
 }
 
 int check_simulate(int argc, char** argv) {
@@ -61,25 +64,17 @@ int cmd_check(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (!std::strcmp(argv[i], "--simulate")) return check_simulate(argc, argv);
   const char* file = nullptr;
-  bool inch = false;
+  ReadOptions ro;
   long max_errors = 100;
   bool follow_ons = false;
-  int64_t default_feed = 0;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
       return kExitOk;
     }
-    if (!std::strcmp(a, "--units")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "--units needs a value");
-      const char* v = argv[++i];
-      if (!parse_units(v, &inch)) return kExitUsage;
-      continue;
-    }
-    if (!std::strcmp(a, "--default-feed")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "--default-feed needs a value");
-      if (!parse_default_feed(argv[++i], &default_feed)) return kExitUsage;
+    if (const int taken = take_read_option(argc, argv, &i, &ro)) {
+      if (taken < 0) return kExitUsage;
       continue;
     }
     if (!std::strcmp(a, "--follow-ons")) {
@@ -103,13 +98,11 @@ int cmd_check(int argc, char** argv) {
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
-  const std::unique_ptr<ParamStore> params = gcode_param_store();
+  ReadSetup setup;
   InterpOptions opt;
-  opt.inch = inch;
+  setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;
-  opt.params = params.get();
   opt.messages = &notes;
-  opt.default_feed_nm_per_min = default_feed;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);

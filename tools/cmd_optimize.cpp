@@ -137,13 +137,13 @@ int cmd_optimize(int argc, char** argv) {
   }
   ToolTableFile table;
   if (!o.tools_file.empty()) {
-    const int t = load_tool_table(o.tools_file, o.inch, &table);
+    const int t = load_tool_table(o.tools_file, o.read.inch, &table);
     if (t != kExitOk) return t;
   }
   OptimizeInput in;
   in.read_path = input.read_path();
   in.shown_name = shown;
-  in.inch = o.inch;
+  in.inch = o.read.inch;
   in.tools = o.tools_file.empty() ? nullptr : &table;
   in.limits = &limits;
   in.time_model.rapid_nm_per_min = o.rapid_nm_per_min;

@@ -10,6 +10,7 @@
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
+#include "tools/read_options.h"
 
 namespace dexmill {
 namespace cli {
@@ -69,14 +70,14 @@ class PathPrinter final : public CanonSink {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n\n"
+               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n"
+               "                           [--subroutine-path DIR] [--max-blocks N]\n\n"
                "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
                "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
-               "<= --chord mm (default 0.001). --units: units before any G20/G21 (mm).\n"
-               "--default-feed: the controller's feed for moves made with no F in force\n"
-               "(warned once; without it such a move is an error).\n"
-               "Stops at the first error (exit 1).\n");
+               "<= --chord mm (default 0.001). Stops at the first error (exit 1).\n"
+               "%s",
+               kReadOptionsUsage);
 }
 
 }  // namespace
@@ -84,25 +85,20 @@ void usage(std::FILE* f) {
 int cmd_path(int argc, char** argv) {
   const char* file = nullptr;
   int64_t chord_nm = 1000;
-  bool inch = false;
-  int64_t default_feed = 0;
+  ReadOptions ro;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
       return kExitOk;
     }
-    if (!std::strcmp(a, "--chord") || !std::strcmp(a, "--units") || !std::strcmp(a, "--default-feed")) {
+    if (const int taken = take_read_option(argc, argv, &i, &ro)) {
+      if (taken < 0) return kExitUsage;
+      continue;
+    }
+    if (!std::strcmp(a, "--chord")) {
       if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
       const char* v = argv[++i];
-      if (!std::strcmp(a, "--units")) {
-        if (!parse_units(v, &inch)) return kExitUsage;
-        continue;
-      }
-      if (!std::strcmp(a, "--default-feed")) {
-        if (!parse_default_feed(v, &default_feed)) return kExitUsage;
-        continue;
-      }
       Decimal d;
       std::size_t pos = 0, n = std::strlen(v);
       if (decimal_parse(v, n, &pos, &d) != DecimalParse::kOk || pos != n)
@@ -124,13 +120,11 @@ int cmd_path(int argc, char** argv) {
   std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
-  const std::unique_ptr<ParamStore> params = gcode_param_store();
+  ReadSetup setup;
   InterpOptions opt;
-  opt.inch = inch;
+  setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;
-  opt.params = params.get();
   opt.messages = &notes;
-  opt.default_feed_nm_per_min = default_feed;
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -31,11 +31,11 @@ std::string mm_per_min(int64_t nm_per_min) { return feed_number(nm_per_min, fals
 int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   GcodeFile file;
   if (!file.open(in.read_path.c_str())) return fail(kExitIo, "%s", file.error());
-  const std::unique_ptr<ParamStore> params = gcode_param_store();
+  const std::unique_ptr<GcodeMemory> memory = gcode_memory();
   InterpOptions opt;
   opt.inch = in.inch;
   opt.tools = in.tools;  // warnings were printed by the cut's reading
-  opt.params = params.get();
+  memory->attach(&opt);
   LineRecords sink;
   Interp interp(&sink, opt);
   MotionSummary before(in.time_model), after(in.time_model);
@@ -49,7 +49,13 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     if (rd == GcodeFile::Read::kIoError) return fail(kExitIo, "%s", file.error());
     GcodeDiag diag{};
     sink.records.clear();
-    if (rd != GcodeFile::Read::kLine || interp.execute_line(text, len, line, &diag) != GcodeError::kOk)
+    const GcodeError ge =
+        rd == GcodeFile::Read::kLine ? interp.execute_line(text, len, line, &diag) : GcodeError::kLineTooLong;
+    // A line a loop runs twice would want two feeds: the rewrite is per line.
+    if (ge == GcodeError::kOwordNoSource)
+      return fail(kExitInput, "%s:%u: dexmill optimize rewrites programs without o-word loops and calls only",
+                  in.shown_name.c_str(), line);
+    if (ge != GcodeError::kOk)
       return fail(kExitInput, "%s:%u: the program no longer reads as it did when it was cut", in.shown_name.c_str(), line);
     FeedLine fl;
     int64_t hi = 0;  // G94: the moves of a line share its F; G93: a line makes one move

@@ -55,6 +55,7 @@ constexpr size_t kMaxReportedWarnings = 100;
 class RunMessages final : public GcodeMessages {
  public:
   RunMessages(const std::string& file, bool print) : file_(file), print_(print) {}
+  void set_file(const char* name) override { file_ = name; }
   void error(const GcodeDiag& d) override { add(d, true); }
   void warning(const GcodeDiag& d) override { add(d, false); }
   // An error found outside the interpreter (a tool the table lacks).
@@ -374,7 +375,7 @@ int run_job(RunOptions o) {
   ToolTableFile table;
   const bool have_table = !o.tools_file.empty() || demo;
   if (!o.tools_file.empty()) {
-    const int code = load_tool_table(o.tools_file, o.inch, &table);
+    const int code = load_tool_table(o.tools_file, o.read.inch, &table);
     if (code != kExitOk) return code;
   } else if (demo) {
     const char* t = demo_tool_table();
@@ -386,7 +387,7 @@ int run_job(RunOptions o) {
   const ToolLibrary* lib = have_table ? static_cast<const ToolLibrary*>(&table) : &single;
 
   rep.file = shown_name;
-  rep.units = o.inch ? "inch" : "mm";
+  rep.units = o.read.inch ? "inch" : "mm";
   rep.mode = o.mode == CutMode::kSweep ? "sweep" : "stamp";
   rep.default_tool = o.tool_text;
   rep.tool_table = demo && o.tools_file.empty() ? "(built-in demo table)" : o.tools_file;
@@ -416,14 +417,12 @@ int run_job(RunOptions o) {
   {
     const double t0 = clock_now_s();
     GcodeFile in;
-    if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
-    const std::unique_ptr<ParamStore> params = gcode_param_store();
+    if (!in.open(read_path.c_str(), shown_name.c_str())) return fail(kExitIo, "%s", in.error());
+    ReadSetup setup;
     InterpOptions opt;
-    opt.inch = o.inch;
+    setup.apply(o.read, &opt, &in);
     opt.warnings = &scan_msgs;
-    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     opt.tools = have_table ? &table : nullptr;
-    opt.params = params.get();
     opt.messages = &notes;
     Interp interp(&scan, opt);
     scan.interp = &interp;
@@ -701,7 +700,7 @@ int run_job(RunOptions o) {
       out->set_path_visible(o.path_overlay);
     }
   if (is_live) live.set_before_draw([&cut] { cut.sync(); });
-  cut.status.inch = o.inch;
+  cut.status.inch = o.read.inch;
   cut.status.tool_spec = o.tool_text;
   bool user_quit = false;
   std::vector<PointNm> error_mark, stop_mark;
@@ -710,14 +709,12 @@ int run_job(RunOptions o) {
     if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
     if (frames) cut.write_frame();  // the untouched stock
     GcodeFile in;
-    if (!in.open(read_path.c_str())) return fail(kExitIo, "%s", in.error());
+    if (!in.open(read_path.c_str(), shown_name.c_str())) return fail(kExitIo, "%s", in.error());
     RunMessages quiet(shown_name, false);
-    const std::unique_ptr<ParamStore> params = gcode_param_store();
+    ReadSetup setup;
     InterpOptions opt;
-    opt.inch = o.inch;
+    setup.apply(o.read, &opt, &in);
     opt.tools = have_table ? &table : nullptr;
-    opt.params = params.get();
-    opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     Interp interp(&cut, opt);
     cut.interp = &interp;
     if (!o.material.empty()) cut.material = &material;

@@ -90,6 +90,10 @@ void run_usage(std::FILE* f) {
                "  --rapid MM/MIN             rapid rate for the time estimate (default 5000)\n"
                "  --default-feed MM/MIN      the controller's feed for moves made with no F in force\n"
                "                             (warned once; default: none, such a move is an error)\n"
+               "  --subroutine-path DIR[:DIR] where `o<name> call` finds NAME.ngc (LinuxCNC's\n"
+               "                             SUBROUTINE_PATH)\n"
+               "  --max-blocks N             blocks a looping program may run (default 10000000;\n"
+               "                             0: no limit); an endless loop stops with an error\n"
                "  --accel MM/S2              time estimate with every move speeding up from rest and\n"
                "                             slowing to rest at this acceleration (default: none)\n"
                "  --image FILE.png|FILE.ppm  final frame (the extension picks the format; - is stdout)\n"
@@ -159,7 +163,7 @@ bool run_draws(const RunOptions& o) {
 
 bool run_option_takes_value(const char* a) {
   static const char* const kWithValue[] = {"--stock", "--grid", "--pitch", "--tool", "--tools", "--units",
-                                           "--mode", "--rapid", "--default-feed", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
+                                           "--mode", "--rapid", "--default-feed", "--subroutine-path", "--max-blocks", "--accel", "--image", "--frames", "--frame-format", "--every", "--size", "--view",
                                            "--azimuth", "--elevation", "--heightmap", "--stl", "--report",
                                            "--fbdev", "--hold", "--speed", "--design", "--design-z",
                                            "--design-offset", "--tolerance", "--tolerance-box", "--color", "--thin", "--stop-at", "--error-image", "--overlay", "--check", "--table", "--fixture", "--material", "--demo"};
@@ -196,6 +200,10 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       have_file = true;
       continue;
     }
+    if (const int taken = take_read_option(argc, argv, &i, &o->read)) {
+      if (taken < 0) return kExitUsage;
+      continue;
+    }
     if (!run_option_takes_value(a)) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", a, argv[0]);
     if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
     const char* v = argv[++i];
@@ -221,8 +229,6 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       o->tool_given = true;
     } else if (name == "--tools") {
       o->tools_file = v;
-    } else if (name == "--units") {
-      if (!parse_units(v, &o->inch)) return kExitUsage;
     } else if (name == "--mode") {
       if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
       else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;
@@ -231,8 +237,6 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (!parse_scaled(v, kNmPerMm, &o->rapid_nm_per_min) || o->rapid_nm_per_min < kNmPerMm ||
           o->rapid_nm_per_min > 1000000 * kNmPerMm)
         return fail(kExitUsage, "--rapid needs the machine's rapid rate in mm/min, from 1 to 1000000, not '%s'", v);
-    } else if (name == "--default-feed") {
-      if (!parse_default_feed(v, &o->default_feed_nm_per_min)) return kExitUsage;
     } else if (name == "--accel") {
       if (!parse_scaled(v, kNmPerMm, &o->accel_nm_per_s2) || o->accel_nm_per_s2 < kNmPerMm ||
           o->accel_nm_per_s2 > 1000000 * kNmPerMm)

@@ -14,6 +14,7 @@
 #include "core/motion/summary.h"
 #include "core/design/builtin.h"
 #include "core/tool/tool.h"
+#include "tools/read_options.h"
 #include "display/camera.h"
 #include "platform/image_file.h"
 
@@ -40,7 +41,6 @@ struct RunOptions {
   std::string tool_text = "flat:6";
   bool tool_given = false;       // --tool was given
   std::string tools_file;        // --tools
-  bool inch = false;             // --units inch
   CutMode mode = CutMode::kSweep;
   std::string image;             // --image (demo: out/final.ppm)
   std::string frames_dir;        // --frames
@@ -99,7 +99,7 @@ struct RunOptions {
   std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
   bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
-  int64_t default_feed_nm_per_min = 0;  // --default-feed MM/MIN (InterpOptions); 0: none
+  ReadOptions read;  // --units, --default-feed, --subroutine-path, --max-blocks
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
   bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
   bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)

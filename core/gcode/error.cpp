@@ -123,9 +123,45 @@ const char* gcode_error_template(GcodeError e) {
       return "{w} is no LinuxCNC M code (a machine may define it, by a remap): skipped, what it does is not simulated";
     case GcodeError::kWarnDiameterMode:
       return "{w}: lathe diameter mode: X words are diameters until G8 (LinuxCNC halves them, on a mill too)";
+    case GcodeError::kWarnM99Main:
+      return "M99 in the main program: the machine starts the program again, endlessly; the preview runs it once";
     case GcodeError::kWarnManualRetract:
       return "{w}: the operator retracts the tool by hand at the program stop; the next move starts from the "
              "bottom, as in LinuxCNC";
+    case GcodeError::kOwordBadLabel:
+      return "'{w}': an o-word label is a number (o100, o[#1]) or a <name> of at most 31 characters";
+    case GcodeError::kOwordUnknownStatement:
+      return "unknown o-word statement '{w}' (sub endsub call return do while endwhile repeat endrepeat if "
+             "elseif else endif break continue)";
+    case GcodeError::kOwordTextAfter: return "unexpected '{w}' after the o-word statement (only comments may follow)";
+    case GcodeError::kOwordNoValue: return "'{w}' needs its value in brackets (as 'while [#1 LT 3]')";
+    case GcodeError::kOwordTooManyArgs: return "more than 30 arguments in a call (LinuxCNC's #1..#30)";
+    case GcodeError::kOwordUndefinedLabel: return "o{w}: no if, while, do or repeat with this label came before";
+    case GcodeError::kOwordLabelKind: return "o{w}: the label belongs to another kind of statement (line {n})";
+    case GcodeError::kOwordDuplicateLabel: return "o{w}: the label was already used at line {n}";
+    case GcodeError::kOwordNotInSub: return "o{w}: return or endsub outside a subroutine";
+    case GcodeError::kOwordNestedSub: return "o{w}: a subroutine defined inside another one's definition";
+    case GcodeError::kOwordSubRedefined: return "o{w}: subroutine defined twice (first at line {n})";
+    case GcodeError::kOwordSubAgain:
+      return "o{w}: the definition of a subroutine is met again (it was called before it was defined, or it "
+             "is inside a loop); LinuxCNC stops here too";
+    case GcodeError::kOwordCallDepth: return "o{w}: subroutine calls nested more than 9 deep (LinuxCNC's limit)";
+    case GcodeError::kOwordSubNotFound:
+      return "o{w}: no such subroutine (not defined in the program, nor a file of that name on the subroutine "
+             "path)";
+    case GcodeError::kOwordTooManyLabels: return "o{w}: more than {n} o-word labels in a program (dexmill's fixed limit)";
+    case GcodeError::kOwordUnclosed:
+      return "o{w} of line {n} is never closed: the program ends while looking for its end (endif, endwhile, "
+             "endrepeat, the closing while of a do, or endsub)";
+    case GcodeError::kOwordNoSource:
+      return "o{w}: loops and calls re-read the program, and this input cannot be re-read";
+    case GcodeError::kOwordSeek: return "o{w}: cannot go back in the program to line {n} (the input cannot be re-read)";
+    case GcodeError::kBlockLimit:
+      return "the program ran {n} blocks (the --max-blocks limit): does the loop of line {m} never end?";
+    case GcodeError::kOwordFanucMix:
+      return "o{w}: a Fanuc-style program (a bare O{w} line) is called with M98 and ends with M99; a sub "
+             "is called with 'call' and ends with endsub or return";
+    case GcodeError::kM98NoP: return "M98 needs a P word: the number of the O program it calls";
   }
   return "unknown error";
 }
@@ -143,6 +179,13 @@ struct Out {
     while (*s) put(*s++);
   }
 };
+
+void put_uint(Out* o, uint64_t v) {
+  char digits[24];
+  int k = 0;
+  do { digits[k++] = static_cast<char>('0' + v % 10); v /= 10; } while (v);
+  while (k) o->put(digits[--k]);
+}
 
 // nm as mm with 4 decimals, rounded to nearest (ties away from zero).
 void put_mm4(Out* o, int64_t nm) {
@@ -167,11 +210,9 @@ size_t gcode_format_message(const GcodeDiag& d, char* buf, size_t n) {
     if (t[0] == '{' && t[1] && t[2] == '}') {
       if (t[1] == 'w') o.puts(d.word);
       else if (t[1] == 'n') {
-        char digits[24];
-        int k = 0;
-        uint64_t v = abs_u64(d.a_nm);
-        do { digits[k++] = static_cast<char>('0' + v % 10); v /= 10; } while (v);
-        while (k) o.put(digits[--k]);
+        put_uint(&o, abs_u64(d.a_nm));
+      } else if (t[1] == 'm') {
+        put_uint(&o, abs_u64(d.b_nm));
       } else if (t[1] == 'a') put_mm4(&o, d.a_nm);
       else if (t[1] == 'b') put_mm4(&o, d.b_nm);
       t += 2;

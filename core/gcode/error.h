@@ -121,12 +121,36 @@ enum class GcodeError : uint8_t {
   kWarnMcodeMachine = 154,
   kWarnManualRetract = 155,
   kWarnDiameterMode = 156,
+  kWarnM99Main = 157,
+  // -- o-word control flow (200..229; errors, though after the warnings:
+  // the ranges above were full)
+  kOwordBadLabel = 200,
+  kOwordUnknownStatement = 201,
+  kOwordTextAfter = 202,
+  kOwordNoValue = 203,
+  kOwordTooManyArgs = 204,
+  kOwordUndefinedLabel = 205,
+  kOwordLabelKind = 206,
+  kOwordDuplicateLabel = 207,
+  kOwordNotInSub = 208,
+  kOwordNestedSub = 209,
+  kOwordSubRedefined = 210,
+  kOwordSubAgain = 211,
+  kOwordCallDepth = 212,
+  kOwordSubNotFound = 213,
+  kOwordTooManyLabels = 214,
+  kOwordUnclosed = 215,
+  kOwordNoSource = 216,
+  kOwordSeek = 217,
+  kBlockLimit = 218,
+  kOwordFanucMix = 220,
+  kM98NoP = 221,
 };
 
 // Stable number of an error, for messages and tests.
 inline int gcode_error_number(GcodeError e) { return static_cast<int>(e); }
 // True for the warning range (the line still ran, or was skipped safely).
-inline bool gcode_is_warning(GcodeError e) { return static_cast<int>(e) >= 140; }
+inline bool gcode_is_warning(GcodeError e) { return static_cast<int>(e) >= 140 && static_cast<int>(e) < 200; }
 
 struct GcodeDiag {
   GcodeError code;

@@ -23,6 +23,15 @@ void params_clear(ParamStore* p) {
   p->level = 0;
 }
 
+void params_drop_level(ParamStore* p, uint8_t level) {
+  int32_t kept = 0;
+  for (int32_t k = 0; k < p->nnamed; ++k) {
+    const bool local = p->named[k].name[0] != '_' && p->named[k].level == level;
+    if (!local) p->named[kept++] = p->named[k];
+  }
+  p->nnamed = kept;
+}
+
 bool param_fold_name(const char* name, size_t len, char* out) {
   size_t k = 0;
   for (size_t i = 0; i < len; ++i) {

@@ -47,6 +47,9 @@ struct ParamStore {
 // Every numbered parameter 0, no named one, level 0 (system kept).
 void params_clear(ParamStore* p);
 
+// Forgets the named locals of call level `level` (a subroutine returns).
+void params_drop_level(ParamStore* p, uint8_t level);
+
 // #n: kParamNumberRange outside 1..5602.
 GcodeError param_get(const ParamStore& p, int64_t n, GValue* out);
 GcodeError param_set(ParamStore* p, int64_t n, GValue v);

@@ -239,11 +239,13 @@ void Interp::reset() {
   any_failed_ = false;
   suspect_ = 0;
   warned_after_end_ = false;
+  sub_after_end_ = false;
   if (ParamStore* p = options_.params) {
     params_clear(p);
     p->system.read = &Interp::read_param;
     p->system.ctx = this;
   }
+  if (options_.control) oword_store_clear(options_.control);
   warned_once_ = 0;
 }
 
@@ -269,13 +271,54 @@ void Interp::warn(GcodeError code, uint32_t line, uint16_t col, const char* word
 }
 
 GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, GcodeDiag* diag) {
+  if (OwordStore* c = options_.control; c && options_.params && !state_.ended) {
+    // An endless loop stops here, once (nothing after it is run).
+    if (c->looped && options_.max_blocks && c->blocks >= options_.max_blocks) {
+      diag->code = GcodeError::kBlockLimit;
+      diag->line = c->loop_line;
+      diag->col = 1;
+      diag->word[0] = 0;
+      diag->a_nm = static_cast<int64_t>(options_.max_blocks);
+      diag->b_nm = c->loop_line;
+      diag->follow_on = false;
+      state_.ended = warned_after_end_ = any_failed_ = true;
+      return GcodeError::kBlockLimit;
+    }
+    ++c->blocks;
+    const bool skipping = oword_skipping();
+    const bool oline = oword_line_fast(text, len);
+    if (skipping || oline) {
+      if (!skipping) any_code_ = true;
+      if (!oline) return GcodeError::kOk;  // passed over unread, as in LinuxCNC
+      diag->follow_on = false;
+      const GcodeError e = run_oword(text, len, line, diag);
+      if (e != GcodeError::kOk) {
+        // The flow after a bad statement is unknown: what follows may be its consequence.
+        any_failed_ = true;
+        suspect_ = kFacetAll;
+        diag->line = line;
+      }
+      return e;
+    }
+  }
   GcodeBlock block;
   GcodeLineKind kind;
   // Nothing after the end is read, not even an assignment.
   GcodeError e = gcode_read_block(text, len, line, &block, &kind, diag, state_.ended ? nullptr : options_.params);
   diag->follow_on = false;
   if (state_.ended) {
-    // RS274/NGC: nothing after the end is read. Say so once if it looks like code.
+    // RS274/NGC: nothing after the end is read. Say so once if it looks like
+    // code; subroutines after the end are for calls made before it.
+    if (options_.control && options_.params && oword_line(text, len)) {
+      OwordHead h;
+      GcodeDiag ignored;
+      if (oword_read_head(text, len, *options_.params, &h, &ignored) == GcodeError::kOk) {
+        if (h.op == OwordOp::kSub || h.op == OwordOp::kProgramNumber) sub_after_end_ = true;
+        if (h.op == OwordOp::kEndsub || h.op == OwordOp::kM99) sub_after_end_ = false;
+      }
+      return GcodeError::kOk;
+    }
+    if (sub_after_end_) return GcodeError::kOk;
     if (!warned_after_end_ && (e != GcodeError::kOk || (kind == GcodeLineKind::kBlock && block.has) ||
                                kind == GcodeLineKind::kGrblCommand)) {
       warned_after_end_ = true;
@@ -340,33 +383,47 @@ void Interp::line_not_read() {
   suspect_ = kFacetAll;
 }
 
-void Interp::end_of_input(uint32_t last_line) {
+GcodeError Interp::end_of_input(uint32_t last_line, GcodeDiag* diag) {
+  GcodeDiag unclosed{};
+  if (!state_.ended && oword_unclosed(&unclosed) != GcodeError::kOk) {
+    any_failed_ = true;
+    if (diag) *diag = unclosed;
+    return unclosed.code;
+  }
   if (!any_code_) {
     warn(GcodeError::kWarnEmptyProgram, 1, 1, "");
-    return;
+    return GcodeError::kOk;
   }
   // A failed block may have been the end (M2 in it): then no verdict.
   if (!state_.ended && !(suspect_ & kFacetEnd))
     warn(state_.percent_open ? GcodeError::kWarnNoClosingPercent : GcodeError::kWarnNoProgramEnd,
          last_line ? last_line : 1, 1, "");
   if (!any_failed_ && moves_ == 0) warn(GcodeError::kWarnNoMotion, 1, 1, "");
+  return GcodeError::kOk;
+}
+
+uint32_t interp_run_source(Interp* in, MemorySource* src, GcodeDiag* first) {
+  uint32_t errors = 0, line = 0, last = 0;
+  const char* text = nullptr;
+  size_t len = 0;
+  in->set_source(src);
+  while (src->next(&text, &len, &line)) {
+    if (line > last) last = line;
+    GcodeDiag d;
+    if (in->execute_line(text, len, line, &d) != GcodeError::kOk) {
+      if (errors++ == 0 && first) *first = d;
+    }
+  }
+  GcodeDiag d;
+  if (in->end_of_input(last, &d) != GcodeError::kOk) {
+    if (errors++ == 0 && first) *first = d;
+  }
+  return errors;
 }
 
 uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first) {
-  uint32_t errors = 0, line = 1;
-  size_t start = 0;
-  for (size_t i = 0; i <= len; ++i) {
-    if (i < len && text[i] != '\n') continue;
-    if (i == len && start == len) break;  // no empty line after a final '\n'
-    GcodeDiag d;
-    if (in->execute_line(text + start, i - start, line, &d) != GcodeError::kOk) {
-      if (errors++ == 0 && first) *first = d;
-    }
-    ++line;
-    start = i + 1;
-  }
-  in->end_of_input(line - 1);
-  return errors;
+  MemorySource src(text, len);
+  return interp_run_source(in, &src, first);
 }
 
 }  // namespace dexmill

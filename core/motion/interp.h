@@ -33,7 +33,9 @@
 #include "core/gcode/error.h"
 #include "core/gcode/params.h"
 #include "core/math/decimal.h"
+#include "core/gcode/source.h"
 #include "core/motion/canon.h"
+#include "core/motion/oword_store.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -66,6 +68,17 @@ struct InterpOptions {
   // in force (before the first F, after G93/G94 cleared it); 0: none, such a
   // move is an error as in LinuxCNC. One warning, at the first such move.
   int64_t default_feed_nm_per_min = 0;
+  // O-word control flow (issue 21): caller memory (oword_store.h, about
+  // 11 KB; needs `params` too), cleared at reset. Null: o-words are refused
+  // as not supported.
+  OwordStore* control = nullptr;
+  // The program, for loops and calls to read again (core/gcode/source.h):
+  // the lines given to execute_line are this source's. Null: if/else and
+  // definitions still work; a loop or a call is an error.
+  GcodeSource* source = nullptr;
+  // Blocks a program may run once a loop or call went back (an endless
+  // loop stops with an error naming it); 0: no limit.
+  uint64_t max_blocks = kDefaultMaxBlocks;
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.
@@ -103,6 +116,8 @@ struct InterpState {
   int64_t cycle_r_nm, cycle_z_nm, cycle_q_nm;  // last R, Z, Q as written (nm)
   int64_t cycle_p_ms;       // last P (dwell) of G74/G82/G84/G86/G88/G89
   int64_t cycle_ijk_nm[3];  // last I, J, K of G87 as written (nm)
+  PointNm probe_prog;       // the last probe move's end, program frame at the time (#5061-#5063)
+  bool probed;              // a probe move was made (#5070)
   bool ended;               // after M2/M30 or a closing %
   bool percent_open;        // a first % line was seen
 };
@@ -134,7 +149,14 @@ class Interp {
   // with no percent sign or program end": a half-uploaded file ends like
   // that), and when the program is empty or makes no move. The last two
   // only when no block failed (a failed block's moves are unknown).
-  void end_of_input(uint32_t last_line);
+  // An error when the input ended in the middle of o-word control flow (an
+  // if with no endif, a call of a subroutine never found), *diag filled in
+  // (when not null).
+  GcodeError end_of_input(uint32_t last_line, GcodeDiag* diag = nullptr);
+
+  // The source the lines come from (InterpOptions::source), for a driver
+  // that opens it after the interpreter was made.
+  void set_source(GcodeSource* src) { options_.source = src; }
 
   bool ended() const { return state_.ended; }
   const InterpState& state() const { return state_; }
@@ -147,6 +169,13 @@ class Interp {
   void warn(GcodeError code, uint32_t line, uint16_t col, const char* word, int64_t a_nm = 0, int64_t b_nm = 0);
   // The interpreter's own parameters (core/motion/interp_params.cpp).
   static bool read_param(const void* ctx, int32_t n, const char* name, GValue* out);
+  // O-word control flow (core/motion/interp_oword.cpp).
+  bool oword_skipping() const {
+    const OwordStore* c = options_.control;
+    return c && (c->skip_label >= 0 || c->skip_sub[0]);
+  }
+  GcodeError run_oword(const char* text, size_t len, uint32_t line, GcodeDiag* d);
+  GcodeError oword_unclosed(GcodeDiag* d) const;
 
   CanonSink* sink_;
   InterpOptions options_;
@@ -157,15 +186,19 @@ class Interp {
   bool any_failed_ = false;   // a block failed
   uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)
   bool warned_after_end_ = false;
+  bool sub_after_end_ = false;  // in a subroutine defined after the end (for calls made before it)
   uint8_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
 
   friend struct BlockRunner;
 };
 
 // Runs a whole program held in memory (a panel keeps it in flash): the
-// lines of text[0, len) split at '\n', numbered from 1. Returns the number
-// of lines in error, follow-ons included (each skipped, as `dexmill check`
+// lines of `src` (core/gcode/source.h), numbered from 1, which becomes the
+// interpreter's source (for loops and calls). Returns the number of
+// lines in error, follow-ons included (each skipped, as `dexmill check`
 // does); *first gets the first error when not null. Ends with end_of_input.
+uint32_t interp_run_source(Interp* in, MemorySource* src, GcodeDiag* first);
+// The same over text[0, len).
 uint32_t interp_run_text(Interp* in, const char* text, size_t len, GcodeDiag* first);
 
 }  // namespace dexmill

@@ -50,6 +50,10 @@ GcodeError BlockRunner::run_probe(int motion) {
   if (nx.inverse_time) return fail(GcodeError::kFeedZero, col, w);
   if ((e = run_straight(motion, false)) != GcodeError::kOk) return e;
   if (plan.target == cur.pos) return fail(GcodeError::kProbeTooClose, col, w);
+  // #5061-#5070: where the probe stopped, in the coordinates in force, and
+  // that it touched; here the end point (interp_params.cpp).
+  for (int ax = 0; ax < 3; ++ax) axis_ref(nx.probe_prog, ax) = axis_val(plan.target, ax) - offset(ax);
+  nx.probed = true;
   warn_once(kOnceProbe, GcodeError::kWarnProbe, col, w);
   return GcodeError::kOk;
 }

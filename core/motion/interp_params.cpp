@@ -1,6 +1,8 @@
 // The interpreter's own parameters (issue 21), read as LinuxCNC 2.9 gives
 // them: lengths in the program's current units, positions in the current
-// coordinate system. Numbered: #5161-#5169 G28 home, #5181-#5189 G30 home,
+// coordinate system. Numbered: #5061-#5069 the last probe's end (a G38.x
+// move is simulated to its end point: the contact point cannot be known)
+// and #5070 1 after one, #5161-#5169 G28 home, #5181-#5189 G30 home,
 // #5210 G92 in force, #5211-#5219 G92 offsets, #5220 the coordinate system
 // (1 = G54 ... 9 = G59.3), #5221 + 20 (k - 1) + axis its offsets (#5230 +
 // 20 (k - 1): rotation, 0), #5400 the tool, #5403 its length offset,
@@ -9,7 +11,8 @@
 // _units_per_minute _feed _rpm _current_tool _current_pocket
 // _selected_tool _selected_pocket _coord_system _motion_mode _plane
 // _spindle_on _spindle_cw _flood _mist _ccomp _tool_offset _retract_r_plane
-// _retract_old_z, and _value (0 until subroutines return values).
+// _retract_old_z, and _value and _value_returned (what the last endsub or
+// return gave; oword_store.h).
 #include <string.h>
 
 #include "core/math/fixed.h"
@@ -46,6 +49,8 @@ bool numbered(const InterpState& s, int32_t n, int64_t* e9) {
     *e9 = a == 9 ? 0 : length(s, axis_nm(s.work_offset[k], a));
     return true;
   }
+  if (axis_of(5061, n, &axis)) return *e9 = length(s, axis_nm(s.probe_prog, axis)), true;
+  if (n == 5070) return *e9 = s.probed ? kGValueOne : 0, true;
   if (n == 5400) return *e9 = s.tool * kGValueOne, true;
   if (axis_of(5401, n, &axis)) return *e9 = axis == 2 ? length(s, s.tlo_nm) : 0, true;
   if (axis_of(5420, n, &axis)) return *e9 = position(s, axis), true;
@@ -86,7 +91,6 @@ bool named(const InterpState& s, const char* name, int64_t* e9) {
       {"_tool_offset", (s.tlo_nm != 0 ? 430 : 490) * one},
       {"_retract_r_plane", s.retract_to_r ? one : 0},
       {"_retract_old_z", s.retract_to_r ? 0 : one},
-      {"_value", 0},
   };
   for (const Flag& f : flags)
     if (!strcmp(name, f.name)) return *e9 = f.value, true;
@@ -96,7 +100,16 @@ bool named(const InterpState& s, const char* name, int64_t* e9) {
 }  // namespace
 
 bool Interp::read_param(const void* ctx, int32_t n, const char* name, GValue* out) {
-  const InterpState& s = static_cast<const Interp*>(ctx)->state_;
+  const Interp* in = static_cast<const Interp*>(ctx);
+  const InterpState& s = in->state_;
+  if (name && !strcmp(name, "_value")) {
+    const OwordStore* c = in->options_.control;
+    return out->e9 = c ? c->return_value.e9 : 0, true;
+  }
+  if (name && !strcmp(name, "_value_returned")) {
+    const OwordStore* c = in->options_.control;
+    return out->e9 = c && c->value_returned ? kGValueOne : 0, true;
+  }
   return name ? named(s, name, &out->e9) : numbered(s, n, &out->e9);
 }
 

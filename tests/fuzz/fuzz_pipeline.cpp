@@ -275,6 +275,11 @@ void run(const PipelineHeader& h, const char* text, size_t n) {
   // them (gcode.dict: #, [ ], functions, operators).
   static ParamStore params;
   iopt.params = &params;
+  // O-word control flow too (gcode.dict: sub, call, while ...), with a block
+  // limit that keeps a fuzzed endless loop short.
+  static OwordStore control;
+  iopt.control = &control;
+  iopt.max_blocks = 20000;
   const int64_t sagitta_nm = max_of<int64_t>(geo.pitch_nm / 4, 1000);
   static std::vector<PathSegment> path;
   path.clear();

@@ -11,6 +11,7 @@ const Section kSections[] = {
     {"stamp", golden_stamp},
     {"mill", golden_mill},
     {"path", golden_path},
+    {"flow", golden_flow},
     {"frame", golden_frame},
     {"safety", golden_safety},
     {"texture", golden_texture},

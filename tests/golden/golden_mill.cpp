@@ -1,8 +1,11 @@
-// Golden sections "mill" and "path": a G-code program stored as text (as a
-// panel would keep it in flash) read by the interpreter (core/motion/interp.h) and
-// (mill) cut by core/cut/mill.h in sweep and stamp mode into m = 8, 16, 32 grids,
-// one grid hash per mode and m; (path) every canonical record and arc chord
-// point hashed in order, the same trace `dexmill path` prints.
+// Golden sections "mill", "path" and "flow": a G-code program stored as text
+// (as a panel would keep it in flash) read by the interpreter
+// (core/motion/interp.h) and (mill) cut by core/cut/mill.h in sweep and
+// stamp mode into m = 8, 16, 32 grids, one grid hash per mode and m; (path)
+// every canonical record and arc chord point hashed in order, the same trace
+// `dexmill path` prints; (flow) the same trace of a program computed by
+// parameters, expressions and o-word loops and calls (issue 21): the
+// fixed-point functions and the flow, on every target.
 #include <stdint.h>
 #include <string.h>
 
@@ -44,6 +47,39 @@ const char kProgram[] =
     "G0 Z25\n"
     "M30\n"
     "%\n";
+
+// Every function and operator of RS274/NGC expressions, in the positions
+// and lengths of a real program's moves, and each o-word statement.
+const char kFlowProgram[] =
+    "G21 G90 G17 F400\n"
+    "#<_r> = [SQRT[2] * 5]\n"
+    "o<petal> sub\n"
+    "  #<a> = [#1 * 360 / #2]\n"
+    "  G1 X[#<_r> * COS[#<a>]] Y[#<_r> * SIN[#<a>]] Z[-LN[#1 + 1]]\n"
+    "  G3 X[#<_r> * COS[#<a> + 30]] Y[#<_r> * SIN[#<a> + 30]] R[#<_r>]\n"
+    "  o<petal> return [TAN[#<a> / 8] + ATAN[#1]/[#2]]\n"
+    "o<petal> endsub\n"
+    "o1 repeat [7]\n"
+    "  #10 = [#10 + 1]\n"
+    "  o<petal> call [#10] [7]\n"
+    "  G0 Z[#<_value>]\n"
+    "o1 endrepeat\n"
+    "o2 while [#10 GT 0]\n"
+    "  #10 = [#10 - 1]\n"
+    "  o3 if [#10 MOD 2 EQ 0]\n"
+    "    G1 X[EXP[#10 / 4]] Y[ASIN[#10 / 8] / 10]\n"
+    "  o3 elseif [#10 EQ 5]\n"
+    "    o2 continue\n"
+    "  o3 else\n"
+    "    G1 X[ACOS[#10 / 8] / 10] Y[2 ** [#10 / 3]]\n"
+    "  o3 endif\n"
+    "o2 endwhile\n"
+    "o4 do\n"
+    "  #11 = [#11 + 0.75]\n"
+    "  G1 Z[FIX[#11] - FUP[#11] + ROUND[#11 * 3] / 10]\n"
+    "  o4 break\n"
+    "o4 while [1]\n"
+    "M2\n";
 
 class Library : public ToolLibrary {
  public:
@@ -142,6 +178,20 @@ void golden_path(Out& out) {
   PathHash ph;
   const int errors = interpret(&ph);
   out.str("path").kv("records", ph.records).kv("points", ph.points).kx("trace", ph.h.value()).kv("errors", errors).end();
+}
+
+void golden_flow(Out& out) {
+  // The parameters' and the control flow's memory, as a panel keeps it.
+  static ParamStore params;
+  static OwordStore control;
+  InterpOptions opt;
+  opt.params = &params;
+  opt.control = &control;
+  PathHash ph;
+  Interp in(&ph, opt);
+  const int errors = static_cast<int>(interp_run_text(&in, kFlowProgram, strlen(kFlowProgram), nullptr));
+  out.str("flow").kv("records", ph.records).kv("points", ph.points).kx("trace", ph.h.value()).kv("errors", errors);
+  out.kv("blocks", static_cast<int64_t>(control.blocks)).end();
 }
 
 }  // namespace golden

@@ -1,0 +1,46 @@
+// How a program is read, the options `path`, `check` and `run` share
+// (../shared/CLI.md): --units, --default-feed, --subroutine-path and
+// --max-blocks, and the setting up of the interpreter's memory and source
+// from them (one place, not one per command).
+#ifndef DEXMILL_TOOLS_READ_OPTIONS_H
+#define DEXMILL_TOOLS_READ_OPTIONS_H
+
+#include <stdint.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/motion/interp.h"
+#include "platform/gcode_file.h"
+
+namespace dexmill {
+namespace cli {
+
+struct ReadOptions {
+  bool inch = false;                      // --units inch: units before any G20/G21
+  int64_t default_feed_nm_per_min = 0;    // --default-feed (0: none)
+  std::vector<std::string> subroutine_path;  // --subroutine-path DIR[:DIR...]
+  uint64_t max_blocks = kDefaultMaxBlocks;   // --max-blocks N (0: no limit)
+};
+
+// The usage text of these options (indented as the commands' own).
+extern const char kReadOptionsUsage[];
+
+// If argv[*i] is one of these options, reads it and its value (moving *i)
+// and returns 1; returns 0 for another argument; prints the usage error
+// and returns -1 for a bad value.
+int take_read_option(int argc, char** argv, int* i, ReadOptions* o);
+
+// The memory of one reading of a program (parameters, o-word control
+// flow), attached to `opt` with the options' values; the file gets the
+// subroutine path.
+struct ReadSetup {
+  std::unique_ptr<GcodeMemory> memory = gcode_memory();
+  void apply(const ReadOptions& o, InterpOptions* opt, GcodeFile* file);
+};
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
