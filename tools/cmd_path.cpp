@@ -72,8 +72,9 @@ void usage(std::FILE* f) {
                "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n\n"
                "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
-               "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
-               "<= --chord mm (default 0.001). --units: units before any G20/G21 (mm).\n"
+               "offset not applied), mm with 5 decimals. Arcs and splines become chords\n"
+               "with sagitta <= --chord mm (default 0.001). --units: units before any\n"
+               "G20/G21 (mm).\n"
                "--default-feed: the controller's feed for moves made with no F in force\n"
                "(warned once; without it such a move is an error).\n"
                "Stops at the first error (exit 1).\n");
@@ -131,6 +132,7 @@ int cmd_path(int argc, char** argv) {
   opt.params = params.get();
   opt.messages = &notes;
   opt.default_feed_nm_per_min = default_feed;
+  opt.spline_sagitta_nm = chord_nm;  // splines (G5, G5.1) come as chords of the same sagitta
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -93,6 +93,18 @@ enum class GcodeError : uint8_t {
   kCyclePeckCount = 77,
   kProbeNoAxis = 78,
   kProbeTooClose = 79,
+  // polar coordinates (@ ^) and splines (G5, G5.1), as LinuxCNC 2.9 checks them
+  kPolarWithXY = 88,
+  kPolarPlane = 89,
+  kPolarNotMotion = 90,
+  kPolarG53 = 91,
+  kPolarNoAngle = 92,
+  kPolarIncrementalOrigin = 93,
+  kSplinePlane = 94,
+  kSplineZ = 95,
+  kSplineIJ = 96,
+  kSplinePQ = 97,
+  kSplineNoAxis = 98,
   // -- recognised but not supported (100..139)
   kUnsupportedOword = 100,
   kUnsupportedParameter = 101,
@@ -101,7 +113,7 @@ enum class GcodeError : uint8_t {
   kUnsupportedGcode = 104,
   kUnsupportedMcode = 105,
   kUnsupportedCutterComp = 106,
-  kUnsupportedPolar = 107,
+  // 107 was polar coordinates, read since (kPolar*)
   kUnsupportedRotation = 108,
   // -- warnings (140..): the line was skipped or a word ignored, safely
   kWarnMcodeIgnored = 140,

@@ -66,6 +66,8 @@ struct InterpOptions {
   // in force (before the first F, after G93/G94 cleared it); 0: none, such a
   // move is an error as in LinuxCNC. One warning, at the first such move.
   int64_t default_feed_nm_per_min = 0;
+  // Sagitta of the chords G5/G5.1 splines become (core/motion/spline.h).
+  int64_t spline_sagitta_nm = 1000;
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.
