@@ -3,12 +3,14 @@
 #ifndef DEXMILL_TESTS_GCODE_TEST_UTIL_H
 #define DEXMILL_TESTS_GCODE_TEST_UTIL_H
 
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "core/motion/canon.h"
 #include "core/motion/interp.h"
+#include "tests/runner.h"
 
 namespace t {
 
@@ -41,6 +43,31 @@ inline dexmill::GcodeError run_program(dexmill::Interp* in, const char* program,
     p = e + 1;
   }
   return dexmill::GcodeError::kOk;
+}
+
+// A bad last line of a program: the error it gives, at which column.
+struct LineError {
+  const char* line;
+  dexmill::GcodeError error;
+  uint16_t col;
+};
+
+// Runs `prefix` (whole lines) and then each case's line, in a fresh
+// interpreter each, and checks the error, its line and its column.
+template <size_t N>
+void check_line_errors(const char* prefix, const LineError (&cases)[N]) {
+  uint32_t bad_line = 1;
+  for (const char* p = prefix; *p; ++p) bad_line += *p == '\n';
+  for (const LineError& c : cases) {
+    Recorder rec;
+    dexmill::InterpOptions opt;
+    dexmill::Interp in(&rec, opt);
+    dexmill::GcodeDiag d;
+    const std::string program = std::string(prefix) + c.line;
+    const bool ok = CHECK_EQ(run_program(&in, program.c_str(), &d), c.error) && CHECK_EQ(d.line, bad_line) &&
+                    CHECK_EQ(d.col, c.col);
+    if (!ok) std::printf("  in: %s\n", c.line);
+  }
 }
 
 constexpr int64_t mm(double v) { return static_cast<int64_t>(v * 1000000.0 + (v < 0 ? -0.5 : 0.5)); }

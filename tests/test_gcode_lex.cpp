@@ -129,8 +129,22 @@ TEST(lex_stray_letters_are_typos) {
   CHECK_EQ(std::strcmp(d.word, "@"), 0);
   CHECK_EQ(read("G1 X1 ^", &b, &k, &d), GcodeError::kMissingNumber);
   CHECK_EQ(read("G1 @-", &b, &k, &d), GcodeError::kBadNumber);
-  CHECK_EQ(read("G1 @ 5 ^90", &b, &k, &d), GcodeError::kUnsupportedPolar);
-  CHECK_EQ(d.col, 4);
-  CHECK_EQ(read("G1 ^#1", &b, &k, &d), GcodeError::kUnsupportedPolar);
-  CHECK_EQ(std::strcmp(d.word, "^"), 0);
+  // With a number, LinuxCNC's polar words: read like any word (slots 31 and
+  // 29 of GcodeBlock), a second one over the first as LinuxCNC reads them.
+  CHECK_EQ(read("G1 @ 5 ^90", &b, &k, &d), GcodeError::kOk);
+  CHECK(b.has_polar());
+  CHECK(b.has_axis());
+  CHECK(b.has_word('@') && b.has_word('^'));
+  CHECK_EQ(b.col_of('@'), 4);
+  CHECK_EQ(b.col_of('^'), 8);
+  CHECK_EQ(decimal_to_nm(b.val('@'), false), 5000000);
+  CHECK_EQ(decimal_to_nm(b.val('^'), false), 90000000);
+  CHECK_EQ(read("G1 @1 @2 ^3 ^4", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(decimal_to_nm(b.val('@'), false), 2000000);
+  CHECK_EQ(decimal_to_nm(b.val('^'), false), 4000000);
+  CHECK_EQ(read("G1 X1 Z2", &b, &k, &d), GcodeError::kOk);
+  CHECK(!b.has_polar());
+  // A computed polar value needs parameters, like any word's.
+  CHECK_EQ(read("G1 ^#1", &b, &k, &d), GcodeError::kUnsupportedParameter);
+  CHECK_EQ(read("G1 @[1]", &b, &k, &d), GcodeError::kUnsupportedExpression);
 }

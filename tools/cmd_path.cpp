@@ -74,8 +74,8 @@ void usage(std::FILE* f) {
                "                           [--subroutine-path DIR] [--max-blocks N]\n\n"
                "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
-               "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
-               "<= --chord mm (default 0.001). Stops at the first error (exit 1).\n"
+               "offset not applied), mm with 5 decimals. Arcs and splines become chords\n"
+               "with sagitta <= --chord mm (default 0.001). Stops at the first error (exit 1).\n"
                "%s",
                kReadOptionsUsage);
 }
@@ -125,6 +125,7 @@ int cmd_path(int argc, char** argv) {
   setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;
   opt.messages = &notes;
+  opt.spline_sagitta_nm = chord_nm;  // splines (G5, G5.1) come as chords of the same sagitta
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

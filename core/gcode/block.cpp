@@ -25,8 +25,8 @@ struct GInfo {
 constexpr GInfo kGCodes[] = {
     {0, kGMotion, Support::kYes},          {10, kGMotion, Support::kYes},
     {20, kGMotion, Support::kYes},         {30, kGMotion, Support::kYes},
-    {40, kGNonModal, Support::kYes},       {50, kGMotion, Support::kUnsupported},
-    {51, kGMotion, Support::kUnsupported}, {52, kGMotion, Support::kUnsupported},
+    {40, kGNonModal, Support::kYes},       {50, kGMotion, Support::kYes},
+    {51, kGMotion, Support::kYes},         {52, kGMotion, Support::kUnsupported},
     {53, kGMotion, Support::kUnsupported}, {70, kGLathe, Support::kYes},
     {80, kGLathe, Support::kYes}, {100, kGNonModal, Support::kYes},
     {170, kGPlane, Support::kYes},         {171, kGPlane, Support::kUnsupported},
@@ -388,13 +388,14 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
       }
       continue;
     }
-    const int li = w.letter - 'A';
+    const int li = gcode_word_index(w.letter);
     if (w.letter == 'A' || w.letter == 'B' || w.letter == 'C' || w.letter == 'U' || w.letter == 'V' ||
         w.letter == 'W') {
       const char letter_str[2] = {w.letter, 0};
       return fail(d, GcodeError::kUnsupportedAxis, w.col, letter_str);
     }
-    if ((b->has >> li) & 1u) {
+    // LinuxCNC reads a second '@' or '^' over the first (read_atsign, read_carat).
+    if (((b->has >> li) & 1u) && w.letter != '@' && w.letter != '^') {
       const char letter_str[2] = {w.letter, 0};
       return fail(d, GcodeError::kDuplicateWord, w.col, letter_str);
     }

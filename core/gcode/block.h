@@ -29,7 +29,7 @@ enum class GcodeMessage : uint8_t { kNone = 0, kDebug = 1, kPrint = 2, kMsg = 3 
 // Modal groups of G codes (numbers as in RS274/NGC and LinuxCNC).
 enum GGroup : uint8_t {
   kGNonModal = 0,     // G4 G10 G28 G28.1 G30 G30.1 G53 G92 G92.1 G92.2 G92.3
-  kGMotion = 1,       // G0 G1 G2 G3 G73 G80 G81 G82 G83 G85 G89 (and the unsupported ones)
+  kGMotion = 1,       // G0 G1 G2 G3 G5 G5.1 G38.x G73 G74 G80-G89 (and the unsupported ones)
   kGPlane = 2,        // G17 G18 G19
   kGDistance = 3,     // G90 G91
   kGArcDistance = 4,  // G90.1 G91.1
@@ -57,13 +57,19 @@ enum MGroup : uint8_t {
   kMGroupCount,
 };
 
+// Value words: the letters 'A'..'Z' at 0..25, and LinuxCNC's polar words
+// '^' (angle, degrees) at 29 and '@' (distance from the origin) at 31:
+// (letter - 'A') mod 32 for all of them, without a branch.
+constexpr int kGcodeWordSlots = 32;
+constexpr int gcode_word_index(char letter) { return (letter - 'A') & 31; }
+
 struct GcodeBlock {
   uint32_t line;
   bool block_delete;           // leading '/' (the switch is off: the block runs)
-  // Value words, indexed by letter - 'A'.
-  uint32_t has;                // bit i set: letter 'A' + i present
-  Decimal value[26];
-  uint16_t col[26];
+  // Value words, indexed by gcode_word_index().
+  uint32_t has;                // bit i set: word i present
+  Decimal value[kGcodeWordSlots];
+  uint16_t col[kGcodeWordSlots];
   // G codes in tenths, one per group; -1 when absent.
   int16_t g[kGGroupCount];
   uint16_t g_col[kGGroupCount];
@@ -80,16 +86,22 @@ struct GcodeBlock {
   GcodeMessage message_kind;
   char message[kGcodeMessageMax];
 
-  bool has_word(char letter) const { return (has >> (letter - 'A')) & 1u; }
-  uint16_t col_of(char letter) const { return col[letter - 'A']; }
-  const Decimal& val(char letter) const { return value[letter - 'A']; }
+  bool has_word(char letter) const { return (has >> gcode_word_index(letter)) & 1u; }
+  uint16_t col_of(char letter) const { return col[gcode_word_index(letter)]; }
+  const Decimal& val(char letter) const { return value[gcode_word_index(letter)]; }
   // No word at all (a blank or comment-only line; N alone counts as none).
   bool empty() const {
     for (int i = 0; i < kGGroupCount; ++i)
       if (g[i] >= 0) return false;
     return has == 0 && m_count == 0;
   }
-  bool has_axis() const { return (has & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')))) != 0; }
+  // A polar word ('@' or '^'): LinuxCNC's polar_flag.
+  static constexpr uint32_t kPolarBits = (1u << gcode_word_index('@')) | (1u << gcode_word_index('^'));
+  bool has_polar() const { return (has & kPolarBits) != 0; }
+  // X, Y, Z or a polar word: what LinuxCNC's axis_flag || polar_flag asks.
+  bool has_axis() const {
+    return (has & ((1u << ('X' - 'A')) | (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) | kPolarBits)) != 0;
+  }
 };
 
 // What a line is, besides a block of words.

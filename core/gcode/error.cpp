@@ -88,6 +88,19 @@ const char* gcode_error_template(GcodeError e) {
       return "{w}: Q makes {n} pecks down {b} mm, more than the 1000000 a block may make (is Q in the right units?)";
     case GcodeError::kProbeNoAxis: return "{w}: probe move without X, Y or Z";
     case GcodeError::kProbeTooClose: return "{w}: the probe move ends where it starts";
+    case GcodeError::kPolarWithXY: return "{w} word with polar coordinates (@ and ^ give X and Y)";
+    case GcodeError::kPolarPlane: return "{w}: polar coordinates only in the XY plane (G17)";
+    case GcodeError::kPolarNotMotion:
+      return "{w}: polar coordinates can only be used for motion (not with G10, G28, G30, G43.1 or G92)";
+    case GcodeError::kPolarG53: return "{w}: polar coordinates cannot be used with G53";
+    case GcodeError::kPolarNoAngle: return "{w}: at the origin a polar position needs an angle (^)";
+    case GcodeError::kPolarIncrementalOrigin:
+      return "{w}: incremental (G91) polar motion is indeterminate at the origin (it has no angle)";
+    case GcodeError::kSplinePlane: return "{w}: splines must be in the XY plane (G17)";
+    case GcodeError::kSplineZ: return "{w}: splines may not move Z";
+    case GcodeError::kSplineIJ: return "{w}: I and J must come together (G5.1 needs both, G5 both or neither)";
+    case GcodeError::kSplinePQ: return "{w}: G5 needs both P and Q";
+    case GcodeError::kSplineNoAxis: return "{w}: spline without an end point (X, Y, @ or ^)";
     case GcodeError::kUnsupportedOword: return "o-word subroutines and control flow ('{w}') are not supported";
     case GcodeError::kUnsupportedParameter: return "# parameters are not supported";
     case GcodeError::kUnsupportedExpression: return "[ ] expressions are not supported";
@@ -95,7 +108,6 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kUnsupportedGcode: return "{w} is not supported";
     case GcodeError::kUnsupportedMcode: return "{w} is not supported";
     case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
-    case GcodeError::kUnsupportedPolar: return "polar coordinates ('{w}') are not supported";
     case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems (G10 L2 R) are not supported";
     case GcodeError::kWarnMcodeIgnored: return "{w} ignored (it does not move the tool)";
     case GcodeError::kWarnGrblCommand: return "grbl command '{w}' skipped (the position is assumed unchanged)";

@@ -101,7 +101,7 @@ enum class GcodeError : uint8_t {
   kUnsupportedGcode = 104,
   kUnsupportedMcode = 105,
   kUnsupportedCutterComp = 106,
-  kUnsupportedPolar = 107,
+  // 107 was polar coordinates, read since (kPolar*)
   kUnsupportedRotation = 108,
   // -- warnings (140..): the line was skipped or a word ignored, safely
   kWarnMcodeIgnored = 140,
@@ -145,6 +145,19 @@ enum class GcodeError : uint8_t {
   kBlockLimit = 218,
   kOwordFanucMix = 220,
   kM98NoP = 221,
+  // -- polar coordinates (@ ^) and splines (G5, G5.1), as LinuxCNC 2.9 checks
+  // them (230..; block checks: 40..99 was full)
+  kPolarWithXY = 230,
+  kPolarPlane = 231,
+  kPolarNotMotion = 232,
+  kPolarG53 = 233,
+  kPolarNoAngle = 234,
+  kPolarIncrementalOrigin = 235,
+  kSplinePlane = 236,
+  kSplineZ = 237,
+  kSplineIJ = 238,
+  kSplinePQ = 239,
+  kSplineNoAxis = 240,
 };
 
 // Stable number of an error, for messages and tests.

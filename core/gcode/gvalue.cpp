@@ -33,13 +33,6 @@ int64_t degrees_of_bam(uint32_t bam) {
   return muldiv_round(signed_bam, kFullTurnE9, static_cast<int64_t>(1) << 32);
 }
 
-// Degrees (e9) as a binary angle: reduced to [0, 360) exactly first.
-uint32_t bam_of_degrees(int64_t deg_e9) {
-  int64_t m = deg_e9 % kFullTurnE9;
-  if (m < 0) m += kFullTurnE9;
-  return static_cast<uint32_t>(static_cast<uint64_t>(muldiv_round(m, static_cast<int64_t>(1) << 32, kFullTurnE9)));
-}
-
 int64_t e9_of_q30(int32_t q30) { return muldiv_round(q30, kGValueOne, static_cast<int64_t>(1) << 30); }
 
 // exp(x) for x in Q56 with |x| < 22: e^r 2^k, r = x - k ln 2 in [-0.35,
@@ -199,6 +192,12 @@ GcodeError gvalue_binary(GBinary op, GValue a, GValue b, GValue* out) {
     case GBinary::kXor: *out = truth((a.e9 != 0) != (b.e9 != 0)); break;
   }
   return GcodeError::kOk;
+}
+
+uint32_t bam_of_degrees(int64_t deg_e9) {
+  int64_t m = deg_e9 % kFullTurnE9;
+  if (m < 0) m += kFullTurnE9;
+  return static_cast<uint32_t>(static_cast<uint64_t>(muldiv_round(m, static_cast<int64_t>(1) << 32, kFullTurnE9)));
 }
 
 GValue gvalue_atan2(GValue y, GValue x) { return GValue{degrees_of_bam(atan2_bam(y.e9, x.e9))}; }

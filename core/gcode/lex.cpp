@@ -109,7 +109,6 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   GcodeError bad = GcodeError::kOk;
   // LinuxCNC's polar words (@ distance, ^ angle) are read like any other
   // word, so '@' with no number after it is a typo, not polar coordinates.
-  const bool polar = c == '@' || c == '^';
   if (c >= 'A' && c <= 'Z') {
     if (c == 'E') bad = GcodeError::kUnknownWord;
     if (c == 'O') bad = GcodeError::kUnsupportedOword;
@@ -124,7 +123,7 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
     bad = GcodeError::kUnsupportedExpression;
   } else if (c == ')') {
     bad = GcodeError::kStrayCloseParen;
-  } else if (!polar) {
+  } else if (c != '@' && c != '^') {
     bad = GcodeError::kBadCharacter;
   }
   if (bad != GcodeError::kOk) {
@@ -137,7 +136,7 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   DecimalParse r = decimal_parse(s_, n_, &pos_, &v);
   // Not a plain number: with parameters, a computed value (#1, [1+2],
   // SIN[30], -#1); a plain number, the usual word, pays nothing for it.
-  if (r != DecimalParse::kOk && params_ && !polar && expr_starts_computed(s_, n_, start + 1)) {
+  if (r != DecimalParse::kOk && params_ && expr_starts_computed(s_, n_, start + 1)) {
     pos_ = start + 1;
     GValue g;
     const GcodeError ee = expr_read_value(s_, n_, &pos_, *params_, &g, d);
@@ -151,12 +150,6 @@ GcodeError GcodeScanner::next(GcodeWord* w, GcodeDiag* d) {
   while (i < n_ && (s_[i] == ' ' || s_[i] == '\t')) ++i;
   // A value LinuxCNC would compute: X[1+2], X#1.
   const bool computed = r != DecimalParse::kOk && i < n_ && (s_[i] == '[' || s_[i] == '#');
-  if (polar && (r == DecimalParse::kOk || computed)) {
-    set_diag(d, GcodeError::kUnsupportedPolar, start);
-    gcode_set_word(d, &c, 1);
-    pos_ = start;
-    return GcodeError::kUnsupportedPolar;
-  }
   if (computed) {
     GcodeError err = s_[i] == '[' ? GcodeError::kUnsupportedExpression : GcodeError::kUnsupportedParameter;
     set_diag(d, err, i);
@@ -203,7 +196,7 @@ bool GcodeLooseScanner::next(GcodeLooseWord* w) {
       continue;
     }
     ++pos_;
-    if (c < 'A' || c > 'Z') continue;
+    if ((c < 'A' || c > 'Z') && c != '@' && c != '^') continue;
     w->letter = c;
     w->first = !seen_word_;
     if (c != 'N') seen_word_ = true;

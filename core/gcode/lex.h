@@ -22,7 +22,7 @@ inline bool gcode_is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' |
 inline char gcode_upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
 
 struct GcodeWord {
-  char letter;     // 'A'..'Z' (upper case); 0 at the end of the line
+  char letter;     // 'A'..'Z' (upper case), '@' or '^' (polar); 0 at the end of the line
   Decimal value;
   uint16_t col;    // 1-based column of the letter
 };
@@ -75,7 +75,7 @@ class GcodeScanner {
 // its value when that is a plain number. Comments, [ ] expressions and
 // #<named> parameters are stepped over; other bytes are skipped.
 struct GcodeLooseWord {
-  char letter;   // 'A'..'Z'
+  char letter;   // 'A'..'Z', '@' or '^'
   bool known;    // value holds the number written
   bool first;    // the first word of the line (after '/' and an N word)
   Decimal value;

@@ -14,6 +14,8 @@
 #include "core/motion/canon.h"
 #include "core/motion/cycles.h"
 #include "core/motion/interp.h"
+#include "core/motion/polar.h"
+#include "core/motion/spline.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -102,7 +104,7 @@ struct Plan {
   bool coolant = false;
   bool dwell = false;
   int64_t dwell_ms = 0;
-  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome } motion = kNone;
+  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline } motion = kNone;
   CanonKind straight_kind = CanonKind::kTraverse;
   PointNm target{0, 0, 0};
   CanonArc arc{Plane::kXY, {0, 0, 0}, 1};
@@ -110,6 +112,7 @@ struct Plan {
   Decimal inverse_f{0, 0};
   PointNm home_via{0, 0, 0};
   CyclePlan cycle{};
+  SplinePlan spline;  // set whole by run_spline before anything reads it
   int16_t stop = -1;  // M0/M1/M2/M30/M60 in tenths
 };
 
@@ -197,6 +200,17 @@ struct BlockRunner {
   GcodeError cycle_check_range(const char* w);
   void cycle_warnings(int motion, const char* w);
   GcodeError run_probe(int motion);
+  // Polar coordinates (@, ^; interp_polar.cpp): LinuxCNC's checks of the
+  // block, the words, a move's end point, a canned cycle's holes.
+  GcodeError check_polar(bool axis_user0);
+  char polar_letter() const;
+  GcodeError polar_words(PolarWords* w);
+  GcodeError polar_target(PointNm* to);
+  GcodeError end_point(PointNm* to);
+  GcodeError cycle_polar(const char* w);
+  // G5, G5.1 (interp_spline.cpp).
+  GcodeError run_spline(int motion);
+  void commit_spline(CanonRecord* r);
   // A feed move needs a feed rate: F in force, else --default-feed (one
   // warning, at the first such move), else kFeedZero.
   GcodeError need_feed(uint16_t col, const char* word);

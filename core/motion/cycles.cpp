@@ -119,9 +119,17 @@ void hole(const CyclePlan& p, int64_t a, int64_t b, CycleOut* out) {
 void cycle_emit(const CyclePlan& p, CycleOut* out) {
   if (p.raise_first) out->move(CanonKind::kTraverse, plane_point(p.plane, p.start_a, p.start_b, p.r_c));
   int64_t a = p.a, b = p.b;
+  PolarSeries polar = p.series;
   for (int64_t k = 0; k < p.repeats; ++k) {
-    a += p.inc_a;
-    b += p.inc_b;
+    if (p.polar) {
+      char word;
+      polar.next(&a, &b, &word);  // planning checked every hole
+      a += p.polar_off_a;
+      b += p.polar_off_b;
+    } else {
+      a += p.inc_a;
+      b += p.inc_b;
+    }
     if (k == 0 && p.current_c > p.r_c) {
       out->move(CanonKind::kTraverse, plane_point(p.plane, a, b, p.current_c));
       out->move(CanonKind::kTraverse, plane_point(p.plane, a, b, p.r_c));
@@ -133,8 +141,14 @@ void cycle_emit(const CyclePlan& p, CycleOut* out) {
   }
 }
 
+void cycle_last_hole(const CyclePlan& p, int64_t* a, int64_t* b) {
+  *a = p.polar ? p.last_a : p.a + p.inc_a * p.repeats;
+  *b = p.polar ? p.last_b : p.b + p.inc_b * p.repeats;
+}
+
 PointNm cycle_last_point(const CyclePlan& p) {
-  const int64_t a = p.a + p.inc_a * p.repeats, b = p.b + p.inc_b * p.repeats;
+  int64_t a, b;
+  cycle_last_hole(p, &a, &b);
   if (p.code == 880) return plane_point(p.plane, a, b, p.bottom_c);
   if (p.code == 840 || p.code == 740) return cycle_tap_point(p.plane, a, b, p.clear_c);
   return plane_point(p.plane, a, b, p.clear_c);

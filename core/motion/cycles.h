@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "core/motion/canon.h"
+#include "core/motion/polar.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -33,6 +34,13 @@ struct CyclePlan {
   int32_t spindle_rpm;   // G74, G84, G86-G88: spindle at the outset, signed (M4 < 0), restored after each hole
   int64_t off_a, off_b;  // G87: offset out of the hole's axis (its I/J/K in the plane)
   int64_t middle_c;      // G87: top of the back bore
+  // G91 with @ and ^ (XY only): the holes come from `series` (program
+  // frame) plus (polar_off_a, polar_off_b) instead of the increments; the
+  // last one is (last_a, last_b).
+  bool polar;
+  PolarSeries series;
+  int64_t polar_off_a, polar_off_b;
+  int64_t last_a, last_b;
 };
 
 // Receives what a cycle does: moves, dwells, spindle changes, a pause.
@@ -49,6 +57,9 @@ class CycleOut {
 
 // Emits every move of the planned cycle, in LinuxCNC's order.
 void cycle_emit(const CyclePlan& p, CycleOut* out);
+
+// The last hole's position in the plane.
+void cycle_last_hole(const CyclePlan& p, int64_t* a, int64_t* b);
 
 // Where cycle_emit leaves the tool. LinuxCNC's interpreter then takes it to
 // be at the clearance level over the last hole (its current position), and

@@ -31,6 +31,10 @@ GcodeError BlockRunner::run() {
   const int gm = b.g[kGMotion];
   const bool tlo_axes = b.g[kGToolLength] == 431;
   const bool axis_user0 = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || tlo_axes;
+  if (b.has_polar()) {  // LinuxCNC checks polar words first (interp_polar.cpp)
+    const GcodeError e = check_polar(axis_user0);
+    if (e != GcodeError::kOk) return e;
+  }
   if (gm >= 0 && gm != 800 && axis_user0) {
     return fail_code(GcodeError::kTwoAxisUsers, 'G', static_cast<int16_t>(tlo_axes ? 431 : g0),
                      tlo_axes ? b.g_col[kGToolLength] : b.g_col[kGNonModal]);
@@ -43,7 +47,7 @@ GcodeError BlockRunner::run() {
   }
   if (b.has_axis() && !axis_user0 && motion == 800) {
     if (gm == 800) return fail_code(GcodeError::kAxisWordsWithG80, 'G', 800, b.g_col[kGMotion]);
-    const char ax = b.has_word('X') ? 'X' : b.has_word('Y') ? 'Y' : 'Z';
+    const char ax = b.has_word('X') ? 'X' : b.has_word('Y') ? 'Y' : b.has_word('Z') ? 'Z' : polar_letter();
     return fail_letter(GcodeError::kAxisWordsUnused, ax);
   }
   GcodeError e = check_unused(g0, motion);
@@ -72,19 +76,21 @@ GcodeError BlockRunner::run() {
 // Words that no code of the block uses are errors, as in LinuxCNC.
 GcodeError BlockRunner::check_unused(int g0, int motion) {
   const bool arc = motion == 20 || motion == 30;
+  const bool spline = motion == 50 || motion == 51;  // G5 takes I, J, P, Q; G5.1 I, J
   const bool cycle = is_cycle(motion);
   const bool user_m = b.m[kMUser] >= 0 || b.m[kMIo] >= 0;
   const int path = b.g[kGPathControl];
   if (!arc && motion != 870) {  // G87 takes I, J, K (its offset and the back bore's top)
     const char ijk[3] = {'I', 'J', 'K'};
     for (char c : ijk)
-      if (b.has_word(c)) return fail_letter(GcodeError::kWordUnused, c);
+      if (b.has_word(c) && !(spline && c != 'K')) return fail_letter(GcodeError::kWordUnused, c);
   }
   if (b.has_word('R') && !arc && !cycle && g0 != 100) return fail_letter(GcodeError::kWordUnused, 'R');
   const bool dwell_cycle = motion == 740 || motion == 820 || motion == 840 || motion == 860 || motion == 880 || motion == 890;
-  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m))
+  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m || motion == 50))
     return fail_letter(GcodeError::kWordUnused, 'P');
-  if (b.has_word('Q') && !(motion == 730 || motion == 830 || path == 640 || b.m[kMToolChange] == 610 || user_m))
+  if (b.has_word('Q') &&
+      !(motion == 730 || motion == 830 || path == 640 || b.m[kMToolChange] == 610 || user_m || motion == 50))
     return fail_letter(GcodeError::kWordUnused, 'Q');
   // LinuxCNC 2.9 takes no L with G74 (its check of L lists every cycle but it).
   if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740))) return fail_letter(GcodeError::kWordUnused, 'L');
@@ -193,6 +199,9 @@ void BlockRunner::commit() {
       r.arc = plan.arc;
       if (plan.inverse_time) r.feed_nm_per_min = decimal_scale(plan.inverse_f, arc_length(r));
       I.emit(&r);
+      break;
+    case Plan::kSpline:
+      commit_spline(&r);
       break;
     case Plan::kHome:
       r.kind = CanonKind::kTraverse;

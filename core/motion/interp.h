@@ -79,6 +79,8 @@ struct InterpOptions {
   // Blocks a program may run once a loop or call went back (an endless
   // loop stops with an error naming it); 0: no limit.
   uint64_t max_blocks = kDefaultMaxBlocks;
+  // Sagitta of the chords G5/G5.1 splines become (core/motion/spline.h).
+  int64_t spline_sagitta_nm = 1000;
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.

@@ -151,6 +151,8 @@ GcodeError BlockRunner::run_cycle(int motion) {
     c.current_c = c.r_c;
   }
   c.clear_c = nx.retract_to_r ? c.r_c : old_c;
+  c.polar = false;
+  if (b.has_polar() && (e = cycle_polar(w)) != GcodeError::kOk) return e;
   if ((e = cycle_check_range(w)) != GcodeError::kOk) return e;
   if (pecks(motion)) {
     const int64_t n = cycle_peck_count(c.r_c, c.bottom_c, cw.q);
@@ -167,7 +169,9 @@ GcodeError BlockRunner::run_cycle(int motion) {
   nx.cycle_p_ms = cw.p_ms;
   for (int ax = 0; ax < 3; ++ax) nx.cycle_ijk_nm[ax] = cw.ijk[ax];
   plan.motion = Plan::kCycle;
-  nx.pos = plane_point(pl, c.a + c.inc_a * c.repeats, c.b + c.inc_b * c.repeats, c.clear_c);
+  int64_t last_a, last_b;
+  cycle_last_hole(c, &last_a, &last_b);
+  nx.pos = plane_point(pl, last_a, last_b, c.clear_c);
   const PointNm end = cycle_last_point(c);
   nx.stray = PointNm{end.x_nm - nx.pos.x_nm, end.y_nm - nx.pos.y_nm, end.z_nm - nx.pos.z_nm};
   return GcodeError::kOk;

@@ -93,6 +93,7 @@ uint16_t facets_written(const char* text, size_t len) {
         if (tenths < 0 || tenths == 20 || tenths == 300) f |= kFacetEnd;
         if (tenths < 0 || tenths == 60 || tenths == 610) f |= kFacetTool;
         break;
+      case '@': case '^': f |= kFacetX | kFacetY; break;
       case 'X': f |= kFacetX; break;
       case 'Y': f |= kFacetY; break;
       case 'Z': f |= kFacetZ; break;
@@ -116,7 +117,8 @@ uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect)
   const int gm = b.g[kGMotion];
   if (gm >= 0) {
     // A cycle's sticky values are fresh only when the block gives them.
-    const bool fresh = !is_cycle(gm) || (b.has_word('R') && b.has_word(plane_letter) &&
+    // G5 and G5.1 leave the modal motion as it was (interp_spline.cpp).
+    const bool fresh = gm == 50 || gm == 51 ? false : !is_cycle(gm) || (b.has_word('R') && b.has_word(plane_letter) &&
                                          ((gm != 730 && gm != 830) || b.has_word('Q')) &&
                                          ((gm != 820 && gm != 860 && gm != 880 && gm != 890) || b.has_word('P')) &&
                                          (gm != 870 || (b.has_word('I') && b.has_word('J') && b.has_word('K'))));
@@ -146,7 +148,8 @@ uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect)
     bool set = false;
     if (g0 == 280 || g0 == 300) set = word || !b.has_axis();  // to the stored home
     else if (g0 == 530) set = word;                            // machine coordinates
-    else if (motion == 0 || motion == 10 || motion == 20 || motion == 30) set = word && !incremental;
+    else if (motion == 0 || motion == 10 || motion == 20 || motion == 30 || motion == 50 || motion == 51)
+      set = word && !incremental;
     else if (is_cycle(motion)) set = word && !incremental && kAxisLetter[ax] != plane_letter;
     if (set) f |= axis_facet(ax);
   }
@@ -195,7 +198,13 @@ ErrorFacets error_facets(GcodeError e, const GcodeBlock& b) {
     case GcodeError::kPositionOutOfRange:
       return {kWhere, 0, 0};
     case GcodeError::kProbeTooClose:
+    case GcodeError::kPolarNoAngle:
+    case GcodeError::kPolarIncrementalOrigin:
       return {kWhere, kFacetPosition, 0};
+    case GcodeError::kPolarPlane:
+      return {0, kFacetPlane, 0};  // LinuxCNC asks the plane before the block's G17-G19
+    case GcodeError::kSplinePlane:
+      return {kFacetPlane, 0, 0};
     case GcodeError::kCycleNoR:
     case GcodeError::kCycleNoZ:
     case GcodeError::kCycleNoQ:

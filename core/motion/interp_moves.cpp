@@ -9,6 +9,7 @@
 namespace dexmill {
 
 GcodeError BlockRunner::run_motion(int motion) {
+  if (motion == 50 || motion == 51) return run_spline(motion);  // keeps the modal motion (interp_spline.cpp)
   if (motion != cur.motion) {
     nx.motion = static_cast<int16_t>(motion);
     if (!is_cycle(motion)) nx.cycle_level_set = false;
@@ -70,6 +71,8 @@ GcodeError BlockRunner::run_straight(int motion, bool g53) {
     if (g53) axis_ref(to, ax) = v - (ax == 2 ? nx.tlo_nm : 0);
     else axis_ref(to, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
   }
+  if (b.has_polar() && g53) return fail_letter(GcodeError::kPolarG53, polar_letter());
+  if (b.has_polar() && (e = polar_target(&to)) != GcodeError::kOk) return e;
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(motion), w);
   if ((e = check_pos(to, motion_col(), w)) != GcodeError::kOk) return e;
@@ -101,14 +104,8 @@ GcodeError BlockRunner::run_arc(int motion) {
   const bool has_ijk = b.has_word(off_letter[ia]) || b.has_word(off_letter[ib]);
   if (!has_r && !has_ijk) return fail(GcodeError::kArcNoCentre, col, w);
   if (has_r && has_ijk) return fail_letter(GcodeError::kArcRAndIjk, 'R');
-  PointNm to = cur.pos;
-  for (int ax = 0; ax < 3; ++ax) {
-    const char c = kAxisLetter[ax];
-    if (!b.has_word(c)) continue;
-    int64_t v;
-    if ((e = length(c, &v)) != GcodeError::kOk) return e;
-    axis_ref(to, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
-  }
+  PointNm to;
+  if ((e = end_point(&to)) != GcodeError::kOk) return e;
   if ((e = check_pos(to, col, w)) != GcodeError::kOk) return e;
   int64_t turns = 1;
   if (b.has_word('P')) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compare `dexmill path` output with a LinuxCNC canonical trace.
 
-usage: lcnc_compare.py TRACE PATHFILE [--tol MM]
+usage: lcnc_compare.py TRACE PATHFILE [--tol MM] [--preview MOVES]
 
 TRACE is what LinuxCNC's interpreter prints (the `expected` files of
 tests/interp, or `rs274 -g FILE`): STRAIGHT_TRAVERSE / STRAIGHT_FEED /
@@ -19,6 +19,14 @@ for inch traces, 0.0022 mm) of the LinuxCNC move it belongs to
 (the arc or helix itself for chord points), every LinuxCNC move end must be
 met within TOL, in order, with the same kind (rapid/feed). Zero-length moves
 are ignored on both sides. Prints one summary line; exit 0 if they agree.
+
+A spline (G5, G5.1) is only NURBS_FEED(order, ...) in the trace, without
+points. With --preview MOVES (what lcnc_preview.py prints: LinuxCNC's own
+preview of the program, the same interpreter, whose points lie on each
+curve) every NURBS_FEED becomes the Bezier curve through those points
+(control points fitted by least squares, at the preview's parameters), and
+dexmill's chord points must lie within TOL of it, in order, like an arc's.
+Without it, a trace with NURBS_FEED is not comparable (exit 3).
 """
 import math
 import re
@@ -57,6 +65,12 @@ def parse_trace(path):
             continue
         if name == 'COMMENT':
             continue
+        if name == 'NURBS_FEED':
+            # The curve's points come from the preview (attach_curves).
+            order = int(args.split(',')[0])
+            moves.append(('feed', cur_machine, None, dict(nurbs=order), scale != 1.0))
+            pos = None
+            continue
         nums = []
         for a in re.split(r'[,\s]+', args):
             try:
@@ -94,6 +108,100 @@ def parse_trace(path):
             p[idx[0]], p[idx[1]], p[idx[2]] = fe, se, ae
             pos = p
     return moves, error, notes
+
+
+def read_preview(path):
+    """lcnc_preview.py's moves: (line, kind, end in machine mm)."""
+    out = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            ln, kind, x, y, z = line.split()
+            out.append((int(ln), kind, [float(x), float(y), float(z)]))
+    return out
+
+
+def bernstein(n, u):
+    """The Bernstein polynomials of degree n at u."""
+    return [math.comb(n, i) * u ** i * (1 - u) ** (n - i) for i in range(n + 1)]
+
+
+def bezier_at(ctrl, u):
+    b = bernstein(len(ctrl) - 1, u)
+    return [sum(b[i] * ctrl[i][k] for i in range(len(ctrl))) for k in range(3)]
+
+
+def fit_bezier(start, pts, order):
+    """Control points of the Bezier curve of `order` control points that
+    starts at `start` and passes through pts[i] at u = (i + 1) / div (the
+    preview's steps, gcodemodule.cc: div = 15 per control point), the last at
+    u = 1: the inner ones by least squares, the ends as given. Also the
+    largest distance of a point from the fitted curve."""
+    deg = order - 1
+    div = 15 * order
+    params = [(i + 1) / div for i in range(len(pts) - 1)] + [1.0]
+    end = pts[-1]
+    inner = deg - 1
+    ctrl = [list(start)] + [[0.0, 0.0, 0.0] for _ in range(inner)] + [list(end)]
+    for axis in range(3):
+        a = [[0.0] * inner for _ in range(inner)]  # normal equations
+        rhs = [0.0] * inner
+        for u, p in zip(params, pts):
+            b = bernstein(deg, u)
+            r = p[axis] - b[0] * start[axis] - b[deg] * end[axis]
+            for i in range(inner):
+                rhs[i] += b[i + 1] * r
+                for j in range(inner):
+                    a[i][j] += b[i + 1] * b[j + 1]
+        for i in range(inner):  # Gauss-Jordan: at most 2 x 2, well conditioned
+            for j in range(inner):
+                if j != i:
+                    f = a[j][i] / a[i][i]
+                    for k in range(inner):
+                        a[j][k] -= f * a[i][k]
+                    rhs[j] -= f * rhs[i]
+        for i in range(inner):
+            ctrl[i + 1][axis] = rhs[i] / a[i][i]
+    worst = max(dist(p, bezier_at(ctrl, u)) for u, p in zip(params, pts))
+    return ctrl, worst
+
+
+def attach_curves(moves, preview):
+    """Puts the preview's curve in place of each NURBS_FEED. The preview's
+    moves are rs274's one for one, except that a NURBS_FEED is all the feeds
+    of its line. Returns (moves with their starts recomputed, None) or
+    (None, why not)."""
+    out = []
+    j = 0
+    prev_end = [0.0, 0.0, 0.0]
+    exact = [0.0, 0.0, 0.0]  # the preview's point there, unrounded (rs274 prints 4 decimals)
+    for mi, (kind, s, e, arc, inch) in enumerate(moves):
+        if j >= len(preview):
+            return None, 'the preview ends before LinuxCNC move %d' % (mi + 1)
+        if arc is not None and 'nurbs' in arc:
+            line = preview[j][0]
+            pts = []
+            while j < len(preview) and preview[j][0] == line and preview[j][1] == 'feed':
+                pts.append(preview[j][2])
+                j += 1
+            ctrl, worst = fit_bezier(exact, pts, arc['nurbs'])
+            if worst > 1e-6:
+                return None, 'the preview of line %d is no Bezier curve of order %d (%.2g mm off)' % (
+                    line, arc['nurbs'], worst)
+            e = exact = pts[-1]
+            arc = dict(curve=ctrl)
+        else:
+            want = 'arc' if arc is not None else ('rapid' if kind == 'rapid' else None)
+            got = preview[j][1]
+            if (want and got != want) or (not want and got not in ('feed', 'probe')) or dist(preview[j][2], e) > 0.01:
+                return None, 'the preview differs from rs274 at move %d (%s %s; preview %s %s)' % (
+                    mi + 1, kind, fmt(e), got, fmt(preview[j][2]))
+            exact = preview[j][2]
+            j += 1
+        out.append((kind, prev_end, e, arc, inch))
+        prev_end = e
+    return out, None
 
 
 def parse_path(path):
@@ -144,6 +252,10 @@ class ArcGeom:
         p[i2] = self.c0 + (self.c1 - self.c0) * t
         return p
 
+    def remaining(self, t):
+        """The planar length left from t to the end (at the larger radius)."""
+        return (1.0 - t) * self.sweep * max(self.r0, self.r1)
+
     def progress(self, p, t_prev):
         """Parameter t of point p, continuing from t_prev (angles unwrapped)."""
         i0, i1, _ = self.idx
@@ -154,6 +266,49 @@ class ArcGeom:
         d = (ang - prev_ang) * self.dir
         d = (d + math.pi) % (2 * math.pi) - math.pi
         return t_prev + d / self.sweep
+
+
+class CurveGeom:
+    """A Bezier curve (a spline's NURBS_FEED), with ArcGeom's interface."""
+
+    SAMPLES = 256
+
+    def __init__(self, start, end, arc):
+        self.ctrl = arc['curve']
+        self.start, self.end = start, end
+        pts = [self.at(i / self.SAMPLES) for i in range(self.SAMPLES + 1)]
+        # Length of the curve from u = i / SAMPLES to the end, for remaining().
+        self.tail = [0.0] * (self.SAMPLES + 1)
+        for i in range(self.SAMPLES - 1, -1, -1):
+            self.tail[i] = self.tail[i + 1] + dist(pts[i], pts[i + 1])
+
+    def at(self, t):
+        return bezier_at(self.ctrl, t)
+
+    def remaining(self, t):
+        x = min(float(self.SAMPLES), max(0.0, t * self.SAMPLES))
+        i = min(self.SAMPLES - 1, int(x))
+        return self.tail[i] - (x - i) * (self.tail[i] - self.tail[i + 1])
+
+    def progress(self, p, t_prev):
+        """The parameter of the curve's point nearest p, from a little before
+        t_prev on: sampled, then refined by golden sections."""
+        lo = max(0.0, t_prev - 0.01)
+        n = 200
+        best = min(range(n + 1), key=lambda i: dist(p, self.at(lo + (1.0 - lo) * i / n)))
+        a = lo + (1.0 - lo) * max(0, best - 1) / n
+        b = lo + (1.0 - lo) * min(n, best + 1) / n
+        for _ in range(60):
+            m1, m2 = a + (b - a) * 0.382, a + (b - a) * 0.618
+            if dist(p, self.at(m1)) <= dist(p, self.at(m2)):
+                b = m2
+            else:
+                a = m1
+        return (a + b) / 2
+
+
+def geometry(s, e, arc):
+    return CurveGeom(s, e, arc) if 'curve' in arc else ArcGeom(s, e, arc)
 
 
 def seg_dist(p, s, e):
@@ -180,7 +335,7 @@ def compare_strict(moves, start, pts, tol, inch_tol):
                 return False, worst, 'move %d: LinuxCNC %s %s, dexmill %s %s' % (mi + 1, kind, fmt(e), k, fmt(p))
             j += 1
             continue
-        g = ArcGeom(s, e, arc)
+        g = geometry(s, e, arc)
         t = 0.0
         while True:
             if j >= len(pts):
@@ -192,7 +347,7 @@ def compare_strict(moves, start, pts, tol, inch_tol):
             if k != 'feed' or dd > t_ol:
                 return False, worst, 'move %d: point %s %s is %.5f mm off the LinuxCNC arc' % (mi + 1, k, fmt(p), dd)
             j += 1
-            if t >= 1.0 - 1e-9 or (dist(p, e) <= t_ol and (1.0 - t) * g.sweep * max(g.r0, g.r1) <= t_ol):
+            if t >= 1.0 - 1e-9 or (dist(p, e) <= t_ol and g.remaining(t) <= t_ol):
                 worst = max(worst, dist(p, e))
                 if dist(p, e) > t_ol:
                     return False, worst, 'move %d: arc ends at %s, LinuxCNC at %s' % (mi + 1, fmt(p), fmt(e))
@@ -251,8 +406,8 @@ def compare(moves, start, pts, tol, inch_tol):
                     mi + 1, kind, fmt(e), fmt(last), nxt)
             worst = max(worst, de)
             continue
-        g = ArcGeom(s, e, arc)
-        if g.sweep * max(g.r0, g.r1) <= t_ol and dist(last, e) <= t_ol and not arc['full']:
+        g = geometry(s, e, arc)
+        if g.remaining(0.0) <= t_ol and dist(last, e) <= t_ol and not arc.get('full'):
             while j < len(ours) and dist(ours[j][1], e) <= t_ol:
                 last = ours[j][1]
                 j += 1
@@ -271,7 +426,7 @@ def compare(moves, start, pts, tol, inch_tol):
                 return False, worst, 'move %d: chord point %s is %.5f mm off the LinuxCNC arc' % (mi + 1, fmt(p), dd)
             j += 1
             last = p
-            if t >= 1.0 - 1e-9 or (dist(p, e) <= t_ol and (1.0 - t) * g.sweep * max(g.r0, g.r1) <= t_ol):
+            if t >= 1.0 - 1e-9 or (dist(p, e) <= t_ol and g.remaining(t) <= t_ol):
                 de = dist(p, e)
                 worst = max(worst, de)
                 if de > t_ol:
@@ -295,11 +450,23 @@ def main():
         i = args.index('--tol')
         tol = float(args[i + 1])
         del args[i:i + 2]
+    preview = None
+    if '--preview' in args:
+        i = args.index('--preview')
+        preview = read_preview(args[i + 1])
+        del args[i:i + 2]
     if len(args) != 2:
         print(__doc__)
         return 2
     moves, error, notes = parse_trace(args[0])
     start, pts = parse_path(args[1])
+    if any(arc is not None and 'nurbs' in arc for _, _, _, arc, _ in moves):
+        why = 'NURBS_FEED without --preview' if preview is None else None
+        if preview is not None:
+            moves, why = attach_curves(moves, preview)
+        if why:
+            print('NOT COMPARABLE: %s' % why)
+            return 3
     # LinuxCNC prints 4 decimals: in inch that is 0.00005 in (1.27 um) of
     # rounding per coordinate, up to 0.0022 mm in 3D, added to the tolerance.
     inch_tol = 0.00005 * MM_PER_INCH * math.sqrt(3)

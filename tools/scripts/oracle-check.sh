@@ -13,6 +13,9 @@
 #    RS274/NGC), from a relief the script draws (lifted and zigzag, along x
 #    and y) and for the four built-in parts of run --demo.
 # A program that dexmill refuses as "not supported" is reported, not failed.
+# rs274 prints a spline (G5, G5.1) as NURBS_FEED without its points; for a
+# trace with one, LinuxCNC's own preview of the program (lcnc_preview.py,
+# the same interpreter) gives the curve (lcnc_compare.py --preview).
 # Exit 1 if any comparison differs.
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -38,8 +41,19 @@ check() {
     unsupported=$((unsupported + 1))
     return
   fi
-  local res; res=$($compare "$trace" "$tmp/path")
+  local preview=()
+  if grep -q 'NURBS_FEED' "$trace"; then
+    sed -E 's/^[[:space:]]*\$(.*)$/(grbl $\1)/' "$prog" > "$tmp/preview.ngc"
+    python3 "$root/tools/scripts/lcnc_preview.py" "$tmp/preview.ngc" > "$tmp/preview" 2>/dev/null &&
+      preview=(--preview "$tmp/preview")
+  fi
+  local res; res=$($compare "$trace" "$tmp/path" "${preview[@]}")
   local crc=$?
+  if [ $crc -eq 3 ]; then  # a spline without LinuxCNC's preview to place it
+    echo "$name: $res"
+    unsupported=$((unsupported + 1))
+    return
+  fi
   # A probe (G38.2-G38.5) stops where the machine meets the work; dexmill
   # moves to the target, rs274 makes up its own contact point: a program
   # that goes on from wherever the probe stopped (G92 Z0 after it) cannot
@@ -102,7 +116,9 @@ PY
       # dexmill skips grbl `$` lines with a warning; LinuxCNC would stop
       # there, so it gets them as comments.
       sed -E 's/^[[:space:]]*\$(.*)$/(grbl $\1)/' "$f" > "$tmp/prog.ngc"
-      ( cd "$tmp" && timeout 300 rs274 -t "$tmp/tools.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
+      # rs274 keeps its tool data in $HOME/.tool.mmap, shared by every rs274
+      # running at the time: a HOME of its own keeps others' tables out.
+      ( cd "$tmp" && HOME="$tmp" timeout 300 rs274 -t "$tmp/tools.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
       name=${f#"$root"/}; name=${name#"$shared"/}; name=${name#"$tmp"/}
       check "$name" "$f" "$tmp/trace"
     done
