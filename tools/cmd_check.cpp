@@ -11,7 +11,9 @@
 #include "platform/gcode_file.h"
 #include <vector>
 
+#include "platform/tool_table.h"
 #include "tools/cli.h"
+#include "tools/run_tool_table.h"
 #include "tools/run_job.h"
 #include "tools/run_options.h"
 
@@ -22,7 +24,7 @@ namespace {
 void usage(std::FILE* f) {
   std::fprintf(f,
                "usage: dexmill check FILE|- [--units mm|inch] [--max-errors N] [--follow-ons]\n"
-               "                            [--default-feed MM/MIN]\n\n"
+               "                            [--default-feed MM/MIN] [--tools FILE]\n\n"
                "Reads and interprets the program as `path` does, reporting every error\n"
                "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
                "error is skipped and changes nothing; errors that may only follow from\n"
@@ -30,7 +32,8 @@ void usage(std::FILE* f) {
                "shown. Exit 0 clean, 1 with errors.\n"
                "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
                "--follow-ons: show those errors too, marked (they count towards N).\n"
-               "--default-feed: the controller's feed for moves made with no F in force.\n\n"
+               "--default-feed: the controller's feed for moves made with no F in force.\n"
+               "--tools: a LinuxCNC tool table (G41/G42 radii, G43 lengths).\n\n"
                "       dexmill check --simulate FILE [run options]\n\n"
                "Cuts the program as `run` does with the safety checks (all unless --check\n"
                "names some) and, with --design, the gouge watch; writes no image. The findings\n"
@@ -65,6 +68,7 @@ int cmd_check(int argc, char** argv) {
   long max_errors = 100;
   bool follow_ons = false;
   int64_t default_feed = 0;
+  const char* tools_file = nullptr;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -80,6 +84,11 @@ int cmd_check(int argc, char** argv) {
     if (!std::strcmp(a, "--default-feed")) {
       if (i + 1 >= argc) return fail(kExitUsage, "--default-feed needs a value");
       if (!parse_default_feed(argv[++i], &default_feed)) return kExitUsage;
+      continue;
+    }
+    if (!std::strcmp(a, "--tools")) {
+      if (i + 1 >= argc) return fail(kExitUsage, "--tools needs a tool table file");
+      tools_file = argv[++i];
       continue;
     }
     if (!std::strcmp(a, "--follow-ons")) {
@@ -99,6 +108,11 @@ int cmd_check(int argc, char** argv) {
     usage(stderr);
     return kExitUsage;
   }
+  ToolTableFile table;
+  if (tools_file) {
+    if (const int code = load_tool_table(tools_file, inch, &table)) return code;
+    for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
+  }
   GcodeFile in;
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   GcodeStderrMessages msgs(in.name());
@@ -110,6 +124,7 @@ int cmd_check(int argc, char** argv) {
   opt.params = params.get();
   opt.messages = &notes;
   opt.default_feed_nm_per_min = default_feed;
+  opt.tools = tools_file ? &table : nullptr;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);

@@ -9,7 +9,9 @@
 #include "core/motion/arc_chords.h"
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
+#include "platform/tool_table.h"
 #include "tools/cli.h"
+#include "tools/run_tool_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -69,13 +71,16 @@ class PathPrinter final : public CanonSink {
 
 void usage(std::FILE* f) {
   std::fprintf(f,
-               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n\n"
+               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n"
+               "                           [--tools FILE]\n\n"
                "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
                "offset not applied), mm with 5 decimals. Arcs become chords with sagitta\n"
                "<= --chord mm (default 0.001). --units: units before any G20/G21 (mm).\n"
                "--default-feed: the controller's feed for moves made with no F in force\n"
                "(warned once; without it such a move is an error).\n"
+               "--tools: a LinuxCNC tool table; G41/G42 take the tool radius (D / 2) from it\n"
+               "(without one the radius is 0, with a warning) and G43 the length.\n"
                "Stops at the first error (exit 1).\n");
 }
 
@@ -86,11 +91,17 @@ int cmd_path(int argc, char** argv) {
   int64_t chord_nm = 1000;
   bool inch = false;
   int64_t default_feed = 0;
+  const char* tools_file = nullptr;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
       usage(stdout);
       return kExitOk;
+    }
+    if (!std::strcmp(a, "--tools")) {
+      if (i + 1 >= argc) return fail(kExitUsage, "--tools needs a tool table file");
+      tools_file = argv[++i];
+      continue;
     }
     if (!std::strcmp(a, "--chord") || !std::strcmp(a, "--units") || !std::strcmp(a, "--default-feed")) {
       if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
@@ -118,6 +129,11 @@ int cmd_path(int argc, char** argv) {
     usage(stderr);
     return kExitUsage;
   }
+  ToolTableFile table;
+  if (tools_file) {
+    if (const int code = load_tool_table(tools_file, inch, &table)) return code;
+    for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
+  }
   GcodeFile in;
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   static char outbuf[1 << 16];
@@ -131,6 +147,7 @@ int cmd_path(int argc, char** argv) {
   opt.params = params.get();
   opt.messages = &notes;
   opt.default_feed_nm_per_min = default_feed;
+  opt.tools = tools_file ? &table : nullptr;
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -422,7 +422,7 @@ int run_job(RunOptions o) {
     opt.inch = o.inch;
     opt.warnings = &scan_msgs;
     opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
-    opt.tools = have_table ? &table : nullptr;
+    opt.tools = have_table ? static_cast<const ToolTable*>(&table) : &single;  // G41/G42: the --tool radius
     opt.params = params.get();
     opt.messages = &notes;
     Interp interp(&scan, opt);
@@ -715,7 +715,7 @@ int run_job(RunOptions o) {
     const std::unique_ptr<ParamStore> params = gcode_param_store();
     InterpOptions opt;
     opt.inch = o.inch;
-    opt.tools = have_table ? &table : nullptr;
+    opt.tools = have_table ? static_cast<const ToolTable*>(&table) : &single;  // G41/G42: the --tool radius
     opt.params = params.get();
     opt.default_feed_nm_per_min = o.default_feed_nm_per_min;
     Interp interp(&cut, opt);

@@ -34,6 +34,7 @@
 #include "core/gcode/params.h"
 #include "core/math/decimal.h"
 #include "core/motion/canon.h"
+#include "core/motion/cutter_comp.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -43,11 +44,15 @@ constexpr int64_t kGcodeMaxCoordNm = 10000000000;  // 10 m
 // write nearly straight arcs with centres tens of metres away.
 constexpr int64_t kGcodeMaxArcNm = 100000000000;   // 100 m
 
-// Tool lengths for G43 H (the consumer's tool table; none: every length 0).
+// Tool lengths for G43 H and radii for G41/G42 D (the consumer's tool
+// table; none: every length 0, every radius 0 with a warning).
 class ToolTable {
  public:
   // Length offset (Z) of tool `tool`, nm; false if the table has no such tool.
   virtual bool tool_length_nm(int32_t tool, int64_t* z_nm) const = 0;
+  // Radius of tool `tool` (half its diameter, LinuxCNC's D column), nm;
+  // false if the table has no such tool.
+  virtual bool tool_radius_nm(int32_t tool, int64_t* r_nm) const = 0;
 
  protected:
   ~ToolTable() = default;
@@ -103,6 +108,7 @@ struct InterpState {
   int64_t cycle_r_nm, cycle_z_nm, cycle_q_nm;  // last R, Z, Q as written (nm)
   int64_t cycle_p_ms;       // last P (dwell) of G74/G82/G84/G86/G88/G89
   int64_t cycle_ijk_nm[3];  // last I, J, K of G87 as written (nm)
+  CompState comp;           // cutter radius compensation (cutter_comp.h); pos is the compensated point
   bool ended;               // after M2/M30 or a closing %
   bool percent_open;        // a first % line was seen
 };
@@ -143,7 +149,15 @@ class Interp {
   uint64_t records_emitted() const { return records_; }
 
  private:
-  void emit(CanonRecord* r);
+  // Emits a record, or holds it behind the moves cutter compensation holds.
+  void emit(CanonRecord* r) {
+    if (comp_q_.n) {
+      (void)comp_q_.push(*r, r->start, 0, 0, 0);  // room was checked with the block
+      return;
+    }
+    emit_now(r);
+  }
+  void emit_now(CanonRecord* r);
   void warn(GcodeError code, uint32_t line, uint16_t col, const char* word, int64_t a_nm = 0, int64_t b_nm = 0);
   // The interpreter's own parameters (core/motion/interp_params.cpp).
   static bool read_param(const void* ctx, int32_t n, const char* name, GValue* out);
@@ -158,6 +172,10 @@ class Interp {
   uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)
   bool warned_after_end_ = false;
   uint8_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
+  // Records cutter compensation holds (LinuxCNC's interp_queue), and a
+  // scratch copy a block is checked against before it commits.
+  CompQueue comp_q_;
+  CompQueue comp_scratch_;
 
   friend struct BlockRunner;
 };
