@@ -50,16 +50,29 @@ int64_t comp_find_turn(Vec2 s, Vec2 c, int32_t turn, Vec2 e) {
   return turn > 0 ? one + extra : -(one + extra);
 }
 
-uint32_t comp_asin_bam(int64_t num, int64_t den) {
+namespace {
+
+// sqrt(den^2 - num^2) * 2^16 (0 when |num| >= den), and num * 2^16: the
+// legs of the right triangle, fine enough that the floor of the root moves
+// the angle by well under a binary angle (|den| < 2^46).
+void comp_legs(int64_t num, int64_t den, int64_t* opposite, int64_t* adjacent) {
   const U128 d2 = sq_u128(den), n2 = sq_u128(num);
-  const int64_t leg = u128_less(n2, d2) ? static_cast<int64_t>(isqrt_u128(sub_u128(d2, n2))) : 0;
-  return atan2_bam(num, leg);
+  *adjacent = u128_less(n2, d2) ? static_cast<int64_t>(isqrt_u128(shl_u128(sub_u128(d2, n2), 32))) : 0;
+  *opposite = num * (int64_t{1} << 16);
+}
+
+}  // namespace
+
+uint32_t comp_asin_bam(int64_t num, int64_t den) {
+  int64_t o, a;
+  comp_legs(num, den, &o, &a);
+  return atan2_bam(o, a);
 }
 
 uint32_t comp_acos_bam(int64_t num, int64_t den) {
-  const U128 d2 = sq_u128(den), n2 = sq_u128(num);
-  const int64_t leg = u128_less(n2, d2) ? static_cast<int64_t>(isqrt_u128(sub_u128(d2, n2))) : 0;
-  return atan2_bam(leg, num);
+  int64_t o, a;
+  comp_legs(num, den, &o, &a);
+  return atan2_bam(a, o);
 }
 
 int comp_dot_sign(int64_t a1, int64_t b1, int64_t a2, int64_t b2) {

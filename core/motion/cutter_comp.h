@@ -43,7 +43,7 @@ namespace dexmill {
 // Records the queue holds at most (LinuxCNC: no limit). It holds the last
 // compensated move and what came after it in the same plane position: a
 // real program holds 1 to 5.
-constexpr int kCompQueueMax = 16;
+constexpr int kCompQueueMax = 16;  // GcodeError::kCompQueueFull's message says 16
 
 // LinuxCNC's TOLERANCE_CONCAVE_CORNER, 0.05 rad, in binary angles.
 constexpr int64_t kCompCornerTolBam = 34178445;
@@ -79,7 +79,8 @@ inline uint32_t comp_normal_bam(uint32_t dir_bam, int side) {
 // LinuxCNC's find_turn: the signed sweep from s to e around c in the
 // direction and number of turns of `turn`, binary angles (0 when turn == 0).
 int64_t comp_find_turn(Vec2 s, Vec2 c, int32_t turn, Vec2 e);
-// asin(num / den) and acos(num / den) for |num| <= den, den > 0.
+// asin(num / den) and acos(num / den) for |num| <= den, 0 < den < 2^46
+// (within 3 bam of the exact angle).
 uint32_t comp_asin_bam(int64_t num, int64_t den);
 uint32_t comp_acos_bam(int64_t num, int64_t den);
 // Sign of a1 * a2 + b1 * b2 (exact: 128-bit products).
