@@ -5,6 +5,7 @@
 // that refuses a code while compensation is on. The moves themselves are
 // also checked against LinuxCNC's rs274 by tools/scripts/oracle-check.sh
 // (tests/gcode/paths/comp_*.ngc).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>

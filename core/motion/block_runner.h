@@ -240,11 +240,16 @@ struct BlockRunner {
   GcodeError comp_forbid_m();                     // M codes LinuxCNC refuses while it is on
   GcodeError comp_forbid_modes();                 // G43/G49, G54.., G61/G64, G98/G99
   GcodeError comp_forbid_group0(int g0);          // G10 L2/L20, G28/G30, G28.1/G30.1, G92..
-  PointNm comp_base() const;                      // where a move's unwritten axes come from
+  // LinuxCNC's find_ends: while compensation is on and past its entry
+  // move, incremental and unwritten axes count from the programmed point,
+  // not from the compensated one (which is where the tool is).
+  const PointNm& comp_base() const { return cur.comp.side && !cur.comp.first_move ? cur.comp.prog : cur.pos; }
+  CompOps& comp_ops(CanonKind kind);
   GcodeError comp_straight(int motion, bool g53, const PointNm& to);
   GcodeError comp_arc_entry(int motion, const PointNm& to, bool has_r, int64_t r_abs);
   GcodeError comp_arc(int motion, const PointNm& to, int64_t ca, int64_t cb);
   GcodeError comp_check_queue();                  // the held records, this block applied
+  bool comp_acts() const { return cur.comp.side || plan.comp.motion || in.comp_q_.n; }
   GcodeError comp_apply(CompQueue* q, const CanonRecord& r, PointNm at, const CompEmit* out) const;
   void comp_commit_motion(CanonRecord* r, const PointNm& start);
   void comp_commit_flush(const PointNm& tool);

@@ -70,7 +70,7 @@ GcodeError BlockRunner::run() {
       nx.comp.first_move = true;
     }
   }
-  return comp_check_queue();
+  return comp_acts() ? comp_check_queue() : GcodeError::kOk;
 }
 
 // Words that no code of the block uses are errors, as in LinuxCNC.

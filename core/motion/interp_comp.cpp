@@ -153,16 +153,23 @@ GcodeError BlockRunner::comp_forbid_group0(int g0) {
   return GcodeError::kOk;
 }
 
-// LinuxCNC's find_ends: while compensation is on and past its entry move,
-// incremental and unwritten axes count from the programmed point, not from
-// the compensated one (which is where the tool is).
-PointNm BlockRunner::comp_base() const { return cur.comp.side && !cur.comp.first_move ? cur.comp.prog : cur.pos; }
+// The block's move is compensated: CompOps from nothing done yet.
+CompOps& BlockRunner::comp_ops(CanonKind kind) {
+  CompOps& o = plan.comp;
+  o.motion = true;
+  o.flush = CompOps::kKeep;
+  o.corner = false;
+  o.set_endpoint = false;
+  o.kind = kind;
+  o.dir_a = o.dir_b = o.sweep_bam = 0;
+  o.prog_start = comp_base();
+  return o;
+}
 
 // G0/G1 with compensation (convert_straight_comp1, convert_straight_comp2).
 // `to` is the programmed end; plan and nx.pos are for the uncompensated move.
 GcodeError BlockRunner::comp_straight(int motion, bool g53, const PointNm& to) {
-  nx.comp.arc_not_allowed = false;  // any straight move allows arcs again
-  if (!nx.comp.side || nx.comp.radius_nm == 0) return GcodeError::kOk;
+  if (nx.comp.radius_nm == 0) return GcodeError::kOk;
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(motion), w);
   if (g53) return fail_code(GcodeError::kCompForbidden, 'G', 530, b.g_col[kGNonModal]);
@@ -171,14 +178,7 @@ GcodeError BlockRunner::comp_straight(int motion, bool g53, const PointNm& to) {
   const int64_t r = nx.comp.radius_nm;
   const Vec2 p = comp_plane_xy(pl, to), c = comp_plane_xy(pl, cur.pos);
   const int64_t cz = plane_c(pl, cur.pos), pz = plane_c(pl, to);
-  CompOps& o = plan.comp;
-  o.motion = true;
-  o.flush = CompOps::kKeep;
-  o.corner = false;
-  o.set_endpoint = false;
-  o.kind = motion == 0 ? CanonKind::kTraverse : CanonKind::kFeed;
-  o.sweep_bam = 0;
-  o.prog_start = comp_base();
+  CompOps& o = comp_ops(motion == 0 ? CanonKind::kTraverse : CanonKind::kFeed);
   Vec2 end = c;
   if (nx.comp.first_move) {
     // The entry move: to the programmed end, offset square to the move.
@@ -200,11 +200,9 @@ GcodeError BlockRunner::comp_straight(int motion, bool g53, const PointNm& to) {
     nx.comp.tan_b = dv.b;
   } else {
     const Vec2 op = comp_plane_xy(pl, cur.comp.prog);
-    if (same(p, op)) {
-      // No motion in the plane: held behind the last move, which it follows
-      // wherever that move's end goes.
-      o.dir_a = o.dir_b = 0;
-    } else {
+    // No motion in the plane: held (direction 0) behind the last move, which
+    // it follows wherever that move's end goes. Otherwise a corner.
+    if (!same(p, op)) {
       const Vec2 dir = sub(p, op);
       const uint32_t theta = comp_normal_bam(comp_dir_bam(Vec2{cur.comp.tan_a, cur.comp.tan_b}), side);
       const uint32_t alpha = comp_dir_bam(dir);
@@ -315,14 +313,7 @@ GcodeError BlockRunner::comp_arc(int motion, const PointNm& to, int64_t ca, int6
   const bool inside = comp_inside_arc(side, turn);
   const Vec2 e = comp_plane_xy(pl, to), c = comp_plane_xy(pl, cur.pos), centre{ca, cb};
   const int64_t cz = plane_c(pl, cur.pos), ez = plane_c(pl, to);
-  CompOps& o = plan.comp;
-  o.motion = true;
-  o.flush = CompOps::kKeep;
-  o.corner = false;
-  o.set_endpoint = false;
-  o.kind = CanonKind::kArc;
-  o.dir_a = o.dir_b = 0;
-  o.prog_start = comp_base();
+  CompOps& o = comp_ops(CanonKind::kArc);
   const uint32_t gamma = inside ? comp_dir_bam(sub(centre, e)) : comp_dir_bam(sub(e, centre));
   const Vec2 end = comp_polar(e, r, gamma);
   Vec2 new_centre = centre;
@@ -464,7 +455,6 @@ GcodeError BlockRunner::comp_apply(CompQueue* q, const CanonRecord& r, PointNm a
 // The block against a scratch copy of the held records: what G40, the move
 // and a program stop do to them, and whether they fit.
 GcodeError BlockRunner::comp_check_queue() {
-  if (!cur.comp.side && !plan.comp.motion && in.comp_q_.n == 0) return GcodeError::kOk;
   CompQueue& q = in.comp_scratch_;
   q.copy_from(in.comp_q_);
   const PointNm at = tool_at(cur);

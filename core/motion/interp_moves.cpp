@@ -81,7 +81,9 @@ GcodeError BlockRunner::run_straight(int motion, bool g53) {
   plan.target = to;
   plan.inverse_time = nx.inverse_time && motion != 0;
   nx.pos = to;
-  return motion == 0 || motion == 10 ? comp_straight(motion, g53, to) : GcodeError::kOk;
+  if (motion != 0 && motion != 10) return GcodeError::kOk;
+  nx.comp.arc_not_allowed = false;  // any G0/G1 allows arcs again after G40
+  return nx.comp.side ? comp_straight(motion, g53, to) : GcodeError::kOk;
 }
 
 GcodeError BlockRunner::run_arc(int motion) {
@@ -123,11 +125,11 @@ GcodeError BlockRunner::run_arc(int motion) {
   if (has_r) {
     int64_t r;
     if ((e = length('R', &r, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
-    if ((e = comp_arc_entry(motion, to, true, abs64(r))) != GcodeError::kOk) return e;
+    if (nx.comp.side && (e = comp_arc_entry(motion, to, true, abs64(r))) != GcodeError::kOk) return e;
     e = arc_centre_from_radius(p, r, motion == 20, &ca, &cb, &d->a_nm, &d->b_nm);
     if (e != GcodeError::kOk) return fail(e, b.g[kGMotion] >= 0 ? col : b.col_of('R'), w);
   } else {
-    if ((e = comp_arc_entry(motion, to, false, 0)) != GcodeError::kOk) return e;
+    if (nx.comp.side && (e = comp_arc_entry(motion, to, false, 0)) != GcodeError::kOk) return e;
     int64_t oa = 0, ob = 0;
     if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
@@ -152,7 +154,7 @@ GcodeError BlockRunner::run_arc(int motion) {
   plan.arc.turns = static_cast<int32_t>(motion == 20 ? -turns : turns);
   plan.inverse_time = nx.inverse_time;
   nx.pos = to;
-  return comp_arc(motion, to, ca, cb);
+  return nx.comp.side ? comp_arc(motion, to, ca, cb) : GcodeError::kOk;
 }
 
 }  // namespace dexmill
