@@ -18,17 +18,21 @@
 // (convex, concave, tangent: 0.05 rad) are taken on angles from exact
 // integer direction vectors, within 4 bam (6e-9 rad) of LinuxCNC's doubles.
 //
-// Error bounds (tests/test_cutter_comp.cpp checks them against a
-// double-precision transcription of LinuxCNC's code):
-//   offset points (a point plus r towards an angle): 1 nm + 1e-8 * r;
-//   a concave corner between lines, at angle phi between the two paths:
-//     (1 nm + 1e-8 * r) / sin^2(phi / 2)... for phi up to 179 degrees and r
-//     up to 25 mm, under 0.3 um;
-//   a concave corner involving an arc (circle-line and circle-circle
-//   intersections): 2 nm / sin(corner angle) + 1e-8 * R, i.e. under 0.1 um
-//   for corners sharper than LinuxCNC's 0.05 rad threshold and R < 1 m;
-//   the first arc of compensation (its new centre): 1e-8 * R / |cos A|,
-//   A the angle LinuxCNC refuses below |cos A| = 1e-4.
+// Error bounds. The points the geometry makes are rounded to 1 nm, so the
+// error is that rounding carried through the corner's construction:
+//   an offset point (a point plus r towards an angle from exact vectors):
+//     within 1 nm + 1e-8 * r;
+//   a concave corner's meeting point: the rounding of the points it is made
+//     from over the sine of the angle the two paths meet at (LinuxCNC calls
+//     a corner concave from 0.05 rad on), so tens of nm at worst;
+//   the first arc of compensation (its new centre, on the line from the
+//     offset end through the programmed centre): ill-conditioned when that
+//     centre lies far off, as in LinuxCNC: relative to the arc's radius.
+// tests/test_cutter_comp.cpp runs 4000 random paths of lines and arcs
+// through a double-precision model of LinuxCNC's code: the same decisions
+// and errors on every one, move ends within 35 nm (50 checked), entry arc
+// centres within 1.1e-6 of the radius (2e-6 checked); rs274 itself agrees
+// within its printed 4 decimals (tools/scripts/oracle-check.sh).
 #ifndef DEXMILL_CORE_MOTION_CUTTER_COMP_H
 #define DEXMILL_CORE_MOTION_CUTTER_COMP_H
 
