@@ -70,6 +70,13 @@ bool ToolTableFile::tool_length_nm(int32_t number, int64_t* z_nm) const {
   return true;
 }
 
+bool ToolTableFile::tool_radius_nm(int32_t number, int64_t* r_nm) const {
+  const ToolTableEntry* e = find(number);
+  if (!e) return false;
+  *r_nm = e->tool.diameter_nm / 2;  // LinuxCNC: D / 2 (an odd nm rounds down by half a nm)
+  return true;
+}
+
 bool ToolTableFile::parse_line(const char* s, std::size_t n, uint32_t line, bool inch) {
   const char* semi = static_cast<const char*>(std::memchr(s, ';', n));
   const std::size_t words_end = semi ? static_cast<std::size_t>(semi - s) : n;

@@ -56,6 +56,7 @@ class ToolTableFile final : public ToolLibrary, public ToolTable {
 
   bool tool(int32_t number, Tool* out) const override;
   bool tool_length_nm(int32_t number, int64_t* z_nm) const override;
+  bool tool_radius_nm(int32_t number, int64_t* r_nm) const override;
 
   const std::vector<ToolTableEntry>& entries() const { return entries_; }
   const std::string& message() const { return message_; }
@@ -75,12 +76,21 @@ class ToolTableFile final : public ToolLibrary, public ToolTable {
 };
 
 // Every tool number is the same tool: what `run` uses without --tools, so
-// that T/M6 in a program keep the --tool shape.
-class SingleToolLibrary final : public ToolLibrary {
+// that T/M6 in a program keep the --tool shape, G41/G42 its radius (and
+// G43 a length of 0, as without a table).
+class SingleToolLibrary final : public ToolLibrary, public ToolTable {
  public:
   explicit SingleToolLibrary(const Tool& t) : tool_(t) {}
   bool tool(int32_t, Tool* out) const override {
     *out = tool_;
+    return true;
+  }
+  bool tool_length_nm(int32_t, int64_t* z_nm) const override {
+    *z_nm = 0;
+    return true;
+  }
+  bool tool_radius_nm(int32_t, int64_t* r_nm) const override {
+    *r_nm = tool_.diameter_nm / 2;
     return true;
   }
 

@@ -1,6 +1,7 @@
 // The program corpora of tests/gcode: every bad program fails with the error
 // written on its first line (`; expect LINE:COL: MESSAGE`), and every golden
-// program's path (`dexmill path`) matches NAME.path byte for byte. Also the
+// program's path (`dexmill path`, with --tools FAMILY.tbl when the program
+// FAMILY_NAME.ngc has one) matches NAME.path byte for byte. Also the
 // hosted reader (platform/gcode_file.h) on line ends, long lines and a long
 // streamed file.
 #include <dirent.h>
@@ -123,7 +124,10 @@ TEST(gcode_golden_paths) {
       std::printf("  %s.path is missing\n", base.c_str());
       continue;
     }
-    const std::string cmd = std::string("'") + bin + "' path '" + base + ".ngc' 2>&1";
+    // A family's tool table: comp_lines.ngc runs with comp.tbl when there is one.
+    const std::string table = dir + "/" + name.substr(0, name.find('_')) + ".tbl";
+    const std::string tools = read_file(table).empty() ? "" : " --tools '" + table + "'";
+    const std::string cmd = std::string("'") + bin + "' path '" + base + ".ngc'" + tools + " 2>&1";
     std::string got;
     if (std::FILE* p = popen(cmd.c_str(), "r")) {
       char buf[4096];

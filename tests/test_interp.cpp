@@ -162,6 +162,7 @@ TEST(interp_tool_length_from_table) {
       *z = mm(50);
       return true;
     }
+    bool tool_radius_nm(int32_t, int64_t*) const override { return false; }
   } table;
   InterpOptions opt;
   opt.tools = &table;
@@ -341,5 +342,7 @@ TEST(interp_150k_lines_no_heap) {
   }
   CHECK_EQ(t::heap_allocations() - before, 0u);
   CHECK_GT(sink.moves, 150000u);
-  static_assert(sizeof(Interp) < 2048, "the interpreter's whole state is small and fixed");
+  // Most of it is cutter compensation's queue of held records and the
+  // scratch copy a block is checked against (2 x kCompQueueMax records).
+  static_assert(sizeof(Interp) < 8192, "the interpreter's whole state is small and fixed");
 }

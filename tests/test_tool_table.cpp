@@ -48,6 +48,23 @@ TEST(tool_table_reads_linuxcnc_lines) {
   CHECK(!t.tool(9, &tool));
   CHECK(!t.tool_length_nm(9, &z));
   CHECK(t.warnings().empty());
+  // G41/G42 take half the D column.
+  int64_t r = 0;
+  CHECK(t.tool_radius_nm(4, &r));
+  CHECK_EQ(r, 5 * kNmPerMm);
+  CHECK(!t.tool_radius_nm(9, &r));
+}
+
+TEST(tool_table_single_tool_gives_its_radius) {
+  // `run` without --tools: every number is --tool, length 0, radius D / 2.
+  Tool tool;
+  tool.diameter_nm = 6350000;
+  const SingleToolLibrary one(tool);
+  int64_t r = 0, z = 1;
+  CHECK(one.tool_radius_nm(17, &r));
+  CHECK_EQ(r, 3175000);
+  CHECK(one.tool_length_nm(17, &z));
+  CHECK_EQ(z, 0);
 }
 
 TEST(tool_table_inch_and_warnings) {

@@ -144,7 +144,8 @@ int cmd_optimize(int argc, char** argv) {
   in.read_path = input.read_path();
   in.shown_name = shown;
   in.inch = o.read.inch;
-  in.tools = o.tools_file.empty() ? nullptr : &table;
+  SingleToolLibrary single(o.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
+  in.tools = o.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;
   in.time_model.rapid_nm_per_min = o.rapid_nm_per_min;
   in.time_model.accel_nm_per_s2 = o.accel_nm_per_s2;

@@ -22,7 +22,7 @@ struct OptimizeInput {
   std::string read_path;                     // the program as the cut read it
   std::string shown_name;                    // its name in messages
   bool inch = false;                         // --units inch
-  const ToolTableFile* tools = nullptr;      // --tools, for G43 H as the cut had it
+  const ToolTable* tools = nullptr;          // --tools (or --tool), for G43 H and G41 D as the cut had it
   const std::vector<int64_t>* limits = nullptr;  // per line, from the cut (RunOptions::line_feed_limits)
   MotionTimeModel time_model;
 };

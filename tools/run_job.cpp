@@ -422,7 +422,7 @@ int run_job(RunOptions o) {
     InterpOptions opt;
     setup.apply(o.read, &opt, &in);
     opt.warnings = &scan_msgs;
-    opt.tools = have_table ? &table : nullptr;
+    opt.tools = have_table ? static_cast<const ToolTable*>(&table) : &single;  // G41/G42: the --tool radius
     opt.messages = &notes;
     Interp interp(&scan, opt);
     scan.interp = &interp;
@@ -714,7 +714,7 @@ int run_job(RunOptions o) {
     ReadSetup setup;
     InterpOptions opt;
     setup.apply(o.read, &opt, &in);
-    opt.tools = have_table ? &table : nullptr;
+    opt.tools = have_table ? static_cast<const ToolTable*>(&table) : &single;  // G41/G42: the --tool radius
     Interp interp(&cut, opt);
     cut.interp = &interp;
     if (!o.material.empty()) cut.material = &material;

@@ -12,7 +12,7 @@ namespace dexmill {
 
 namespace {
 
-enum class Support : uint8_t { kYes, kUnsupported, kCutterComp, kUnknown };
+enum class Support : uint8_t { kYes, kUnsupported, kUnknown };
 
 struct GInfo {
   int16_t tenths;
@@ -38,9 +38,9 @@ constexpr GInfo kGCodes[] = {
     {330, kGMotion, Support::kUnsupported}, {331, kGMotion, Support::kUnsupported},
     {382, kGMotion, Support::kYes},        {383, kGMotion, Support::kYes},
     {384, kGMotion, Support::kYes},        {385, kGMotion, Support::kYes},
-    {400, kGCutterComp, Support::kYes},    {410, kGCutterComp, Support::kCutterComp},
-    {411, kGCutterComp, Support::kCutterComp}, {420, kGCutterComp, Support::kCutterComp},
-    {421, kGCutterComp, Support::kCutterComp}, {430, kGToolLength, Support::kYes},
+    {400, kGCutterComp, Support::kYes},    {410, kGCutterComp, Support::kYes},
+    {411, kGCutterComp, Support::kYes}, {420, kGCutterComp, Support::kYes},
+    {421, kGCutterComp, Support::kYes}, {430, kGToolLength, Support::kYes},
     {431, kGToolLength, Support::kYes},    {432, kGToolLength, Support::kUnsupported},
     {490, kGToolLength, Support::kYes},    {520, kGNonModal, Support::kUnsupported},
     {530, kGNonModal, Support::kYes},      {540, kGCoordSystem, Support::kYes},
@@ -357,7 +357,6 @@ GcodeError gcode_read_block(const char* s, size_t n, uint32_t line, GcodeBlock* 
         const GInfo* g = find_g(tenths);
         if (!g) return fail(d, GcodeError::kUnknownGcode, w.col, code_text);
         if (g->support == Support::kUnsupported) return fail(d, GcodeError::kUnsupportedGcode, w.col, code_text);
-        if (g->support == Support::kCutterComp) return fail(d, GcodeError::kUnsupportedCutterComp, w.col, code_text);
         // LinuxCNC drops G80 when another motion code shares its block.
         if (g->group == kGMotion && b->g[kGMotion] >= 0 && (tenths == 800 || b->g[kGMotion] == 800)) {
           if (tenths == 800) continue;

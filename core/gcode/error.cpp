@@ -105,10 +105,48 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kUnsupportedParameter: return "# parameters are not supported";
     case GcodeError::kUnsupportedExpression: return "[ ] expressions are not supported";
     case GcodeError::kUnsupportedAxis: return "{w} axis is not supported (dexmill simulates X, Y and Z)";
+    case GcodeError::kCompOnWhenOn: return "{w}: cutter radius compensation is already on (G40 turns it off first)";
+    case GcodeError::kCompPlane: return "{w}: cutter radius compensation works only in the XY (G17) and XZ (G18) planes";
+    case GcodeError::kCompChangePlane: return "{w}: cannot change planes with cutter radius compensation on";
+    case GcodeError::kCompForbidden: return "{w} cannot be used with cutter radius compensation on (G40 turns it off)";
+    case GcodeError::kCompNoD: return "{w} needs a D word (the tool diameter)";
+    case GcodeError::kCompEntryTooShort:
+      return "{w}: the cutter compensation entry move ({a} mm) is not longer than the tool radius ({b} mm)";
+    case GcodeError::kCompEntryArcTooShort:
+      return "{w}: the cutter compensation entry arc ({a} mm from start to end) is not longer than the tool radius "
+             "({b} mm)";
+    case GcodeError::kCompArcTooSmall:
+      return "{w}: tool radius ({b} mm) not less than the arc radius ({a} mm) with cutter compensation: the tool "
+             "does not fit inside the arc";
+    case GcodeError::kCompConcaveStraight:
+      return "{w}: concave corner too tight for the tool: the straight move before it would have to run backwards "
+             "(cutter compensation cannot reach it without gouging)";
+    case GcodeError::kCompConcaveArc:
+      return "{w}: concave corner too tight for the tool: the arc before it would have to sweep further than "
+             "programmed (cutter compensation cannot reach it without gouging)";
+    case GcodeError::kCompLineArcGouge:
+      return "{w}: concave corner too tight for the tool: this arc cannot be reached from the line before it "
+             "without gouging (cutter compensation)";
+    case GcodeError::kCompArcSameCentre:
+      return "{w}: arc after an arc with the same centre: cutter compensation cannot make the corner";
+    case GcodeError::kCompArcArcGouge:
+      return "{w}: concave corner too tight for the tool: the compensated tool cannot fit between the two arcs "
+             "without gouging";
+    case GcodeError::kCompArcLineGouge:
+      return "{w}: concave corner too tight for the tool: the compensated tool cannot fit between the arc and this "
+             "line without gouging";
+    case GcodeError::kCompArcAfterExit:
+      return "{w}: the move just after turning cutter compensation off (G40) must be straight, not an arc";
+    case GcodeError::kCompQueueFull:
+      return "{w}: more than 16 moves and commands held by cutter radius compensation (dexmill's fixed limit; "
+             "they wait for the next move in the plane to fix the corner)";
+    case GcodeError::kCompInternal: return "{w}: cutter compensation made an arc whose radius changed (a bug)";
     case GcodeError::kUnsupportedGcode: return "{w} is not supported";
     case GcodeError::kUnsupportedMcode: return "{w} is not supported";
     case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
     case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems (G10 L2 R) are not supported";
+    case GcodeError::kUnsupportedCompOrientation:
+      return "{w} with L (a lathe tool orientation) is not supported (LinuxCNC takes it only in G18, on a lathe)";
     case GcodeError::kWarnMcodeIgnored: return "{w} ignored (it does not move the tool)";
     case GcodeError::kWarnGrblCommand: return "grbl command '{w}' skipped (the position is assumed unchanged)";
     case GcodeError::kWarnG10ToolTable: return "{w}: tool table change ignored (tool lengths are not applied to the path)";
@@ -137,6 +175,8 @@ const char* gcode_error_template(GcodeError e) {
       return "{w}: lathe diameter mode: X words are diameters until G8 (LinuxCNC halves them, on a mill too)";
     case GcodeError::kWarnM99Main:
       return "M99 in the main program: the machine starts the program again, endlessly; the preview runs it once";
+    case GcodeError::kWarnCompNoTable:
+      return "{w}: no tool table (--tools), so the tool radius is 0: the path is not compensated";
     case GcodeError::kWarnManualRetract:
       return "{w}: the operator retracts the tool by hand at the program stop; the next move starts from the "
              "bottom, as in LinuxCNC";

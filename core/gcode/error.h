@@ -93,6 +93,24 @@ enum class GcodeError : uint8_t {
   kCyclePeckCount = 77,
   kProbeNoAxis = 78,
   kProbeTooClose = 79,
+  // cutter radius compensation (G40, G41, G42, G41.1, G42.1; LinuxCNC's rules)
+  kCompOnWhenOn = 80,
+  kCompPlane = 81,
+  kCompChangePlane = 82,
+  kCompForbidden = 83,
+  kCompNoD = 84,
+  kCompEntryTooShort = 85,
+  kCompEntryArcTooShort = 86,
+  kCompArcTooSmall = 87,
+  kCompConcaveStraight = 88,
+  kCompConcaveArc = 89,
+  kCompLineArcGouge = 90,
+  kCompArcSameCentre = 91,
+  kCompArcArcGouge = 92,
+  kCompArcLineGouge = 93,
+  kCompArcAfterExit = 94,
+  kCompQueueFull = 95,
+  kCompInternal = 96,
   // -- recognised but not supported (100..139)
   kUnsupportedOword = 100,
   kUnsupportedParameter = 101,
@@ -100,9 +118,10 @@ enum class GcodeError : uint8_t {
   kUnsupportedAxis = 103,
   kUnsupportedGcode = 104,
   kUnsupportedMcode = 105,
-  kUnsupportedCutterComp = 106,
+  kUnsupportedCutterComp = 106,  // no longer raised (compensation is supported); number kept
   // 107 was polar coordinates, read since (kPolar*)
   kUnsupportedRotation = 108,
+  kUnsupportedCompOrientation = 109,
   // -- warnings (140..): the line was skipped or a word ignored, safely
   kWarnMcodeIgnored = 140,
   kWarnGrblCommand = 141,
@@ -121,7 +140,8 @@ enum class GcodeError : uint8_t {
   kWarnMcodeMachine = 154,
   kWarnManualRetract = 155,
   kWarnDiameterMode = 156,
-  kWarnM99Main = 157,
+  kWarnCompNoTable = 157,
+  kWarnM99Main = 158,
   // -- o-word control flow (200..229; errors, though after the warnings:
   // the ranges above were full)
   kOwordBadLabel = 200,

@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "core/motion/canon.h"
+#include "core/motion/cutter_comp.h"
 #include "core/motion/cycles.h"
 #include "core/motion/interp.h"
 #include "core/motion/polar.h"
@@ -55,6 +56,7 @@ enum WarnOnce : uint8_t {
   kOnceTapPlane = 1 << 4,
   kOnceManualRetract = 1 << 5,
   kOnceDiameter = 1 << 6,
+  kOnceCompNoTable = 1 << 7,
 };
 inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
 inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
@@ -76,7 +78,8 @@ enum Facet : uint16_t {
   kFacetOffsets = 1 << 9,      // work offsets, G92, tool length offset
   kFacetTool = 1 << 10,
   kFacetEnd = 1 << 11,         // whether the program ended (M2/M30)
-  kFacetAll = (1 << 12) - 1,
+  kFacetComp = 1 << 12,        // cutter radius compensation (G40, G41, G42)
+  kFacetAll = (1 << 13) - 1,
 };
 // The facets a line would set, read leniently (it may not read at all).
 uint16_t facets_written(const char* text, size_t len);
@@ -97,6 +100,31 @@ ErrorFacets error_facets(GcodeError e, const GcodeBlock& b);
 // Only the interpreter's own files include this header.
 using namespace interp_detail;
 
+// What cutter compensation does in a block (core/motion/interp_comp.cpp):
+// done on a scratch queue while the block is checked, again when it commits.
+// Only the two flags are set in a block that does not compensate.
+struct CompOps {
+  bool off_flush;  // G40 ended compensation: the held moves end where the tool is, and go
+  bool motion;     // the block's move is compensated: the steps below replace it
+  // 1. The held records go (kDequeue), after their moves end at flush_to (kMoveEnd).
+  enum Flush : uint8_t { kKeep, kDequeue, kMoveEnd } flush;
+  Vec2 flush_to;
+  // 2. A move round the corner, made at once.
+  bool corner;
+  CanonKind corner_kind;
+  PointNm corner_end, corner_centre;
+  int32_t corner_turns;
+  // 3. Where the held move starts (LinuxCNC's set_endpoint), if set.
+  bool set_endpoint;
+  Vec2 endpoint;
+  // 4. The compensated move, held.
+  CanonKind kind;
+  PointNm end;
+  CanonArc arc;
+  int64_t dir_a, dir_b, sweep_bam;
+  PointNm prog_start;  // the programmed move starts here (G93 feeds come from it)
+};
+
 // What a checked block will do when committed.
 struct Plan {
   bool tool_change = false;
@@ -114,6 +142,11 @@ struct Plan {
   CyclePlan cycle{};
   SplinePlan spline;  // set whole by run_spline before anything reads it
   int16_t stop = -1;  // M0/M1/M2/M30/M60 in tenths
+  CompOps comp;       // cutter compensation (off_flush and motion false unless it acts)
+  Plan() {
+    comp.off_flush = false;
+    comp.motion = false;
+  }
 };
 
 // A canned cycle's words, from the block or kept from the last one.
@@ -216,6 +249,25 @@ struct BlockRunner {
   GcodeError need_feed(uint16_t col, const char* word);
   GcodeError run_home(int g0);
   GcodeError check_unused(int g0, int motion);
+  // Cutter radius compensation (interp_comp.cpp).
+  GcodeError comp_mode();                         // G40, G41, G42, G41.1, G42.1
+  GcodeError comp_forbid_m();                     // M codes LinuxCNC refuses while it is on
+  GcodeError comp_forbid_modes();                 // G43/G49, G54.., G61/G64, G98/G99
+  GcodeError comp_forbid_group0(int g0);          // G10 L2/L20, G28/G30, G28.1/G30.1, G92..
+  // LinuxCNC's find_ends: while compensation is on and past its entry
+  // move, incremental and unwritten axes count from the programmed point,
+  // not from the compensated one (which is where the tool is).
+  const PointNm& comp_base() const { return cur.comp.side && !cur.comp.first_move ? cur.comp.prog : cur.pos; }
+  CompOps& comp_ops(CanonKind kind);
+  GcodeError comp_straight(int motion, bool g53, const PointNm& to);
+  GcodeError comp_arc_entry(int motion, const PointNm& to, bool has_r, int64_t r_abs);
+  GcodeError comp_arc(int motion, const PointNm& to, int64_t ca, int64_t cb);
+  GcodeError comp_check_queue();                  // the held records, this block applied
+  bool comp_acts() const { return cur.comp.side || plan.comp.motion || in.comp_q_.n; }
+  GcodeError comp_apply(CompQueue* q, const CanonRecord& r, PointNm at, const CompEmit* out) const;
+  void comp_commit_motion(CanonRecord* r, const PointNm& start);
+  void comp_commit_flush(const PointNm& tool);
+  static void emit_now(void* interp, CanonRecord* r);  // CompEmit to the sink
   void commit();
 };
 

@@ -68,9 +68,13 @@ GcodeError BlockRunner::run() {
   if (plan.motion != Plan::kNone && plan.motion != Plan::kCycle) nx.stray = PointNm{0, 0, 0};
   if (b.m[kMStop] >= 0) {
     plan.stop = b.m[kMStop];
-    if (plan.stop == 20 || plan.stop == 300) nx.ended = true;
+    if (plan.stop == 20 || plan.stop == 300) {
+      nx.ended = true;
+      nx.comp.side = 0;  // LinuxCNC's program end turns compensation off
+      nx.comp.first_move = true;
+    }
   }
-  return GcodeError::kOk;
+  return comp_acts() ? comp_check_queue() : GcodeError::kOk;
 }
 
 // Words that no code of the block uses are errors, as in LinuxCNC.
@@ -85,7 +89,9 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
     for (char c : ijk)
       if (b.has_word(c) && !(spline && c != 'K')) return fail_letter(GcodeError::kWordUnused, c);
   }
-  if (b.has_word('R') && !arc && !cycle && g0 != 100) return fail_letter(GcodeError::kWordUnused, 'R');
+  // LinuxCNC lets G41.1/G42.1 have an R word (and uses none).
+  const bool comp_dia = b.g[kGCutterComp] == 411 || b.g[kGCutterComp] == 421;
+  if (b.has_word('R') && !arc && !cycle && g0 != 100 && !comp_dia) return fail_letter(GcodeError::kWordUnused, 'R');
   const bool dwell_cycle = motion == 740 || motion == 820 || motion == 840 || motion == 860 || motion == 880 || motion == 890;
   if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m || motion == 50))
     return fail_letter(GcodeError::kWordUnused, 'P');
@@ -93,9 +99,10 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
       !(motion == 730 || motion == 830 || path == 640 || b.m[kMToolChange] == 610 || user_m || motion == 50))
     return fail_letter(GcodeError::kWordUnused, 'Q');
   // LinuxCNC 2.9 takes no L with G74 (its check of L lists every cycle but it).
-  if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740))) return fail_letter(GcodeError::kWordUnused, 'L');
+  const bool comp_on = b.g[kGCutterComp] > 400;  // G41, G41.1, G42, G42.1
+  if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740) || comp_on)) return fail_letter(GcodeError::kWordUnused, 'L');
   if (b.has_word('H') && b.g[kGToolLength] != 430) return fail_letter(GcodeError::kWordUnused, 'H');
-  if (b.has_word('D')) return fail_letter(GcodeError::kWordUnused, 'D');
+  if (b.has_word('D') && !comp_on) return fail_letter(GcodeError::kWordUnused, 'D');
   return GcodeError::kOk;
 }
 
@@ -184,6 +191,19 @@ void BlockRunner::commit() {
     I.emit(&r);
     r.dwell_ms = 0;
   }
+  if (plan.comp.off_flush) comp_commit_flush(start);
+  if (plan.comp.motion) {
+    if (plan.inverse_time) {  // LinuxCNC: the programmed move's length
+      CanonRecord prog = r;
+      prog.start = plan.comp.prog_start;
+      prog.end = plan.target;
+      prog.arc = plan.arc;
+      r.feed_nm_per_min = decimal_scale(plan.inverse_f, plan.motion == Plan::kArc ? arc_length(prog)
+                                                                                  : seg_length(prog.start, prog.end));
+    }
+    comp_commit_motion(&r, start);
+    plan.motion = Plan::kNone;
+  }
   switch (plan.motion) {
     case Plan::kNone:
       break;
@@ -222,6 +242,7 @@ void BlockRunner::commit() {
     }
   }
   if (plan.stop >= 0) {
+    if (I.comp_q_.n) comp_commit_flush(nx.pos);
     r.start = r.end = tool_at(nx);
     r.kind = (plan.stop == 20 || plan.stop == 300) ? CanonKind::kEnd : CanonKind::kPause;
     I.emit(&r);
@@ -242,6 +263,7 @@ void Interp::reset() {
   state_.plane = Plane::kXY;
   state_.inch = options_.inch;
   state_.path_mode = 640;
+  state_.comp.first_move = true;
   records_ = 0;
   moves_ = 0;
   any_code_ = false;
@@ -256,9 +278,11 @@ void Interp::reset() {
   }
   if (options_.control) oword_store_clear(options_.control);
   warned_once_ = 0;
+  comp_q_.clear();
+  comp_scratch_.clear();
 }
 
-void Interp::emit(CanonRecord* r) {
+void Interp::emit_now(CanonRecord* r) {
   ++records_;
   const bool straight = r->kind == CanonKind::kTraverse || r->kind == CanonKind::kFeed;
   if (r->kind == CanonKind::kArc || (straight && !(r->start == r->end))) ++moves_;
@@ -393,6 +417,10 @@ void Interp::line_not_read() {
 }
 
 GcodeError Interp::end_of_input(uint32_t last_line, GcodeDiag* diag) {
+  // Moves cutter compensation still holds go as they are (a program that
+  // ends without M2, or ends in error).
+  const CompEmit out{[](void* ctx, CanonRecord* r) { static_cast<Interp*>(ctx)->emit_now(r); }, this};
+  comp_q_.dequeue(&out, state_.pos);
   GcodeDiag unclosed{};
   if (!state_.ended && oword_unclosed(&unclosed) != GcodeError::kOk) {
     any_failed_ = true;

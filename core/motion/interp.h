@@ -36,6 +36,7 @@
 #include "core/gcode/source.h"
 #include "core/motion/canon.h"
 #include "core/motion/oword_store.h"
+#include "core/motion/cutter_comp.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -45,11 +46,15 @@ constexpr int64_t kGcodeMaxCoordNm = 10000000000;  // 10 m
 // write nearly straight arcs with centres tens of metres away.
 constexpr int64_t kGcodeMaxArcNm = 100000000000;   // 100 m
 
-// Tool lengths for G43 H (the consumer's tool table; none: every length 0).
+// Tool lengths for G43 H and radii for G41/G42 D (the consumer's tool
+// table; none: every length 0, every radius 0 with a warning).
 class ToolTable {
  public:
   // Length offset (Z) of tool `tool`, nm; false if the table has no such tool.
   virtual bool tool_length_nm(int32_t tool, int64_t* z_nm) const = 0;
+  // Radius of tool `tool` (half its diameter, LinuxCNC's D column), nm;
+  // false if the table has no such tool.
+  virtual bool tool_radius_nm(int32_t tool, int64_t* r_nm) const = 0;
 
  protected:
   ~ToolTable() = default;
@@ -120,6 +125,7 @@ struct InterpState {
   int64_t cycle_ijk_nm[3];  // last I, J, K of G87 as written (nm)
   PointNm probe_prog;       // the last probe move's end, program frame at the time (#5061-#5063)
   bool probed;              // a probe move was made (#5070)
+  CompState comp;           // cutter radius compensation (cutter_comp.h); pos is the compensated point
   bool ended;               // after M2/M30 or a closing %
   bool percent_open;        // a first % line was seen
 };
@@ -167,7 +173,15 @@ class Interp {
   uint64_t records_emitted() const { return records_; }
 
  private:
-  void emit(CanonRecord* r);
+  // Emits a record, or holds it behind the moves cutter compensation holds.
+  void emit(CanonRecord* r) {
+    if (comp_q_.n) {
+      (void)comp_q_.push(*r, r->start, 0, 0, 0);  // room was checked with the block
+      return;
+    }
+    emit_now(r);
+  }
+  void emit_now(CanonRecord* r);
   void warn(GcodeError code, uint32_t line, uint16_t col, const char* word, int64_t a_nm = 0, int64_t b_nm = 0);
   // The interpreter's own parameters (core/motion/interp_params.cpp).
   static bool read_param(const void* ctx, int32_t n, const char* name, GValue* out);
@@ -190,6 +204,10 @@ class Interp {
   bool warned_after_end_ = false;
   bool sub_after_end_ = false;  // in a subroutine defined after the end (for calls made before it)
   uint8_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
+  // Records cutter compensation holds (LinuxCNC's interp_queue), and a
+  // scratch copy a block is checked against before it commits.
+  CompQueue comp_q_;
+  CompQueue comp_scratch_;
 
   friend struct BlockRunner;
 };

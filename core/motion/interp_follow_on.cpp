@@ -63,7 +63,8 @@ uint16_t g_facets(int64_t tenths) {
       if (tenths == 40 || tenths == 530) return 0;
       return kFacetOffsets;  // G10, G28.1, G30.1, G92 and its kin
     case -1: return kFacetGcode;  // not a G code at all: who knows
-    default: return 0;           // cutter compensation, path control, spindle mode
+    case kGCutterComp: return kFacetComp;
+    default: return 0;           // path control, spindle mode
   }
 }
 
@@ -129,6 +130,7 @@ uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect)
   if (b.g[kGUnits] >= 0) f |= kFacetUnits;
   if (b.g[kGDistance] >= 0) f |= kFacetDistance;
   if (b.g[kGArcDistance] >= 0) f |= kFacetArcDistance;
+  if (b.g[kGCutterComp] >= 0) f |= kFacetComp;
   if (b.has_word('T') || b.m[kMToolChange] == 610) f |= kFacetTool;
   // Offsets: a coordinate system, a tool length offset, or G10/G92 (whose
   // values come from the current point when it is trusted).
@@ -213,6 +215,26 @@ ErrorFacets error_facets(GcodeError e, const GcodeBlock& b) {
     case GcodeError::kCycleNoIjk:
       // Whether the sticky values were there: the motion before the block.
       return {kFacetPlane, kFacetMotion, 0};
+    case GcodeError::kCompForbidden:
+    case GcodeError::kCompChangePlane:
+      // Compensation left on by mistake (or a G40 line that failed).
+      return {kFacetComp, 0, kFacetComp};
+    case GcodeError::kCompOnWhenOn:
+      return {kFacetComp, 0, 0};
+    case GcodeError::kCompEntryTooShort:
+    case GcodeError::kCompEntryArcTooShort:
+    case GcodeError::kCompArcTooSmall:
+    case GcodeError::kCompConcaveStraight:
+    case GcodeError::kCompConcaveArc:
+    case GcodeError::kCompLineArcGouge:
+    case GcodeError::kCompArcSameCentre:
+    case GcodeError::kCompArcArcGouge:
+    case GcodeError::kCompArcLineGouge:
+    case GcodeError::kCompArcAfterExit:
+    case GcodeError::kCompQueueFull:
+    case GcodeError::kCompInternal:
+      // The corner is made with the moves before the block (and the tool).
+      return {kWhere | kFacetComp | kFacetPlane | kFacetMotion | kFacetTool, kFacetPosition, 0};
     case GcodeError::kG43NoTool:
       return {kFacetTool, 0, kFacetTool};
     case GcodeError::kToolUnknown: {

@@ -44,6 +44,7 @@ GcodeError BlockRunner::run_modes() {
     if ((e = integer('T', 0, kMaxToolNumber, &t)) != GcodeError::kOk) return e;
     nx.selected_tool = static_cast<int32_t>(t);
   }
+  if (cur.comp.side && (e = comp_forbid_m()) != GcodeError::kOk) return e;
   if (b.m[kMToolChange] == 60) {
     nx.tool = nx.selected_tool;
     plan.tool_change = true;
@@ -71,7 +72,14 @@ GcodeError BlockRunner::run_modes() {
     plan.dwell = true;
     plan.dwell_ms = ms;
   }
-  if (b.g[kGPlane] >= 0) nx.plane = b.g[kGPlane] == 170 ? Plane::kXY : b.g[kGPlane] == 180 ? Plane::kZX : Plane::kYZ;
+  if (b.g[kGPlane] >= 0) {
+    nx.plane = b.g[kGPlane] == 170 ? Plane::kXY : b.g[kGPlane] == 180 ? Plane::kZX : Plane::kYZ;
+    if (cur.comp.side && nx.plane != cur.plane)
+      return fail_code(GcodeError::kCompChangePlane, 'G', b.g[kGPlane], b.g_col[kGPlane]);
+  }
+  if ((b.g[kGCutterComp] >= 0 || cur.comp.side) &&
+      ((e = comp_mode()) != GcodeError::kOk || (e = comp_forbid_modes()) != GcodeError::kOk))
+    return e;
   if (b.g[kGToolLength] == 490) {
     nx.tlo_nm = 0;
   } else if (b.g[kGToolLength] == 430) {
@@ -116,6 +124,7 @@ GcodeError BlockRunner::run_modes() {
 GcodeError BlockRunner::run_group0(int g0) {
   GcodeError e;
   const uint16_t col = b.g_col[kGNonModal];
+  if (nx.comp.side && (e = comp_forbid_group0(g0)) != GcodeError::kOk) return e;
   switch (g0) {
     case 100: {  // G10 L2 / L20: set a work offset
       if (!b.has_word('L')) return fail_code(GcodeError::kG10NoL, 'G', 100, col);

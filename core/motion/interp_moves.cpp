@@ -9,7 +9,11 @@
 namespace dexmill {
 
 GcodeError BlockRunner::run_motion(int motion) {
-  if (motion == 50 || motion == 51) return run_spline(motion);  // keeps the modal motion (interp_spline.cpp)
+  if (motion == 50 || motion == 51) {
+    // LinuxCNC: "Cannot convert spline with cutter radius compensation".
+    if (nx.comp.side) return fail_code(GcodeError::kCompForbidden, 'G', static_cast<int16_t>(motion), motion_col());
+    return run_spline(motion);  // keeps the modal motion (interp_spline.cpp)
+  }
   if (motion != cur.motion) {
     nx.motion = static_cast<int16_t>(motion);
     if (!is_cycle(motion)) nx.cycle_level_set = false;
@@ -22,6 +26,7 @@ GcodeError BlockRunner::run_motion(int motion) {
   if (motion == 0 || motion == 10) return run_straight(motion, b.g[kGNonModal] == 530);
   if (motion == 20 || motion == 30) return run_arc(motion);
   if (!b.has_axis() && b.g[kGMotion] < 0) return GcodeError::kOk;
+  if (nx.comp.side) return fail_code(GcodeError::kCompForbidden, 'G', static_cast<int16_t>(motion), motion_col());
   if (is_probe(motion)) return run_probe(motion);
   return run_cycle(motion);
 }
@@ -62,14 +67,15 @@ GcodeError BlockRunner::run_probe(int motion) {
 GcodeError BlockRunner::run_straight(int motion, bool g53) {
   GcodeError e;
   if (g53 && nx.incremental) return fail_code(GcodeError::kG53Incremental, 'G', 530, b.g_col[kGNonModal]);
-  PointNm to = cur.pos;
+  const PointNm base = g53 ? cur.pos : comp_base();
+  PointNm to = base;
   for (int ax = 0; ax < 3; ++ax) {
     const char c = kAxisLetter[ax];
     if (!b.has_word(c)) continue;
     int64_t v;
     if ((e = length(c, &v)) != GcodeError::kOk) return e;
     if (g53) axis_ref(to, ax) = v - (ax == 2 ? nx.tlo_nm : 0);
-    else axis_ref(to, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
+    else axis_ref(to, ax) = nx.incremental ? axis_val(base, ax) + v : v + offset(ax);
   }
   if (b.has_polar() && g53) return fail_letter(GcodeError::kPolarG53, polar_letter());
   if (b.has_polar() && (e = polar_target(&to)) != GcodeError::kOk) return e;
@@ -86,7 +92,9 @@ GcodeError BlockRunner::run_straight(int motion, bool g53) {
   plan.target = to;
   plan.inverse_time = nx.inverse_time && motion != 0;
   nx.pos = to;
-  return GcodeError::kOk;
+  if (motion != 0 && motion != 10) return GcodeError::kOk;
+  nx.comp.arc_not_allowed = false;  // any G0/G1 allows arcs again after G40
+  return nx.comp.side ? comp_straight(motion, g53, to) : GcodeError::kOk;
 }
 
 GcodeError BlockRunner::run_arc(int motion) {
@@ -96,6 +104,8 @@ GcodeError BlockRunner::run_arc(int motion) {
   const uint16_t col = motion_col();
   const Plane pl = nx.plane;
   const int ia = plane_axis_a(pl), ib = plane_axis_b(pl);
+  const PointNm base = comp_base();
+  if (nx.comp.arc_not_allowed) return fail(GcodeError::kCompArcAfterExit, col, w);
   // I, J, K belong to X, Y, Z; the one along the plane's axis is an error.
   const char off_letter[3] = {'I', 'J', 'K'};
   const char not_here = off_letter[plane_axis_c(pl)];
@@ -115,14 +125,16 @@ GcodeError BlockRunner::run_arc(int motion) {
   if (nx.inverse_time && !b.has_word('F')) return fail(GcodeError::kInverseTimeNoF, col, w);
   if (!nx.inverse_time && (e = need_feed(col, w)) != GcodeError::kOk) return e;
   if (nx.inverse_time && decimal_is_zero(plan.inverse_f)) return fail_letter(GcodeError::kFeedZero, 'F');
-  const ArcPlanar p{axis_val(cur.pos, ia), axis_val(cur.pos, ib), axis_val(to, ia), axis_val(to, ib)};
+  const ArcPlanar p{axis_val(base, ia), axis_val(base, ib), axis_val(to, ia), axis_val(to, ib)};
   int64_t ca, cb;
   if (has_r) {
     int64_t r;
     if ((e = length('R', &r, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
+    if (nx.comp.side && (e = comp_arc_entry(motion, to, true, abs64(r))) != GcodeError::kOk) return e;
     e = arc_centre_from_radius(p, r, motion == 20, &ca, &cb, &d->a_nm, &d->b_nm);
     if (e != GcodeError::kOk) return fail(e, b.g[kGMotion] >= 0 ? col : b.col_of('R'), w);
   } else {
+    if (nx.comp.side && (e = comp_arc_entry(motion, to, false, 0)) != GcodeError::kOk) return e;
     int64_t oa = 0, ob = 0;
     if (b.has_word(off_letter[ia]) && (e = length(off_letter[ia], &oa, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
     if (b.has_word(off_letter[ib]) && (e = length(off_letter[ib], &ob, kGcodeMaxArcNm)) != GcodeError::kOk) return e;
@@ -139,7 +151,7 @@ GcodeError BlockRunner::run_arc(int motion) {
       return fail(e, c, w);
     }
   }
-  const int64_t sc = axis_val(cur.pos, plane_axis_c(pl));
+  const int64_t sc = axis_val(base, plane_axis_c(pl));
   plan.motion = Plan::kArc;
   plan.target = to;
   plan.arc.plane = pl;
@@ -147,7 +159,7 @@ GcodeError BlockRunner::run_arc(int motion) {
   plan.arc.turns = static_cast<int32_t>(motion == 20 ? -turns : turns);
   plan.inverse_time = nx.inverse_time;
   nx.pos = to;
-  return GcodeError::kOk;
+  return nx.comp.side ? comp_arc(motion, to, ca, cb) : GcodeError::kOk;
 }
 
 }  // namespace dexmill

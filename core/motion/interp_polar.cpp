@@ -45,13 +45,15 @@ GcodeError BlockRunner::polar_words(PolarWords* w) {
 // incremental, or @ and ^ for X and Y; the current point for the others.
 GcodeError BlockRunner::end_point(PointNm* to) {
   GcodeError e;
-  *to = cur.pos;
+  // From the programmed point while compensation is on (LinuxCNC's program_x).
+  const PointNm base = comp_base();
+  *to = base;
   for (int ax = 0; ax < 3; ++ax) {
     const char c = kAxisLetter[ax];
     if (!b.has_word(c)) continue;
     int64_t v;
     if ((e = length(c, &v)) != GcodeError::kOk) return e;
-    axis_ref(*to, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
+    axis_ref(*to, ax) = nx.incremental ? axis_val(base, ax) + v : v + offset(ax);
   }
   return b.has_polar() ? polar_target(to) : GcodeError::kOk;
 }
@@ -62,7 +64,7 @@ GcodeError BlockRunner::polar_target(PointNm* to) {
   PolarWords w;
   GcodeError e = polar_words(&w);
   if (e != GcodeError::kOk) return e;
-  const int64_t x = cur.pos.x_nm - offset(0), y = cur.pos.y_nm - offset(1);
+  const int64_t x = comp_base().x_nm - offset(0), y = comp_base().y_nm - offset(1);
   int64_t px, py;
   char word = '@';
   e = nx.incremental ? polar_incremental(x, y, w, &px, &py, &word)

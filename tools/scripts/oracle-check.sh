@@ -8,7 +8,9 @@
 #    when ../shared is absent.
 # 2. With --rs274 (needs LinuxCNC's standalone interpreter `rs274`, Debian
 #    package linuxcnc-uspace): every tests/gcode/paths/*.ngc and every file of
-#    ../shared/corpus, traced by rs274 and compared the same way.
+#    ../shared/corpus, traced by rs274 and compared the same way, both with
+#    the same tool table (for G41/G42: FAMILY.tbl beside FAMILY_NAME.ngc, or
+#    one the script writes).
 #    Also the programs `dexmill zig` writes (issue 23: they must be plain
 #    RS274/NGC), from a relief the script draws (lifted and zigzag, along x
 #    and y) and for the four built-in parts of run --demo.
@@ -29,10 +31,11 @@ trap 'rm -rf "$tmp"' EXIT
 [ -x "$dexmill" ] || { echo "oracle-check: $dexmill not built (run make)" >&2; exit 2; }
 failed=0; agreed=0; unsupported=0
 
-# check NAME PROGRAM TRACE: compare dexmill's path of PROGRAM with TRACE.
+# check NAME PROGRAM TRACE [TOOLS]: compare dexmill's path of PROGRAM (with
+# the tool table TOOLS, in mm) with TRACE.
 check() {
-  local name=$1 prog=$2 trace=$3
-  "$dexmill" path "$prog" > "$tmp/path" 2> "$tmp/err"
+  local name=$1 prog=$2 trace=$3 tools=${4:-}
+  "$dexmill" path "$prog" ${tools:+--tools "$tools"} > "$tmp/path" 2> "$tmp/err"
   local rc=$? first
   first=$(grep -m1 ': error: ' "$tmp/err" | sed 's/^.*: error: //')
   if [ $rc -ne 0 ] && grep -q 'not supported' <<<"$first"; then
@@ -88,8 +91,22 @@ if [ $use_rs274 = 1 ]; then
       files="$files $(cut -f1 "$shared/corpus/index.tsv" | tail -n +2 | sed "s|^|$shared/corpus/|")"
     fi
     # A tool table with tools 0..999, all of length 0 (dexmill's path does not
-    # apply tool lengths; without a table rs274 refuses unknown tools).
-    for t in $(seq 0 999); do echo "T$t P$t Z0 D0"; done > "$tmp/tools.tbl"
+    # apply tool lengths; without a table rs274 refuses unknown tools), for
+    # cutter compensation 1/8 in across (the corpus's cam.ngc cuts with a
+    # 3.1 mm end mill, T1), T4 1 in (comp-g1.ngc says so). dexmill reads it in
+    # mm; the standalone rs274 reads its tool table in inch (its
+    # GET_EXTERNAL_LENGTH_UNITS), so it gets the same table in inch.
+    for t in $(seq 0 999); do
+      if [ $t = 4 ]; then echo "T$t P$t Z0 D25.4"; else echo "T$t P$t Z0 D3.175"; fi
+    done > "$tmp/tools.tbl"
+    # mm_to_inch TABLE: the same table with D and Z in inch (exact for the
+    # diameters the project's tables use, multiples of 0.0254 mm).
+    mm_to_inch() {
+      awk '{ out = ""; for (i = 1; i <= NF; i++) { w = $i; c = toupper(substr(w, 1, 1));
+               if ((c == "D" || c == "Z") && substr(w, 2) ~ /^[-+]?[0-9.]+$/) w = sprintf("%s%.10g", c, substr(w, 2) / 25.4);
+               out = out (i > 1 ? " " : "") w }
+             print out }' "$1"
+    }
     # dexmill zig's programs, from a relief drawn here.
     python3 - "$tmp/relief.pgm" <<'PY'
 import math, sys
@@ -116,11 +133,16 @@ PY
       # dexmill skips grbl `$` lines with a warning; LinuxCNC would stop
       # there, so it gets them as comments.
       sed -E 's/^[[:space:]]*\$(.*)$/(grbl $\1)/' "$f" > "$tmp/prog.ngc"
+      # The project's FAMILY_NAME.ngc runs with FAMILY.tbl when there is one
+      # (as in tests/test_gcode_files.cpp), everything else with the table above.
+      table="$(dirname "$f")/$(basename "$f" | sed 's/_.*//; s/\.[^.]*$//').tbl"
+      [ "${f#"$root"/tests/gcode/paths/}" != "$f" ] && [ -f "$table" ] || table="$tmp/tools.tbl"
+      mm_to_inch "$table" > "$tmp/tools_inch.tbl"
       # rs274 keeps its tool data in $HOME/.tool.mmap, shared by every rs274
       # running at the time: a HOME of its own keeps others' tables out.
-      ( cd "$tmp" && HOME="$tmp" timeout 300 rs274 -t "$tmp/tools.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
+      ( cd "$tmp" && HOME="$tmp" timeout 300 rs274 -t "$tmp/tools_inch.tbl" -g "$tmp/prog.ngc" > "$tmp/trace" 2>&1 < /dev/null )
       name=${f#"$root"/}; name=${name#"$shared"/}; name=${name#"$tmp"/}
-      check "$name" "$f" "$tmp/trace"
+      check "$name" "$f" "$tmp/trace" "$table"
     done
   fi
 fi
