@@ -263,6 +263,9 @@ void Interp::reset() {
   state_.plane = Plane::kXY;
   state_.inch = options_.inch;
   state_.path_mode = 640;
+  // LinuxCNC's interpreter starts in G99 (retract to R): its init sets
+  // R_PLANE; a machine's RS274NGC_STARTUP_CODE may say G98.
+  state_.retract_to_r = true;
   state_.comp.first_move = true;
   records_ = 0;
   moves_ = 0;

@@ -14,7 +14,8 @@
 // (spindle) position minus the offset. So G53 Z0 puts the tip at Z = -TLO,
 // and a change of offset (G43, G49) moves the point without a move. The
 // program starts at the machine origin (0, 0, 0), in mm (G21) unless
-// InterpOptions says inch, G17, G90, G91.1, G94, G54, G40, G49, G80, G98.
+// InterpOptions says inch, G17, G90, G91.1, G94, G54, G40, G49, G80, G99
+// (LinuxCNC's interpreter's own start: its init sets the R-plane retract).
 //
 // Limits (checked where numbers come in; "number too large" or "position
 // beyond the +-10 m range", never wrap-around):
