@@ -58,7 +58,7 @@ const ToolTableEntry* ToolTableFile::find(int32_t number) const {
 
 bool ToolTableFile::tool(int32_t number, Tool* out) const {
   const ToolTableEntry* e = find(number);
-  if (!e) return false;
+  if (!e || e->tool.diameter_nm == 0) return false;  // D0: no cutter
   *out = e->tool;
   return true;
 }
@@ -123,8 +123,10 @@ bool ToolTableFile::parse_line(const char* s, std::size_t n, uint32_t line, bool
       case 'D':
         diameter_nm = decimal_to_nm(d, inch);
         have_d = true;
-        if (diameter_nm < kNmPerUm || diameter_nm > 1000 * kNmPerMm) {
-          error_at(line, col, "the diameter must be between 0.001 and 1000 mm");
+        // D0 is common in LinuxCNC tables (a probe, a slot kept free): such
+        // a tool reads, and cannot cut (tool() has none).
+        if ((diameter_nm < kNmPerUm && diameter_nm != 0) || diameter_nm > 1000 * kNmPerMm) {
+          error_at(line, col, "the diameter must be 0 or between 0.001 and 1000 mm");
           return false;
         }
         break;
@@ -190,7 +192,7 @@ bool ToolTableFile::parse_line(const char* s, std::size_t n, uint32_t line, bool
     }
   }
   t.length_nm = tool_default_length_nm(t);
-  if (!ok(tool_check(t))) {
+  if (diameter_nm != 0 && !ok(tool_check(t))) {
     error_at(line, t_col, "tool T" + std::to_string(e.number) + " is out of range");
     return false;
   }

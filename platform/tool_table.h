@@ -54,7 +54,10 @@ class ToolTableFile final : public ToolLibrary, public ToolTable {
   // The same from text in memory; `name` is used in messages.
   Load parse(const char* name, const char* text, std::size_t n, bool inch);
 
+  // False for a tool the table lacks, and for one of diameter 0 (D0: no cutter).
   bool tool(int32_t number, Tool* out) const override;
+  // The table has the tool (of any diameter).
+  bool has(int32_t number) const { return find(number) != nullptr; }
   bool tool_length_nm(int32_t number, int64_t* z_nm) const override;
   bool tool_radius_nm(int32_t number, int64_t* r_nm) const override;
 

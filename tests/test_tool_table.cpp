@@ -91,7 +91,8 @@ TEST(tool_table_errors) {
       {"P1 D6\n", "tt.tbl:1:1: error: a tool needs a number (T)"},
       {"T1 D6\nT1 D3\n", "tt.tbl:2:1: error: tool T1 is already defined on line 1"},
       {"T1.5 D6\n", "tt.tbl:1:1: error: the tool number must be a whole number"},
-      {"T1 D0\n", "tt.tbl:1:4: error: the diameter must be between"},
+      {"T1 D-1\n", "tt.tbl:1:4: error: the diameter must be 0 or between"},
+      {"T1 D0.0001\n", "tt.tbl:1:4: error: the diameter must be 0 or between"},
       {"T1 DX\n", "tt.tbl:1:4: error: 'D' needs a number"},
       {"T1 D4 ;bull:4:1.5\nT2 D2 ;bull:4:1.5\n", "tt.tbl:2:1: error: the corner radius of T2 is larger than D/2"},
       // A shape that does not parse is said to be wrong, not replaced by a

@@ -430,8 +430,12 @@ int run_job(RunOptions o) {
     while (runner.step()) {
       if (scan.bad_tool_line) {
         char m[200];
-        std::snprintf(m, sizeof m, "tool T%d is not in the tool table '%s'", static_cast<int>(scan.bad_tool),
-                      table.name().c_str());
+        if (table.has(scan.bad_tool))
+          std::snprintf(m, sizeof m, "tool T%d has diameter 0 in the tool table '%s': it cannot cut",
+                        static_cast<int>(scan.bad_tool), table.name().c_str());
+        else
+          std::snprintf(m, sizeof m, "tool T%d is not in the tool table '%s'", static_cast<int>(scan.bad_tool),
+                        table.name().c_str());
         scan_msgs.error_text(scan.bad_tool_line, 1, m);
         break;
       }

@@ -31,6 +31,19 @@ trap 'rm -rf "$tmp"' EXIT
 [ -x "$dexmill" ] || { echo "oracle-check: $dexmill not built (run make)" >&2; exit 2; }
 failed=0; agreed=0; unsupported=0
 
+# scale_table FACTOR TABLE: the tool table with its D and Z words times
+# FACTOR (25.4: inch to mm; 1/25.4: mm to inch); what follows ';' is a
+# comment, kept as it is.
+scale_table() {
+  awk -v f="$1" 'BEGIN { split(f, q, "/"); k = q[1] / (q[2] == "" ? 1 : q[2]) }
+    { c = index($0, ";"); words = c ? substr($0, 1, c - 1) : $0; rest = c ? substr($0, c) : ""
+      n = split(words, w, /[ \t]+/); out = ""
+      for (i = 1; i <= n; i++) { if (w[i] == "") continue; l = toupper(substr(w[i], 1, 1))
+        if ((l == "D" || l == "Z") && substr(w[i], 2) ~ /^[-+]?[0-9.]+$/) w[i] = sprintf("%s%.10g", l, substr(w[i], 2) * k)
+        out = out (out == "" ? "" : " ") w[i] }
+      print out rest }' "$2"
+}
+
 # check NAME PROGRAM TRACE [TOOLS]: compare dexmill's path of PROGRAM (with
 # the tool table TOOLS, in mm) with TRACE.
 check() {
@@ -75,7 +88,14 @@ if [ -d "$shared/corpus/linuxcnc-interp-oracle" ]; then
   echo "== stored LinuxCNC oracles (../shared/corpus/linuxcnc-interp-oracle)"
   for d in "$shared"/corpus/linuxcnc-interp-oracle/*/; do
     prog=$(ls "$d"*.ngc | head -1)
-    check "$(basename "$d")" "$prog" "$d/expected"
+    # A trace made with a tool table: LinuxCNC's standalone interpreter read
+    # it in inch (its GET_EXTERNAL_LENGTH_UNITS); dexmill gets it in mm.
+    table=""
+    if ls "$d"*.tbl >/dev/null 2>&1; then
+      table="$tmp/stored_$(basename "$d").tbl"
+      scale_table 25.4 "$(ls "$d"*.tbl | head -1)" > "$table"
+    fi
+    check "$(basename "$d")" "$prog" "$d/expected" "$table"
   done
 else
   echo "oracle-check: ../shared is absent; skipping the stored LinuxCNC oracles"
@@ -101,12 +121,7 @@ if [ $use_rs274 = 1 ]; then
     done > "$tmp/tools.tbl"
     # mm_to_inch TABLE: the same table with D and Z in inch (exact for the
     # diameters the project's tables use, multiples of 0.0254 mm).
-    mm_to_inch() {
-      awk '{ out = ""; for (i = 1; i <= NF; i++) { w = $i; c = toupper(substr(w, 1, 1));
-               if ((c == "D" || c == "Z") && substr(w, 2) ~ /^[-+]?[0-9.]+$/) w = sprintf("%s%.10g", c, substr(w, 2) / 25.4);
-               out = out (i > 1 ? " " : "") w }
-             print out }' "$1"
-    }
+    mm_to_inch() { scale_table "1/25.4" "$1"; }
     # dexmill zig's programs, from a relief drawn here.
     python3 - "$tmp/relief.pgm" <<'PY'
 import math, sys
