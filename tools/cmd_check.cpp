@@ -11,10 +11,8 @@
 #include "platform/gcode_file.h"
 #include <vector>
 
-#include "platform/tool_table.h"
 #include "tools/cli.h"
 #include "tools/read_options.h"
-#include "tools/run_tool_table.h"
 #include "tools/run_job.h"
 #include "tools/run_options.h"
 
@@ -34,7 +32,6 @@ void usage(std::FILE* f) {
                "shown. Exit 0 clean, 1 with errors.\n"
                "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
                "--follow-ons: show those errors too, marked (they count towards N).\n"
-               "--tools: a LinuxCNC tool table (G41/G42 radii, G43 lengths).\n"
                "%s\n"
                "       dexmill check --simulate FILE [run options]\n\n"
                "Cuts the program as `run` does with the safety checks (all unless --check\n"
@@ -70,7 +67,6 @@ int cmd_check(int argc, char** argv) {
   ReadOptions ro;
   long max_errors = 100;
   bool follow_ons = false;
-  const char* tools_file = nullptr;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -79,11 +75,6 @@ int cmd_check(int argc, char** argv) {
     }
     if (const int taken = take_read_option(argc, argv, &i, &ro)) {
       if (taken < 0) return kExitUsage;
-      continue;
-    }
-    if (!std::strcmp(a, "--tools")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "--tools needs a tool table file");
-      tools_file = argv[++i];
       continue;
     }
     if (!std::strcmp(a, "--follow-ons")) {
@@ -103,21 +94,16 @@ int cmd_check(int argc, char** argv) {
     usage(stderr);
     return kExitUsage;
   }
-  ToolTableFile table;
-  if (tools_file) {
-    if (const int code = load_tool_table(tools_file, ro.inch, &table)) return code;
-    for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
-  }
   GcodeFile in;
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
   ReadSetup setup;
+  if (const int code = setup.load_tools(ro)) return code;
   InterpOptions opt;
   setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;
   opt.messages = &notes;
-  opt.tools = tools_file ? &table : nullptr;
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);

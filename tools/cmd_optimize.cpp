@@ -136,8 +136,8 @@ int cmd_optimize(int argc, char** argv) {
     return rf == ReadFile::kTooLarge ? kExitInput : kExitIo;
   }
   ToolTableFile table;
-  if (!o.tools_file.empty()) {
-    const int t = load_tool_table(o.tools_file, o.read.inch, &table);
+  if (!o.read.tools_file.empty()) {
+    const int t = load_tool_table(o.read.tools_file, o.read.inch, &table);
     if (t != kExitOk) return t;
   }
   OptimizeInput in;
@@ -145,7 +145,7 @@ int cmd_optimize(int argc, char** argv) {
   in.shown_name = shown;
   in.inch = o.read.inch;
   SingleToolLibrary single(o.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
-  in.tools = o.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
+  in.tools = o.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;
   in.time_model.rapid_nm_per_min = o.rapid_nm_per_min;
   in.time_model.accel_nm_per_s2 = o.accel_nm_per_s2;

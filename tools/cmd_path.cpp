@@ -9,10 +9,8 @@
 #include "core/motion/arc_chords.h"
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
-#include "platform/tool_table.h"
 #include "tools/cli.h"
 #include "tools/read_options.h"
-#include "tools/run_tool_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -79,8 +77,7 @@ void usage(std::FILE* f) {
                "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
                "offset not applied), mm with 5 decimals. Arcs and splines become chords\n"
                "with sagitta <= --chord mm (default 0.001). Stops at the first error (exit 1).\n"
-               "--tools: a LinuxCNC tool table; G41/G42 take the tool radius (D / 2) from it\n"
-               "(without one the radius is 0, with a warning) and G43 the length.\n"
+
                "%s",
                kReadOptionsUsage);
 }
@@ -91,7 +88,6 @@ int cmd_path(int argc, char** argv) {
   const char* file = nullptr;
   int64_t chord_nm = 1000;
   ReadOptions ro;
-  const char* tools_file = nullptr;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
@@ -100,11 +96,6 @@ int cmd_path(int argc, char** argv) {
     }
     if (const int taken = take_read_option(argc, argv, &i, &ro)) {
       if (taken < 0) return kExitUsage;
-      continue;
-    }
-    if (!std::strcmp(a, "--tools")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "--tools needs a tool table file");
-      tools_file = argv[++i];
       continue;
     }
     if (!std::strcmp(a, "--chord")) {
@@ -125,11 +116,6 @@ int cmd_path(int argc, char** argv) {
     usage(stderr);
     return kExitUsage;
   }
-  ToolTableFile table;
-  if (tools_file) {
-    if (const int code = load_tool_table(tools_file, ro.inch, &table)) return code;
-    for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
-  }
   GcodeFile in;
   if (!in.open(file)) return fail(kExitIo, "%s", in.error());
   static char outbuf[1 << 16];
@@ -137,12 +123,12 @@ int cmd_path(int argc, char** argv) {
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
   ReadSetup setup;
+  if (const int code = setup.load_tools(ro)) return code;
   InterpOptions opt;
   setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;
   opt.messages = &notes;
   opt.spline_sagitta_nm = chord_nm;  // splines (G5, G5.1) come as chords of the same sagitta
-  opt.tools = tools_file ? &table : nullptr;
   PathPrinter printer(stdout, chord_nm);
   Interp interp(&printer, opt);
   char tol[32];

@@ -1,6 +1,6 @@
 // How a program is read, the options `path`, `check` and `run` share
-// (../shared/CLI.md): --units, --default-feed, --subroutine-path and
-// --max-blocks, and the setting up of the interpreter's memory and source
+// (../shared/CLI.md): --units, --default-feed, --subroutine-path,
+// --max-blocks and --tools, and the setting up of the interpreter's memory and source
 // from them (one place, not one per command).
 #ifndef DEXMILL_TOOLS_READ_OPTIONS_H
 #define DEXMILL_TOOLS_READ_OPTIONS_H
@@ -13,6 +13,7 @@
 
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
+#include "platform/tool_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -22,6 +23,7 @@ struct ReadOptions {
   int64_t default_feed_nm_per_min = 0;    // --default-feed (0: none)
   std::vector<std::string> subroutine_path;  // --subroutine-path DIR[:DIR...]
   uint64_t max_blocks = kDefaultMaxBlocks;   // --max-blocks N (0: no limit)
+  std::string tools_file;                    // --tools FILE: a LinuxCNC tool table
 };
 
 // The usage text of these options (indented as the commands' own).
@@ -33,10 +35,14 @@ extern const char kReadOptionsUsage[];
 int take_read_option(int argc, char** argv, int* i, ReadOptions* o);
 
 // The memory of one reading of a program (parameters, o-word control
-// flow), attached to `opt` with the options' values; the file gets the
-// subroutine path.
+// flow) and its tool table, attached to `opt` with the options' values; the
+// file gets the subroutine path.
 struct ReadSetup {
   std::unique_ptr<GcodeMemory> memory = gcode_memory();
+  ToolTableFile table;
+  bool have_table = false;
+  // Loads --tools (its warnings printed); an exit code, 0 when fine.
+  int load_tools(const ReadOptions& o);
   void apply(const ReadOptions& o, InterpOptions* opt, GcodeFile* file);
 };
 

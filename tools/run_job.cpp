@@ -352,7 +352,7 @@ int run_job(RunOptions o) {
   }
   OutputFormats formats;
   {
-    const int code = check_outputs(o, {o.file, o.tools_file, o.design, o.stock_stl}, &formats);
+    const int code = check_outputs(o, {o.file, o.read.tools_file, o.design, o.stock_stl}, &formats);
     if (code != kExitOk) return code;
   }
   if (!demo) {
@@ -373,9 +373,9 @@ int run_job(RunOptions o) {
 
   // -- tools
   ToolTableFile table;
-  const bool have_table = !o.tools_file.empty() || demo;
-  if (!o.tools_file.empty()) {
-    const int code = load_tool_table(o.tools_file, o.read.inch, &table);
+  const bool have_table = !o.read.tools_file.empty() || demo;
+  if (!o.read.tools_file.empty()) {
+    const int code = load_tool_table(o.read.tools_file, o.read.inch, &table);
     if (code != kExitOk) return code;
   } else if (demo) {
     const char* t = demo_tool_table();
@@ -390,7 +390,7 @@ int run_job(RunOptions o) {
   rep.units = o.read.inch ? "inch" : "mm";
   rep.mode = o.mode == CutMode::kSweep ? "sweep" : "stamp";
   rep.default_tool = o.tool_text;
-  rep.tool_table = demo && o.tools_file.empty() ? "(built-in demo table)" : o.tools_file;
+  rep.tool_table = demo && o.read.tools_file.empty() ? "(built-in demo table)" : o.read.tools_file;
   rep.height_bits = DEXMILL_HEIGHT_BITS;
   rep.rapid_nm_per_min = o.rapid_nm_per_min;
   auto write_report = [&]() -> bool {

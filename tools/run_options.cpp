@@ -227,8 +227,6 @@ int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
       if (e != ToolSpecError::kOk) return fail(kExitUsage, "bad --tool '%s': %s", v, tool_spec_message(e));
       o->tool_text = v;
       o->tool_given = true;
-    } else if (name == "--tools") {
-      o->tools_file = v;
     } else if (name == "--mode") {
       if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
       else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;

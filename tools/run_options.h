@@ -40,7 +40,6 @@ struct RunOptions {
   Tool tool;                     // --tool (default flat:6)
   std::string tool_text = "flat:6";
   bool tool_given = false;       // --tool was given
-  std::string tools_file;        // --tools
   CutMode mode = CutMode::kSweep;
   std::string image;             // --image (demo: out/final.ppm)
   std::string frames_dir;        // --frames
