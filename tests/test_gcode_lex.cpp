@@ -32,8 +32,10 @@ TEST(lex_case_spaces_leading_zeros) {
   CHECK_EQ(b.val('X').mant, 10);
   CHECK_EQ(read("G38.2 Z-1 F10", &b, &k, &d), GcodeError::kOk);
   CHECK_EQ(b.g[kGMotion], 382);
-  CHECK_EQ(read("G33 Z-1 K1", &b, &k, &d), GcodeError::kUnsupportedGcode);
-  CHECK_EQ(std::strcmp(d.word, "G33"), 0);
+  CHECK_EQ(read("G33.1 Z-1 K1", &b, &k, &d), GcodeError::kOk);
+  CHECK_EQ(b.g[kGMotion], 331);
+  CHECK_EQ(read("G76 P1 Z-1 I-0.1 J0.1 K0.2", &b, &k, &d), GcodeError::kUnsupportedGcode);
+  CHECK_EQ(std::strcmp(d.word, "G76"), 0);
 }
 
 TEST(lex_comments_anywhere) {

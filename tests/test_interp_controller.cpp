@@ -159,3 +159,49 @@ TEST(controller_stray_letters_are_typos) {
   CHECK_EQ(run("G21\nO100 sub", &rec, &d), GcodeError::kUnsupportedOword);
   CHECK_EQ(run("G21\nG1 X1 YO1", &rec, &d), GcodeError::kMissingNumber);
 }
+
+TEST(controller_g49_with_h_is_centroid_style) {
+  t::Recorder rec;
+  t::Warnings w;
+  GcodeDiag d;
+  // Centroid's posts end with `G49 H0`: LinuxCNC refuses the H; its meaning
+  // is plain (G49 cancels the offset whatever H says), so it is a warning,
+  // once, and the tool length offset is off after it.
+  CHECK_EQ(run("G21\nT1 M6\nG43 H1\nG0 Z5\nG49 H0\nG0 Z6\nG49 H3\nM2", &rec, &d, &w), GcodeError::kOk);
+  CHECK_EQ(count(w, GcodeError::kWarnG49H), 1u);
+  CHECK_EQ(w.list.size(), 1u);
+  CHECK_EQ(w.list[0].line, 5u);
+  CHECK_EQ(w.list[0].col, 5);
+  CHECK_EQ(rec.records.back().tool_length_offset_nm, 0);
+  // No false pass: H with no G43 nor G49 is still LinuxCNC's error.
+  CHECK_EQ(run("G21\nG0 X1 H0", &rec, &d), GcodeError::kWordUnused);
+  CHECK_EQ(run("G21\nH2", &rec, &d), GcodeError::kWordUnused);
+}
+
+TEST(controller_g33_feeds_at_pitch_times_speed) {
+  t::Recorder rec;
+  GcodeDiag d;
+  // G33.1: in and out at K * S (1.25 mm * 400 rpm = 500 mm/min), ending where
+  // it began; G33 one feed at K * S; the modal F (100) untouched by either.
+  CHECK_EQ(run("G21 F100 S400 M3\nG0 X1 Y2 Z5\nG33.1 Z-3 K1.25\nG1 X2\nG33 X3 K0.5\nG1 X4\nM2", &rec, &d),
+           GcodeError::kOk);
+  std::vector<CanonRecord> feeds;
+  for (const CanonRecord& r : rec.records)
+    if (r.kind == CanonKind::kFeed) feeds.push_back(r);
+  CHECK_EQ(feeds.size(), 5u);
+  CHECK_EQ(feeds[0].feed_nm_per_min, mm(500));
+  CHECK_EQ(feeds[0].end.z_nm, mm(-3));
+  CHECK_EQ(feeds[1].feed_nm_per_min, mm(500));
+  CHECK_EQ(feeds[1].start.z_nm, mm(-3));
+  CHECK_EQ(feeds[1].end.z_nm, mm(5));
+  CHECK_EQ(feeds[2].feed_nm_per_min, mm(100));
+  CHECK_EQ(feeds[2].start.x_nm, mm(1));
+  CHECK_EQ(feeds[3].feed_nm_per_min, mm(200));
+  CHECK_EQ(feeds[4].feed_nm_per_min, mm(100));
+  // A pitch and speed whose product passes int64 saturates (no wrap) and
+  // warns as a fast feed does.
+  t::Warnings w;
+  CHECK_EQ(run("G21 S1000000000 M3\nG33.1 Z-3 K9000\nM2", &rec, &d, &w), GcodeError::kOk);
+  CHECK_EQ(count(w, GcodeError::kWarnFastFeed), 1u);
+  CHECK(rec.records.size() > 2 && rec.records[rec.records.size() - 2].feed_nm_per_min > 0);
+}

@@ -35,7 +35,7 @@ constexpr GInfo kGCodes[] = {
     {200, kGUnits, Support::kYes},         {210, kGUnits, Support::kYes},
     {280, kGNonModal, Support::kYes},      {281, kGNonModal, Support::kYes},
     {300, kGNonModal, Support::kYes},      {301, kGNonModal, Support::kYes},
-    {330, kGMotion, Support::kUnsupported}, {331, kGMotion, Support::kUnsupported},
+    {330, kGMotion, Support::kYes},        {331, kGMotion, Support::kYes},
     {382, kGMotion, Support::kYes},        {383, kGMotion, Support::kYes},
     {384, kGMotion, Support::kYes},        {385, kGMotion, Support::kYes},
     {400, kGCutterComp, Support::kYes},    {410, kGCutterComp, Support::kYes},

@@ -101,6 +101,11 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSplineIJ: return "{w}: I and J must come together (G5.1 needs both, G5 both or neither)";
     case GcodeError::kSplinePQ: return "{w}: G5 needs both P and Q";
     case GcodeError::kSplineNoAxis: return "{w}: spline without an end point (X, Y, @ or ^)";
+    case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
+    case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
+    case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kSyncPitchNotPositive:
+      return "{w}: K (the pitch) must be positive: the move would never reach its end";
     case GcodeError::kUnsupportedOword: return "o-word subroutines and control flow ('{w}') are not supported";
     case GcodeError::kUnsupportedParameter: return "# parameters are not supported";
     case GcodeError::kUnsupportedExpression: return "[ ] expressions are not supported";
@@ -173,6 +178,9 @@ const char* gcode_error_template(GcodeError e) {
       return "{w} is no LinuxCNC M code (a machine may define it, by a remap): skipped, what it does is not simulated";
     case GcodeError::kWarnDiameterMode:
       return "{w}: lathe diameter mode: X words are diameters until G8 (LinuxCNC halves them, on a mill too)";
+    case GcodeError::kWarnG49H:
+      return "{w}: H word with G49 ignored (G49 cancels the tool length offset whatever H says; LinuxCNC refuses "
+             "the H, a Centroid control takes it)";
     case GcodeError::kWarnM99Main:
       return "M99 in the main program: the machine starts the program again, endlessly; the preview runs it once";
     case GcodeError::kWarnCompNoTable:

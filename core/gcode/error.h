@@ -142,6 +142,7 @@ enum class GcodeError : uint8_t {
   kWarnDiameterMode = 156,
   kWarnCompNoTable = 157,
   kWarnM99Main = 158,
+  kWarnG49H = 159,
   // -- o-word control flow (200..229; errors, though after the warnings:
   // the ranges above were full)
   kOwordBadLabel = 200,
@@ -178,6 +179,11 @@ enum class GcodeError : uint8_t {
   kSplineIJ = 238,
   kSplinePQ = 239,
   kSplineNoAxis = 240,
+  // spindle-synchronised motion G33 and rigid tapping G33.1
+  kSyncNoPitch = 241,
+  kSyncFeedWord = 242,
+  kSyncNoAxis = 243,
+  kSyncPitchNotPositive = 244,
 };
 
 // Stable number of an error, for messages and tests.

@@ -48,7 +48,7 @@ inline PointNm tool_at(const InterpState& s) {
   return PointNm{s.pos.x_nm + s.stray.x_nm, s.pos.y_nm + s.stray.y_nm, s.pos.z_nm + s.stray.z_nm};
 }
 // Warnings a program gets once (Interp::warned_once_).
-enum WarnOnce : uint8_t {
+enum WarnOnce : uint16_t {
   kOnceDefaultFeed = 1 << 0,
   kOnceFastFeed = 1 << 1,
   kOnceFastSpindle = 1 << 2,
@@ -57,6 +57,7 @@ enum WarnOnce : uint8_t {
   kOnceManualRetract = 1 << 5,
   kOnceDiameter = 1 << 6,
   kOnceCompNoTable = 1 << 7,
+  kOnceG49H = 1 << 8,
 };
 inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
 inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
@@ -132,12 +133,13 @@ struct Plan {
   bool coolant = false;
   bool dwell = false;
   int64_t dwell_ms = 0;
-  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline } motion = kNone;
+  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline, kTap } motion = kNone;
   CanonKind straight_kind = CanonKind::kTraverse;
   PointNm target{0, 0, 0};
   CanonArc arc{Plane::kXY, {0, 0, 0}, 1};
   bool inverse_time = false;
   Decimal inverse_f{0, 0};
+  int64_t sync_feed_nm_per_min = 0;  // G33/G33.1: K times S (0: the modal feed)
   PointNm home_via{0, 0, 0};
   CyclePlan cycle{};
   SplinePlan spline;  // set whole by run_spline before anything reads it
@@ -219,13 +221,15 @@ struct BlockRunner {
   }
   uint16_t motion_col() const { return b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.first_col; }
   // A warning the program gets once (WarnOnce), quoting `word` and a length.
-  void warn_once(uint8_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm = 0);
+  void warn_once(uint16_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm = 0);
 
   GcodeError run();
   GcodeError run_modes();
   GcodeError run_group0(int g0);
   GcodeError run_motion(int motion);
   GcodeError run_straight(int motion, bool g53);
+  GcodeError straight_target(bool g53, PointNm* out);
+  GcodeError run_sync(int motion);
   GcodeError run_arc(int motion);
   GcodeError run_cycle(int motion);
   GcodeError cycle_words(int motion, const char* w, CycleWords* out);

@@ -65,7 +65,8 @@ GcodeError BlockRunner::run() {
   }
   // A move starts from where the tool is (cur.pos + cur.stray) and ends
   // where the interpreter reckons; only cycles leave the two apart.
-  if (plan.motion != Plan::kNone && plan.motion != Plan::kCycle) nx.stray = PointNm{0, 0, 0};
+  // A rigid tap comes back to where the tool began.
+  if (plan.motion != Plan::kNone && plan.motion != Plan::kCycle && plan.motion != Plan::kTap) nx.stray = PointNm{0, 0, 0};
   if (b.m[kMStop] >= 0) {
     plan.stop = b.m[kMStop];
     if (plan.stop == 20 || plan.stop == 300) {
@@ -86,8 +87,9 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
   const int path = b.g[kGPathControl];
   if (!arc && motion != 870) {  // G87 takes I, J, K (its offset and the back bore's top)
     const char ijk[3] = {'I', 'J', 'K'};
+    const bool sync = motion == 330 || motion == 331;  // G33/G33.1 take K, the pitch
     for (char c : ijk)
-      if (b.has_word(c) && !(spline && c != 'K')) return fail_letter(GcodeError::kWordUnused, c);
+      if (b.has_word(c) && !(spline && c != 'K') && !(sync && c == 'K')) return fail_letter(GcodeError::kWordUnused, c);
   }
   // LinuxCNC lets G41.1/G42.1 have an R word (and uses none).
   const bool comp_dia = b.g[kGCutterComp] == 411 || b.g[kGCutterComp] == 421;
@@ -101,7 +103,12 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
   // LinuxCNC 2.9 takes no L with G74 (its check of L lists every cycle but it).
   const bool comp_on = b.g[kGCutterComp] > 400;  // G41, G41.1, G42, G42.1
   if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740) || comp_on)) return fail_letter(GcodeError::kWordUnused, 'L');
-  if (b.has_word('H') && b.g[kGToolLength] != 430) return fail_letter(GcodeError::kWordUnused, 'H');
+  if (b.has_word('H') && b.g[kGToolLength] == 490) {
+    // Centroid's posts write `G49 H0`: the H changes nothing G49 does.
+    warn_once(kOnceG49H, GcodeError::kWarnG49H, b.col_of('H'), "G49");
+  } else if (b.has_word('H') && b.g[kGToolLength] != 430) {
+    return fail_letter(GcodeError::kWordUnused, 'H');
+  }
   if (b.has_word('D') && !comp_on) return fail_letter(GcodeError::kWordUnused, 'D');
   return GcodeError::kOk;
 }
@@ -211,6 +218,16 @@ void BlockRunner::commit() {
       r.kind = plan.straight_kind;
       r.end = plan.target;
       if (plan.inverse_time) r.feed_nm_per_min = decimal_scale(plan.inverse_f, seg_length(start, plan.target));
+      if (plan.sync_feed_nm_per_min) r.feed_nm_per_min = plan.sync_feed_nm_per_min;  // G33
+      I.emit(&r);
+      break;
+    case Plan::kTap:  // G33.1: in and back out along the same line
+      r.kind = CanonKind::kFeed;
+      r.feed_nm_per_min = plan.sync_feed_nm_per_min;
+      r.end = plan.target;
+      I.emit(&r);
+      r.start = plan.target;
+      r.end = start;
       I.emit(&r);
       break;
     case Plan::kArc:
@@ -249,9 +266,9 @@ void BlockRunner::commit() {
   }
 }
 
-void BlockRunner::warn_once(uint8_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm) {
+void BlockRunner::warn_once(uint16_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm) {
   if (in.warned_once_ & bit) return;
-  in.warned_once_ = static_cast<uint8_t>(in.warned_once_ | bit);
+  in.warned_once_ = static_cast<uint16_t>(in.warned_once_ | bit);
   in.warn(e, b.line, col, word, a_nm);
 }
 

@@ -204,7 +204,7 @@ class Interp {
   uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)
   bool warned_after_end_ = false;
   bool sub_after_end_ = false;  // in a subroutine defined after the end (for calls made before it)
-  uint8_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
+  uint16_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
   // Records cutter compensation holds (LinuxCNC's interp_queue), and a
   // scratch copy a block is checked against before it commits.
   CompQueue comp_q_;

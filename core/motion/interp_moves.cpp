@@ -1,5 +1,6 @@
 // The interpreter's moves: G0/G1 (with G53), G2/G3 in either format (the
-// checks of arc_center.h) and the probe moves G38.2-G38.5, each checked
+// checks of arc_center.h), the probe moves G38.2-G38.5 and the
+// spindle-synchronised G33/G33.1, each checked
 // against the range limits before the block commits (the canned cycles are
 // in interp_cycles.cpp).
 #include "core/motion/arc_center.h"
@@ -28,6 +29,7 @@ GcodeError BlockRunner::run_motion(int motion) {
   if (!b.has_axis() && b.g[kGMotion] < 0) return GcodeError::kOk;
   if (nx.comp.side) return fail_code(GcodeError::kCompForbidden, 'G', static_cast<int16_t>(motion), motion_col());
   if (is_probe(motion)) return run_probe(motion);
+  if (motion == 330 || motion == 331) return run_sync(motion);
   return run_cycle(motion);
 }
 
@@ -64,9 +66,47 @@ GcodeError BlockRunner::run_probe(int motion) {
   return GcodeError::kOk;
 }
 
-GcodeError BlockRunner::run_straight(int motion, bool g53) {
+// G33 and G33.1 (LinuxCNC's convert_straight with its checks, in its
+// order): K is the pitch, length per spindle revolution, so the feed is K
+// times the spindle speed and the line may have no F. G33 is a straight
+// feed to the target. G33.1 (RIGID_TAP) feeds to the target, reverses the
+// spindle there and comes back along the same line to where it began, which
+// is where LinuxCNC's position stays; the return is a second feed.
+GcodeError BlockRunner::run_sync(int motion) {
   GcodeError e;
-  if (g53 && nx.incremental) return fail_code(GcodeError::kG53Incremental, 'G', 530, b.g_col[kGNonModal]);
+  char w[16];
+  gcode_code_text('G', static_cast<int16_t>(motion), w);
+  const uint16_t col = motion_col();
+  if (b.has_word('F')) return fail(GcodeError::kSyncFeedWord, b.col_of('F'), w);
+  if (!b.has_word('K')) return fail(GcodeError::kSyncNoPitch, col, w);
+  if (!b.has_axis()) return fail(GcodeError::kSyncNoAxis, col, w);
+  if (nx.spindle_dir == 0) return fail(GcodeError::kCycleSpindleStopped, col, w);
+  int64_t pitch_nm;
+  if ((e = length('K', &pitch_nm)) != GcodeError::kOk) return e;
+  // LinuxCNC's interpreter passes K <= 0 on to a motion controller that then
+  // never arrives (zero) or runs the spindle's way backwards: refused here.
+  if (pitch_nm <= 0) return fail(GcodeError::kSyncPitchNotPositive, b.col_of('K'), w);
+  PointNm to;
+  if ((e = straight_target(false, &to)) != GcodeError::kOk) return e;
+  if ((e = check_pos(to, col, w)) != GcodeError::kOk) return e;
+  // pitch <= 1e10 nm and S <= 1e9 rpm: saturate rather than wrap; the time
+  // estimate counts a feed at most at 1e6 mm/min anyway.
+  const int64_t rpm = nx.spindle_rpm;
+  const int64_t feed = rpm > 0 && pitch_nm > INT64_MAX / rpm ? INT64_MAX : pitch_nm * rpm;
+  if (feed == 0) return fail(GcodeError::kCycleSpindleStopped, col, w);  // S0: the spindle stands still
+  if (feed > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, col, w);
+  plan.motion = motion == 330 ? Plan::kStraight : Plan::kTap;
+  plan.straight_kind = CanonKind::kFeed;
+  plan.target = to;
+  plan.sync_feed_nm_per_min = feed;
+  if (motion == 330) nx.pos = to;  // G33.1 ends where it began
+  return GcodeError::kOk;
+}
+
+// The end point of a straight move (G0, G1, probes, G33): its axis words, or
+// polar words, from the position (g53: in machine coordinates).
+GcodeError BlockRunner::straight_target(bool g53, PointNm* out) {
+  GcodeError e;
   const PointNm base = g53 ? cur.pos : comp_base();
   PointNm to = base;
   for (int ax = 0; ax < 3; ++ax) {
@@ -79,6 +119,15 @@ GcodeError BlockRunner::run_straight(int motion, bool g53) {
   }
   if (b.has_polar() && g53) return fail_letter(GcodeError::kPolarG53, polar_letter());
   if (b.has_polar() && (e = polar_target(&to)) != GcodeError::kOk) return e;
+  *out = to;
+  return GcodeError::kOk;
+}
+
+GcodeError BlockRunner::run_straight(int motion, bool g53) {
+  GcodeError e;
+  if (g53 && nx.incremental) return fail_code(GcodeError::kG53Incremental, 'G', 530, b.g_col[kGNonModal]);
+  PointNm to;
+  if ((e = straight_target(g53, &to)) != GcodeError::kOk) return e;
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(motion), w);
   if ((e = check_pos(to, motion_col(), w)) != GcodeError::kOk) return e;

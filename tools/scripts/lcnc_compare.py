@@ -90,6 +90,12 @@ def parse_trace(path):
             moves.append((kind, cur_machine, p, None, scale != 1.0))
             cur_machine = p
             pos = [nums[k] for k in range(3)]
+        elif name == 'RIGID_TAP':
+            # G33.1: in to the point and back out to where it began; the
+            # position stays (LinuxCNC's interpreter does not move it).
+            p = [nums[k] * scale + g5x[k] + g92[k] for k in range(3)]
+            moves.append(('feed', cur_machine, p, None, scale != 1.0))
+            moves.append(('feed', p, cur_machine, None, scale != 1.0))
         elif name == 'ARC_FEED':
             fe, se, fc, sc, rot, ae = nums[0:6]
             off = [g5x[k] + g92[k] for k in range(3)]
