@@ -205,3 +205,29 @@ TEST(controller_g33_feeds_at_pitch_times_speed) {
   CHECK_EQ(count(w, GcodeError::kWarnFastFeed), 1u);
   CHECK(rec.records.size() > 2 && rec.records[rec.records.size() - 2].feed_nm_per_min > 0);
 }
+
+TEST(controller_g95_feeds_per_revolution) {
+  t::Recorder rec;
+  GcodeDiag d;
+  // F per revolution times the speed in force at each move; G94 and G95
+  // clear F as LinuxCNC does; inch per revolution under G20.
+  CHECK_EQ(run("G21 S1000 M3\nG95 F0.1\nG1 X10\nS500\nG2 X20 R5\nG94 F100\nG1 X30\nG20 G95 F0.002\nG1 X1.5\nM2",
+               &rec, &d),
+           GcodeError::kOk);
+  std::vector<int64_t> rates;
+  for (const CanonRecord& r : rec.records)
+    if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) rates.push_back(r.feed_nm_per_min);
+  CHECK_EQ(rates.size(), 4u);
+  CHECK_EQ(rates[0], mm(100));
+  CHECK_EQ(rates[1], mm(50));
+  CHECK_EQ(rates[2], mm(100));
+  CHECK_EQ(rates[3], 50800 * 500);  // 0.002 in = 50 800 nm a revolution, at 500 rpm
+  // LinuxCNC's errors: no F after G95 (it clears F), S0, and no stand-in
+  // default feed for a feed per revolution.
+  CHECK_EQ(run("G21 S1000 M3 F100\nG95\nG1 X10", &rec, &d), GcodeError::kFeedZero);
+  CHECK_EQ(run("G21 M3\nG95 F0.1\nG1 X10", &rec, &d), GcodeError::kFeedPerRevNoSpeed);
+  CHECK_EQ(d.line, 3u);
+  CHECK_EQ(run("G21 S1000 M3\nG95\nG1 X10", &rec, &d, nullptr, mm(1000)), GcodeError::kFeedZero);
+  // No false alarm: G95 with S and F reads, without the default feed.
+  CHECK_EQ(run("G21 S1 M3\nG95 F1\nG1 X10\nM2", &rec, &d), GcodeError::kOk);
+}

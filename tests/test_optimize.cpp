@@ -282,3 +282,22 @@ TEST(optimize_feed_splice) {
   CHECK_EQ(apply("G1 X10 F2000 Y5", chg, "1200"), std::string("G1 X10 F1200 Y5"));
   CHECK_EQ(apply("G1X10f 2 000.0Y5", chg, "1200"), std::string("G1X10f1200Y5"));
 }
+
+TEST(optimize_leaves_feeds_per_revolution_as_written) {
+  if (skip()) return;
+  const std::string mat = write_tmp("opt-sandwich.txt", kSandwich);
+  const std::string opts = std::string(kStock) + " --material " + mat;
+  // G95 F0.2 at 12000 rpm is 2400 mm/min through alu (limit 1200) and a
+  // rigid tap at K1.5: no F word per minute can say either, so both stay
+  // as written with a warning each, and the G94 line after is still lowered.
+  const char* prog =
+      "G21 G90\nM3 S12000\nG0 X-5 Y10 Z5\nG95 F0.2\nG1 Z-15\nG1 X45\nG0 Z5\nG94\nG0 X20 Y20\n"
+      "G33.1 Z-12 K1.5\nG0 Y30\nG1 Z-15 F300\nG1 X-5 F2000\nG0 Z5\nM2\n";
+  const Result r = run_command("optimize " + write_tmp("opt-rev.ngc", prog) + opts);
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "opt-rev.ngc:6:1: warning: feed per spindle revolution (G95, G33, G33.1) left as written: 2400 mm/min"));
+  CHECK(has(r.err, "opt-rev.ngc:10:1: warning: feed per spindle revolution"));
+  CHECK(has(r.out, "G95 F0.2\nG1 Z-15\nG1 X45\n"));
+  CHECK(has(r.out, "G33.1 Z-12 K1.5\n"));
+  CHECK(has(r.out, "G1 X-5 F1200\n"));
+}

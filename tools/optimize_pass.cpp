@@ -65,6 +65,17 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
         hi = max_of(hi, r.feed_nm_per_min);
       }
     const InterpState& st = interp.state();
+    // A feed tied to the spindle (G95's F, G33/G33.1's K) is no F per
+    // minute this pass could rewrite: left as written, said when too fast.
+    if (fl.feeds && (st.per_rev || st.motion == 330 || st.motion == 331)) {
+      fl.feeds = false;
+      if (line < in.limits->size() && (*in.limits)[line] < hi) {
+        std::fprintf(stderr, "%s:%u:1: warning: feed per spindle revolution (G95, G33, G33.1) left as written: %s mm/min "
+                     "where a material's limit is %s mm/min\n", in.shown_name.c_str(), line, mm_per_min(hi).c_str(),
+                     mm_per_min((*in.limits)[line]).c_str());
+        ++out->left_over;
+      }
+    }
     // A block's feed mode and units are those its own moves and F word use.
     fl.inverse_time = st.inverse_time;
     fl.programmed_nm_per_min = hi;

@@ -61,7 +61,7 @@ constexpr GInfo kGCodes[] = {
     {920, kGNonModal, Support::kYes},      {921, kGNonModal, Support::kYes},
     {922, kGNonModal, Support::kYes},      {923, kGNonModal, Support::kYes},
     {930, kGFeedMode, Support::kYes},      {940, kGFeedMode, Support::kYes},
-    {950, kGFeedMode, Support::kUnsupported}, {960, kGSpindleMode, Support::kUnsupported},
+    {950, kGFeedMode, Support::kYes}, {960, kGSpindleMode, Support::kUnsupported},
     {970, kGSpindleMode, Support::kYes},   {980, kGRetract, Support::kYes},
     {990, kGRetract, Support::kYes},
 };

@@ -33,7 +33,7 @@ enum GGroup : uint8_t {
   kGPlane = 2,        // G17 G18 G19
   kGDistance = 3,     // G90 G91
   kGArcDistance = 4,  // G90.1 G91.1
-  kGFeedMode = 5,     // G93 G94
+  kGFeedMode = 5,     // G93 G94 G95
   kGUnits = 6,        // G20 G21
   kGCutterComp = 7,   // G40
   kGToolLength = 8,   // G43 G43.1 G49

@@ -104,6 +104,7 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
     case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
     case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kFeedPerRevNoSpeed: return "{w}: feed per revolution (G95) with spindle speed 0 (S first)";
     case GcodeError::kSyncPitchNotPositive:
       return "{w}: K (the pitch) must be positive: the move would never reach its end";
     case GcodeError::kUnsupportedOword: return "o-word subroutines and control flow ('{w}') are not supported";

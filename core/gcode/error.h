@@ -184,6 +184,7 @@ enum class GcodeError : uint8_t {
   kSyncFeedWord = 242,
   kSyncNoAxis = 243,
   kSyncPitchNotPositive = 244,
+  kFeedPerRevNoSpeed = 245,
 };
 
 // Stable number of an error, for messages and tests.

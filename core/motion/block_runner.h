@@ -47,6 +47,12 @@ constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
 inline PointNm tool_at(const InterpState& s) {
   return PointNm{s.pos.x_nm + s.stray.x_nm, s.pos.y_nm + s.stray.y_nm, s.pos.z_nm + s.stray.z_nm};
 }
+// A feed tied to the spindle (G33/G33.1's K, G95's F): length per revolution
+// times rpm. Lengths <= 1e10 nm and S <= 1e9 rpm: saturated rather than
+// wrapped; the time estimate counts a feed at most at 1e6 mm/min anyway.
+inline int64_t sync_feed(int64_t nm_per_rev, int64_t rpm) {
+  return rpm > 0 && nm_per_rev > INT64_MAX / rpm ? INT64_MAX : nm_per_rev * rpm;
+}
 // Warnings a program gets once (Interp::warned_once_).
 enum WarnOnce : uint16_t {
   kOnceDefaultFeed = 1 << 0,

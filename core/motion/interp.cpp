@@ -173,7 +173,8 @@ void BlockRunner::commit() {
   r.line = b.line;
   r.start = r.end = start;
   r.arc = CanonArc{Plane::kXY, start, 1};
-  r.feed_nm_per_min = nx.feed_nm_per_min;
+  // G95: the rate is F per revolution times the speed in force at the move.
+  r.feed_nm_per_min = nx.per_rev ? sync_feed(nx.feed_nm_per_min, nx.spindle_rpm) : nx.feed_nm_per_min;
   r.tool = nx.tool;
   r.tool_length_offset_nm = nx.tlo_nm;
   if (plan.tool_change) {

@@ -103,6 +103,7 @@ struct InterpState {
   bool diameter_x;          // G7 (lathe diameter mode): LinuxCNC halves every X word, on a mill too
   bool arc_absolute;        // G90.1
   bool inverse_time;        // G93
+  bool per_rev;             // G95: feed_nm_per_min is per spindle revolution
   bool retract_to_r;        // G99
   uint8_t coord_system;     // 0..8 = G54, G55, ..., G59, G59.1, G59.2, G59.3
   int16_t path_mode;        // G61 = 610, G61.1 = 611, G64 = 640

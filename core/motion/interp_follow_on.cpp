@@ -171,6 +171,7 @@ ErrorFacets error_facets(GcodeError e, const GcodeBlock& b) {
   constexpr uint16_t kWhere = kFacetPosition | kFacetUnits | kFacetDistance | kFacetOffsets;
   switch (e) {
     case GcodeError::kFeedZero:
+    case GcodeError::kFeedPerRevNoSpeed:
     case GcodeError::kInverseTimeNoF:
     case GcodeError::kCycleInverseTime:
       return {kFacetFeed, 0, kFacetFeed};

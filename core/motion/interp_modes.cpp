@@ -16,8 +16,9 @@ GcodeError BlockRunner::run_modes() {
     if (nx.diameter_x && !cur.diameter_x) warn_once(kOnceDiameter, GcodeError::kWarnDiameterMode, b.g_col[kGLathe], "G7");
   }
   if (b.g[kGFeedMode] >= 0) {
-    // LinuxCNC sets F to 0 on every G93 or G94 (the block's own F comes after).
+    // LinuxCNC sets F to 0 on every G93, G94 or G95 (the block's own F comes after).
     nx.inverse_time = b.g[kGFeedMode] == 930;
+    nx.per_rev = b.g[kGFeedMode] == 950;
     nx.feed_nm_per_min = 0;
   }
   if (b.has_word('F')) {
@@ -28,7 +29,7 @@ GcodeError BlockRunner::run_modes() {
       plan.inverse_f = f;
     } else {
       nx.feed_nm_per_min = decimal_to_nm(f, nx.inch);
-      if (nx.feed_nm_per_min > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, b.col_of('F'), "F");
+      if (!nx.per_rev && nx.feed_nm_per_min > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, b.col_of('F'), "F");
     }
   }
   if (b.has_word('S')) {

@@ -34,6 +34,11 @@ GcodeError BlockRunner::run_motion(int motion) {
 }
 
 GcodeError BlockRunner::need_feed(uint16_t col, const char* word) {
+  if (nx.per_rev) {  // G95: F per revolution, so S too (LinuxCNC's checks)
+    if (nx.feed_nm_per_min == 0) return fail(GcodeError::kFeedZero, col, word);
+    if (nx.spindle_rpm == 0) return fail(GcodeError::kFeedPerRevNoSpeed, col, word);
+    return GcodeError::kOk;
+  }
   if (nx.feed_nm_per_min != 0) return GcodeError::kOk;
   const int64_t standin = in.options_.default_feed_nm_per_min;
   if (standin <= 0) return fail(GcodeError::kFeedZero, col, word);
@@ -89,10 +94,7 @@ GcodeError BlockRunner::run_sync(int motion) {
   PointNm to;
   if ((e = straight_target(false, &to)) != GcodeError::kOk) return e;
   if ((e = check_pos(to, col, w)) != GcodeError::kOk) return e;
-  // pitch <= 1e10 nm and S <= 1e9 rpm: saturate rather than wrap; the time
-  // estimate counts a feed at most at 1e6 mm/min anyway.
-  const int64_t rpm = nx.spindle_rpm;
-  const int64_t feed = rpm > 0 && pitch_nm > INT64_MAX / rpm ? INT64_MAX : pitch_nm * rpm;
+  const int64_t feed = sync_feed(pitch_nm, nx.spindle_rpm);
   if (feed == 0) return fail(GcodeError::kCycleSpindleStopped, col, w);  // S0: the spindle stands still
   if (feed > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, col, w);
   plan.motion = motion == 330 ? Plan::kStraight : Plan::kTap;
