@@ -41,7 +41,7 @@ constexpr GInfo kGCodes[] = {
     {400, kGCutterComp, Support::kYes},    {410, kGCutterComp, Support::kYes},
     {411, kGCutterComp, Support::kYes}, {420, kGCutterComp, Support::kYes},
     {421, kGCutterComp, Support::kYes}, {430, kGToolLength, Support::kYes},
-    {431, kGToolLength, Support::kYes},    {432, kGToolLength, Support::kUnsupported},
+    {431, kGToolLength, Support::kYes},    {432, kGToolLength, Support::kYes},
     {490, kGToolLength, Support::kYes},    {520, kGNonModal, Support::kUnsupported},
     {530, kGNonModal, Support::kYes},      {540, kGCoordSystem, Support::kYes},
     {550, kGCoordSystem, Support::kYes},   {560, kGCoordSystem, Support::kYes},

@@ -104,6 +104,8 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
     case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
     case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kTloAddHAndAxes: return "{w}: H and axis words cannot both be given (one offset to add)";
+    case GcodeError::kTloAddNothing: return "{w}: neither H nor Z: no offset to add";
     case GcodeError::kFeedPerRevNoSpeed: return "{w}: feed per revolution (G95) with spindle speed 0 (S first)";
     case GcodeError::kSyncPitchNotPositive:
       return "{w}: K (the pitch) must be positive: the move would never reach its end";

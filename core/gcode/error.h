@@ -185,6 +185,8 @@ enum class GcodeError : uint8_t {
   kSyncNoAxis = 243,
   kSyncPitchNotPositive = 244,
   kFeedPerRevNoSpeed = 245,
+  kTloAddHAndAxes = 246,
+  kTloAddNothing = 247,
 };
 
 // Stable number of an error, for messages and tests.

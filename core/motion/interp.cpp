@@ -29,14 +29,14 @@ int64_t seg_length(const PointNm& a, const PointNm& b) {
 GcodeError BlockRunner::run() {
   const int g0 = b.g[kGNonModal];
   const int gm = b.g[kGMotion];
-  const bool tlo_axes = b.g[kGToolLength] == 431;
+  const bool tlo_axes = b.g[kGToolLength] == 431 || b.g[kGToolLength] == 432;
   const bool axis_user0 = g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || tlo_axes;
   if (b.has_polar()) {  // LinuxCNC checks polar words first (interp_polar.cpp)
     const GcodeError e = check_polar(axis_user0);
     if (e != GcodeError::kOk) return e;
   }
   if (gm >= 0 && gm != 800 && axis_user0) {
-    return fail_code(GcodeError::kTwoAxisUsers, 'G', static_cast<int16_t>(tlo_axes ? 431 : g0),
+    return fail_code(GcodeError::kTwoAxisUsers, 'G', static_cast<int16_t>(tlo_axes ? b.g[kGToolLength] : g0),
                      tlo_axes ? b.g_col[kGToolLength] : b.g_col[kGNonModal]);
   }
   int motion = -1;  // the motion this block makes, in tenths
@@ -106,7 +106,7 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
   if (b.has_word('H') && b.g[kGToolLength] == 490) {
     // Centroid's posts write `G49 H0`: the H changes nothing G49 does.
     warn_once(kOnceG49H, GcodeError::kWarnG49H, b.col_of('H'), "G49");
-  } else if (b.has_word('H') && b.g[kGToolLength] != 430) {
+  } else if (b.has_word('H') && b.g[kGToolLength] != 430 && b.g[kGToolLength] != 432) {
     return fail_letter(GcodeError::kWordUnused, 'H');
   }
   if (b.has_word('D') && !comp_on) return fail_letter(GcodeError::kWordUnused, 'D');

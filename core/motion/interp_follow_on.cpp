@@ -143,7 +143,7 @@ uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect)
     f |= kFacetOffsets;
   // Axes moved to an absolute position.
   const bool incremental = b.g[kGDistance] >= 0 ? b.g[kGDistance] == 910 : s.incremental;
-  const bool axis_user0 = g0 == 100 || g0 == 920 || b.g[kGToolLength] == 431;
+  const bool axis_user0 = g0 == 100 || g0 == 920 || b.g[kGToolLength] == 431 || b.g[kGToolLength] == 432;
   const int motion = gm >= 0 ? gm : (b.has_axis() && !axis_user0 && g0 != 280 && g0 != 300) ? s.motion : -1;
   for (int ax = 0; ax < 3; ++ax) {
     const bool word = b.has_word(kAxisLetter[ax]);

@@ -94,6 +94,27 @@ GcodeError BlockRunner::run_modes() {
                              : fail_code(GcodeError::kToolUnknown, 'G', 430, b.g_col[kGToolLength]);
     if (abs64(len) > kGcodeMaxCoordNm) return fail_code(GcodeError::kNumberTooLarge, 'G', 430, b.g_col[kGToolLength]);
     nx.tlo_nm = len;
+  } else if (b.g[kGToolLength] == 432) {
+    // G43.2 (LinuxCNC 2.9): an offset added to the one in force, tool H's
+    // length from the table, or the Z word; X/Y offsets are for lathes.
+    const uint16_t col = b.g_col[kGToolLength];
+    const bool axes = b.has_axis();
+    if (b.has_word('H') && axes) return fail_code(GcodeError::kTloAddHAndAxes, 'G', 432, col);
+    if (!b.has_word('H') && !axes) return fail_code(GcodeError::kTloAddNothing, 'G', 432, col);
+    int64_t add = 0;
+    if (b.has_word('H')) {
+      int64_t t;
+      if ((e = integer('H', 0, kMaxToolNumber, &t)) != GcodeError::kOk) return e;
+      if (in.options_.tools && t != 0 && !in.options_.tools->tool_length_nm(static_cast<int32_t>(t), &add))
+        return fail_letter(GcodeError::kToolUnknown, 'H');
+    } else {
+      if (b.has_word('X')) return fail_letter(GcodeError::kUnsupportedAxis, 'X');
+      if (b.has_word('Y')) return fail_letter(GcodeError::kUnsupportedAxis, 'Y');
+      if (b.has_word('Z') && (e = length('Z', &add)) != GcodeError::kOk) return e;
+    }
+    if (abs64(add) > kGcodeMaxCoordNm || abs64(cur.tlo_nm + add) > kGcodeMaxCoordNm)
+      return fail_code(GcodeError::kNumberTooLarge, 'G', 432, col);
+    nx.tlo_nm = cur.tlo_nm + add;
   } else if (b.g[kGToolLength] == 431) {
     // G43.1: the axis words are the offset; only Z is kept (X/Y offsets are
     // for lathes and are not carried by the canonical record).
