@@ -243,3 +243,37 @@ TEST(oword_m99_in_the_main_program_runs_it_once) {
   CHECK_EQ(f.run("G21\n#1 = 1\nM98 P7 L3\nM98 P7 L0\nG0 X[#1 * 10]\nM30\nO7\n#1 = [#1 + 1]\nG0 X#1\nM99\n"), 0u);
   CHECK_EQ(f.xs(), std::string("2 3 4 40 "));
 }
+
+TEST(oword_m73_gives_the_modal_state_back_on_return) {
+  Flow f;
+  // M73 in a subroutine: its spindle (M4 S2000), coolant (M8), feed, G91
+  // and tool length offset go back to the caller's on endsub, with spindle
+  // and coolant records so that what follows runs as the caller set it.
+  CHECK_EQ(f.run("G21 G90 F100 S1000 M3\no<s> sub\nM73\nG91 F20 S2000 M4 M8 G43.1 Z2\nG1 X1\no<s> endsub\n"
+                 "o<s> call\nG1 X5\nM2\n"),
+           0u);
+  CHECK_EQ(f.xs(), std::string("1 5 "));
+  const CanonRecord& last = f.rec.records[f.rec.records.size() - 2];  // G1 X5, before M2
+  CHECK(last.kind == CanonKind::kFeed);
+  CHECK_EQ(last.feed_nm_per_min, t::mm(100));
+  CHECK_EQ(last.spindle_rpm, 1000);
+  CHECK_EQ(last.coolant, 0);
+  CHECK_EQ(last.tool_length_offset_nm, 0);
+  // The tool tip went back up by the offset taken away (the spindle stays).
+  CHECK_EQ(last.start.z_nm, 0);
+  int spindle = 0, coolant = 0;
+  for (const CanonRecord& r : f.rec.records) {
+    spindle += r.kind == CanonKind::kSpindle;
+    coolant += r.kind == CanonKind::kCoolant;
+  }
+  CHECK_EQ(spindle, 3);  // M3, M4 in the sub, back to M3 on return
+  CHECK_EQ(coolant, 2);  // M8, off on return
+  // M70 alone is not given back on return, and a call starts with nothing saved.
+  Flow g;
+  CHECK_EQ(g.run("G21 G90 F100\no<s> sub\nM70\nG91\no<s> endsub\no<s> call\nG1 X1\nG1 X1\nM2\n"), 0u);
+  CHECK_EQ(g.xs(), std::string("1 2 "));
+  Flow h;
+  GcodeDiag d{};
+  CHECK_EQ(h.run("G21 F100\nM70\no<s> sub\nM72\no<s> endsub\no<s> call\nM2\n", &d), 1u);
+  CHECK_EQ(d.code, GcodeError::kContextNone);
+}

@@ -85,7 +85,7 @@ MKind classify_m(int64_t tenths, uint8_t* group) {
     case 7: case 8: case 9: *group = kMCoolant; return MKind::kRun;
     case 48: case 49: case 50: case 51: case 52: case 53: *group = kMOverride; return MKind::kIgnore;
     case 62: case 63: case 64: case 65: case 66: case 67: case 68: *group = kMIo; return MKind::kIgnore;
-    case 70: case 71: case 72: case 73: *group = kMUser; return MKind::kUnsupported;
+    case 70: case 71: case 72: case 73: *group = kMContext; return MKind::kRun;
     default: break;
   }
   // M100-M199 are LinuxCNC's user M codes (a file each); any other M code

@@ -54,6 +54,7 @@ enum MGroup : uint8_t {
   kMOverride,      // group 9: M48..M53
   kMIo,            // group 5: M62..M68
   kMUser,          // group 10: M100..M199, and other M codes a machine may remap (M25)
+  kMContext,       // M70 M71 M72 M73: modal state saved and restored
   kMGroupCount,
 };
 

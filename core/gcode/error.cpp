@@ -104,6 +104,7 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
     case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
     case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kContextNone: return "{w}: no modal state saved at this call level (M70 or M73 first)";
     case GcodeError::kTloAddHAndAxes: return "{w}: H and axis words cannot both be given (one offset to add)";
     case GcodeError::kTloAddNothing: return "{w}: neither H nor Z: no offset to add";
     case GcodeError::kFeedPerRevNoSpeed: return "{w}: feed per revolution (G95) with spindle speed 0 (S first)";
@@ -153,6 +154,9 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kUnsupportedMcode: return "{w} is not supported";
     case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
     case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems (G10 L2 R) are not supported";
+    case GcodeError::kUnsupportedContextComp:
+      return "{w}: restoring a saved state with cutter compensation turned the other way (on or off) is not "
+             "supported: G40, G41 or G42 first";
     case GcodeError::kUnsupportedCompOrientation:
       return "{w} with L (a lathe tool orientation) is not supported (LinuxCNC takes it only in G18, on a lathe)";
     case GcodeError::kWarnMcodeIgnored: return "{w} ignored (it does not move the tool)";
@@ -181,6 +185,9 @@ const char* gcode_error_template(GcodeError e) {
       return "{w} is no LinuxCNC M code (a machine may define it, by a remap): skipped, what it does is not simulated";
     case GcodeError::kWarnDiameterMode:
       return "{w}: lathe diameter mode: X words are diameters until G8 (LinuxCNC halves them, on a mill too)";
+    case GcodeError::kWarnContextRest:
+      return "{w}: LinuxCNC 2.9 restores the saved modes as a block of its own in place of this line: the rest of "
+             "the line (its motion, modes, coolant, stop) is not run, here either";
     case GcodeError::kWarnG49H:
       return "{w}: H word with G49 ignored (G49 cancels the tool length offset whatever H says; LinuxCNC refuses "
              "the H, a Centroid control takes it)";

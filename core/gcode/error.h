@@ -122,6 +122,7 @@ enum class GcodeError : uint8_t {
   // 107 was polar coordinates, read since (kPolar*)
   kUnsupportedRotation = 108,
   kUnsupportedCompOrientation = 109,
+  kUnsupportedContextComp = 110,
   // -- warnings (140..): the line was skipped or a word ignored, safely
   kWarnMcodeIgnored = 140,
   kWarnGrblCommand = 141,
@@ -143,6 +144,7 @@ enum class GcodeError : uint8_t {
   kWarnCompNoTable = 157,
   kWarnM99Main = 158,
   kWarnG49H = 159,
+  kWarnContextRest = 160,
   // -- o-word control flow (200..229; errors, though after the warnings:
   // the ranges above were full)
   kOwordBadLabel = 200,
@@ -187,6 +189,7 @@ enum class GcodeError : uint8_t {
   kFeedPerRevNoSpeed = 245,
   kTloAddHAndAxes = 246,
   kTloAddNothing = 247,
+  kContextNone = 248,
 };
 
 // Stable number of an error, for messages and tests.

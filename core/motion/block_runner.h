@@ -146,6 +146,9 @@ struct Plan {
   bool inverse_time = false;
   Decimal inverse_f{0, 0};
   int64_t sync_feed_nm_per_min = 0;  // G33/G33.1: K times S (0: the modal feed)
+  bool rest_skipped = false;  // M72 ran the saved modes in place of the rest of the line
+  int16_t context_op = -1;  // M70 M71 M73 (tenths): what commit does to the level's context
+  ModalContext context{};   // M70/M73: the state saved
   PointNm home_via{0, 0, 0};
   CyclePlan cycle{};
   SplinePlan spline;  // set whole by run_spline before anything reads it
@@ -231,6 +234,8 @@ struct BlockRunner {
 
   GcodeError run();
   GcodeError run_modes();
+  GcodeError run_context(int m);
+  bool context_rest_follows() const;
   GcodeError run_group0(int g0);
   GcodeError run_motion(int motion);
   GcodeError run_straight(int motion, bool g53);

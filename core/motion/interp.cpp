@@ -7,6 +7,7 @@
 // and commits it; the steps are in interp_modes.cpp and interp_moves.cpp
 // (core/motion/block_runner.h).
 #include "core/motion/interp.h"
+#include "core/gcode/lex.h"
 
 #include "core/math/fixed.h"
 #include "core/math/wide.h"
@@ -54,6 +55,7 @@ GcodeError BlockRunner::run() {
   if (e != GcodeError::kOk) return e;
   e = run_modes();
   if (e != GcodeError::kOk) return e;
+  if (plan.rest_skipped) return GcodeError::kOk;  // M72 (run_context)
   if (g0 >= 0 && g0 != 530 && g0 != 40) {
     e = run_group0(g0);
     if (e != GcodeError::kOk) return e;
@@ -177,6 +179,8 @@ void BlockRunner::commit() {
   r.feed_nm_per_min = nx.per_rev ? sync_feed(nx.feed_nm_per_min, nx.spindle_rpm) : nx.feed_nm_per_min;
   r.tool = nx.tool;
   r.tool_length_offset_nm = nx.tlo_nm;
+  if (plan.context_op == 700 || plan.context_op == 730) I.contexts_[I.context_level()] = plan.context;
+  if (plan.context_op == 710) I.contexts_[I.context_level()].valid = false;
   if (plan.tool_change) {
     r.kind = CanonKind::kToolChange;
     I.emit(&r);
@@ -301,6 +305,44 @@ void Interp::reset() {
   warned_once_ = 0;
   comp_q_.clear();
   comp_scratch_.clear();
+  for (ModalContext& c : contexts_) c.valid = false;
+}
+
+GcodeError Interp::context_return(int level, uint32_t line, uint16_t col, GcodeDiag* d) {
+  ModalContext& c = contexts_[level];
+  const bool restore = c.valid && c.auto_restore;
+  c.valid = false;
+  if (!restore) return GcodeError::kOk;
+  if (c.comp_side != state_.comp.side) {
+    d->code = GcodeError::kUnsupportedContextComp;
+    d->col = col;
+    gcode_set_word(d, "M73", 3);
+    return d->code;
+  }
+  InterpState s = state_;
+  modal_context_apply(c, &s);
+  // The spindle stays where it is: the tool tip moves by the offset's change (as G43).
+  s.pos.z_nm -= s.tlo_nm - state_.tlo_nm;
+  CanonRecord r{};
+  r.line = line;
+  r.start = r.end = tool_at(s);
+  r.arc = CanonArc{Plane::kXY, r.start, 1};
+  r.feed_nm_per_min = s.feed_nm_per_min;
+  r.tool = s.tool;
+  r.tool_length_offset_nm = s.tlo_nm;
+  r.spindle_rpm = s.spindle_dir * s.spindle_rpm;
+  r.coolant = s.coolant;
+  const bool spindle = r.spindle_rpm != state_.spindle_dir * state_.spindle_rpm, coolant = s.coolant != state_.coolant;
+  state_ = s;
+  if (spindle) {
+    r.kind = CanonKind::kSpindle;
+    emit(&r);
+  }
+  if (coolant) {
+    r.kind = CanonKind::kCoolant;
+    emit(&r);
+  }
+  return GcodeError::kOk;
 }
 
 void Interp::emit_now(CanonRecord* r) {

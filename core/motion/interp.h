@@ -38,6 +38,7 @@
 #include "core/motion/canon.h"
 #include "core/motion/oword_store.h"
 #include "core/motion/cutter_comp.h"
+#include "core/motion/modal_context.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -210,6 +211,12 @@ class Interp {
   // scratch copy a block is checked against before it commits.
   CompQueue comp_q_;
   CompQueue comp_scratch_;
+  // M70/M73's saved modal state, one per call level (modal_context.h).
+  ModalContext contexts_[kOwordLevels];
+  int context_level() const { return options_.control ? options_.control->level : 0; }
+  // A subroutine returns from `level` (endsub, return, M99): M73's state
+  // comes back, and the level's context is forgotten.
+  GcodeError context_return(int level, uint32_t line, uint16_t col, GcodeDiag* d);
 
   friend struct BlockRunner;
 };

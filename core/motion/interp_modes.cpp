@@ -60,6 +60,10 @@ GcodeError BlockRunner::run_modes() {
     nx.spindle_dir = static_cast<int8_t>(b.m[kMSpindle] == 30 ? 1 : b.m[kMSpindle] == 40 ? -1 : 0);
   const int32_t old_rpm = cur.spindle_dir * cur.spindle_rpm, new_rpm = nx.spindle_dir * nx.spindle_rpm;
   plan.spindle = old_rpm != new_rpm;
+  if (b.m[kMContext] >= 0) {
+    if ((e = run_context(b.m[kMContext])) != GcodeError::kOk) return e;
+    if (plan.rest_skipped) return GcodeError::kOk;
+  }
   if (b.coolant_bits) {
     nx.coolant = (b.coolant_bits & 4) ? 0 : static_cast<uint8_t>(nx.coolant | (b.coolant_bits & 3));
     plan.coolant = true;
@@ -141,6 +145,57 @@ GcodeError BlockRunner::run_modes() {
   if (b.g[kGArcDistance] >= 0) nx.arc_absolute = b.g[kGArcDistance] == 901;
   if (b.g[kGRetract] >= 0) nx.retract_to_r = b.g[kGRetract] == 990;
   return GcodeError::kOk;
+}
+
+// M70-M73 at their place in LinuxCNC's order of execution: after F, S and
+// the spindle, before coolant and the modes after it, so that a block's own
+// G17-G19, G90/G91, G43 ... still apply after its M72. Units and G7/G8,
+// which this reader takes first (every length of a block is read in the
+// units it sets), are saved as they were before the block and put back on
+// top of a restore.
+GcodeError BlockRunner::run_context(int m) {
+  if (m == 700 || m == 730) {
+    InterpState s = nx;
+    s.inch = cur.inch;
+    s.diameter_x = cur.diameter_x;
+    plan.context = modal_context_save(s, m == 730);
+    plan.context_op = static_cast<int16_t>(m);
+    return GcodeError::kOk;
+  }
+  if (m == 710) {
+    plan.context_op = 710;
+    return GcodeError::kOk;
+  }
+  const ModalContext& c = in.contexts_[in.context_level()];
+  if (!c.valid) return fail_code(GcodeError::kContextNone, 'M', 720, b.m_col[kMContext]);
+  if (c.comp_side != nx.comp.side) return fail_code(GcodeError::kUnsupportedContextComp, 'M', 720, b.m_col[kMContext]);
+  // LinuxCNC 2.9 restores by running the modes that differ as a block of
+  // their own (its gen_restore_cmd), which takes the place of this one: when
+  // there is such a mode, the rest of the line (its coolant, modes, motion,
+  // stop) is not run. Only the retract mode is set without it.
+  InterpState saved = nx;
+  modal_context_apply(c, &saved);
+  saved.retract_to_r = nx.retract_to_r;
+  const bool reissued = !(modal_context_save(saved, false) == modal_context_save(nx, false));
+  modal_context_apply(c, &nx);
+  if (!reissued) {
+    if (b.g[kGUnits] >= 0) nx.inch = b.g[kGUnits] == 200;
+    if (b.g[kGLathe] >= 0) nx.diameter_x = b.g[kGLathe] == 70;
+  } else {
+    plan.rest_skipped = true;
+    if (context_rest_follows()) in.warn(GcodeError::kWarnContextRest, b.line, b.m_col[kMContext], "M72");
+  }
+  plan.spindle = cur.spindle_dir * cur.spindle_rpm != nx.spindle_dir * nx.spindle_rpm;
+  plan.coolant = nx.coolant != cur.coolant;
+  return GcodeError::kOk;
+}
+
+// Whether the block says anything LinuxCNC runs after M70-M73's place.
+bool BlockRunner::context_rest_follows() const {
+  if (b.has_axis() || b.coolant_bits || b.m[kMStop] >= 0) return true;
+  for (int g = 0; g < kGGroupCount; ++g)
+    if (g != kGFeedMode && b.g[g] >= 0) return true;
+  return false;
 }
 
 GcodeError BlockRunner::run_group0(int g0) {

@@ -189,6 +189,7 @@ GcodeError Interp::run_oword(const char* text, size_t len, uint32_t line, GcodeD
       if (!fanuc_frame) return fail(d, GcodeError::kOwordFanucMix, h);
       if (!src) return fail(d, GcodeError::kOwordNoSource, h);
       if (!src->seek(c.frames[c.level].back)) return fail(d, GcodeError::kOwordSeek, h, c.frames[c.level].back.line);
+      if ((e = context_return(c.level, line, h.col, d)) != GcodeError::kOk) return e;
       params_drop_level(&p, c.level);
       --c.level;
       p.level = c.level;
@@ -205,6 +206,7 @@ GcodeError Interp::run_oword(const char* text, size_t len, uint32_t line, GcodeD
         if (!src) return fail(d, GcodeError::kOwordNoSource, h);
         if (!src->seek(f.back)) return fail(d, GcodeError::kOwordSeek, h, f.back.line);
         for (int k = 0; k < kOwordArgsMax; ++k) p.numbered_e9[k + 1] = f.saved_e9[k];
+        if ((e = context_return(c.level, line, h.col, d)) != GcodeError::kOk) return e;
         params_drop_level(&p, c.level);
         --c.level;
         p.level = c.level;
@@ -252,6 +254,7 @@ GcodeError Interp::run_oword(const char* text, size_t len, uint32_t line, GcodeD
       }
       ++c.level;
       p.level = c.level;
+      contexts_[c.level].valid = false;  // a new call starts with nothing saved
       c.looped = true;
       c.loop_line = line;
       return GcodeError::kOk;
