@@ -1,6 +1,7 @@
 // core/motion/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
 // tolerances, warnings, and the no-heap streaming guarantee.
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -26,8 +27,10 @@ bool same_state(const InterpState& a, const InterpState& b) {
               a.retract_to_r == b.retract_to_r && a.coord_system == b.coord_system && a.feed_nm_per_min == b.feed_nm_per_min &&
               a.spindle_rpm == b.spindle_rpm && a.spindle_dir == b.spindle_dir && a.coolant == b.coolant &&
               a.tool == b.tool && a.selected_tool == b.selected_tool && a.tlo_nm == b.tlo_nm && a.g92 == b.g92 &&
-              a.cycle_level_set == b.cycle_level_set && a.ended == b.ended;
-  for (int i = 0; i < 9; ++i) same = same && a.work_offset[i] == b.work_offset[i];
+              a.cycle_level_set == b.cycle_level_set && a.ended == b.ended && a.per_rev == b.per_rev &&
+              a.stray == b.stray;
+  for (int i = 0; i < 9; ++i)
+    same = same && a.work_offset[i] == b.work_offset[i] && a.rotation_deg_e9[i] == b.rotation_deg_e9[i];
   return same;
 }
 
@@ -76,7 +79,7 @@ TEST(interp_bad_block_changes_nothing) {
       "G91 G20 G55 G98 G81 X1 Y1 Z-1",              // cycle without R
       "G91 G20 M8 G0 X1 Q1",                        // unused word
       "G92 X0 G20 G91 M7 Y1 X2",                    // duplicate word
-      "G10 L2 P1 X5 Y6 G91 R30",                    // rotation not supported
+      "G10 L20 P1 X5 Y6 G91 R30",                   // R with L20
       "G91 G0 X20000",                              // number too large
   };
   for (const char* line : bad) {
@@ -88,6 +91,28 @@ TEST(interp_bad_block_changes_nothing) {
   // And the next good block runs from the unchanged state.
   CHECK_EQ(in.execute_line("X20", 3, 10, &d), GcodeError::kOk);
   CHECK(rec.records.back().end == (PointNm{mm(20), 0, mm(1)}));
+}
+
+TEST(interp_bad_block_under_a_turned_frame_changes_nothing) {
+  // A G54-G59.3 switch works the tool's point out in the new frame before
+  // the block runs (rotation.h); a block that then fails gives it back.
+  t::Recorder rec;
+  Interp in(&rec, InterpOptions{});
+  GcodeDiag d;
+  CHECK_EQ(t::run_program(&in, "G21 G90 F100\nG10 L2 P1 X10 R30\nG10 L2 P2 R-90\nG0 X10 Y0 Z1", &d), GcodeError::kOk);
+  const InterpState before = in.state();
+  const char* bad[] = {"G55 G2 X0 Y10", "G56 G1 X1 Q1", "G55 G0 X20000"};
+  for (const char* line : bad) {
+    CHECK_NE(in.execute_line(line, std::strlen(line), 9, &d), GcodeError::kOk);
+    CHECK(same_state(before, in.state()));
+  }
+  // The switch with a move: from where the tool stands (machine X 18.66,
+  // Y 5; G55's Y 18.66 when turned -90 about the machine origin) to G55's
+  // X1 on the same Y: machine X 18.66, Y -1.
+  CHECK_EQ(in.execute_line("G55 G1 X1", 9, 10, &d), GcodeError::kOk);
+  const CanonRecord& r = rec.records.back();
+  CHECK(std::llabs(r.start.x_nm - 18660254) <= 2 && std::llabs(r.start.y_nm - 5000000) <= 2);
+  CHECK(std::llabs(r.end.x_nm - 18660254) <= 2 && std::llabs(r.end.y_nm + 1000000) <= 2);
 }
 
 TEST(interp_linuxcnc_arc_tolerance) {

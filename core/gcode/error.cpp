@@ -104,6 +104,7 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
     case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
     case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kG10L20Rotation: return "{w} not allowed in G10 L20 (G10 L2 R turns a system)";
     case GcodeError::kContextNone: return "{w}: no modal state saved at this call level (M70 or M73 first)";
     case GcodeError::kTloAddHAndAxes: return "{w}: H and axis words cannot both be given (one offset to add)";
     case GcodeError::kTloAddNothing: return "{w}: neither H nor Z: no offset to add";
@@ -153,7 +154,9 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kUnsupportedGcode: return "{w} is not supported";
     case GcodeError::kUnsupportedMcode: return "{w} is not supported";
     case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
-    case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems (G10 L2 R) are not supported";
+    case GcodeError::kUnsupportedRotation:
+      return "{w} in a rotated coordinate system (G10 L2 R): an arc or compensation in G18 or G19 would be turned "
+             "out of its plane; not supported";
     case GcodeError::kUnsupportedContextComp:
       return "{w}: restoring a saved state with cutter compensation turned the other way (on or off) is not "
              "supported: G40, G41 or G42 first";

@@ -190,6 +190,7 @@ enum class GcodeError : uint8_t {
   kTloAddHAndAxes = 246,
   kTloAddNothing = 247,
   kContextNone = 248,
+  kG10L20Rotation = 249,
 };
 
 // Stable number of an error, for messages and tests.

@@ -47,6 +47,22 @@ constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
 inline PointNm tool_at(const InterpState& s) {
   return PointNm{s.pos.x_nm + s.stray.x_nm, s.pos.y_nm + s.stray.y_nm, s.pos.z_nm + s.stray.z_nm};
 }
+// Rotated coordinate systems (rotation.h): whether the system in force of s
+// is turned, and a point of s's (unrotated) frame as a machine point and back.
+inline bool rotated(const InterpState& s) {
+  const int64_t r = s.rotation_deg_e9[s.coord_system];
+  return r != 0 && r % (360LL * 1000000000) != 0;  // the common case without a division
+}
+inline PointNm machine_of(const InterpState& s, const PointNm& p) {
+  if (!rotated(s)) return p;
+  const PointNm& o = s.work_offset[s.coord_system];
+  return rotate_about(xy_rotation(s.rotation_deg_e9[s.coord_system]), p, o.x_nm, o.y_nm);
+}
+inline PointNm frame_of_machine(const InterpState& s, const PointNm& m) {
+  if (!rotated(s)) return m;
+  const PointNm& o = s.work_offset[s.coord_system];
+  return rotate_about(xy_rotation_inverse(xy_rotation(s.rotation_deg_e9[s.coord_system])), m, o.x_nm, o.y_nm);
+}
 // A feed tied to the spindle (G33/G33.1's K, G95's F): length per revolution
 // times rpm. Lengths <= 1e10 nm and S <= 1e9 rpm: saturated rather than
 // wrapped; the time estimate counts a feed at most at 1e6 mm/min anyway.
@@ -148,7 +164,7 @@ struct Plan {
   int64_t sync_feed_nm_per_min = 0;  // G33/G33.1: K times S (0: the modal feed)
   bool rest_skipped = false;  // M72 ran the saved modes in place of the rest of the line
   int16_t context_op = -1;  // M70 M71 M73 (tenths): what commit does to the level's context
-  ModalContext context{};   // M70/M73: the state saved
+  ModalContext context;     // M70/M73: the state saved (set whole when context_op says so)
   PointNm home_via{0, 0, 0};
   CyclePlan cycle{};
   SplinePlan spline;  // set whole by run_spline before anything reads it
@@ -239,7 +255,6 @@ struct BlockRunner {
   GcodeError run_group0(int g0);
   GcodeError run_motion(int motion);
   GcodeError run_straight(int motion, bool g53);
-  GcodeError straight_target(bool g53, PointNm* out);
   GcodeError run_sync(int motion);
   GcodeError run_arc(int motion);
   GcodeError run_cycle(int motion);

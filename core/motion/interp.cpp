@@ -169,6 +169,16 @@ int64_t arc_length(const CanonRecord& r) {
 
 void BlockRunner::commit() {
   Interp& I = in;
+  // G10 on the system in force, or an M72 that restores another, under a
+  // turned frame: the tool stays, its point is worked out in the new frame
+  // (a G54-G59.3 word was, before the block ran). Neither moves in the block.
+  if ((rotated(cur) || rotated(nx)) && b.g[kGCoordSystem] < 0 && plan.motion == Plan::kNone) {
+    const PointNm& o0 = cur.work_offset[cur.coord_system];
+    const PointNm& o1 = nx.work_offset[nx.coord_system];
+    if (cur.coord_system != nx.coord_system || cur.rotation_deg_e9[cur.coord_system] != nx.rotation_deg_e9[nx.coord_system] ||
+        o0.x_nm != o1.x_nm || o0.y_nm != o1.y_nm)
+      Interp::reframe_tool(&nx, cur);
+  }
   const PointNm start = tool_at(cur);
   I.state_ = nx;
   CanonRecord r{};
@@ -179,8 +189,10 @@ void BlockRunner::commit() {
   r.feed_nm_per_min = nx.per_rev ? sync_feed(nx.feed_nm_per_min, nx.spindle_rpm) : nx.feed_nm_per_min;
   r.tool = nx.tool;
   r.tool_length_offset_nm = nx.tlo_nm;
-  if (plan.context_op == 700 || plan.context_op == 730) I.contexts_[I.context_level()] = plan.context;
-  if (plan.context_op == 710) I.contexts_[I.context_level()].valid = false;
+  if (plan.context_op >= 0) {  // M70, M71, M73
+    if (plan.context_op == 710) I.contexts_[I.context_level()].valid = false;
+    else I.contexts_[I.context_level()] = plan.context;
+  }
   if (plan.tool_change) {
     r.kind = CanonKind::kToolChange;
     I.emit(&r);
@@ -345,7 +357,23 @@ GcodeError Interp::context_return(int level, uint32_t line, uint16_t col, GcodeD
   return GcodeError::kOk;
 }
 
+PointNm Interp::reframe(const InterpState& from, const InterpState& to, const PointNm& p) {
+  if (!rotated(from) && !rotated(to)) return p;  // both the machine frame: nothing moves
+  return frame_of_machine(to, machine_of(from, p));
+}
+
+void Interp::reframe_tool(InterpState* s, const InterpState& from) {
+  const PointNm tool = reframe(from, *s, tool_at(from)), pos = reframe(from, *s, from.pos);
+  s->pos = pos;
+  s->stray = PointNm{tool.x_nm - pos.x_nm, tool.y_nm - pos.y_nm, tool.z_nm - pos.z_nm};
+}
+
 void Interp::emit_now(CanonRecord* r) {
+  if (rotated(state_)) {  // records go out in the machine frame (rotation.h)
+    r->start = machine_of(state_, r->start);
+    r->end = machine_of(state_, r->end);
+    r->arc.centre = machine_of(state_, r->arc.centre);
+  }
   ++records_;
   const bool straight = r->kind == CanonKind::kTraverse || r->kind == CanonKind::kFeed;
   if (r->kind == CanonKind::kArc || (straight && !(r->start == r->end))) ++moves_;
@@ -455,8 +483,27 @@ GcodeError Interp::execute_line(const char* text, size_t len, uint32_t line, Gco
     }
   }
   if (block.m[kMSpindle] == 190) warn(GcodeError::kWarnMcodeIgnored, line, block.m_col[kMSpindle], "M19");
+  // A switch of work coordinate system under a turned frame: the tool's
+  // point in the new frame before the block reads its words (LinuxCNC's
+  // convert_coordinate_system), given back if the block fails.
+  PointNm pos_before, stray_before;
+  const bool reframed = block.g[kGCoordSystem] >= 0 && rotation_any();
+  if (reframed) {
+    pos_before = state_.pos;
+    stray_before = state_.stray;
+    const int g = block.g[kGCoordSystem];
+    InterpState to = state_;
+    to.coord_system = static_cast<uint8_t>(g <= 590 ? (g - 540) / 10 : 6 + (g - 591));
+    reframe_tool(&to, state_);
+    state_.pos = to.pos;
+    state_.stray = to.stray;
+  }
   BlockRunner run(*this, block, diag);
   e = run.run();
+  if (e != GcodeError::kOk && reframed) {
+    state_.pos = pos_before;
+    state_.stray = stray_before;
+  }
   const uint16_t set = facets_set(block, state_, suspect_);
   if (e != GcodeError::kOk) {
     any_failed_ = true;

@@ -39,6 +39,7 @@
 #include "core/motion/oword_store.h"
 #include "core/motion/cutter_comp.h"
 #include "core/motion/modal_context.h"
+#include "core/motion/rotation.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -116,6 +117,7 @@ struct InterpState {
   int32_t selected_tool;    // T
   int64_t tlo_nm;           // G43/G43.1 Z offset in force (0 after G49)
   PointNm work_offset[9];   // G54..G59.3, machine frame, nm
+  int64_t rotation_deg_e9[9];  // G10 L2 R: each system's XY rotation about its origin (rotation.h)
   PointNm g92;              // G92 offset in force
   PointNm g92_saved;        // G92 offset kept by G92.2 for G92.3
   PointNm g28_home, g30_home;  // machine positions stored by G28.1/G30.1
@@ -214,6 +216,17 @@ class Interp {
   // M70/M73's saved modal state, one per call level (modal_context.h).
   ModalContext contexts_[kOwordLevels];
   int context_level() const { return options_.control ? options_.control->level : 0; }
+  // The point p of state `from`'s frame in state `to`'s (rotation.h): the
+  // same machine point when the rotation or the origin in force changed.
+  static PointNm reframe(const InterpState& from, const InterpState& to, const PointNm& p);
+  // reframe for the tool standing in s (pos and stray) into coordinate system cs.
+  static void reframe_tool(InterpState* s, const InterpState& from);
+  // Whether any work system is turned (a G54-G59.3 switch may then move the point).
+  bool rotation_any() const {
+    for (int64_t r : state_.rotation_deg_e9)
+      if (r != 0) return true;
+    return false;
+  }
   // A subroutine returns from `level` (endsub, return, M99): M73's state
   // comes back, and the level's context is forgotten.
   GcodeError context_return(int level, uint32_t line, uint16_t col, GcodeDiag* d);

@@ -217,34 +217,59 @@ GcodeError BlockRunner::run_group0(int g0) {
       if (!b.has_word('P')) return fail_code(GcodeError::kG10PNeeded, 'G', 100, col);
       int64_t p;
       if (!decimal_to_int(b.val('P'), &p) || p < 0 || p > 9) return fail_letter(GcodeError::kG10BadP, 'P');
-      if (b.has_word('R') && !decimal_is_zero(b.val('R')))
-        return fail_letter(GcodeError::kUnsupportedRotation, 'R');
+      // LinuxCNC 2.9: R turns the system (L2 only); without R it keeps its turn.
+      if (b.has_word('R') && l == 20) return fail_letter(GcodeError::kG10L20Rotation, 'R');
       const int sys = p == 0 ? nx.coord_system : static_cast<int>(p - 1);
+      if (b.has_word('R')) {
+        // Degrees e9 (to 1e-9 degree); at most a million turns either way.
+        const int64_t r = decimal_scale(b.val('R'), 1000000000);
+        if (abs64(r) > 360LL * 1000000 * 1000000000) return fail_letter(GcodeError::kNumberTooLarge, 'R');
+        nx.rotation_deg_e9[sys] = r;
+      }
+      // L20: the offset that makes the tool's point read the given values in
+      // that system (with a turn, X and Y both: o = m - rot(t + G92), t the
+      // point read there, the given words put in).
+      PointNm t{0, 0, 0};
+      const PointNm m = machine_of(cur, cur.pos);
+      if (l == 20) {
+        InterpState there = nx;
+        there.coord_system = static_cast<uint8_t>(sys);
+        const PointNm q = frame_of_machine(there, m);
+        t = PointNm{q.x_nm - nx.work_offset[sys].x_nm - nx.g92.x_nm, q.y_nm - nx.work_offset[sys].y_nm - nx.g92.y_nm,
+                    q.z_nm - nx.work_offset[sys].z_nm - nx.g92.z_nm};
+      }
+      PointNm given = nx.work_offset[sys];
       for (int ax = 0; ax < 3; ++ax) {
         const char c = kAxisLetter[ax];
         if (!b.has_word(c)) continue;
         int64_t v;
         if ((e = length(c, &v)) != GcodeError::kOk) return e;
-        // L2: the offset itself; L20: the offset that makes the current
-        // position read v in that system.
-        int64_t off = l == 2 ? v : axis_val(cur.pos, ax) - axis_val(nx.g92, ax) - v;
+        axis_ref(l == 2 ? given : t, ax) = v;
+      }
+      if (l == 20) {
+        const PointNm tg{t.x_nm + nx.g92.x_nm, t.y_nm + nx.g92.y_nm, t.z_nm + nx.g92.z_nm};
+        const PointNm turned = rotate_about(xy_rotation(nx.rotation_deg_e9[sys]), tg, 0, 0);
+        given = PointNm{m.x_nm - turned.x_nm, m.y_nm - turned.y_nm, m.z_nm - turned.z_nm};
+      }
+      for (int ax = 0; ax < 3; ++ax) {
+        const int64_t off = axis_val(given, ax);
         if (abs64(off) > kGcodeMaxCoordNm) {
           d->a_nm = off;
-          return fail_letter(GcodeError::kPositionOutOfRange, c);
+          return fail_letter(GcodeError::kPositionOutOfRange, kAxisLetter[ax]);
         }
-        axis_ref(nx.work_offset[sys], ax) = off;
       }
+      nx.work_offset[sys] = given;
       return GcodeError::kOk;
     }
     case 280:
     case 300:
       return run_home(g0);
     case 281:
-      nx.g28_home = PointNm{cur.pos.x_nm, cur.pos.y_nm, cur.pos.z_nm + nx.tlo_nm};
+    case 301: {  // the machine position (a turned frame's point turned)
+      const PointNm m = machine_of(cur, cur.pos);
+      (g0 == 281 ? nx.g28_home : nx.g30_home) = PointNm{m.x_nm, m.y_nm, m.z_nm + nx.tlo_nm};
       return GcodeError::kOk;
-    case 301:
-      nx.g30_home = PointNm{cur.pos.x_nm, cur.pos.y_nm, cur.pos.z_nm + nx.tlo_nm};
-      return GcodeError::kOk;
+    }
     case 920: {  // G92: the current point reads the given values
       if (!b.has_axis()) return fail_code(GcodeError::kG92NoAxis, 'G', 920, col);
       for (int ax = 0; ax < 3; ++ax) {
@@ -294,6 +319,13 @@ GcodeError BlockRunner::run_home(int g0) {
     if ((e = length(c, &v)) != GcodeError::kOk) return e;
     axis_ref(via, ax) = nx.incremental ? axis_val(cur.pos, ax) + v : v + offset(ax);
     axis_ref(to, ax) = home_path;
+  }
+  if (rotated(nx)) {
+    // LinuxCNC takes the stored position into the turned frame and moves
+    // the given axes there (so a lone X goes along the turned X).
+    const PointNm hf = frame_of_machine(nx, PointNm{home.x_nm, home.y_nm, home.z_nm - nx.tlo_nm});
+    for (int ax = 0; ax < 3; ++ax)
+      if (!b.has_axis() || b.has_word(kAxisLetter[ax])) axis_ref(to, ax) = axis_val(hf, ax);
   }
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(g0), w);

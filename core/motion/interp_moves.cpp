@@ -91,24 +91,22 @@ GcodeError BlockRunner::run_sync(int motion) {
   // LinuxCNC's interpreter passes K <= 0 on to a motion controller that then
   // never arrives (zero) or runs the spindle's way backwards: refused here.
   if (pitch_nm <= 0) return fail(GcodeError::kSyncPitchNotPositive, b.col_of('K'), w);
-  PointNm to;
-  if ((e = straight_target(false, &to)) != GcodeError::kOk) return e;
-  if ((e = check_pos(to, col, w)) != GcodeError::kOk) return e;
   const int64_t feed = sync_feed(pitch_nm, nx.spindle_rpm);
   if (feed == 0) return fail(GcodeError::kCycleSpindleStopped, col, w);  // S0: the spindle stands still
+  if ((e = run_straight(motion, false)) != GcodeError::kOk) return e;  // the end point, checked
   if (feed > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, col, w);
-  plan.motion = motion == 330 ? Plan::kStraight : Plan::kTap;
-  plan.straight_kind = CanonKind::kFeed;
-  plan.target = to;
+  if (motion == 331) {
+    plan.motion = Plan::kTap;
+    nx.pos = cur.pos;  // G33.1 ends where it began
+  }
+  plan.inverse_time = false;
   plan.sync_feed_nm_per_min = feed;
-  if (motion == 330) nx.pos = to;  // G33.1 ends where it began
   return GcodeError::kOk;
 }
 
-// The end point of a straight move (G0, G1, probes, G33): its axis words, or
-// polar words, from the position (g53: in machine coordinates).
-GcodeError BlockRunner::straight_target(bool g53, PointNm* out) {
+GcodeError BlockRunner::run_straight(int motion, bool g53) {
   GcodeError e;
+  if (g53 && nx.incremental) return fail_code(GcodeError::kG53Incremental, 'G', 530, b.g_col[kGNonModal]);
   const PointNm base = g53 ? cur.pos : comp_base();
   PointNm to = base;
   for (int ax = 0; ax < 3; ++ax) {
@@ -121,19 +119,17 @@ GcodeError BlockRunner::straight_target(bool g53, PointNm* out) {
   }
   if (b.has_polar() && g53) return fail_letter(GcodeError::kPolarG53, polar_letter());
   if (b.has_polar() && (e = polar_target(&to)) != GcodeError::kOk) return e;
-  *out = to;
-  return GcodeError::kOk;
-}
-
-GcodeError BlockRunner::run_straight(int motion, bool g53) {
-  GcodeError e;
-  if (g53 && nx.incremental) return fail_code(GcodeError::kG53Incremental, 'G', 530, b.g_col[kGNonModal]);
-  PointNm to;
-  if ((e = straight_target(g53, &to)) != GcodeError::kOk) return e;
+  // G53's words are machine coordinates, as is the rest of its point then.
+  if (g53 && rotated(nx)) {
+    PointNm m = machine_of(nx, cur.pos);
+    for (int ax = 0; ax < 3; ++ax)
+      if (b.has_word(kAxisLetter[ax])) axis_ref(m, ax) = axis_val(to, ax);
+    to = frame_of_machine(nx, m);
+  }
   char w[16];
   gcode_code_text('G', static_cast<int16_t>(motion), w);
   if ((e = check_pos(to, motion_col(), w)) != GcodeError::kOk) return e;
-  if (motion != 0) {  // G1, or a probe move
+  if (motion != 0 && motion != 330 && motion != 331) {  // G1, or a probe move (G33's feed is K x S)
     if (nx.inverse_time && !b.has_word('F')) return fail(GcodeError::kInverseTimeNoF, motion_col(), w);
     if (!nx.inverse_time && (e = need_feed(motion_col(), w)) != GcodeError::kOk) return e;
     if (nx.inverse_time && decimal_is_zero(plan.inverse_f)) return fail_letter(GcodeError::kFeedZero, 'F');
@@ -157,6 +153,8 @@ GcodeError BlockRunner::run_arc(int motion) {
   const int ia = plane_axis_a(pl), ib = plane_axis_b(pl);
   const PointNm base = comp_base();
   if (nx.comp.arc_not_allowed) return fail(GcodeError::kCompArcAfterExit, col, w);
+  // A turned G18/G19 arc leaves its plane: no CanonArc can say it (rotation.h).
+  if (pl != Plane::kXY && rotated(nx)) return fail(GcodeError::kUnsupportedRotation, col, w);
   // I, J, K belong to X, Y, Z; the one along the plane's axis is an error.
   const char off_letter[3] = {'I', 'J', 'K'};
   const char not_here = off_letter[plane_axis_c(pl)];

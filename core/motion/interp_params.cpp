@@ -46,7 +46,7 @@ bool numbered(const InterpState& s, int32_t n, int64_t* e9) {
   if (n >= 5221 && n <= 5390) {
     const int32_t k = (n - 5221) / 20, a = (n - 5221) % 20;
     if (a > 9) return false;
-    *e9 = a == 9 ? 0 : length(s, axis_nm(s.work_offset[k], a));
+    *e9 = a == 9 ? s.rotation_deg_e9[k] : length(s, axis_nm(s.work_offset[k], a));
     return true;
   }
   if (axis_of(5061, n, &axis)) return *e9 = length(s, axis_nm(s.probe_prog, axis)), true;

@@ -36,12 +36,23 @@ MM_PER_INCH = 25.4
 CALL = re.compile(r'^\s*(?:\d+\s+)?N\S*\s+([A-Z_0-9]+)\((.*)\)\s*$')
 
 
+def machine(nums, scale, g5x, g92, rot):
+    """A printed point in machine mm: rot(program + G92) + G5x (LinuxCNC's
+    canon, rotate_and_offset)."""
+    p = [nums[k] * scale + g92[k] for k in range(3)]
+    if rot:
+        c, s = math.cos(rot), math.sin(rot)
+        p = [p[0] * c - p[1] * s, p[0] * s + p[1] * c, p[2]]
+    return [p[k] + g5x[k] for k in range(3)]
+
+
 def parse_trace(path):
     """Moves in machine mm: (kind, start, end, arc) with arc = None or a dict."""
     scale = 1.0
     g5x = [0.0, 0.0, 0.0]
     g92 = [0.0, 0.0, 0.0]
     plane = 'XY'
+    xy_rot = 0.0  # XY rotation of the system in force, radians (G10 L2 R)
     pos = None  # program-frame point as printed, in mm (machine = pos + offsets)
     cur_machine = [0.0, 0.0, 0.0]
     moves = []
@@ -82,10 +93,9 @@ def parse_trace(path):
         elif name == 'SET_G92_OFFSET':
             g92 = [v * scale for v in nums[0:3]]
         elif name == 'SET_XY_ROTATION':
-            if nums and abs(nums[0]) > 1e-12:
-                notes.append('XY rotation %g not handled' % nums[0])
+            xy_rot = math.radians(nums[0]) if nums else 0.0
         elif name in ('STRAIGHT_TRAVERSE', 'STRAIGHT_FEED', 'STRAIGHT_PROBE'):
-            p = [nums[k] * scale + g5x[k] + g92[k] for k in range(3)]
+            p = machine(nums, scale, g5x, g92, xy_rot)
             kind = 'rapid' if name == 'STRAIGHT_TRAVERSE' else 'feed'
             moves.append((kind, cur_machine, p, None, scale != 1.0))
             cur_machine = p
@@ -93,7 +103,7 @@ def parse_trace(path):
         elif name == 'RIGID_TAP':
             # G33.1: in to the point and back out to where it began; the
             # position stays (LinuxCNC's interpreter does not move it).
-            p = [nums[k] * scale + g5x[k] + g92[k] for k in range(3)]
+            p = machine(nums, scale, g5x, g92, xy_rot)
             moves.append(('feed', cur_machine, p, None, scale != 1.0))
             moves.append(('feed', p, cur_machine, None, scale != 1.0))
         elif name == 'ARC_FEED':
@@ -105,6 +115,10 @@ def parse_trace(path):
             end[idx[1]] = se * scale + off[idx[1]]
             end[idx[2]] = ae * scale + off[idx[2]]
             centre = (fc * scale + off[idx[0]], sc * scale + off[idx[1]])
+            if xy_rot:  # LinuxCNC's canon turns XY arcs' points about the G5x origin
+                end = machine([end[k] - g5x[k] for k in range(3)], 1.0, g5x, [0, 0, 0], xy_rot)
+                c = machine([centre[0] - g5x[0], centre[1] - g5x[1], 0], 1.0, g5x, [0, 0, 0], xy_rot)
+                centre = (c[0], c[1])
             # Full circle when the printed end equals the printed start.
             full = pos is not None and abs(pos[idx[0]] - fe) < 1e-12 and abs(pos[idx[1]] - se) < 1e-12
             arc = dict(idx=idx, centre=centre, rot=int(rot), full=full)
