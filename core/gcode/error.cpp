@@ -104,6 +104,14 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kSyncNoPitch: return "{w}: K word missing (the pitch: distance per spindle revolution)";
     case GcodeError::kSyncFeedWord: return "F word used with {w} (its feed is K times the spindle speed)";
     case GcodeError::kSyncNoAxis: return "{w}: no X, Y or Z to move to";
+    case GcodeError::kNurbsXY: return "{w}: a NURBS control point needs both X and Y";
+    case GcodeError::kNurbsPOnlyFirst: return "{w}: P without X and Y gives only the first control point's weight";
+    case GcodeError::kNurbsWeight: return "{w}: every NURBS control point needs a positive weight P";
+    case GcodeError::kNurbsNoStart: return "{w} without G5.2 first";
+    case GcodeError::kNurbsTooFew: return "{w}: fewer control points than the order L = {n}";
+    case GcodeError::kNurbsTooMany:
+      return "{w}: NURBS beyond dexmill's limits: 64 control points, order 10, weights within a ratio of 4096, and "
+             "no inverse time (G93)";
     case GcodeError::kG10L20Rotation: return "{w} not allowed in G10 L20 (G10 L2 R turns a system)";
     case GcodeError::kContextNone: return "{w}: no modal state saved at this call level (M70 or M73 first)";
     case GcodeError::kTloAddHAndAxes: return "{w}: H and axis words cannot both be given (one offset to add)";

@@ -191,6 +191,12 @@ enum class GcodeError : uint8_t {
   kTloAddNothing = 247,
   kContextNone = 248,
   kG10L20Rotation = 249,
+  kNurbsXY = 250,
+  kNurbsPOnlyFirst = 251,
+  kNurbsWeight = 252,
+  kNurbsNoStart = 253,
+  kNurbsTooFew = 254,
+  kNurbsTooMany = 255,  // the last number a uint8_t holds: widen the enum before adding
 };
 
 // Stable number of an error, for messages and tests.

@@ -155,13 +155,19 @@ struct Plan {
   bool coolant = false;
   bool dwell = false;
   int64_t dwell_ms = 0;
-  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline, kTap } motion = kNone;
+  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline, kTap, kNurbs } motion = kNone;
   CanonKind straight_kind = CanonKind::kTraverse;
   PointNm target{0, 0, 0};
   CanonArc arc{Plane::kXY, {0, 0, 0}, 1};
   bool inverse_time = false;
   Decimal inverse_f{0, 0};
   int64_t sync_feed_nm_per_min = 0;  // G33/G33.1: K times S (0: the modal feed)
+  // G5.2: a control point to add (nurbs_add: 1 go on, 2 start anew from the
+  // position); set whole when nurbs_add says so.
+  uint8_t nurbs_add = 0;
+  int32_t nurbs_order;
+  bool nurbs_has_point;
+  int64_t nurbs_first_weight, nurbs_x, nurbs_y, nurbs_weight;
   bool rest_skipped = false;  // M72 ran the saved modes in place of the rest of the line
   int16_t context_op = -1;  // M70 M71 M73 (tenths): what commit does to the level's context
   ModalContext context;     // M70/M73: the state saved (set whole when context_op says so)
@@ -256,6 +262,8 @@ struct BlockRunner {
   GcodeError run_motion(int motion);
   GcodeError run_straight(int motion, bool g53);
   GcodeError run_sync(int motion);
+  GcodeError run_nurbs(int motion);
+  void commit_nurbs(CanonRecord* r);
   GcodeError run_arc(int motion);
   GcodeError run_cycle(int motion);
   GcodeError cycle_words(int motion, const char* w, CycleWords* out);

@@ -97,14 +97,15 @@ GcodeError BlockRunner::check_unused(int g0, int motion) {
   const bool comp_dia = b.g[kGCutterComp] == 411 || b.g[kGCutterComp] == 421;
   if (b.has_word('R') && !arc && !cycle && g0 != 100 && !comp_dia) return fail_letter(GcodeError::kWordUnused, 'R');
   const bool dwell_cycle = motion == 740 || motion == 820 || motion == 840 || motion == 860 || motion == 880 || motion == 890;
-  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m || motion == 50))
+  if (b.has_word('P') && !(g0 == 40 || g0 == 100 || path == 640 || arc || dwell_cycle || user_m || motion == 50 || motion == 52))
     return fail_letter(GcodeError::kWordUnused, 'P');
   if (b.has_word('Q') &&
       !(motion == 730 || motion == 830 || path == 640 || b.m[kMToolChange] == 610 || user_m || motion == 50))
     return fail_letter(GcodeError::kWordUnused, 'Q');
   // LinuxCNC 2.9 takes no L with G74 (its check of L lists every cycle but it).
   const bool comp_on = b.g[kGCutterComp] > 400;  // G41, G41.1, G42, G42.1
-  if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740) || comp_on)) return fail_letter(GcodeError::kWordUnused, 'L');
+  if (b.has_word('L') && !(g0 == 100 || (cycle && motion != 740) || comp_on || motion == 52))
+    return fail_letter(GcodeError::kWordUnused, 'L');
   if (b.has_word('H') && b.g[kGToolLength] == 490) {
     // Centroid's posts write `G49 H0`: the H changes nothing G49 does.
     warn_once(kOnceG49H, GcodeError::kWarnG49H, b.col_of('H'), "G49");
@@ -189,6 +190,22 @@ void BlockRunner::commit() {
   r.feed_nm_per_min = nx.per_rev ? sync_feed(nx.feed_nm_per_min, nx.spindle_rpm) : nx.feed_nm_per_min;
   r.tool = nx.tool;
   r.tool_length_offset_nm = nx.tlo_nm;
+  if (plan.nurbs_add) {  // G5.2: one more control point
+    NurbsCurve& c = I.nurbs_;
+    if (plan.nurbs_add == 2) {
+      c.count = 1;
+      c.x_nm[0] = cur.pos.x_nm;
+      c.y_nm[0] = cur.pos.y_nm;
+      c.weight[0] = plan.nurbs_first_weight;
+    }
+    c.order = plan.nurbs_order;
+    if (plan.nurbs_has_point) {
+      c.x_nm[c.count] = plan.nurbs_x;
+      c.y_nm[c.count] = plan.nurbs_y;
+      c.weight[c.count] = plan.nurbs_weight;
+      ++c.count;
+    }
+  }
   if (plan.context_op >= 0) {  // M70, M71, M73
     if (plan.context_op == 710) I.contexts_[I.context_level()].valid = false;
     else I.contexts_[I.context_level()] = plan.context;
@@ -257,6 +274,9 @@ void BlockRunner::commit() {
     case Plan::kSpline:
       commit_spline(&r);
       break;
+    case Plan::kNurbs:
+      commit_nurbs(&r);
+      break;
     case Plan::kHome:
       r.kind = CanonKind::kTraverse;
       r.end = plan.home_via;
@@ -318,6 +338,7 @@ void Interp::reset() {
   comp_q_.clear();
   comp_scratch_.clear();
   for (ModalContext& c : contexts_) c.valid = false;
+  nurbs_.count = 0;
 }
 
 GcodeError Interp::context_return(int level, uint32_t line, uint16_t col, GcodeDiag* d) {

@@ -39,6 +39,7 @@
 #include "core/motion/oword_store.h"
 #include "core/motion/cutter_comp.h"
 #include "core/motion/modal_context.h"
+#include "core/motion/nurbs.h"
 #include "core/motion/rotation.h"
 #include "core/point.h"
 
@@ -213,6 +214,8 @@ class Interp {
   // scratch copy a block is checked against before it commits.
   CompQueue comp_q_;
   CompQueue comp_scratch_;
+  // G5.2's control points (nurbs.h), kept from block to block until G5.3.
+  NurbsCurve nurbs_;
   // M70/M73's saved modal state, one per call level (modal_context.h).
   ModalContext contexts_[kOwordLevels];
   int context_level() const { return options_.control ? options_.control->level : 0; }

@@ -30,6 +30,7 @@ GcodeError BlockRunner::run_motion(int motion) {
   if (nx.comp.side) return fail_code(GcodeError::kCompForbidden, 'G', static_cast<int16_t>(motion), motion_col());
   if (is_probe(motion)) return run_probe(motion);
   if (motion == 330 || motion == 331) return run_sync(motion);
+  if (motion == 52 || motion == 53) return run_nurbs(motion);
   return run_cycle(motion);
 }
 

@@ -206,11 +206,15 @@ def attach_curves(moves, preview):
                 pts.append(preview[j][2])
                 j += 1
             ctrl, worst = fit_bezier(exact, pts, arc['nurbs'])
-            if worst > 1e-6:
-                return None, 'the preview of line %d is no Bezier curve of order %d (%.2g mm off)' % (
-                    line, arc['nurbs'], worst)
+            if worst <= 1e-6:  # a spline (G5, G5.1): one Bezier curve
+                arc = dict(curve=ctrl)
+            else:
+                # A G5.2 NURBS, of more spans than one Bezier: the preview's
+                # points (exact, 15 per control point) joined by chords, which
+                # is as close as their sagitta (small for the project's
+                # programs' curves).
+                arc = dict(polyline=[list(exact)] + pts)
             e = exact = pts[-1]
-            arc = dict(curve=ctrl)
         else:
             want = 'arc' if arc is not None else ('rapid' if kind == 'rapid' else None)
             got = preview[j][1]
@@ -327,7 +331,33 @@ class CurveGeom:
         return (a + b) / 2
 
 
+class PolylineGeom(CurveGeom):
+    """The preview's points of a NURBS joined by chords, CurveGeom's interface."""
+
+    def __init__(self, start, end, arc):
+        self.pts = [arc['polyline'][0]]
+        for q in arc['polyline'][1:]:  # the preview repeats the end point
+            if dist(q, self.pts[-1]) > 1e-12:
+                self.pts.append(q)
+        super().__init__(start, end, dict(curve=None))
+
+    def remaining(self, t):
+        x = min(1.0, max(0.0, t)) * (len(self.pts) - 1)
+        i = min(len(self.pts) - 2, int(x))
+        rest = dist(self.at(t), self.pts[i + 1])
+        return rest + sum(dist(self.pts[k], self.pts[k + 1]) for k in range(i + 1, len(self.pts) - 1))
+
+    def at(self, t):
+        x = min(1.0, max(0.0, t)) * (len(self.pts) - 1)
+        i = min(len(self.pts) - 2, int(x))
+        f = x - i
+        a, b = self.pts[i], self.pts[i + 1]
+        return [a[k] + (b[k] - a[k]) * f for k in range(3)]
+
+
 def geometry(s, e, arc):
+    if 'polyline' in arc:
+        return PolylineGeom(s, e, arc)
     return CurveGeom(s, e, arc) if 'curve' in arc else ArcGeom(s, e, arc)
 
 
