@@ -162,9 +162,7 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kUnsupportedGcode: return "{w} is not supported";
     case GcodeError::kUnsupportedMcode: return "{w} is not supported";
     case GcodeError::kUnsupportedCutterComp: return "{w} (cutter radius compensation) is not supported";
-    case GcodeError::kUnsupportedRotation:
-      return "{w} in a rotated coordinate system (G10 L2 R): an arc or compensation in G18 or G19 would be turned "
-             "out of its plane; not supported";
+    case GcodeError::kUnsupportedRotation: return "{w}: rotated coordinate systems are not supported";
     case GcodeError::kUnsupportedContextComp:
       return "{w}: restoring a saved state with cutter compensation turned the other way (on or off) is not "
              "supported: G40, G41 or G42 first";

@@ -120,7 +120,7 @@ enum class GcodeError : uint8_t {
   kUnsupportedMcode = 105,
   kUnsupportedCutterComp = 106,  // no longer raised (compensation is supported); number kept
   // 107 was polar coordinates, read since (kPolar*)
-  kUnsupportedRotation = 108,
+  kUnsupportedRotation = 108,  // no longer raised (G10 L2 R turns a system); number kept
   kUnsupportedCompOrientation = 109,
   kUnsupportedContextComp = 110,
   // -- warnings (140..): the line was skipped or a word ignored, safely

@@ -390,6 +390,22 @@ void Interp::reframe_tool(InterpState* s, const InterpState& from) {
 }
 
 void Interp::emit_now(CanonRecord* r) {
+  if (rotated(state_) && r->kind == CanonKind::kArc && r->arc.plane != Plane::kXY) {
+    // A turned G18/G19 arc leaves its plane, which no CanonArc can say: it
+    // goes out as chords of --chord's sagitta (arc_chords.h), each turned.
+    ArcChords chords;
+    chords.init(*r, options_.spline_sagitta_nm);
+    CanonRecord f = *r;
+    f.kind = CanonKind::kFeed;
+    PointNm p;
+    while (chords.next(&p)) {
+      f.end = p;
+      CanonRecord g = f;
+      emit_now(&g);
+      f.start = p;
+    }
+    return;
+  }
   if (rotated(state_)) {  // records go out in the machine frame (rotation.h)
     r->start = machine_of(state_, r->start);
     r->end = machine_of(state_, r->end);

@@ -69,7 +69,6 @@ GcodeError BlockRunner::comp_mode() {
     return GcodeError::kOk;
   }
   if (nx.plane == Plane::kYZ) return fail_code(GcodeError::kCompPlane, 'G', code, col);
-  if (nx.plane != Plane::kXY && rotated(nx)) return fail_code(GcodeError::kUnsupportedRotation, 'G', code, col);
   if (nx.comp.side) return fail_code(GcodeError::kCompOnWhenOn, 'G', code, col);
   int side = g == 410 || g == 411 ? 1 : -1;
   int64_t radius = 0;

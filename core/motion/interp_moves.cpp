@@ -154,8 +154,6 @@ GcodeError BlockRunner::run_arc(int motion) {
   const int ia = plane_axis_a(pl), ib = plane_axis_b(pl);
   const PointNm base = comp_base();
   if (nx.comp.arc_not_allowed) return fail(GcodeError::kCompArcAfterExit, col, w);
-  // A turned G18/G19 arc leaves its plane: no CanonArc can say it (rotation.h).
-  if (pl != Plane::kXY && rotated(nx)) return fail(GcodeError::kUnsupportedRotation, col, w);
   // I, J, K belong to X, Y, Z; the one along the plane's axis is an error.
   const char off_letter[3] = {'I', 'J', 'K'};
   const char not_here = off_letter[plane_axis_c(pl)];

@@ -46,6 +46,19 @@ def machine(nums, scale, g5x, g92, rot):
     return [p[k] + g5x[k] for k in range(3)]
 
 
+def turned(p, turn):
+    """p turned about the G5x origin (turn = (radians, ox, oy)), or p."""
+    if not turn:
+        return p
+    a, ox, oy = turn
+    c, s = math.cos(a), math.sin(a)
+    return [ox + (p[0] - ox) * c - (p[1] - oy) * s, oy + (p[0] - ox) * s + (p[1] - oy) * c, p[2]]
+
+
+def unturn(p, turn):
+    return turned(p, (-turn[0], turn[1], turn[2]))
+
+
 def parse_trace(path):
     """Moves in machine mm: (kind, start, end, arc) with arc = None or a dict."""
     scale = 1.0
@@ -115,14 +128,22 @@ def parse_trace(path):
             end[idx[1]] = se * scale + off[idx[1]]
             end[idx[2]] = ae * scale + off[idx[2]]
             centre = (fc * scale + off[idx[0]], sc * scale + off[idx[1]])
-            if xy_rot:  # LinuxCNC's canon turns XY arcs' points about the G5x origin
+            # Full circle when the printed end equals the printed start.
+            full = pos is not None and abs(pos[idx[0]] - fe) < 1e-12 and abs(pos[idx[1]] - se) < 1e-12
+            turn = None
+            if xy_rot and plane == 'XY':  # LinuxCNC's canon turns XY arcs' points about the G5x origin
                 end = machine([end[k] - g5x[k] for k in range(3)], 1.0, g5x, [0, 0, 0], xy_rot)
                 c = machine([centre[0] - g5x[0], centre[1] - g5x[1], 0], 1.0, g5x, [0, 0, 0], xy_rot)
                 centre = (c[0], c[1])
-            # Full circle when the printed end equals the printed start.
-            full = pos is not None and abs(pos[idx[0]] - fe) < 1e-12 and abs(pos[idx[1]] - se) < 1e-12
-            arc = dict(idx=idx, centre=centre, rot=int(rot), full=full)
-            moves.append(('feed', cur_machine, end, arc, scale != 1.0))
+            elif xy_rot:  # a G18/G19 arc turned out of its plane: kept unturned, turned point by point
+                turn = (xy_rot, g5x[0], g5x[1])
+            arc = dict(idx=idx, centre=centre, rot=int(rot), full=full, turn=turn)
+            start = cur_machine
+            if turn:
+                start = unturn(cur_machine, turn)
+            arc['start0'] = start
+            moves.append(('feed', cur_machine, turned(end, turn), arc, scale != 1.0))
+            end = turned(end, turn)
             cur_machine = end
             p = [0.0, 0.0, 0.0]
             p[idx[0]], p[idx[1]], p[idx[2]] = fe, se, ae
@@ -249,6 +270,9 @@ def dist(a, b):
 
 class ArcGeom:
     def __init__(self, start, end, arc):
+        self.turn = arc.get('turn')
+        if self.turn:  # worked unturned, turned point by point
+            start, end = arc['start0'], unturn(end, self.turn)
         i0, i1, i2 = arc['idx']
         self.idx = arc['idx']
         self.ca, self.cb = arc['centre']
@@ -274,7 +298,7 @@ class ArcGeom:
         p[i0] = self.ca + r * math.cos(ang)
         p[i1] = self.cb + r * math.sin(ang)
         p[i2] = self.c0 + (self.c1 - self.c0) * t
-        return p
+        return turned(p, self.turn)
 
     def remaining(self, t):
         """The planar length left from t to the end (at the larger radius)."""
@@ -285,6 +309,8 @@ class ArcGeom:
         i0, i1, _ = self.idx
         if self.sweep <= 0:
             return 1.0
+        if self.turn:
+            p = unturn(p, self.turn)
         ang = math.atan2(p[i1] - self.cb, p[i0] - self.ca)
         prev_ang = self.a0 + self.dir * self.sweep * t_prev
         d = (ang - prev_ang) * self.dir
