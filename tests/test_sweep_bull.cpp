@@ -74,7 +74,7 @@ int check_ramp(const Tool& tool, PointNm a, PointNm b, int64_t pitch, int64_t ls
 
 TEST(sweep_bull_flank_w_is_the_minimum) {
   // w* from the quartic against a double minimiser over the chord, for
-  // corner radii from a sliver to nearly a ball, slopes from 2^-8 to 2^4 and
+  // corner radii from a sliver to nearly a ball, slopes from 2^-16 to 2^4 and
   // every cross offset (the rim and v = a included): the cost at w* is within
   // 0.2 nm (a tenth of the sweep's working unit V on a 0.5 um LSB) of the
   // minimum for the column moved at most 1 nm, and the solver answers for
@@ -90,7 +90,7 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), 500, &t), Status::kOk)) return;
     const double R = c[0] / 2.0, a = R - c[1];
     for (int k = 0; k < 3000; ++k) {
-      const double m = (rng() & 1 ? 1 : -1) * std::ldexp(1.0, -8 + static_cast<int>(rng() % 12)) *
+      const double m = (rng() & 1 ? 1 : -1) * std::ldexp(1.0, -16 + static_cast<int>(rng() % 20)) *
                        (1.0 + (rng() % 1000) / 1000.0);
       double v_nm = R * ((rng() % 100000) / 100000.0);
       if (k % 5 == 1) v_nm = a * (1.0 + ((rng() % 2001) / 1000.0 - 1.0) * 1e-3);  // the torus's inner edge

@@ -23,7 +23,7 @@
 // above s* descends to it without overshooting. The start: halving from s = 1
 // while P stays >= 0 puts it within a factor 2 of s*; from there Newton
 // takes 2 to 8 steps to 2^-28 over every tool shape, slope and offset
-// (measured in double precision over 10^5 random cases).
+// (measured in double precision over 10^5 random cases; 5 on average).
 //
 // Why it may be approximate: w* is a minimum of the convex F(w) - m w, so an
 // error dw in it changes the lowest height only by F'' dw^2 / 2, and the
@@ -32,11 +32,10 @@
 // core/cut/sweep.h is checked against the double oracle in
 // tests/test_sweep_bull.cpp.
 //
-// Outside 2^-8 <= |m| <= 2^4 (ramps gentler than 0.22 degrees or steeper
-// than 86, where
-// the fixed-point coefficients lose their precision) and when Newton has
-// not settled in kBullNewtonSteps, bull_flank_w answers false and the caller
-// searches as before.
+// Outside 2^-16 <= |m| <= 2^4 (ramps gentler than 1 um in 65 mm or
+// steeper than 86 degrees, where the fixed-point coefficients lose their
+// precision) and when Newton has not settled in kBullNewtonSteps,
+// bull_flank_w answers false and the caller searches as before.
 #ifndef DEXMILL_CORE_CUT_BULL_FLANK_H
 #define DEXMILL_CORE_CUT_BULL_FLANK_H
 
@@ -54,22 +53,28 @@ constexpr int kBullNewtonSteps = 16;
 // sign is m's), at most rho (the half chord at v, U). False: search instead.
 inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int64_t v_abs, int64_t rho,
                          int64_t* w_abs) {
-  constexpr int kQ = 40;
+  // q52: a gentle ramp's root is near sin_b (2^-16 at the least) and its
+  // coefficients near sin_b^2; q52 keeps 20 bits of them, and every value
+  // below (|coefficients|, s <= 4) times s fits a 128-bit product.
+  constexpr int kQ = 52;
   constexpr int64_t kOne = static_cast<int64_t>(1) << kQ;
   const int64_t m_abs = m_q30 < 0 ? -m_q30 : m_q30;
-  if (m_abs < (static_cast<int64_t>(1) << 22) || m_abs > (static_cast<int64_t>(1) << 34) || t.r_u < 1) return false;
+  if (m_abs < (static_cast<int64_t>(1) << 14) || m_abs > (static_cast<int64_t>(1) << 34) || t.r_u < 1) return false;
+  if (v_abs >= t.r_u) {  // the rim: a chord of one point
+    *w_abs = 0;
+    return true;
+  }
   const int64_t sin_abs = sin_q30 < 0 ? -sin_q30 : sin_q30;
   // nu in q30 (a column within 1/4 nm of its place: inside the backward bound).
-  const int64_t nu_q30 = (min_of(v_abs, t.r_u) * (static_cast<int64_t>(1) << 30)) / t.r_u;
+  const int64_t nu_q30 = (v_abs * (static_cast<int64_t>(1) << 30)) / t.r_u;
   const int64_t nu2 = (nu_q30 * nu_q30) >> (60 - kQ);
   const int64_t beta2 = (sin_abs * sin_abs) >> (60 - kQ);
   const int64_t kappa2 = kOne - beta2;
-  const int64_t c4 = t.bull_rc2_q40, c3 = t.bull_2arc_q40;
-  const int64_t c2 = t.bull_a2_q40 - mul_shift_fit(kappa2, nu2, kQ) - mul_shift_fit(beta2, t.bull_rc2_q40, kQ);
-  const int64_t c1 = -mul_shift_fit(beta2, t.bull_2arc_q40, kQ);
-  const int64_t c0 = -mul_shift_fit(beta2, t.bull_a2_q40, kQ);
-  // Horner; every coefficient and s within [-4, 4] in q40: products fit.
-  auto poly = [&](int64_t s) {
+  const int64_t c4 = t.bull_rc2_q52, c3 = t.bull_2arc_q52;
+  const int64_t c2 = t.bull_a2_q52 - mul_shift_fit(kappa2, nu2, kQ) - mul_shift_fit(beta2, t.bull_rc2_q52, kQ);
+  const int64_t c1 = -mul_shift_fit(beta2, t.bull_2arc_q52, kQ);
+  const int64_t c0 = -mul_shift_fit(beta2, t.bull_a2_q52, kQ);
+  auto poly = [&](int64_t s) {  // Horner
     int64_t p = c4;
     p = mul_shift_fit(p, s, kQ) + c3;
     p = mul_shift_fit(p, s, kQ) + c2;
@@ -90,37 +95,40 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
   for (int k = 0; k < kBullNewtonSteps && !settled; ++k) {
     const int64_t d_p = slope(s);
     if (d_p <= 0) return false;
-    // P / P' in q40 with one 64-bit division: P 2^40 fits while |P| < 2^22
-    // (near the root); before that, P' gives up low bits instead (the
+    // P / P' in q52 with one 64-bit division: P 2^52 fits while P is
+    // small (near the root); before that, P' gives up low bits instead (the
     // steps far from the root need no precision, only the last ones do).
     const int64_t p = poly(s), p_abs = p < 0 ? -p : p;
-    const int up = p_abs < (static_cast<int64_t>(1) << 22) ? kQ : max_of(0, 61 - (64 - __builtin_clzll(static_cast<uint64_t>(p_abs) | 1)));
+    const int up = min_of(kQ, 61 - (64 - __builtin_clzll(static_cast<uint64_t>(p_abs) | 1)));
     const int64_t den = d_p >> (kQ - up);
     if (den <= 0) return false;
     const int64_t step = (p * (static_cast<int64_t>(1) << up)) / den;
     s = clamp(s - step, s_lo, kOne);
-    // Settled at 2^-28, or at 2^-20 where the steps stop shrinking: there
-    // P's rounding (a few q40 units) over a small P' is all that is left.
-    const int64_t step_abs = step < 0 ? -step : step;
-    settled = step_abs <= (static_cast<int64_t>(1) << (kQ - 28)) ||
-              (step_abs <= (static_cast<int64_t>(1) << (kQ - 20)) && step_abs >= last_step);
+    // Settled when a step is 2^-20 of the scale the answer lives on (s, or
+    // 1 - s near the rim and on steep ramps, where w* ~ sqrt(1 - s)): the
+    // error after it is of the order of its square. Or at 2^-16 where the
+    // steps stop shrinking: there P's rounding over a small P' is all
+    // that is left.
+    const int64_t step_abs = step < 0 ? -step : step, scale = min_of(s, kOne - s);
+    settled = step_abs <= (scale >> 20) || (step_abs <= (scale >> 16) && step_abs >= last_step);
     last_step = step_abs;
   }
   if (!settled) return false;
   // cos(theta) = m cot(phi) = m sqrt(1 - s^2) / s and rho = a + rc s. Near
   // s = 1 (steep ramps, the rim) 1 - s^2 is small: taken as e (2 - e), e =
-  // 1 - s, and its root in q40 there, so that w* keeps its relative precision.
+  // 1 - s, and its root scaled up there, so that w* keeps its precision.
   const int64_t e = kOne - s;
-  const int64_t one_minus_s2 = mul_shift_fit(e, 2 * kOne - e, kQ);  // q40
-  const int64_t sq_q40 =
-      one_minus_s2 < (static_cast<int64_t>(1) << 22)
-          ? static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(one_minus_s2) << kQ))
-          : static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(one_minus_s2) << (kQ - 20))) << 10;
+  const int64_t x = mul_shift_fit(e, 2 * kOne - e, kQ);  // 1 - s^2, q52
+  const int64_t sq_q40 = x < (static_cast<int64_t>(1) << 34)
+                             ? static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(x) << 28))
+                             : static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(x) << 8)) << 10;
   // m sqrt(1 - s^2) = s cos(theta) <= s, q40; then the quotient with both
   // operands shifted up to 62 bits: 31 good bits of cos(theta) in q30.
-  const int64_t num = min_of(mul_shift(m_abs, sq_q40, 30), s);
-  const int sh = __builtin_clzll(static_cast<uint64_t>(s)) - 1;
-  const int64_t cos_theta_q30 = min_of((num << sh) / ((s << sh) >> 30), static_cast<int64_t>(1) << 30);
+  const int64_t s_q40 = s >> (kQ - 40);
+  if (s_q40 <= 0) return false;
+  const int64_t num = min_of(mul_shift(m_abs, sq_q40, 30), s_q40);
+  const int sh = __builtin_clzll(static_cast<uint64_t>(s_q40)) - 1;
+  const int64_t cos_theta_q30 = min_of((num << sh) / ((s_q40 << sh) >> 30), static_cast<int64_t>(1) << 30);
   const int64_t rho_c_u = t.a_u + mul_shift_fit(t.rc_u, s, kQ);
   *w_abs = min_of(mul_shift_fit(rho_c_u, cos_theta_q30, 30), rho);
   return true;

@@ -51,8 +51,8 @@ struct SweepTool {
   int64_t rc2_u;           // rc^2
   // Bull nose on ramps (core/cut/bull_flank.h): a / R, rc / R and the
   // quartic's tool-only coefficients (rc / R)^2, 2 a rc / R^2, (a / R)^2,
-  // each q40.
-  int64_t bull_a_q40, bull_rc_q40, bull_rc2_q40, bull_2arc_q40, bull_a2_q40;
+  // each q52.
+  int64_t bull_a_q52, bull_rc_q52, bull_rc2_q52, bull_2arc_q52, bull_a2_q52;
   int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
   int64_t len_v;           // shaft top above the tip, V
   int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
