@@ -98,10 +98,9 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
       const int64_t v_u = std::llround(v_nm * kSweepUnitsPerNm);
       const int64_t m_q30 = std::llround(std::ldexp(m, 30));
       const int64_t sin_q30 = std::llround(std::ldexp(m / std::sqrt(1 + m * m), 30));
-      const int64_t rho = static_cast<int64_t>(std::sqrt(double(t.r2_u) - double(v_u) * double(v_u)));
       int64_t w_abs = -1;
       ++n;
-      if (!bull_flank_w(t, m_q30, sin_q30, v_u, rho, &w_abs)) {
+      if (!bull_flank_w(t, m_q30, sin_q30, v_u, &w_abs)) {
         if (++refused <= 5) std::printf("  refused: bull %lld/%lld m=%.9g v=%lld U\n", (long long)c[0], (long long)c[1], m, (long long)v_u);
         continue;
       }

@@ -85,8 +85,9 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
       f_u = t.r_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - r2)));
       break;
     case ToolKind::kBullNose: {  // flat to a, then the torus of radius rc
+      // floor(sqrt(r2)) <= a exactly when r2 < (a + 1)^2: the flat needs no root.
+      if (r2 < (t.a_u + 1) * (t.a_u + 1)) return 0;
       const int64_t r = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2)));
-      if (r <= t.a_u) return 0;
       const int64_t d = min_of(r - t.a_u, t.rc_u);
       f_u = t.rc_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.rc2_u - d * d)));
       break;
@@ -117,6 +118,18 @@ inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
+// A bull-nose piece's w*(|v|) for the last few |v| (core/cut/bull_flank.h):
+// a cache of a pure function of the piece and |v|, so the bits are those of
+// computing it. A chained piece along x meets the previous piece's w* on
+// every row, at the same offsets (its collinear wedge): it finds them here,
+// in the copy the chain keeps. 64 slots of 8 bytes; only bull-nose pieces
+// clear and read it.
+struct BullFlankMemo {
+  static constexpr int kSlotBits = 6;
+  uint32_t v_plus1[1 << kSlotBits];  // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
+  int32_t w_u[1 << kSlotBits];       // w*, U, with its sign
+};
+
 // A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
 // declared here so that a SweepChain can hold the last one).
 struct SweepLine {
@@ -131,6 +144,7 @@ struct SweepLine {
   bool vbit_inside;          // V-bit: |m| < k
   bool level;                // dz == 0
   bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+  mutable BullFlankMemo bull_memo;  // bull nose: w* already found (a cache)
 };
 
 // floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits

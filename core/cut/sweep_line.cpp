@@ -77,9 +77,9 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
     case ToolKind::kBullNose: {
       // From the torus's contact (core/cut/bull_flank.h); the search of the
       // convex F(w) - m w where that leaves it.
-      int64_t w_abs = 0;
-      if (bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v < 0 ? -v : v, rho, &w_abs))
-        return lp.m_geo_q30 < 0 ? -w_abs : w_abs;
+      int64_t w_flank = 0;
+      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank)) return w_flank;
+      if (rho < 0) rho = rho_of(t, v2);
       int64_t lo = -rho, hi = rho;
       while (hi - lo > 2) {
         const int64_t third = (hi - lo) / 3;
@@ -98,11 +98,14 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
 }
 
 int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
-  return lp.level ? 0 : best_w_rho(t, lp, v, v2, rho_of(t, v2));
+  if (lp.level) return 0;
+  // The bull nose's w* needs no chord but where it searches (rho < 0: its own).
+  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
                  SweepLine* lp) {
+  if (t.kind == ToolKind::kBullNose) bull_flank_memo_clear(&lp->bull_memo);
   lp->za_v = za_v;
   lp->zb_v = zb_v;
   lp->level = za_v == zb_v;
