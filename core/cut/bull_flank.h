@@ -141,26 +141,31 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
   return true;
 }
 
-// Empties the memo of a piece about to be set up (bull nose only).
-inline void bull_flank_memo_clear(BullFlankMemo* m) {
-  for (uint32_t& k : m->v_plus1) k = 0;
-}
-
-// w* (signed, U) for piece lp at cross-track |v| = v_abs through its memo;
-// false as bull_flank_w (and nothing kept).
+// w* (signed, U) for piece lp at cross-track |v| = v_abs, through the
+// chain's memo when the piece has one; false as bull_flank_w (and nothing
+// kept).
 inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v_abs, int64_t* w) {
-  BullFlankMemo& m = lp.bull_memo;
+  BullFlankMemo* m = lp.bull_memo;
   const uint32_t key = static_cast<uint32_t>(v_abs + 1);
-  const unsigned slot = (key * 0x9E3779B1u) >> (32 - BullFlankMemo::kSlotBits);
-  if (m.v_plus1[slot] == key) {
-    *w = m.w_u[slot];
-    return true;
+  BullFlankMemo::Slot* e = nullptr;
+  if (m) {
+    if (m->r_u != t.r_u || m->rc_u != t.rc_u) {
+      *m = BullFlankMemo{};
+      m->r_u = t.r_u;
+      m->rc_u = t.rc_u;
+    }
+    const uint64_t h = (static_cast<uint64_t>(key) ^ static_cast<uint64_t>(lp.m_geo_q30) * 0x9E3779B97F4A7C15ull) *
+                       0xC2B2AE3D27D4EB4Full;
+    e = &m->slot[h >> (64 - BullFlankMemo::kSlotBits)];
+    if (e->v_plus1 == key && e->m_q30 == lp.m_geo_q30 && e->sin_q30 == lp.ball_sin_q30) {
+      *w = e->w_u;
+      return true;
+    }
   }
   int64_t w_abs = 0;
   if (!bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v_abs, &w_abs)) return false;
   *w = lp.m_geo_q30 < 0 ? -w_abs : w_abs;
-  m.v_plus1[slot] = key;
-  m.w_u[slot] = static_cast<int32_t>(*w);
+  if (e) *e = BullFlankMemo::Slot{lp.m_geo_q30, lp.ball_sin_q30, key, static_cast<int32_t>(*w)};
   return true;
 }
 

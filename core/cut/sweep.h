@@ -118,16 +118,22 @@ inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
-// A bull-nose piece's w*(|v|) for the last few |v| (core/cut/bull_flank.h):
-// a cache of a pure function of the piece and |v|, so the bits are those of
-// computing it. A chained piece along x meets the previous piece's w* on
-// every row, at the same offsets (its collinear wedge): it finds them here,
-// in the copy the chain keeps. 64 slots of 8 bytes; only bull-nose pieces
-// clear and read it.
+// The bull nose's w* for the last few (piece, |v|) of a chain
+// (core/cut/bull_flank.h): a cache of a pure function of the tool, the
+// piece's slope and |v|, so the bits are those of computing it. A chained
+// piece along x meets the previous piece's w* on every row, at the same
+// offsets (its collinear wedge), and finds it here. 128 slots (3 KB): the
+// rows of two pieces of a tool some 60 rows wide. Only bull-nose pieces
+// read and fill it.
 struct BullFlankMemo {
-  static constexpr int kSlotBits = 6;
-  uint32_t v_plus1[1 << kSlotBits];  // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
-  int32_t w_u[1 << kSlotBits];       // w*, U, with its sign
+  static constexpr int kSlotBits = 7;
+  struct Slot {
+    int64_t m_q30, sin_q30;  // the piece's slope (SweepLine::m_geo_q30, ball_sin_q30)
+    uint32_t v_plus1;        // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
+    int32_t w_u;             // w*, U, with its sign
+  };
+  Slot slot[1 << kSlotBits] = {};
+  int64_t r_u = 0, rc_u = 0;  // the tool the slots hold (another empties them)
 };
 
 // A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
@@ -144,7 +150,7 @@ struct SweepLine {
   bool vbit_inside;          // V-bit: |m| < k
   bool level;                // dz == 0
   bool plunge;               // no horizontal motion (or steeper than 2^24:1)
-  mutable BullFlankMemo bull_memo;  // bull nose: w* already found (a cache)
+  BullFlankMemo* bull_memo = nullptr;  // bull nose in a chain: the chain's memo
 };
 
 // floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
@@ -188,6 +194,7 @@ struct SweepChain {
   PointNm end{0, 0, 0};
   SweepLine last{};
   RootMemo roots;
+  BullFlankMemo bull_memo;
 };
 
 // Cuts a -> b as the next move of chain c (a move that does not start at

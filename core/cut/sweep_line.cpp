@@ -105,7 +105,6 @@ int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
                  SweepLine* lp) {
-  if (t.kind == ToolKind::kBullNose) bull_flank_memo_clear(&lp->bull_memo);
   lp->za_v = za_v;
   lp->zb_v = zb_v;
   lp->level = za_v == zb_v;
@@ -794,6 +793,8 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
                            : c->state == SweepChain::State::kCovered ? StartCap::kSkip
                                                                      : StartCap::kWedge;
     SweepLine lp;
+    // The bull nose's w* through the chain's memo, for this piece and the last.
+    lp.bull_memo = c->last.bull_memo = t.kind == ToolKind::kBullNose ? &c->bull_memo : nullptr;
     const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
     c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
                : e == PieceEnd::kCovered ? SweepChain::State::kCovered
