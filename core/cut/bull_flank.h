@@ -66,7 +66,7 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
   }
   const int64_t sin_abs = sin_q30 < 0 ? -sin_q30 : sin_q30;
   // nu in q30 (a column within 1/4 nm of its place: inside the backward bound).
-  const int64_t nu_q30 = (v_abs * (static_cast<int64_t>(1) << 30)) / t.r_u;
+  const int64_t nu_q30 = mul_shift_fit(v_abs, t.bull_inv_r_q62, 32);
   const int64_t nu2 = (nu_q30 * nu_q30) >> (60 - kQ);
   const int64_t beta2 = (sin_abs * sin_abs) >> (60 - kQ);
   const int64_t kappa2 = kOne - beta2;
@@ -74,38 +74,35 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
   const int64_t c2 = t.bull_a2_q52 - mul_shift_fit(kappa2, nu2, kQ) - mul_shift_fit(beta2, t.bull_rc2_q52, kQ);
   const int64_t c1 = -mul_shift_fit(beta2, t.bull_2arc_q52, kQ);
   const int64_t c0 = -mul_shift_fit(beta2, t.bull_a2_q52, kQ);
-  auto poly = [&](int64_t s) {  // Horner
-    int64_t p = c4;
-    p = mul_shift_fit(p, s, kQ) + c3;
-    p = mul_shift_fit(p, s, kQ) + c2;
-    p = mul_shift_fit(p, s, kQ) + c1;
-    return mul_shift_fit(p, s, kQ) + c0;
+  // P and P' in two halves each (Estrin's scheme), which the CPU evaluates
+  // side by side: the chain of dependent products is three long, not four.
+  auto poly = [&](int64_t s, int64_t s2) {
+    return mul_shift_fit(mul_shift_fit(c4, s2, kQ) + mul_shift_fit(c3, s, kQ) + c2, s2, kQ) +
+           (mul_shift_fit(c1, s, kQ) + c0);
   };
-  auto slope = [&](int64_t s) {
-    int64_t p = 4 * c4;
-    p = mul_shift_fit(p, s, kQ) + 3 * c3;
-    p = mul_shift_fit(p, s, kQ) + 2 * c2;
-    return mul_shift_fit(p, s, kQ) + c1;
+  auto slope = [&](int64_t s, int64_t s2) {
+    return mul_shift_fit(mul_shift_fit(4 * c4, s, kQ) + 3 * c3, s2, kQ) + (mul_shift_fit(2 * c2, s, kQ) + c1);
   };
+  auto sq = [&](int64_t s) { return mul_shift_fit(s, s, kQ); };
   const int64_t s_lo = sin_abs << (kQ - 30);  // the root is at or above sin_b
   int64_t s = kOne;
-  while ((s >> 1) > s_lo && poly(s >> 1) >= 0) s >>= 1;
+  while ((s >> 1) > s_lo && poly(s >> 1, sq(s >> 1)) >= 0) s >>= 1;
   // Then within 2^(1/8) of s* by bisecting the factor (each a polynomial,
   // no division): Newton then needs about three steps instead of five.
   constexpr int64_t kRoot2Inv_q30[3] = {759250125, 902905651, 984625594};  // 2^(-1/2), 2^(-1/4), 2^(-1/8)
   for (const int64_t f : kRoot2Inv_q30) {
     const int64_t c = mul_shift_fit(s, f, 30);
-    if (c > s_lo && poly(c) >= 0) s = c;
+    if (c > s_lo && poly(c, sq(c)) >= 0) s = c;
   }
   bool settled = false;
   int64_t last_step = INT64_MAX;
   for (int k = 0; k < kBullNewtonSteps && !settled; ++k) {
-    const int64_t d_p = slope(s);
+    const int64_t s2 = sq(s), d_p = slope(s, s2);
     if (d_p <= 0) return false;
     // P / P' in q52 with one 64-bit division: P 2^52 fits while P is
     // small (near the root); before that, P' gives up low bits instead (the
     // steps far from the root need no precision, only the last ones do).
-    const int64_t p = poly(s), p_abs = p < 0 ? -p : p;
+    const int64_t p = poly(s, s2), p_abs = p < 0 ? -p : p;
     const int up = min_of(kQ, 61 - (64 - __builtin_clzll(static_cast<uint64_t>(p_abs) | 1)));
     const int64_t den = d_p >> (kQ - up);
     if (den <= 0) return false;

@@ -53,6 +53,7 @@ struct SweepTool {
   // quartic's tool-only coefficients (rc / R)^2, 2 a rc / R^2, (a / R)^2,
   // each q52.
   int64_t bull_a_q52, bull_rc_q52, bull_rc2_q52, bull_2arc_q52, bull_a2_q52;
+  int64_t bull_inv_r_q62;  // floor(2^62 / R), R in U
   int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
   int64_t len_v;           // shaft top above the tip, V
   int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)

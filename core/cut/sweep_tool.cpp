@@ -22,6 +22,7 @@ Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) 
   t.bull_rc2_q52 = mul_shift(t.bull_rc_q52, t.bull_rc_q52, 52);
   t.bull_2arc_q52 = 2 * mul_shift(t.bull_a_q52, t.bull_rc_q52, 52);
   t.bull_a2_q52 = mul_shift(t.bull_a_q52, t.bull_a_q52, 52);
+  t.bull_inv_r_q62 = (static_cast<int64_t>(1) << 62) / t.r_u;
   t.cot_q30 = p.kind == ToolKind::kVBit ? muldiv_round(p.cone_cos_q30, static_cast<int64_t>(1) << 30, p.cone_sin_q30) : 0;
   t.lsb_nm = lsb_nm;
   t.len_v = muldiv_round(p.length_nm, static_cast<int64_t>(1) << kSweepVBits, lsb_nm);
