@@ -145,3 +145,39 @@ TEST(sweep_bull_ramps_against_oracle) {
   CHECK_EQ(bad, 0);
   CHECK_EQ(moves, 24);
 }
+
+TEST(sweep_bull_memo_gives_the_computed_bits) {
+  // The chain's memo is a cache: through it, w* is the bits bull_flank_w
+  // computes, for pieces of several slopes met in turn (as a chain's rows
+  // meet the last piece's), past collisions and evictions, and after a
+  // change of tool (which empties it).
+  std::mt19937_64 rng(7);
+  BullFlankMemo memo;
+  int differ = 0, hits = 0, calls = 0;
+  for (const int64_t rc : {1500000, 500000}) {
+    SweepTool t;
+    if (!CHECK_EQ(sweep_tool_prepare(tool_profile(bull(mm(6), rc)), 500, &t), Status::kOk)) return;
+    SweepLine pieces[3] = {};
+    const double slopes[3] = {0.05, -0.7, 0.05 + 1e-9};
+    for (int k = 0; k < 3; ++k) {
+      pieces[k].m_geo_q30 = std::llround(std::ldexp(slopes[k], 30));
+      pieces[k].ball_sin_q30 = std::llround(std::ldexp(slopes[k] / std::sqrt(1 + slopes[k] * slopes[k]), 30));
+      pieces[k].bull_memo = &memo;
+    }
+    for (int it = 0; it < 5000; ++it) {
+      const SweepLine& lp = pieces[rng() % 3];
+      const int64_t v_abs = static_cast<int64_t>(rng() % 200) * 100000;  // 200 row offsets, 25 um apart
+      int64_t w_memo = 0, w_abs = 0;
+      const bool ok_memo = bull_flank_w_memo(t, lp, v_abs, &w_memo);
+      const bool ok = bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v_abs, &w_abs);
+      const int64_t w = lp.m_geo_q30 < 0 ? -w_abs : w_abs;
+      ++calls;
+      if (ok_memo != ok || (ok && w_memo != w)) ++differ;
+      // Ask again at once: now a hit, the same bits.
+      int64_t w_again = 0;
+      if (ok && bull_flank_w_memo(t, lp, v_abs, &w_again) && w_again == w) ++hits;
+    }
+  }
+  CHECK_EQ(differ, 0);
+  CHECK_EQ(hits, calls);
+}
