@@ -108,13 +108,14 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
     if (den <= 0) return false;
     const int64_t step = (p * (static_cast<int64_t>(1) << up)) / den;
     s = clamp(s - step, s_lo, kOne);
-    // Settled when a step is 2^-12 of the scale the answer lives on (s, or
-    // 1 - s near the rim and on steep ramps, where w* ~ sqrt(1 - s)): Newton
-    // converges quadratically, so the error left after it is of the order
-    // of its square, 2^-24. Or where the steps stop shrinking below 2^-12:
-    // there P's rounding over a small P' is all that is left.
+    // Settled when a shrinking step is 2^-9 of the scale the answer lives on
+    // (s, or 1 - s near the rim and on steep ramps, where w* ~ sqrt(1 - s)):
+    // Newton converges quadratically, so the error left after it is of the
+    // order of its square, 2^-18 of the scale (w* to some 10^-5 of R, a
+    // height error below 10^-5 V). Or at 2^-11 even where the steps stop
+    // shrinking: there P's rounding over a small P' is all that is left.
     const int64_t step_abs = step < 0 ? -step : step, scale = min_of(s, kOne - s);
-    settled = step_abs <= (scale >> 12) && (step_abs <= (scale >> 14) || step_abs < last_step);
+    settled = step_abs <= (scale >> 9) && (step_abs <= (scale >> 11) || step_abs < last_step);
     last_step = step_abs;
   }
   if (!settled) return false;
