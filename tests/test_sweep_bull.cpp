@@ -125,15 +125,17 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
 
 TEST(sweep_bull_ramps_against_oracle) {
   // Ramps in 24 directions (every 15 degrees: on the axes, the diagonals and
-  // between), slopes from 1:1000 to 4:1, four corner radii: every dexel within
+  // between), slopes from 1:600 to 4:1, five corner radii (down to a 10 um
+  // sliver, whose torus is near vertical): every dexel within
   // the backward bound of the dense oracle.
   const int64_t pitch = 250000, lsb = 500;
-  const Tool tools[] = {bull(mm(8), mm(2)), bull(mm(6), 1500000), bull(mm(3), 500000), bull(mm(6), 300000)};
+  const Tool tools[] = {bull(mm(8), mm(2)), bull(mm(6), 1500000), bull(mm(3), 500000), bull(mm(6), 300000),
+                        bull(mm(6), 10000)};
   const int64_t drops_nm[] = {10000, 400000, 3000000, 24000000};
   int bad = 0, moves = 0;
   for (int dir = 0; dir < 24; ++dir) {
     const double ang = dir * 3.14159265358979323846 / 12;
-    const Tool& tool = tools[dir % 4];
+    const Tool& tool = tools[dir % 5];
     const int64_t drop = drops_nm[(dir / 4) % 4];
     const int64_t len = mm(6);
     const PointNm a{mm(8) - std::llround(len / 2 * std::cos(ang)), mm(6) - std::llround(len / 2 * std::sin(ang)), mm(20)};
