@@ -49,6 +49,11 @@ struct SweepTool {
   int64_t r_u, r2_u;       // R in U, R^2 in U^2
   int64_t a_u, rc_u;       // bull nose: flat radius a = R - rc, corner radius rc
   int64_t rc2_u;           // rc^2
+  // Bull nose on ramps (core/cut/bull_flank.h): a / R, rc / R and the
+  // quartic's tool-only coefficients (rc / R)^2, 2 a rc / R^2, (a / R)^2,
+  // each q52.
+  int64_t bull_a_q52, bull_rc_q52, bull_rc2_q52, bull_2arc_q52, bull_a2_q52;
+  int64_t bull_inv_r_q62;  // floor(2^62 / R), R in U
   int64_t cot_q30;         // V-bit: k = cot(a/2), the profile's slope dh/dr
   int64_t len_v;           // shaft top above the tip, V
   int64_t v_per_u_q32;     // U -> V: 2^32 * U / V = 2^(32+8) / (4 * lsb)
@@ -81,8 +86,9 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
       f_u = t.r_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.r2_u - r2)));
       break;
     case ToolKind::kBullNose: {  // flat to a, then the torus of radius rc
+      // floor(sqrt(r2)) <= a exactly when r2 < (a + 1)^2: the flat needs no root.
+      if (r2 < (t.a_u + 1) * (t.a_u + 1)) return 0;
       const int64_t r = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2)));
-      if (r <= t.a_u) return 0;
       const int64_t d = min_of(r - t.a_u, t.rc_u);
       f_u = t.rc_u - static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(t.rc2_u - d * d)));
       break;
@@ -113,6 +119,24 @@ inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
+// The bull nose's w* for the last few (piece, |v|) of a chain
+// (core/cut/bull_flank.h): a cache of a pure function of the tool, the
+// piece's slope and |v|, so the bits are those of computing it. A chained
+// piece along x meets the previous piece's w* on every row, at the same
+// offsets (its collinear wedge), and finds it here. 128 slots (3 KB): the
+// rows of two pieces of a tool some 60 rows wide. Only bull-nose pieces
+// read and fill it.
+struct BullFlankMemo {
+  static constexpr int kSlotBits = 7;
+  struct Slot {
+    int64_t m_q30, sin_q30;  // the piece's slope (SweepLine::m_geo_q30, ball_sin_q30)
+    uint32_t v_plus1;        // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
+    int32_t w_u;             // w*, U, with its sign
+  };
+  Slot slot[1 << kSlotBits] = {};
+  int64_t r_u = 0, rc_u = 0;  // the tool the slots hold (another empties them)
+};
+
 // A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
 // declared here so that a SweepChain can hold the last one).
 struct SweepLine {
@@ -127,6 +151,7 @@ struct SweepLine {
   bool vbit_inside;          // V-bit: |m| < k
   bool level;                // dz == 0
   bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+  BullFlankMemo* bull_memo = nullptr;  // bull nose in a chain: the chain's memo
 };
 
 // floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
@@ -170,6 +195,7 @@ struct SweepChain {
   PointNm end{0, 0, 0};
   SweepLine last{};
   RootMemo roots;
+  BullFlankMemo bull_memo;
 };
 
 // Cuts a -> b as the next move of chain c (a move that does not start at

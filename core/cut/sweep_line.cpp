@@ -11,7 +11,7 @@
 //   flat:   m = 0: 0; else sign(m) * rho, rho = sqrt(R^2 - v^2) (the rim)
 //   ball:   rho * m / sqrt(1 + m^2) (where the sphere's slope equals m)
 //   V-bit:  m*|v| / sqrt(k^2 - m^2) while inside the cone, else the rim
-//   bull:   no closed form: a ternary search of the convex F(w) - m*w
+//   bull:   the torus's contact, a quartic's root (core/cut/bull_flank.h)
 // An error in w* changes the height only to second order (w* is a minimum),
 // while the height itself is always evaluated exactly at the clamped w.
 // The ball's flank has a closed form needing no second root: with
@@ -24,6 +24,7 @@
 // |slope| < 2^24 * 64 V/U / lsb <= 2^30 V/U and |u * slope| < 2^61 V; the
 // ball's K = sqrt(1 + m^2) < 2^25, so rho * K < 2^55 U, and such a length
 // times v_per_u_q32 (<= 2^38) shifted by 32 is below 2^61 V.
+#include "core/cut/bull_flank.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
 #include "core/cut/sweep_cut.h"
@@ -74,6 +75,11 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
       return w * w + v2 <= t.r2_u ? w : rim;
     }
     case ToolKind::kBullNose: {
+      // From the torus's contact (core/cut/bull_flank.h); the search of the
+      // convex F(w) - m w where that leaves it.
+      int64_t w_flank = 0;
+      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank)) return w_flank;
+      if (rho < 0) rho = rho_of(t, v2);
       int64_t lo = -rho, hi = rho;
       while (hi - lo > 2) {
         const int64_t third = (hi - lo) / 3;
@@ -92,7 +98,9 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
 }
 
 int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
-  return lp.level ? 0 : best_w_rho(t, lp, v, v2, rho_of(t, v2));
+  if (lp.level) return 0;
+  // The bull nose's w* needs no chord but where it searches (rho < 0: its own).
+  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
@@ -785,6 +793,8 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
                            : c->state == SweepChain::State::kCovered ? StartCap::kSkip
                                                                      : StartCap::kWedge;
     SweepLine lp;
+    // The bull nose's w* through the chain's memo, for this piece and the last.
+    lp.bull_memo = c->last.bull_memo = t.kind == ToolKind::kBullNose ? &c->bull_memo : nullptr;
     const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
     c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
                : e == PieceEnd::kCovered ? SweepChain::State::kCovered

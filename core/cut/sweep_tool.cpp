@@ -15,6 +15,14 @@ Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) 
   t.rc_u = p.corner_nm * kSweepUnitsPerNm;
   t.a_u = t.r_u - t.rc_u;
   t.rc2_u = t.rc_u * t.rc_u;
+  // The bull nose's quartic (core/cut/bull_flank.h), once per tool.
+  constexpr int64_t kQ52 = static_cast<int64_t>(1) << 52;
+  t.bull_a_q52 = muldiv_round(t.a_u, kQ52, t.r_u);
+  t.bull_rc_q52 = kQ52 - t.bull_a_q52;
+  t.bull_rc2_q52 = mul_shift(t.bull_rc_q52, t.bull_rc_q52, 52);
+  t.bull_2arc_q52 = 2 * mul_shift(t.bull_a_q52, t.bull_rc_q52, 52);
+  t.bull_a2_q52 = mul_shift(t.bull_a_q52, t.bull_a_q52, 52);
+  t.bull_inv_r_q62 = (static_cast<int64_t>(1) << 62) / t.r_u;
   t.cot_q30 = p.kind == ToolKind::kVBit ? muldiv_round(p.cone_cos_q30, static_cast<int64_t>(1) << 30, p.cone_sin_q30) : 0;
   t.lsb_nm = lsb_nm;
   t.len_v = muldiv_round(p.length_nm, static_cast<int64_t>(1) << kSweepVBits, lsb_nm);
