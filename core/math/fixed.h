@@ -240,9 +240,11 @@ inline constexpr RsqrtKnots kRsqrtKnots{};
 // they stop only at r^2 <= x < (r + 1)^2.
 inline uint32_t isqrt_fast_u64(uint64_t x) {
   if (x < 4) return x ? 1u : 0u;
-  const int e = (63 - __builtin_clzll(x)) >> 1;  // sqrt(x) in [2^e, 2^(e+1))
-  // m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)).
-  const uint64_t m = 2 * e >= 30 ? x >> (2 * e - 30) : x << (30 - 2 * e);
+  // An even shift puts x's top bit at 62 or 63: sqrt(x) in [2^e, 2^(e+1)),
+  // and m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)), without a branch.
+  const int lz = __builtin_clzll(x) & ~1;
+  const int e = 31 - (lz >> 1);
+  const uint64_t m = (x << lz) >> 32;
   const uint32_t k = static_cast<uint32_t>(m >> 24) - 64;           // the knot below m, 0..191
   const uint32_t f_q16 = static_cast<uint32_t>(m >> 8) & 0xffffu;  // m's place between the knots
   const uint32_t ya = detail::kRsqrtKnots.q30[k], yb = detail::kRsqrtKnots.q30[k + 1];
@@ -253,8 +255,8 @@ inline uint32_t isqrt_fast_u64(uint64_t x) {
   const int32_t d = static_cast<int32_t>((static_cast<int64_t>(1) << 30) - static_cast<int64_t>((static_cast<uint64_t>(g) * y) >> 30));
   // s = g + g d / 2, with g halved to fit a signed 32-bit operand.
   const int64_t s = static_cast<int64_t>(g) + ((static_cast<int64_t>(static_cast<int32_t>(g >> 1)) * d) >> 30);  // sqrt(m), q30
-  uint64_t r = static_cast<uint64_t>(s);
-  r = e <= 30 ? r >> (30 - e) : r << (e - 30);
+  // sqrt(x) = s 2^(e - 30); s < 2^32, so s 2 fits and one right shift serves e = 31 too.
+  uint64_t r = (static_cast<uint64_t>(s) << 1) >> (31 - e);
   if (r > 0xffffffffu) r = 0xffffffffu;
   while (r * r > x) --r;
   while (r < 0xffffffffu && (r + 1) * (r + 1) <= x) ++r;
