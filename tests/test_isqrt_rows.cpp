@@ -179,3 +179,48 @@ TEST(isqrt_rows_mul_shift_i32) {
   CHECK(!detail::fits_i32(int64_t{INT32_MAX} + 1));
   CHECK(!detail::fits_i32(int64_t{INT32_MIN} - 1));
 }
+
+// The 32-bit CPUs' set-up paths: the 128 / 64-bit division against the
+// compiler's, and the seeded 128-bit root against the digit-by-digit one
+// (both exact: any difference is a bug).
+TEST(isqrt_rows_u128_portable) {
+  t::Rng rng(2404);
+  uint64_t bad_div = 0, bad_root = 0;
+  for (int k = 0; k < 300000; ++k) {
+    uint64_t d = rng.next() >> (rng.next() % 64);
+    if (d == 0) d = 1;
+    const U128 n{d > 1 ? (rng.next() >> (rng.next() % 64)) % d : 0, rng.next() >> (rng.next() % 64)};
+    uint64_t rem = 0;
+    const uint64_t q = divmod_u128_portable(n, d, &rem);
+#ifdef __SIZEOF_INT128__  // every host the tests run on
+    const unsigned __int128 nn = (static_cast<unsigned __int128>(n.hi) << 64) | n.lo;
+    if (q != static_cast<uint64_t>(nn / d) || rem != static_cast<uint64_t>(nn % d)) ++bad_div;
+#else
+    (void)q;
+#endif
+    const U128 v{rng.next() >> (rng.next() % 64), rng.next()};
+    if (isqrt_u128_portable(v) != isqrt_u128_bitwise(v) || isqrt_u128(v) != isqrt_u128_bitwise(v)) ++bad_root;
+  }
+  for (uint64_t d : {uint64_t{1}, uint64_t{2}, uint64_t{0xffffffffu}, uint64_t{1} << 32, UINT64_MAX, UINT64_MAX - 1, uint64_t{1} << 63}) {
+    for (U128 n : {U128{d - 1, UINT64_MAX}, U128{0, 0}, U128{0, d}, U128{d / 2, 0}}) {
+      uint64_t rem = 0;
+      const uint64_t q = divmod_u128_portable(n, d, &rem);
+#ifdef __SIZEOF_INT128__
+      const unsigned __int128 nn = (static_cast<unsigned __int128>(n.hi) << 64) | n.lo;
+      if (q != static_cast<uint64_t>(nn / d) || rem != static_cast<uint64_t>(nn % d)) ++bad_div;
+#else
+      (void)q;
+#endif
+    }
+  }
+  for (U128 v : {U128{1, 0}, U128{UINT64_MAX, UINT64_MAX}, U128{UINT64_MAX - 1, 1}, U128{0xfffffffffffffffeu, 1}, U128{1u << 31, 0},
+                 U128{0, UINT64_MAX}, U128{3, UINT64_MAX}})
+    if (isqrt_u128_portable(v) != isqrt_u128_bitwise(v)) ++bad_root;
+  for (uint64_t r = uint64_t{1} << 32; r < (uint64_t{1} << 63); r += r / 3 + 12345) {  // squares and their neighbours
+    const U128 sq = mul_wide_u64_portable(r, r);
+    const U128 below = sub_u128(sq, U128{0, 1});
+    if (isqrt_u128_portable(sq) != r || isqrt_u128_portable(below) != r - 1) ++bad_root;
+  }
+  CHECK_EQ(bad_div, uint64_t{0});
+  CHECK_EQ(bad_root, uint64_t{0});
+}

@@ -146,6 +146,11 @@ U128 shl_u128(U128 a, int s);
 // digit-by-digit path (always built, tested equal) elsewhere.
 uint64_t isqrt_u128(U128 v);
 uint64_t isqrt_u128_portable(U128 v);
+uint64_t isqrt_u128_bitwise(U128 v);  // digit by digit: the reference the tests hold both to
+// floor(n / d) and n mod d (in *rem) for n.hi < d (the quotient fits 64
+// bits), without 128-bit integers: the division of the portable paths
+// (always built, tested against the compiler's).
+uint64_t divmod_u128_portable(U128 n, uint64_t d, uint64_t* rem);
 
 // floor(a * b / 2^s) for 0 <= s < 64, saturating to the int64 range. Exact:
 // uses the compiler's 128-bit integers where the target has them and the
