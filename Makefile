@@ -116,8 +116,10 @@ clean:
 #   make cortexm   core/ + display/ freestanding for Cortex-M4/M7/M0+: flash/RAM,
 #                  and no heap, exceptions, RTTI or floating point
 #   make panel     the Cortex-M4 panel demo under qemu; its hash against the host's
+#   make panel-w3  a 256x256 job (paper-w3) cut and redrawn on the same board: its
+#                  instruction counts, its hashes against the host's
 EMBEDDED_ENV := DEXMILL_WARN='$(WARN)' DEXMILL_INTFLAGS='$(INTFLAGS)'
-.PHONY: xcheck cortexm panel
+.PHONY: xcheck cortexm panel panel-w3
 xcheck:
 	$(EMBEDDED_ENV) tools/scripts/xcheck.sh $(XCHECK_ARGS)
 # GCC may park 64-bit integers in FPU registers on hard-float CPUs (vmov,
@@ -128,6 +130,8 @@ cortexm:
 	$(EMBEDDED_ENV) tools/scripts/cortexm.sh $(CORTEXM_ARGS)
 panel:
 	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)
+panel-w3:
+	$(EMBEDDED_ENV) tools/scripts/panel_w3.sh $(PANEL_ARGS)
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
 #   make fuzz SECONDS=N           the pipeline target N seconds (default 60)

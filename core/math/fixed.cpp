@@ -3,6 +3,9 @@
 #include "core/math/fixed.h"
 
 namespace dexmill {
+namespace {
+bool u128_less(U128 a, U128 b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
+}  // namespace
 
 U128 mul_wide_u64_portable(uint64_t a, uint64_t b) {
   uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
@@ -50,9 +53,11 @@ uint64_t isqrt_u128(U128 v) {
 #endif
 }
 
-uint64_t isqrt_u128_portable(U128 v) {
-  // Digit-by-digit, two bits of v per step; rem fits in 66 bits, tracked as
-  // a U128 to stay exact.
+// Digit-by-digit, two bits of v per step (64 steps): the reference, and the
+// path for values whose seeded Newton step cannot run (the quotient of
+// v / r0 past 64 bits, near 2^128).
+uint64_t isqrt_u128_bitwise(U128 v) {
+  // rem fits in 66 bits, tracked as a U128 to stay exact.
   U128 rem{0, 0};
   uint64_t root = 0;
   for (int i = 0; i < 64; ++i) {
@@ -69,6 +74,54 @@ uint64_t isqrt_u128_portable(U128 v) {
   return root;
 }
 
+// As the 128-bit path does, on 32-bit CPUs (a piece's set-up takes one such
+// root; digit by digit it cost about 3 000 instructions on a Cortex-M4): a
+// root of the top 63 or 64 bits (31 good bits), one Newton step with the
+// 128 / 64-bit division (error below 1 after it), then the exact correction.
+uint64_t isqrt_u128_portable(U128 v) {
+  if (v.hi == 0) return isqrt_fast_u64(v.lo);
+  const int bits = 128 - __builtin_clzll(v.hi);
+  const int sh = (bits - 63) & ~1;  // even; v >> sh keeps 63 or 64 bits
+  const uint64_t top = sh >= 64 ? v.hi >> (sh - 64) : (v.lo >> sh) | (sh ? v.hi << (64 - sh) : 0);
+  const uint64_t r0 = static_cast<uint64_t>(isqrt_fast_u64(top)) << (sh / 2);  // <= sqrt(v), >= 2^32
+  if (v.hi >= r0) return isqrt_u128_bitwise(v);
+  uint64_t rem;
+  const uint64_t q = divmod_u128_portable(v, r0, &rem);
+  uint64_t r = (r0 >> 1) + (q >> 1) + (r0 & q & 1u);  // (r0 + q) / 2 without overflow
+  while (r != 0 && u128_less(v, mul_wide_u64_portable(r, r))) --r;
+  while (r != UINT64_MAX && !u128_less(v, mul_wide_u64_portable(r + 1, r + 1))) ++r;
+  return r;
+}
+
+// Hacker's Delight's divlu (Warren, figure 9-3): the divisor normalised to
+// its top bit, the quotient as two 32-bit digits, each estimated from the
+// top two digits over the divisor's top digit and corrected (at most twice).
+uint64_t divmod_u128_portable(U128 n, uint64_t d, uint64_t* rem) {
+  constexpr uint64_t kB = static_cast<uint64_t>(1) << 32;
+  const int s = __builtin_clzll(d);
+  d <<= s;
+  const uint64_t dn1 = d >> 32, dn0 = d & 0xffffffffu;
+  const uint64_t un32 = (n.hi << s) | (s ? n.lo >> (64 - s) : 0);
+  const uint64_t un10 = n.lo << s;
+  const uint64_t un1 = un10 >> 32, un0 = un10 & 0xffffffffu;
+  uint64_t q1 = un32 / dn1, rhat = un32 - q1 * dn1;
+  while (q1 >= kB || q1 * dn0 > kB * rhat + un1) {
+    --q1;
+    rhat += dn1;
+    if (rhat >= kB) break;
+  }
+  const uint64_t un21 = un32 * kB + un1 - q1 * d;  // modulo 2^64: the true value is below d
+  uint64_t q0 = un21 / dn1;
+  rhat = un21 - q0 * dn1;
+  while (q0 >= kB || q0 * dn0 > kB * rhat + un0) {
+    --q0;
+    rhat += dn1;
+    if (rhat >= kB) break;
+  }
+  *rem = (un21 * kB + un0 - q0 * d) >> s;
+  return q1 * kB + q0;
+}
+
 namespace {
 
 // (q, rem) of n / d for a 128-bit n and 64-bit d != 0; q saturates at 2^64-1
@@ -79,18 +132,7 @@ void divmod_u128(U128 n, uint64_t d, uint64_t* q, uint64_t* rem) {
     *rem = 0;
     return;
   }
-  uint64_t r = n.hi, quo = 0;
-  for (int i = 63; i >= 0; --i) {
-    uint64_t top = r >> 63;
-    r = (r << 1) | ((n.lo >> i) & 1u);
-    quo <<= 1;
-    if (top || r >= d) {
-      r -= d;
-      quo |= 1u;
-    }
-  }
-  *q = quo;
-  *rem = r;
+  *q = divmod_u128_portable(n, d, rem);
 }
 
 }  // namespace

@@ -146,6 +146,11 @@ U128 shl_u128(U128 a, int s);
 // digit-by-digit path (always built, tested equal) elsewhere.
 uint64_t isqrt_u128(U128 v);
 uint64_t isqrt_u128_portable(U128 v);
+uint64_t isqrt_u128_bitwise(U128 v);  // digit by digit: the reference the tests hold both to
+// floor(n / d) and n mod d (in *rem) for n.hi < d (the quotient fits 64
+// bits), without 128-bit integers: the division of the portable paths
+// (always built, tested against the compiler's).
+uint64_t divmod_u128_portable(U128 n, uint64_t d, uint64_t* rem);
 
 // floor(a * b / 2^s) for 0 <= s < 64, saturating to the int64 range. Exact:
 // uses the compiler's 128-bit integers where the target has them and the
@@ -153,6 +158,18 @@ uint64_t isqrt_u128_portable(U128 v);
 // The portable path of mul_shift, always built (tests compare the two).
 // A pure function: `const` lets callers' repeated products share one call.
 __attribute__((const)) int64_t mul_shift_portable(int64_t a, int64_t b, int s);
+namespace detail {
+// 32-bit CPUs: most of the sweep's products (offsets in U, slopes, q30
+// factors, the U -> V scale) have both operands within int32, where the
+// exact product is one 32 x 32 -> 64 instruction and its floor shift fits
+// int64: the same bits as the portable four-product path, which costs about
+// ten times as many instructions on a Cortex-M4. (Defined everywhere, so
+// that tests compare it with the portable path on any host.)
+inline bool fits_i32(int64_t v) { return v == static_cast<int32_t>(v); }
+inline int64_t mul_shift_i32(int64_t a, int64_t b, int s) {
+  return (static_cast<int64_t>(static_cast<int32_t>(a)) * static_cast<int32_t>(b)) >> s;
+}
+}  // namespace detail
 inline int64_t mul_shift(int64_t a, int64_t b, int s) {
 #ifdef __SIZEOF_INT128__
   const __int128 p = static_cast<__int128>(a) * b;
@@ -161,6 +178,7 @@ inline int64_t mul_shift(int64_t a, int64_t b, int s) {
   if (q < INT64_MIN) return INT64_MIN;
   return static_cast<int64_t>(q);
 #else
+  if (detail::fits_i32(a) && detail::fits_i32(b)) return detail::mul_shift_i32(a, b, s);
   return mul_shift_portable(a, b, s);
 #endif
 }
@@ -172,6 +190,7 @@ inline int64_t mul_shift_fit(int64_t a, int64_t b, int s) {
 #ifdef __SIZEOF_INT128__
   return static_cast<int64_t>((static_cast<__int128>(a) * b) >> s);
 #else
+  if (detail::fits_i32(a) && detail::fits_i32(b)) return detail::mul_shift_i32(a, b, s);
   return mul_shift_portable(a, b, s);
 #endif
 }
@@ -183,9 +202,10 @@ uint32_t isqrt_u64(uint64_t v);
 // sqrt(v) rounded to nearest: |result - sqrt(v)| <= 0.5 (for v > (2^32-0.5)^2
 // the result saturates at 2^32 - 1, error < 1).
 uint32_t isqrt_round_u64(uint64_t v);
-// floor(sqrt(v)), exact like isqrt_u64, for inner loops: a table seed and
-// two multiply-only Newton steps on 1/sqrt (no division), then an exact
-// correction of the last bit or two. Same bits as isqrt_u64 (tested).
+// floor(sqrt(v)), exact like isqrt_u64, for inner loops: an interpolated
+// table seed and one multiply-only Newton step (no division), then an exact
+// correction of the last bit or two. Same bits as isqrt_u64 (tested, also
+// along the sweep's rows: tests/test_isqrt_rows.cpp).
 namespace detail {
 constexpr uint64_t isqrt_constexpr(uint64_t v) {  // bisection, v < 2^62
   uint64_t lo = 0, hi = static_cast<uint64_t>(1) << 31;
@@ -195,31 +215,54 @@ constexpr uint64_t isqrt_constexpr(uint64_t v) {  // bisection, v < 2^62
   }
   return lo;
 }
-// 1/sqrt(m) for m = (t + 0.5) / 64 in [1, 4), t = 64..255, as q30, from
-// sqrt(2^37 / (2t + 1)) * 2^15 (about 15 good bits; Newton doubles them).
-struct RsqrtSeed {
-  uint32_t q30[192];
-  constexpr RsqrtSeed() : q30() {
-    for (int t = 64; t < 256; ++t)
-      q30[t - 64] = static_cast<uint32_t>(isqrt_constexpr((static_cast<uint64_t>(1) << 37) / (2u * t + 1u)) << 15);
+// 1/sqrt(m) at the knots m = t / 64 in [1, 4], t = 64..256, as q30:
+// floor(sqrt(2^66 / t)), 2^66 / t taken as 16 floor(2^62 / t) plus the
+// remainder's share (exact: floor(sqrt(floor(a))) = floor(sqrt(a))).
+struct RsqrtKnots {
+  uint32_t q30[193];
+  constexpr RsqrtKnots() : q30() {
+    for (uint64_t t = 64; t <= 256; ++t) {
+      const uint64_t n = 16 * ((static_cast<uint64_t>(1) << 62) / t) + 16 * ((static_cast<uint64_t>(1) << 62) % t) / t;
+      q30[t - 64] = static_cast<uint32_t>(isqrt_constexpr(n));
+    }
   }
 };
-inline constexpr RsqrtSeed kRsqrtSeed{};
+inline constexpr RsqrtKnots kRsqrtKnots{};
 }  // namespace detail
 
+// Why this shape: the sweep takes one root per band column (the ball's half
+// chord), and along a row the root moves by about 10^5 U a column (median,
+// scale-1k's 3 mm ball on a 0.1 mm grid): carried from the column before,
+// a Newton step still misses by about 10^3 U, so each column seeds afresh.
+// The seed is 1/sqrt(m) interpolated between knots 1/64 apart: rsqrt is
+// convex, so the chord lies above it, by at most h^2/8 max|f''| = 2^-15.4
+// relative (the knots are floored: below it by at most a q30 unit). One
+// Newton step for sqrt(m) with the seed as its reciprocal, s = g (1 + (1 -
+// g y) / 2) with g = m y, leaves 1.5 * 2^-30.8 relative plus the truncations:
+// the estimate is within 1 of the root for x < 2^58 and within 3 above
+// (measured over every octave). Every product is 32 x 32 -> 64 bits (one
+// instruction on a Cortex-M4), and the chain is four products deep where two
+// Newton steps on 1/sqrt were seven. The correction loops make the result
+// exact whatever the estimate: they stop only at r^2 <= x < (r + 1)^2.
 inline uint32_t isqrt_fast_u64(uint64_t x) {
   if (x < 4) return x ? 1u : 0u;
-  const int e = (63 - __builtin_clzll(x)) >> 1;  // sqrt(x) in [2^e, 2^(e+1))
-  // m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)).
-  const uint64_t m = 2 * e >= 30 ? x >> (2 * e - 30) : x << (30 - 2 * e);
-  uint64_t y = detail::kRsqrtSeed.q30[(m >> 24) - 64];
-  for (int it = 0; it < 2; ++it) {  // y <- y (3 - m y^2) / 2
-    const uint64_t my = (m * y) >> 30;
-    const uint64_t my2 = (my * y) >> 30;
-    y = (y * ((static_cast<uint64_t>(3) << 30) - my2)) >> 31;
-  }
-  const uint64_t s = (m * y) >> 30;  // sqrt(m), q30
-  uint64_t r = e <= 30 ? s >> (30 - e) : s << (e - 30);
+  // An even shift puts x's top bit at 62 or 63: sqrt(x) in [2^e, 2^(e+1)),
+  // and m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)), without a branch.
+  const int lz = __builtin_clzll(x) & ~1;
+  const int e = 31 - (lz >> 1);
+  const uint64_t m = (x << lz) >> 32;
+  const uint32_t k = static_cast<uint32_t>(m >> 24) - 64;           // the knot below m, 0..191
+  const uint32_t f_q16 = static_cast<uint32_t>(m >> 8) & 0xffffu;  // m's place between the knots
+  const uint32_t ya = detail::kRsqrtKnots.q30[k], yb = detail::kRsqrtKnots.q30[k + 1];
+  // ya - yb < 2^23, so the product fits 39 bits; y in [2^29, 2^30].
+  const uint32_t y = ya - static_cast<uint32_t>((static_cast<uint64_t>(ya - yb) * f_q16) >> 16);
+  const uint32_t g = static_cast<uint32_t>((static_cast<uint64_t>(static_cast<uint32_t>(m)) * y) >> 30);  // < 2^31 + 2^16
+  // 1 - g y in q30: |d| < 2^17 for a seed within 2^-15.
+  const int32_t d = static_cast<int32_t>((static_cast<int64_t>(1) << 30) - static_cast<int64_t>((static_cast<uint64_t>(g) * y) >> 30));
+  // s = g + g d / 2, with g halved to fit a signed 32-bit operand.
+  const int64_t s = static_cast<int64_t>(g) + ((static_cast<int64_t>(static_cast<int32_t>(g >> 1)) * d) >> 30);  // sqrt(m), q30
+  // sqrt(x) = s 2^(e - 30); s < 2^32, so s 2 fits and one right shift serves e = 31 too.
+  uint64_t r = (static_cast<uint64_t>(s) << 1) >> (31 - e);
   if (r > 0xffffffffu) r = 0xffffffffu;
   while (r * r > x) --r;
   while (r < 0xffffffffu && (r + 1) * (r + 1) <= x) ++r;

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# panel_w3.sh - a 256 x 256 job on the Cortex-M4 panel (`make panel-w3`):
+# paper-w3's path (written as a header by tests/golden/w3_path_dump.cpp from
+# tools/workloads.cpp) cut by exact sweeps and redrawn incrementally by
+# tests/golden/panel_w3_main.cpp, built like panel.sh's demo for the host
+# and for qemu's MPS2 AN386 (-icount shift=0: SysTick counts instructions).
+# Every output line not starting with "info" must be equal; the board's
+# info lines are the instruction counts (at 1 instruction a cycle, n / 168
+# is microseconds on a 168 MHz part).
+#
+# Usage: tools/scripts/panel_w3.sh [--no-install] [-w DIR (default build/panel_w3)] [-T SEC (default 300)]
+# Exit: 0 equal; 1 different output or a run failed; 2 a build failed or usage.
+set -u
+cd "$(dirname "$0")/../.."
+WORK=build/panel_w3; TMO=300; INSTALL=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    -w) WORK=$2; shift 2;; -T) TMO=$2; shift 2;; --no-install) INSTALL=0; shift;;
+    *) sed -n '2,/^set -u/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 2;;
+  esac
+done
+WARN=${DEXMILL_WARN:--Wall -Wextra -Werror -Wshadow -Wvla -Wundef}
+INTFLAGS=${DEXMILL_INTFLAGS:--fno-exceptions -fno-rtti -include core/integer_only.h}
+[ $INSTALL = 1 ] && { tools/scripts/install-deps.sh cross || echo "panel_w3: installing the toolchain failed" >&2; }
+for c in g++ arm-none-eabi-g++ qemu-system-arm; do command -v $c >/dev/null || { echo "panel_w3: $c missing (tools/scripts/install-deps.sh cross)" >&2; exit 2; }; done
+rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
+
+# The path, from the bench's own workload code (host, floating point).
+g++ -std=c++17 -O2 $WARN -I. tests/golden/w3_path_dump.cpp tools/workloads.cpp core/grid/grid.cpp core/math/fixed.cpp \
+  -o "$WORK/w3_path_dump" && "$WORK/w3_path_dump" > "$WORK/w3_path.h" || { echo "panel_w3: path generation failed"; exit 2; }
+
+INT_SRC="$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort) tests/golden/panel_w3_main.cpp tests/golden/golden_out.cpp"
+# build KIND CXX FLAGS BOARD_SOURCES... -> objects in $objs
+build() {
+  local kind=$1 cxx=$2 fl=$3 s o; shift 3; objs=()
+  for s in $INT_SRC; do
+    o="$WORK/$kind/$(echo "${s%.*}" | tr / _).o"
+    $cxx -std=c++17 $fl $WARN -I. -I"$WORK" $INTFLAGS -c "$s" -o "$o" || return 1; objs+=("$o")
+  done
+  for s in "$@"; do
+    o="$WORK/$kind/$(basename "${s%.*}").o"
+    case $s in
+      *.c) arm-none-eabi-gcc $fl -Wall -Wextra -Werror -c "$s" -o "$o" || return 1;;
+      *) $cxx -std=c++17 $fl $WARN -I. -fno-exceptions -fno-rtti -c "$s" -o "$o" || return 1;;
+    esac
+    objs+=("$o")
+  done
+}
+CM4="-mthumb -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -ffunction-sections -fdata-sections"
+build host g++ "-O2" tests/golden/board_host.cpp && g++ "${objs[@]}" -o "$WORK/host/panel_w3" ||
+  { echo "panel_w3: host build failed"; exit 2; }
+build cm4 arm-none-eabi-g++ "$CM4" tests/golden/cm/board_semihost.cpp tests/golden/cm/startup.c &&
+  arm-none-eabi-g++ $CM4 "${objs[@]}" -nostartfiles --specs=nano.specs -T tests/golden/cm/mps2.ld \
+    -Wl,--gc-sections -Wl,--no-warn-rwx-segments -o "$WORK/cm4/panel_w3.elf" ||
+  { echo "panel_w3: Cortex-M4 build failed"; exit 2; }
+
+fail=0
+"$WORK/host/panel_w3" > "$WORK/host/stdout" 2> "$WORK/host/stderr" || { echo "panel_w3: host run failed (rc $?)"; fail=1; }
+timeout -k 5 "$TMO" qemu-system-arm -M mps2-an386 -icount shift=0 -nographic -monitor none -serial none \
+  -chardev stdio,id=semi0 -semihosting-config enable=on,target=native,chardev=semi0 \
+  -kernel "$WORK/cm4/panel_w3.elf" < /dev/null > "$WORK/cm4/stdout" 2> "$WORK/cm4/stderr" || { echo "panel_w3: qemu run failed (rc $?)"; fail=1; }
+echo "--- Cortex-M4 (qemu mps2-an386) output"
+cat "$WORK/cm4/stdout"
+if [ $fail = 0 ] && diff <(grep -v '^info' "$WORK/host/stdout") <(grep -v '^info' "$WORK/cm4/stdout") > "$WORK/diff.txt"; then
+  echo "RESULT: PASS (Cortex-M4 output equals the host build's, $(grep -vc '^info' "$WORK/host/stdout") lines)"
+  exit 0
+fi
+echo "--- host vs Cortex-M4 (non-info lines)"; head -20 "$WORK/diff.txt"
+echo "RESULT: FAIL"
+exit 1
