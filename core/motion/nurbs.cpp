@@ -67,7 +67,7 @@ int64_t param(int32_t span, uint32_t i, uint32_t log2m) {
 bool piece_flat(const NurbsCurve& c, int32_t span, int64_t a, int64_t b, int64_t s_nm) {
   const int32_t d = c.order - 1;
   int64_t px[kNurbsMaxOrder], py[kNurbsMaxOrder];
-  int64_t u[kNurbsMaxOrder];
+  int64_t u[kNurbsMaxOrder] = {};  // (zeroed: GCC 12 cannot see that order >= 3 fills it)
   for (int32_t m = 0; m <= d; ++m) {
     for (int32_t r = 0; r < d; ++r) u[r] = r < d - m ? a : b;
     point_of(c, span, u, &px[m], &py[m]);
@@ -137,7 +137,7 @@ void nurbs_point(const NurbsCurve& c, int32_t span, uint32_t i, uint32_t m, int6
     *y_nm = c.y_nm[0];
     return;
   }
-  int64_t u[kNurbsMaxOrder];
+  int64_t u[kNurbsMaxOrder] = {};  // (zeroed: GCC 12 cannot see that order >= 3 fills it)
   // u = span + 1 belongs to the next span's formula as well; this span's
   // gives the same point (the curve is continuous).
   const int64_t at = param(span, i, log2m);

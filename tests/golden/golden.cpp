@@ -12,6 +12,7 @@ const Section kSections[] = {
     {"mill", golden_mill},
     {"path", golden_path},
     {"flow", golden_flow},
+    {"motion", golden_motion},
     {"frame", golden_frame},
     {"safety", golden_safety},
     {"texture", golden_texture},

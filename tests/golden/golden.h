@@ -66,6 +66,7 @@ void golden_stamp(Out& out);  // golden_stamp.cpp: grid hashes of cutting progra
 void golden_mill(Out& out);   // golden_mill.cpp: a G-code program cut by core/mill (sweep, stamp), m = 8/16/32
 void golden_path(Out& out);   // golden_mill.cpp: the same program's canonical records and arc chords, hashed
 void golden_flow(Out& out);   // golden_mill.cpp: a program of expressions and o-word loops and calls, traced
+void golden_motion(Out& out);  // golden_motion.cpp: G33/G33.1, G95, G43.2, M70-M73, rotation, NURBS, traced
 void golden_frame(Out& out);  // golden_frame.cpp: frames in both pixel and z formats, full and incremental
 void golden_safety(Out& out);  // golden_safety.cpp: one finding of each safety check, traced to its line
 void golden_texture(Out& out);  // golden_texture.cpp: noise, textures and material presets (core/material)
