@@ -63,6 +63,15 @@ inline PointNm frame_of_machine(const InterpState& s, const PointNm& m) {
   const PointNm& o = s.work_offset[s.coord_system];
   return rotate_about(xy_rotation_inverse(xy_rotation(s.rotation_deg_e9[s.coord_system])), m, o.x_nm, o.y_nm);
 }
+// Whether a turned frame (in a or b) moves between a and b: another system,
+// turn or origin. Then the tool's point is worked out anew (Interp::reframe_tool).
+inline bool frame_moved(const InterpState& a, const InterpState& b) {
+  if (!rotated(a) && !rotated(b)) return false;  // the machine frame both ways
+  const PointNm& oa = a.work_offset[a.coord_system];
+  const PointNm& ob = b.work_offset[b.coord_system];
+  return a.coord_system != b.coord_system || a.rotation_deg_e9[a.coord_system] != b.rotation_deg_e9[b.coord_system] ||
+         oa.x_nm != ob.x_nm || oa.y_nm != ob.y_nm;
+}
 // A feed tied to the spindle (G33/G33.1's K, G95's F): length per revolution
 // times rpm. Lengths <= 1e10 nm and S <= 1e9 rpm: saturated rather than
 // wrapped; the time estimate counts a feed at most at 1e6 mm/min anyway.

@@ -173,13 +173,7 @@ void BlockRunner::commit() {
   // G10 on the system in force, or an M72 that restores another, under a
   // turned frame: the tool stays, its point is worked out in the new frame
   // (a G54-G59.3 word was, before the block ran). Neither moves in the block.
-  if ((rotated(cur) || rotated(nx)) && b.g[kGCoordSystem] < 0 && plan.motion == Plan::kNone) {
-    const PointNm& o0 = cur.work_offset[cur.coord_system];
-    const PointNm& o1 = nx.work_offset[nx.coord_system];
-    if (cur.coord_system != nx.coord_system || cur.rotation_deg_e9[cur.coord_system] != nx.rotation_deg_e9[nx.coord_system] ||
-        o0.x_nm != o1.x_nm || o0.y_nm != o1.y_nm)
-      Interp::reframe_tool(&nx, cur);
-  }
+  if (b.g[kGCoordSystem] < 0 && plan.motion == Plan::kNone && frame_moved(cur, nx)) Interp::reframe_tool(&nx, cur);
   const PointNm start = tool_at(cur);
   I.state_ = nx;
   CanonRecord r{};
@@ -354,7 +348,9 @@ GcodeError Interp::context_return(int level, uint32_t line, uint16_t col, GcodeD
   }
   InterpState s = state_;
   modal_context_apply(c, &s);
-  // The spindle stays where it is: the tool tip moves by the offset's change (as G43).
+  // A turned frame given back: the tool stays, its point worked out anew;
+  // the spindle stays where it is: the tool tip moves by the offset's change (as G43).
+  if (frame_moved(state_, s)) reframe_tool(&s, state_);
   s.pos.z_nm -= s.tlo_nm - state_.tlo_nm;
   CanonRecord r{};
   r.line = line;
