@@ -16,6 +16,7 @@
 #include "core/motion/interp.h"
 #include "core/tool/tool.h"
 #include "tests/golden/golden.h"
+#include "tests/golden/path_hash.h"
 
 using namespace dexmill;
 
@@ -137,31 +138,6 @@ void mill_one(Out& out, CutMode mode) {
   out.kv("status", static_cast<int64_t>(mill.status())).end();
 }
 
-// Hashes every record and every arc chord point (1 um sagitta).
-class PathHash : public CanonSink {
- public:
-  void emit(const CanonRecord& r) override {
-    ++records;
-    h.uint_le(static_cast<uint8_t>(r.kind), 1);
-    h.uint_le(r.line, 4);
-    if (r.kind == CanonKind::kArc) {
-      ArcChords c;
-      c.init(r, 1000);
-      PointNm p;
-      while (c.next(&p)) point(p);
-    } else {
-      point(r.end);
-    }
-  }
-  void point(const PointNm& p) {
-    h.uint_le(static_cast<uint64_t>(p.x_nm), 8);
-    h.uint_le(static_cast<uint64_t>(p.y_nm), 8);
-    h.uint_le(static_cast<uint64_t>(p.z_nm), 8);
-    ++points;
-  }
-  Hash64 h;
-  int64_t records = 0, points = 0;
-};
 
 }  // namespace
 

@@ -6,11 +6,10 @@
 #include <string.h>
 
 #include "core/gcode/params.h"
-#include "core/math/hash.h"
-#include "core/motion/arc_chords.h"
 #include "core/motion/interp.h"
 #include "core/motion/oword_store.h"
 #include "tests/golden/golden.h"
+#include "tests/golden/path_hash.h"
 
 namespace golden {
 
@@ -55,34 +54,6 @@ const char kMotionProgram[] =
     "G0 X0 Y0 Z10\n"
     "M2\n";
 
-class MotionHash : public CanonSink {
- public:
-  void emit(const CanonRecord& r) override {
-    ++records;
-    h.uint_le(static_cast<uint8_t>(r.kind), 1);
-    h.uint_le(r.line, 4);
-    h.uint_le(static_cast<uint64_t>(r.feed_nm_per_min), 8);
-    h.uint_le(static_cast<uint64_t>(r.spindle_rpm), 4);
-    h.uint_le(r.coolant, 1);
-    h.uint_le(static_cast<uint64_t>(r.tool_length_offset_nm), 8);
-    if (r.kind == CanonKind::kArc) {
-      ArcChords c;
-      c.init(r, 1000);
-      PointNm p;
-      while (c.next(&p)) point(p);
-    } else {
-      point(r.end);
-    }
-  }
-  void point(const PointNm& p) {
-    h.uint_le(static_cast<uint64_t>(p.x_nm), 8);
-    h.uint_le(static_cast<uint64_t>(p.y_nm), 8);
-    h.uint_le(static_cast<uint64_t>(p.z_nm), 8);
-    ++points;
-  }
-  Hash64 h;
-  int64_t records = 0, points = 0;
-};
 
 }  // namespace
 
@@ -92,7 +63,7 @@ void golden_motion(Out& out) {
   InterpOptions opt;
   opt.params = &params;
   opt.control = &control;
-  MotionHash mh;
+  PathHash mh(true);
   Interp in(&mh, opt);
   const int errors = static_cast<int>(interp_run_text(&in, kMotionProgram, strlen(kMotionProgram), nullptr));
   out.str("motion").kv("records", mh.records).kv("points", mh.points).kx("trace", mh.h.value()).kv("errors", errors).end();

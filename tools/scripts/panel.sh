@@ -27,23 +27,7 @@ for c in g++ arm-none-eabi-g++ qemu-system-arm; do command -v $c >/dev/null || {
 INT_SRC="$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort) tests/golden/panel_main.cpp tests/golden/golden_out.cpp"
 rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
 
-# build KIND CXX FLAGS BOARD_SOURCES... -> $WORK/KIND/obj list in $objs
-build() {
-  local kind=$1 cxx=$2 fl=$3 s o; shift 3; objs=()
-  for s in $INT_SRC; do
-    o="$WORK/$kind/$(echo "${s%.*}" | tr / _).o"
-    $cxx -std=c++17 $fl $WARN -I. $INTFLAGS -c "$s" -o "$o" || return 1; objs+=("$o")
-  done
-  for s in "$@"; do
-    o="$WORK/$kind/$(basename "${s%.*}").o"
-    case $s in
-      *.c) arm-none-eabi-gcc $fl -Wall -Wextra -Werror -c "$s" -o "$o" || return 1;;
-      *) $cxx -std=c++17 $fl $WARN -I. -fno-exceptions -fno-rtti -c "$s" -o "$o" || return 1;;
-    esac
-    objs+=("$o")
-  done
-}
-CM4="-mthumb -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -ffunction-sections -fdata-sections"
+. "$(dirname "$0")/panel_build.sh"  # build(), CM4
 build host g++ "-O2" tests/golden/board_host.cpp && g++ "${objs[@]}" -o "$WORK/host/panel" ||
   { echo "panel: host build failed"; exit 2; }
 build cm4 arm-none-eabi-g++ "$CM4" tests/golden/cm/board_semihost.cpp tests/golden/cm/startup.c &&

@@ -30,23 +30,8 @@ g++ -std=c++17 -O2 $WARN -I. tests/golden/w3_path_dump.cpp tools/workloads.cpp c
   -o "$WORK/w3_path_dump" && "$WORK/w3_path_dump" > "$WORK/w3_path.h" || { echo "panel_w3: path generation failed"; exit 2; }
 
 INT_SRC="$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort) tests/golden/panel_w3_main.cpp tests/golden/golden_out.cpp"
-# build KIND CXX FLAGS BOARD_SOURCES... -> objects in $objs
-build() {
-  local kind=$1 cxx=$2 fl=$3 s o; shift 3; objs=()
-  for s in $INT_SRC; do
-    o="$WORK/$kind/$(echo "${s%.*}" | tr / _).o"
-    $cxx -std=c++17 $fl $WARN -I. -I"$WORK" $INTFLAGS -c "$s" -o "$o" || return 1; objs+=("$o")
-  done
-  for s in "$@"; do
-    o="$WORK/$kind/$(basename "${s%.*}").o"
-    case $s in
-      *.c) arm-none-eabi-gcc $fl -Wall -Wextra -Werror -c "$s" -o "$o" || return 1;;
-      *) $cxx -std=c++17 $fl $WARN -I. -fno-exceptions -fno-rtti -c "$s" -o "$o" || return 1;;
-    esac
-    objs+=("$o")
-  done
-}
-CM4="-mthumb -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -ffunction-sections -fdata-sections"
+BUILD_INC="-I$WORK"  # the generated path header
+. "$(dirname "$0")/panel_build.sh"  # build(), CM4
 build host g++ "-O2" tests/golden/board_host.cpp && g++ "${objs[@]}" -o "$WORK/host/panel_w3" ||
   { echo "panel_w3: host build failed"; exit 2; }
 build cm4 arm-none-eabi-g++ "$CM4" tests/golden/cm/board_semihost.cpp tests/golden/cm/startup.c &&
