@@ -13,21 +13,10 @@
 set -u
 cd "$(dirname "$0")/../.."
 ROOT=$(pwd)
-WORK=build/panel; TMO=300; INSTALL=1
-while [ $# -gt 0 ]; do
-  case $1 in
-    -w) WORK=$2; shift 2;; -T) TMO=$2; shift 2;; --no-install) INSTALL=0; shift;;
-    *) sed -n '2,/^set -u/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 2;;
-  esac
-done
-WARN=${DEXMILL_WARN:--Wall -Wextra -Werror -Wshadow -Wvla -Wundef}
-INTFLAGS=${DEXMILL_INTFLAGS:--fno-exceptions -fno-rtti -include core/integer_only.h}
-[ $INSTALL = 1 ] && { tools/scripts/install-deps.sh cross || echo "panel: installing the toolchain failed" >&2; }
-for c in g++ arm-none-eabi-g++ qemu-system-arm; do command -v $c >/dev/null || { echo "panel: $c missing (tools/scripts/install-deps.sh cross)" >&2; exit 2; }; done
+. "$(dirname "$0")/panel_build.sh"  # panel_setup, build(), CM4
+panel_setup panel build/panel "$@"
 INT_SRC="$(find core display -name "*.cpp" 2>/dev/null | LC_ALL=C sort) tests/golden/panel_main.cpp tests/golden/golden_out.cpp"
-rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
 
-. "$(dirname "$0")/panel_build.sh"  # build(), CM4
 build host g++ "-O2" tests/golden/board_host.cpp && g++ "${objs[@]}" -o "$WORK/host/panel" ||
   { echo "panel: host build failed"; exit 2; }
 build cm4 arm-none-eabi-g++ "$CM4" tests/golden/cm/board_semihost.cpp tests/golden/cm/startup.c &&
