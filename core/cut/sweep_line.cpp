@@ -60,7 +60,10 @@ int64_t rho_of(const SweepTool& t, int64_t v2) {
 
 // w*(v): the unclamped minimiser of F(w) - m*w (see the file comment), given
 // rho = rho_of(v2) (rows along x share it between pieces and neighbours).
-inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
+// With bull_f_q8, a bull nose's F(w*) from its contact (core/cut/bull_flank.h,
+// U q8), or kBullNoHeight: then the profile gives it.
+inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho,
+                          int64_t* bull_f_q8 = nullptr) {
   if (lp.level) return 0;
   if (t.kind == ToolKind::kBall) return mul_shift_fit(rho, lp.ball_sin_q30, 30);  // the common case first
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
@@ -78,7 +81,8 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
       // From the torus's contact (core/cut/bull_flank.h); the search of the
       // convex F(w) - m w where that leaves it.
       int64_t w_flank = 0;
-      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank)) return w_flank;
+      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank, bull_f_q8)) return w_flank;
+      if (bull_f_q8) *bull_f_q8 = kBullNoHeight;
       if (rho < 0) rho = rho_of(t, v2);
       int64_t lo = -rho, hi = rho;
       while (hi - lo > 2) {
@@ -97,10 +101,17 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
   return 0;
 }
 
-int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
+int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t* bull_f_q8 = nullptr) {
   if (lp.level) return 0;
   // The bull nose's w* needs no chord but where it searches (rho < 0: its own).
-  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
+  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2), bull_f_q8);
+}
+
+// The flank's F(w*) in V: a bull nose's from its contact when it came with
+// w* (bull_f_q8 >= 0), else the profile at r^2 = ws2.
+inline int64_t flank_profile_v(const SweepTool& t, int64_t bull_f_q8, int64_t ws2) {
+  // bull_f_q8 <= rc 2^8 < 2^38, v_per_u_q32 < 2^39: the product fits 128 bits.
+  return bull_f_q8 >= 0 ? mul_shift_fit(bull_f_q8, t.v_per_u_q32, 40) : sweep_profile_v(t, min_of(ws2, t.r2_u));
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
@@ -598,12 +609,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
         const int64_t rho = need_rho ? rho_memo(t, v2, caps.roots) : 0;
-        const int64_t ws = best_w_rho(t, lp, v, v2, rho);
+        // The bull nose's flank height comes with its w* (one a row).
+        int64_t bull_f_q8 = kBullNoHeight;
+        const int64_t ws = best_w_rho(t, lp, v, v2, rho, &bull_f_q8);
         const int64_t ws2 = ws * ws + v2;
-        const int64_t flank_v =
-            t.kind == ToolKind::kBall
-                ? lp.za_v + ball_flank_v(t, lp, rho)
-                : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
+        const int64_t flank_v = t.kind == ToolKind::kBall
+                                    ? lp.za_v + ball_flank_v(t, lp, rho)
+                                    : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + flank_profile_v(t, bull_f_q8, ws2);
         const bool flank_reaches = ws2 <= reach2;
         // Collinear wedge: the previous piece's w* on this row, once.
         const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
@@ -698,7 +710,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
-        int64_t w = 0, rho = 0;
+        int64_t w = 0, rho = 0, bull_f_q8 = kBullNoHeight;
         int side = 0;
         if (u < wr.lo) {
           side = -1;
@@ -709,7 +721,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
             rho = rho_of(t, v2);
             w = best_w_rho(t, lp, v, v2, rho);
           } else {
-            w = best_w(t, lp, v, v2);
+            w = best_w(t, lp, v, v2, &bull_f_q8);  // a bull nose's flank height with it
           }
           side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
         }
@@ -724,7 +736,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         if (r2 > reach2) continue;
         const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
                                 ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
-                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) +
+                                      flank_profile_v(t, side == 0 ? bull_f_q8 : kBullNoHeight, r2);
         row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
     }
