@@ -101,7 +101,7 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
   std::mt19937_64 rng(24);
   const int64_t corners[][2] = {{mm(6), 50000}, {mm(6), mm(1) + 500000}, {mm(3), 500000}, {mm(8), mm(2)},
                                 {mm(6), 2900000}, {mm(20), mm(1)}};
-  int worse = 0, refused = 0, n = 0, worse_f = 0, no_height = 0;
+  int worse = 0, refused = 0, n = 0, worse_f = 0, no_height = 0, beyond = 0;
   double worst = 0, worst_f = 0;
   for (const auto& c : corners) {
     const Tool tool = bull(c[0], c[1]);
@@ -124,6 +124,13 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
         continue;
       }
       const double w_nm = (m < 0 ? -1.0 : 1.0) * double(w_abs) / kSweepUnitsPerNm;
+      // sweep_line.cpp's w_range_of: |w*| <= a + rc sin_b + 2^-12 R + 4 U,
+      // which decides sides without the solve.
+      const int64_t sin_abs = sin_q30 < 0 ? -sin_q30 : sin_q30;
+      const int64_t w_max = t.a_u + ((t.rc_u * sin_abs) >> 30) + (t.r_u >> 12) + 4;
+      if (w_abs > w_max && ++beyond <= 5)
+        std::printf("  bull %lld/%lld m=%.9g v=%lld U: |w*| %lld U beyond %lld U\n", (long long)c[0], (long long)c[1],
+                    m, (long long)v_u, (long long)w_abs, (long long)w_max);
       const double m_used = std::ldexp(double(m_q30), -30), v_used = double(v_u) / kSweepUnitsPerNm;
       // Backward, as core/cut/sweep.h states the bound: no higher than the
       // minimum of the column moved 1 nm outwards (the minimum grows with
@@ -158,6 +165,7 @@ TEST(sweep_bull_flank_w_is_the_minimum) {
               worst_f, no_height);
   CHECK_EQ(worse, 0);
   CHECK_EQ(worse_f, 0);
+  CHECK_EQ(beyond, 0);
   // Given up only near the rim (cos(phi) < 2^-8): under a tenth of these
   // cases, a fifth of which sit at the rim on purpose.
   CHECK(no_height * 10 < n);
@@ -226,10 +234,11 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
 }
 
 TEST(sweep_bull_closed_form_flank_against_oracle) {
-  // The flank's closed-form height (core/cut/bull_flank.h) where it is
-  // written: ramps in 40 pseudo-random directions and along both axes
-  // (the x-parallel rows' path: once a row, mirrored rows when the move
-  // is on a row or half way between), slopes from 1:10^5 to 8:1, corner
+  // The flank's closed-form height (core/cut/bull_flank.h, written in the
+  // general-direction loop) and the bull's w* range (sides decided without
+  // the solve): ramps in 28 pseudo-random directions and along both axes
+  // (the x-parallel rows' path, mirrored rows when the move is on a row or
+  // half way between), slopes from 1:10^5 to 8:1, corner
   // radii from 5 um slivers to nearly a ball, single moves and collinear
   // chains along x (the memo, the wedge); every dexel within the backward
   // bound of the dense oracle.

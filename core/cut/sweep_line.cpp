@@ -60,10 +60,7 @@ int64_t rho_of(const SweepTool& t, int64_t v2) {
 
 // w*(v): the unclamped minimiser of F(w) - m*w (see the file comment), given
 // rho = rho_of(v2) (rows along x share it between pieces and neighbours).
-// With bull_f_q8, a bull nose's F(w*) from its contact (core/cut/bull_flank.h,
-// U q8), or kBullNoHeight: then the profile gives it.
-inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho,
-                          int64_t* bull_f_q8 = nullptr) {
+inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
   if (lp.level) return 0;
   if (t.kind == ToolKind::kBall) return mul_shift_fit(rho, lp.ball_sin_q30, 30);  // the common case first
   const int64_t rim = sign_of(lp.m_geo_q30) * rho;
@@ -81,8 +78,7 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
       // From the torus's contact (core/cut/bull_flank.h); the search of the
       // convex F(w) - m w where that leaves it.
       int64_t w_flank = 0;
-      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank, bull_f_q8)) return w_flank;
-      if (bull_f_q8) *bull_f_q8 = kBullNoHeight;
+      if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &w_flank)) return w_flank;
       if (rho < 0) rho = rho_of(t, v2);
       int64_t lo = -rho, hi = rho;
       while (hi - lo > 2) {
@@ -101,17 +97,29 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
   return 0;
 }
 
-int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t* bull_f_q8 = nullptr) {
+int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
   if (lp.level) return 0;
   // The bull nose's w* needs no chord but where it searches (rho < 0: its own).
-  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2), bull_f_q8);
+  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
 }
 
-// The flank's F(w*) in V: a bull nose's from its contact when it came with
-// w* (bull_f_q8 >= 0), else the profile at r^2 = ws2.
-inline int64_t flank_profile_v(const SweepTool& t, int64_t bull_f_q8, int64_t ws2) {
-  // bull_f_q8 <= rc 2^8 < 2^38, v_per_u_q32 < 2^39: the product fits 128 bits.
-  return bull_f_q8 >= 0 ? mul_shift_fit(bull_f_q8, t.v_per_u_q32, 40) : sweep_profile_v(t, min_of(ws2, t.r2_u));
+// A bull nose's w* (as best_w) with its flank height F(w*), U q8, from its
+// contact (core/cut/bull_flank.h), or kBullNoHeight: the profile gives it.
+// Kept apart from best_w_rho, whose ball fast path is sensitive to its
+// shape (an unused pointer argument there cost paper-w3's ball sweep 0.7%
+// in instructions).
+struct BullW {
+  int64_t w, f_q8;
+};
+BullW best_w_bull(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
+  BullW r{0, kBullNoHeight};
+  if (lp.level) return r;
+  if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &r.w, &r.f_q8)) return r;
+  // The solver refused (outside its slopes, or unsettled): the search, and
+  // the profile for the height.
+  r.f_q8 = kBullNoHeight;
+  r.w = best_w_rho(t, lp, v, v2, rho);
+  return r;
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
@@ -367,11 +375,31 @@ int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
 struct WRange {
   int64_t lo, hi;
 };
+//
+// The bull nose's w* has m's sign and |w*| <= a + rc sin_b: with s = sin(phi)
+// >= sin_b (core/cut/bull_flank.h), |w*| = m rho cot(phi) = m (a sqrt(1 -
+// s^2) / s + rc sqrt(1 - s^2)), both terms falling with s, so at most its
+// value at s = sin_b, where m cot(phi) = 1: a + rc sin_b (the column on
+// the track, v = 0). Widened by 2^-12 R + 4 U for the solver's roundings
+// (m and sin_b are each rounded to 2^-31, relative 2^-15 at the gentlest
+// slope it takes, 2^-16: m cot(phi_b) = 1 to 2^-14);
+// only where the solver answers (its slopes): the search it falls back on
+// minimises rounded costs, which may tie beyond.
 WRange w_range_of(const SweepTool& t, const SweepLine& lp) {
   if (lp.plunge || lp.level) return WRange{0, 0};
-  if (t.kind != ToolKind::kBall) return WRange{-t.r_u, t.r_u};
-  const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
-  return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
+  if (t.kind == ToolKind::kBall) {  // the common case first
+    const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
+    return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
+  }
+  if (t.kind == ToolKind::kBullNose) {
+    const int64_t m_abs = lp.m_geo_q30 < 0 ? -lp.m_geo_q30 : lp.m_geo_q30;
+    if (m_abs < (static_cast<int64_t>(1) << 14) || m_abs > (static_cast<int64_t>(1) << 34))
+      return WRange{-t.r_u, t.r_u};
+    const int64_t sin_abs = lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30;
+    const int64_t w_max = min_of(t.a_u + mul_shift_fit(t.rc_u, sin_abs, 30) + (t.r_u >> 12) + 4, t.r_u);
+    return lp.m_geo_q30 < 0 ? WRange{-w_max, 0} : WRange{0, w_max};
+  }
+  return WRange{-t.r_u, t.r_u};
 }
 
 // u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
@@ -609,13 +637,16 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
         const int64_t rho = need_rho ? rho_memo(t, v2, caps.roots) : 0;
-        // The bull nose's flank height comes with its w* (one a row).
-        int64_t bull_f_q8 = kBullNoHeight;
-        const int64_t ws = best_w_rho(t, lp, v, v2, rho, &bull_f_q8);
+        // A bull nose's flank height from the profile here: once a row, so
+        // its closed form (general loop below) would save one profile a
+        // row, and every way of threading it through measured cost the
+        // ball's rows 0.4-1% in instructions (paper-w3).
+        const int64_t ws = best_w_rho(t, lp, v, v2, rho);
         const int64_t ws2 = ws * ws + v2;
-        const int64_t flank_v = t.kind == ToolKind::kBall
-                                    ? lp.za_v + ball_flank_v(t, lp, rho)
-                                    : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + flank_profile_v(t, bull_f_q8, ws2);
+        const int64_t flank_v =
+            t.kind == ToolKind::kBall
+                ? lp.za_v + ball_flank_v(t, lp, rho)
+                : lp.za_v - mul_shift_fit(ws, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(ws2, t.r2_u));
         const bool flank_reaches = ws2 <= reach2;
         // Collinear wedge: the previous piece's w* on this row, once.
         const int64_t ws_prev = collinear ? best_w_rho(t, *caps.prev, v, v2, rho) : 0;
@@ -710,7 +741,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
-        int64_t w = 0, rho = 0, bull_f_q8 = kBullNoHeight;
+        int64_t w = 0, rho = 0, bull_f_q8 = kBullNoHeight;  // a bull nose's flank height, with w*
         int side = 0;
         if (u < wr.lo) {
           side = -1;
@@ -720,8 +751,12 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
             rho = rho_of(t, v2);
             w = best_w_rho(t, lp, v, v2, rho);
+          } else if (t.kind == ToolKind::kBullNose) {
+            const BullW bw = best_w_bull(t, lp, v, v2, -1);
+            w = bw.w;
+            bull_f_q8 = bw.f_q8;
           } else {
-            w = best_w(t, lp, v, v2, &bull_f_q8);  // a bull nose's flank height with it
+            w = best_w(t, lp, v, v2);
           }
           side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
         }
@@ -734,10 +769,15 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
+        // The flank of a ball or a bull nose in closed form (the bull's F(w*)
+        // came with w*, U q8: <= rc 2^8 < 2^38, times v_per_u_q32 < 2^39
+        // fits 128 bits); caps, and a bull's flank its contact gave up, from
+        // the profile (one call site: it stays inlined).
         const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
                                 ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
                                 : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) +
-                                      flank_profile_v(t, side == 0 ? bull_f_q8 : kBullNoHeight, r2);
+                                      (side == 0 && bull_f_q8 >= 0 ? mul_shift_fit(bull_f_q8, t.v_per_u_q32, 40)
+                                                                   : sweep_profile_v(t, min_of(r2, t.r2_u)));
         row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
     }
