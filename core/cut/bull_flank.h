@@ -48,59 +48,11 @@ namespace dexmill {
 
 constexpr int kBullNewtonSteps = 16;
 
-// The tool's height over the flank column without the profile's two roots
-// (the ball's flank has one closed form, sweep_line.cpp's ball_flank_v; this
-// is the bull nose's). The column sits at (w, v), w = the rounded w*, at
-// radius r = sqrt(w^2 + v^2) from the axis, and its height above the tip is
-// f(r) = rc - sqrt(rc^2 - (r - a)^2) (the profile, sweep.h). The solver's s
-// gives the torus point at rho = a + rc s, where
-//   f(rho) = rc (1 - cos(phi)),  f'(rho) = tan(phi) = s / cos(phi),
-//   f''(rho) = 1 / (rc cos(phi)^3),
-// and cos(phi) = sqrt(1 - s^2) is the root the solver takes for w* anyway.
-// At the exact contact r = rho (w* = rho cos(theta), v = rho sin(theta)),
-// and with s and w rounded r - rho is small, so
-//   f(r) = rc (1 - cos(phi)) + tan(phi) (r - rho) + O((r - rho)^2 f''),
-//   r - rho = (r^2 - rho^2) / (r + rho) = D / (2 rho) + O((r - rho)^2 / rho),
-// D = w^2 + v^2 - rho^2: the height of the real tool point over the column
-// (the profile at r, what sweep_profile_v computes with two roots, and the
-// height the search evaluated) to second order in r - rho, with one
-// division and no root. It is given up (kBullNoHeight: the caller takes the
-// profile) where that second order is not small: near the rim (cos(phi)
-// < 2^-8, where f'' grows as cos^-3), when D is large or r is past R.
-constexpr int64_t kBullNoHeight = -1;
-
-// f(sqrt(w^2 + v^2)) (U q8) from the contact s (q52) and cos(phi) = sqrt(1 -
-// s^2) (q40), as derived above; kBullNoHeight where it is given up.
-inline int64_t bull_flank_height_q8(const SweepTool& t, int64_t s_q52, int64_t cos_q40, int64_t v_abs, int64_t w_abs) {
-  // Near the rim (cos(phi) < 2^-8) the second order is not small: the profile.
-  if (cos_q40 < (static_cast<int64_t>(1) << 32) || w_abs * w_abs + v_abs * v_abs > t.r2_u) return kBullNoHeight;
-  // rho = a + rc s in U q8 (< 2^39), and D 2^8 from its whole and fraction
-  // parts: D = w^2 + v^2 - rho_i^2 - 2 rho_i fr - fr^2, fr = rho - rho_i.
-  const int64_t rho_q8 = (t.a_u << 8) + mul_shift_fit(t.rc_u, s_q52, 44);
-  const int64_t rho_i = rho_q8 >> 8, fr_q8 = rho_q8 & 255;
-  const int64_t d0 = w_abs * w_abs + v_abs * v_abs - rho_i * rho_i;  // U^2, |.| < 2^62
-  // |D| < 2^31 U^2: r - rho < 2^31 / (2 rho), under a micrometre for any
-  // tool of a millimetre; beyond, the rounded inputs are not near the contact.
-  if (d0 > (static_cast<int64_t>(1) << 31) || d0 < -(static_cast<int64_t>(1) << 31)) return kBullNoHeight;
-  const int64_t d_q8 = d0 * 256 - 2 * rho_i * fr_q8 - ((fr_q8 * fr_q8) >> 8);  // |.| < 2^40
-  // tan(phi) (r - rho) = s D / (2 rho cos(phi)): the denominator in U (at
-  // least 2^-7 rho, cos(phi) >= 2^-8), the numerator with s in q22 (< 2^62).
-  const int64_t den_u = mul_shift_fit(2 * rho_q8, cos_q40, 48);
-  if (den_u < 256) return kBullNoHeight;
-  const int64_t corr_q8 = (d_q8 * (s_q52 >> 30)) / (den_u << 22);
-  // rc (1 - cos(phi)) in q8: rc < 2^30 U, cos_q40 <= 2^40.
-  return (t.rc_u << 8) - mul_shift_fit(t.rc_u, cos_q40, 32) + corr_q8;
-}
-
 // w* for the column at cross-track |v| = v_abs (U) of a piece with slope
 // m_q30 (dz/ds, q30) and sin_q30 = m / sqrt(1 + m^2): *w_abs = |w*| in U (its
 // sign is m's). The contact is on the tool, so w*^2 + v^2 <= R^2 but for
-// the roundings (callers clamp r^2 to R^2). With f_q8: the profile's height
-// f(r) at r = sqrt(w_abs^2 + v_abs^2), U q8 (above), or kBullNoHeight.
-// False: search instead.
-inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int64_t v_abs, int64_t* w_abs,
-                         int64_t* f_q8 = nullptr) {
-  if (f_q8) *f_q8 = kBullNoHeight;
+// the roundings (callers clamp r^2 to R^2). False: search instead.
+inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int64_t v_abs, int64_t* w_abs) {
   // q52: a gentle ramp's root is near sin_b (2^-16 at the least) and its
   // coefficients near sin_b^2; q52 keeps 20 bits of them, and every value
   // below (|coefficients|, s <= 4) times s fits a 128-bit product.
@@ -185,15 +137,13 @@ inline bool bull_flank_w(const SweepTool& t, int64_t m_q30, int64_t sin_q30, int
   const int64_t cos_theta_q30 = min_of((num << sh) / ((s_q40 << sh) >> 30), static_cast<int64_t>(1) << 30);
   const int64_t rho_c_u = t.a_u + mul_shift_fit(t.rc_u, s, kQ);
   *w_abs = mul_shift_fit(rho_c_u, cos_theta_q30, 30);
-  if (f_q8) *f_q8 = bull_flank_height_q8(t, s, sq_q40, v_abs, *w_abs);
   return true;
 }
 
 // w* (signed, U) for piece lp at cross-track |v| = v_abs, through the
-// chain's memo when the piece has one, and with f_q8 the height there (as
-// bull_flank_w's); false as bull_flank_w (and nothing kept).
-inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v_abs, int64_t* w,
-                              int64_t* f_q8 = nullptr) {
+// chain's memo when the piece has one; false as bull_flank_w (and nothing
+// kept).
+inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v_abs, int64_t* w) {
   BullFlankMemo* m = lp.bull_memo;
   const uint32_t key = static_cast<uint32_t>(v_abs + 1);
   BullFlankMemo::Slot* e = nullptr;
@@ -208,15 +158,13 @@ inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v
     e = &m->slot[h >> (64 - BullFlankMemo::kSlotBits)];
     if (e->v_plus1 == key && e->m_q30 == lp.m_geo_q30 && e->sin_q30 == lp.ball_sin_q30) {
       *w = e->w_u;
-      if (f_q8) *f_q8 = e->f_q8;
       return true;
     }
   }
-  int64_t w_abs = 0, f = kBullNoHeight;
-  if (!bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v_abs, &w_abs, &f)) return false;
+  int64_t w_abs = 0;
+  if (!bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v_abs, &w_abs)) return false;
   *w = lp.m_geo_q30 < 0 ? -w_abs : w_abs;
-  if (f_q8) *f_q8 = f;
-  if (e) *e = BullFlankMemo::Slot{lp.m_geo_q30, lp.ball_sin_q30, f, key, static_cast<int32_t>(*w)};
+  if (e) *e = BullFlankMemo::Slot{lp.m_geo_q30, lp.ball_sin_q30, key, static_cast<int32_t>(*w)};
   return true;
 }
 

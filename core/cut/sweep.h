@@ -123,14 +123,13 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
 // (core/cut/bull_flank.h): a cache of a pure function of the tool, the
 // piece's slope and |v|, so the bits are those of computing it. A chained
 // piece along x meets the previous piece's w* on every row, at the same
-// offsets (its collinear wedge), and finds it here. 128 slots (4 KB): the
+// offsets (its collinear wedge), and finds it here. 128 slots (3 KB): the
 // rows of two pieces of a tool some 60 rows wide. Only bull-nose pieces
 // read and fill it.
 struct BullFlankMemo {
   static constexpr int kSlotBits = 7;
   struct Slot {
     int64_t m_q30, sin_q30;  // the piece's slope (SweepLine::m_geo_q30, ball_sin_q30)
-    int64_t f_q8;            // the height over the column there, U q8, or kBullNoHeight
     uint32_t v_plus1;        // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
     int32_t w_u;             // w*, U, with its sign
   };

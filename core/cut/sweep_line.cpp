@@ -103,25 +103,6 @@ int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
   return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
 }
 
-// A bull nose's w* (as best_w) with its flank height F(w*), U q8, from its
-// contact (core/cut/bull_flank.h), or kBullNoHeight: the profile gives it.
-// Kept apart from best_w_rho, whose ball fast path is sensitive to its
-// shape (an unused pointer argument there cost paper-w3's ball sweep 0.7%
-// in instructions).
-struct BullW {
-  int64_t w, f_q8;
-};
-BullW best_w_bull(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
-  BullW r{0, kBullNoHeight};
-  if (lp.level) return r;
-  if (bull_flank_w_memo(t, lp, v < 0 ? -v : v, &r.w, &r.f_q8)) return r;
-  // The solver refused (outside its slopes, or unsettled): the search, and
-  // the profile for the height.
-  r.f_q8 = kBullNoHeight;
-  r.w = best_w_rho(t, lp, v, v2, rho);
-  return r;
-}
-
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
                  SweepLine* lp) {
   lp->za_v = za_v;
@@ -375,31 +356,11 @@ int64_t rho_memo(const SweepTool& t, int64_t v2, RootMemo* m) {
 struct WRange {
   int64_t lo, hi;
 };
-//
-// The bull nose's w* has m's sign and |w*| <= a + rc sin_b: with s = sin(phi)
-// >= sin_b (core/cut/bull_flank.h), |w*| = m rho cot(phi) = m (a sqrt(1 -
-// s^2) / s + rc sqrt(1 - s^2)), both terms falling with s, so at most its
-// value at s = sin_b, where m cot(phi) = 1: a + rc sin_b (the column on
-// the track, v = 0). Widened by 2^-12 R + 4 U for the solver's roundings
-// (m and sin_b are each rounded to 2^-31, relative 2^-15 at the gentlest
-// slope it takes, 2^-16: m cot(phi_b) = 1 to 2^-14);
-// only where the solver answers (its slopes): the search it falls back on
-// minimises rounded costs, which may tie beyond.
 WRange w_range_of(const SweepTool& t, const SweepLine& lp) {
   if (lp.plunge || lp.level) return WRange{0, 0};
-  if (t.kind == ToolKind::kBall) {  // the common case first
-    const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
-    return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
-  }
-  if (t.kind == ToolKind::kBullNose) {
-    const int64_t m_abs = lp.m_geo_q30 < 0 ? -lp.m_geo_q30 : lp.m_geo_q30;
-    if (m_abs < (static_cast<int64_t>(1) << 14) || m_abs > (static_cast<int64_t>(1) << 34))
-      return WRange{-t.r_u, t.r_u};
-    const int64_t sin_abs = lp.ball_sin_q30 < 0 ? -lp.ball_sin_q30 : lp.ball_sin_q30;
-    const int64_t w_max = min_of(t.a_u + mul_shift_fit(t.rc_u, sin_abs, 30) + (t.r_u >> 12) + 4, t.r_u);
-    return lp.m_geo_q30 < 0 ? WRange{-w_max, 0} : WRange{0, w_max};
-  }
-  return WRange{-t.r_u, t.r_u};
+  if (t.kind != ToolKind::kBall) return WRange{-t.r_u, t.r_u};
+  const int64_t w_r = mul_shift_fit(t.r_u, lp.ball_sin_q30, 30);
+  return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
 }
 
 // u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
@@ -637,10 +598,6 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
         const int64_t rho = need_rho ? rho_memo(t, v2, caps.roots) : 0;
-        // A bull nose's flank height from the profile here: once a row, so
-        // its closed form (general loop below) would save one profile a
-        // row, and every way of threading it through measured cost the
-        // ball's rows 0.4-1% in instructions (paper-w3).
         const int64_t ws = best_w_rho(t, lp, v, v2, rho);
         const int64_t ws2 = ws * ws + v2;
         const int64_t flank_v =
@@ -741,7 +698,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         // computing w* (a square root for ramps).
         // The lowest point: behind the start (w = u), beyond the end
         // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
-        int64_t w = 0, rho = 0, bull_f_q8 = kBullNoHeight;  // a bull nose's flank height, with w*
+        int64_t w = 0, rho = 0;
         int side = 0;
         if (u < wr.lo) {
           side = -1;
@@ -751,10 +708,6 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
             rho = rho_of(t, v2);
             w = best_w_rho(t, lp, v, v2, rho);
-          } else if (t.kind == ToolKind::kBullNose) {
-            const BullW bw = best_w_bull(t, lp, v, v2, -1);
-            w = bw.w;
-            bull_f_q8 = bw.f_q8;
           } else {
             w = best_w(t, lp, v, v2);
           }
@@ -769,15 +722,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         }
         const int64_t r2 = w * w + v2;
         if (r2 > reach2) continue;
-        // The flank of a ball or a bull nose in closed form (the bull's F(w*)
-        // came with w*, U q8: <= rc 2^8 < 2^38, times v_per_u_q32 < 2^39
-        // fits 128 bits); caps, and a bull's flank its contact gave up, from
-        // the profile (one call site: it stays inlined).
         const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
                                 ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
-                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) +
-                                      (side == 0 && bull_f_q8 >= 0 ? mul_shift_fit(bull_f_q8, t.v_per_u_q32, 40)
-                                                                   : sweep_profile_v(t, min_of(r2, t.r2_u)));
+                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
         row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
     }
