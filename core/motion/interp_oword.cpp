@@ -254,7 +254,7 @@ GcodeError Interp::run_oword(const char* text, size_t len, uint32_t line, GcodeD
       }
       ++c.level;
       p.level = c.level;
-      contexts_[c.level].valid = false;  // a new call starts with nothing saved
+      contexts_[c.level].valid = false;  // a called level starts with nothing saved
       c.looped = true;
       c.loop_line = line;
       return GcodeError::kOk;

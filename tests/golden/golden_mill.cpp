@@ -156,18 +156,26 @@ void golden_path(Out& out) {
   out.str("path").kv("records", ph.records).kv("points", ph.points).kx("trace", ph.h.value()).kv("errors", errors).end();
 }
 
-void golden_flow(Out& out) {
-  // The parameters' and the control flow's memory, as a panel keeps it.
+int trace_with_flow(const char* program, PathHash* sink, int64_t* blocks) {
+  // The parameters' and the control flow's memory, as a panel keeps it (one
+  // set for every section that needs it: they run one after another).
   static ParamStore params;
   static OwordStore control;
   InterpOptions opt;
   opt.params = &params;
   opt.control = &control;
+  Interp in(sink, opt);
+  const int errors = static_cast<int>(interp_run_text(&in, program, strlen(program), nullptr));
+  if (blocks) *blocks = static_cast<int64_t>(control.blocks);
+  return errors;
+}
+
+void golden_flow(Out& out) {
   PathHash ph;
-  Interp in(&ph, opt);
-  const int errors = static_cast<int>(interp_run_text(&in, kFlowProgram, strlen(kFlowProgram), nullptr));
+  int64_t blocks = 0;
+  const int errors = trace_with_flow(kFlowProgram, &ph, &blocks);
   out.str("flow").kv("records", ph.records).kv("points", ph.points).kx("trace", ph.h.value()).kv("errors", errors);
-  out.kv("blocks", static_cast<int64_t>(control.blocks)).end();
+  out.kv("blocks", blocks).end();
 }
 
 }  // namespace golden

@@ -3,11 +3,6 @@
 // a G18 arc turned out of its plane as chords) and a NURBS (de Boor in
 // q48, rational shares in q62, the hull test's chord counts). Every record's
 // kind, line, feed and points hashed.
-#include <string.h>
-
-#include "core/gcode/params.h"
-#include "core/motion/interp.h"
-#include "core/motion/oword_store.h"
 #include "tests/golden/golden.h"
 #include "tests/golden/path_hash.h"
 
@@ -58,14 +53,8 @@ const char kMotionProgram[] =
 }  // namespace
 
 void golden_motion(Out& out) {
-  static ParamStore params;
-  static OwordStore control;
-  InterpOptions opt;
-  opt.params = &params;
-  opt.control = &control;
   PathHash mh(true);
-  Interp in(&mh, opt);
-  const int errors = static_cast<int>(interp_run_text(&in, kMotionProgram, strlen(kMotionProgram), nullptr));
+  const int errors = trace_with_flow(kMotionProgram, &mh, nullptr);
   out.str("motion").kv("records", mh.records).kv("points", mh.points).kx("trace", mh.h.value()).kv("errors", errors).end();
 }
 

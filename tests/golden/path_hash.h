@@ -48,6 +48,10 @@ class PathHash : public dexmill::CanonSink {
   bool with_state_;
 };
 
+// Runs `program` with parameters and o-words (golden_mill.cpp), into sink;
+// its o-word blocks run in *blocks when not null. Returns the errors.
+int trace_with_flow(const char* program, PathHash* sink, int64_t* blocks);
+
 }  // namespace golden
 
 #endif

@@ -39,3 +39,27 @@ panel_setup() {
   done
   rm -rf "$WORK"; mkdir -p "$WORK/host" "$WORK/cm4"; WORK=$(cd "$WORK" && pwd)
 }
+
+# panel_compare NAME: runs $WORK/host/NAME and $WORK/cm4/NAME.elf under qemu
+# (mps2-an386, instruction counter on), prints the board's output and exits 0
+# when its lines other than `info` equal the host's, 1 otherwise.
+panel_compare() {
+  local name=$1 fail=0 t0 t1 t2
+  t0=$(date +%s.%N)
+  "$WORK/host/$name" > "$WORK/host/stdout" 2> "$WORK/host/stderr" || { echo "$name: host run failed (rc $?)"; fail=1; }
+  t1=$(date +%s.%N)
+  timeout -k 5 "$TMO" qemu-system-arm -M mps2-an386 -icount shift=0 -nographic -monitor none -serial none \
+    -chardev stdio,id=semi0 -semihosting-config enable=on,target=native,chardev=semi0 \
+    -kernel "$WORK/cm4/$name.elf" < /dev/null > "$WORK/cm4/stdout" 2> "$WORK/cm4/stderr" || { echo "$name: qemu run failed (rc $?)"; fail=1; }
+  t2=$(date +%s.%N)
+  echo "$name: host run $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }') s, qemu run $(awk -v a="$t1" -v b="$t2" 'BEGIN { printf "%.2f", b - a }') s"
+  echo "--- Cortex-M4 (qemu mps2-an386) output"
+  cat "$WORK/cm4/stdout"
+  if [ $fail = 0 ] && diff <(grep -v '^info' "$WORK/host/stdout") <(grep -v '^info' "$WORK/cm4/stdout") > "$WORK/diff.txt"; then
+    echo "RESULT: PASS (Cortex-M4 output equals the host build's, $(grep -vc '^info' "$WORK/host/stdout") lines)"
+    exit 0
+  fi
+  echo "--- host vs Cortex-M4 (non-info lines)"; head -20 "$WORK/diff.txt"
+  echo "RESULT: FAIL"
+  exit 1
+}
