@@ -15,7 +15,8 @@
 namespace dexmill {
 
 // Numbers are stable: tests and users may quote them. Add at the end of a range.
-enum class GcodeError : uint8_t {
+// 16 bits: 0..255 are used, and numbers are never reused.
+enum class GcodeError : uint16_t {
   kOk = 0,
   // -- reading the line (1..39)
   kLineTooLong = 1,
@@ -196,7 +197,7 @@ enum class GcodeError : uint8_t {
   kNurbsWeight = 252,
   kNurbsNoStart = 253,
   kNurbsTooFew = 254,
-  kNurbsTooMany = 255,  // the last number a uint8_t holds: widen the enum before adding
+  kNurbsTooMany = 255,
 };
 
 // Stable number of an error, for messages and tests.
