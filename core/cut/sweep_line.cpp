@@ -762,6 +762,19 @@ void for_each_piece(PointNm a, PointNm b, F piece) {
   }
 }
 
+// A bull-nose piece of chain c (and the last one) use the chain's memo,
+// with row slots (sweep.h, BullFlankMemo) on a grid of pitch_nm > 0 (half a
+// pitch is 2 p U), hashed ones for 0 (SweepTool::bull_row_shortcuts off);
+// the pieces' ways alternate. Not inlined: the other tools' chains compile
+// as without it.
+__attribute__((noinline)) void bull_chain_memo(int64_t pitch_nm, SweepChain* c, SweepLine* lp) {
+  lp->bull_memo = c->last.bull_memo = &c->bull_memo;
+  const uint64_t half_u = 2 * static_cast<uint64_t>(pitch_nm);
+  c->bull_memo.row_inv_q32 = pitch_nm > 0 ? ((static_cast<uint64_t>(1) << 32) + half_u - 1) / half_u : 0;
+  lp->bull_way = c->bull_memo.next_way;
+  c->bull_memo.next_way ^= 1;
+}
+
 }  // namespace
 
 template <class H>
@@ -794,7 +807,10 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
                                                                      : StartCap::kWedge;
     SweepLine lp;
     // The bull nose's w* through the chain's memo, for this piece and the last.
-    lp.bull_memo = c->last.bull_memo = t.kind == ToolKind::kBullNose ? &c->bull_memo : nullptr;
+    if (t.kind == ToolKind::kBullNose)
+      bull_chain_memo(t.bull_row_shortcuts ? g->pitch_nm : 0, c, &lp);
+    else
+      lp.bull_memo = c->last.bull_memo = nullptr;
     const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
     c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
                : e == PieceEnd::kCovered ? SweepChain::State::kCovered
