@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
-#include <vector>
 
 #include "core/cut/bull_flank.h"
 #include "core/cut/sweep.h"
@@ -150,13 +149,16 @@ TEST(sweep_bull_ramps_against_oracle) {
 }
 
 TEST(sweep_bull_memo_gives_the_computed_bits) {
-  // The chain's memo is a cache: through it, w* is the bits bull_flank_w
-  // computes, for pieces of several slopes met in turn (as a chain's rows
-  // meet the last piece's), past collisions and evictions, and after a
-  // change of tool (which empties it).
+  // The chain's memo is a cache: through it (hashed slots, or row slots
+  // with the pieces in ways 0, 1, 0), w* is the bits bull_flank_w computes,
+  // for pieces of several slopes met in turn (as a chain's rows meet the
+  // last piece's), past collisions and evictions, and after a change of
+  // tool (which empties it).
   std::mt19937_64 rng(7);
-  BullFlankMemo memo;
   int differ = 0, hits = 0, calls = 0;
+  for (const uint64_t row_inv : {uint64_t{0}, ((uint64_t{1} << 32) + 49999) / 50000}) {  // a 25 um pitch's
+  BullFlankMemo memo;
+  memo.row_inv_q32 = row_inv;
   for (const int64_t rc : {1500000, 500000}) {
     SweepTool t;
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(bull(mm(6), rc)), 500, &t), Status::kOk)) return;
@@ -166,6 +168,7 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
       pieces[k].m_geo_q30 = std::llround(std::ldexp(slopes[k], 30));
       pieces[k].ball_sin_q30 = std::llround(std::ldexp(slopes[k] / std::sqrt(1 + slopes[k] * slopes[k]), 30));
       pieces[k].bull_memo = &memo;
+      pieces[k].bull_way = static_cast<uint8_t>(k & 1);
     }
     for (int it = 0; it < 5000; ++it) {
       const SweepLine& lp = pieces[rng() % 3];
@@ -181,84 +184,8 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
       if (ok && bull_flank_w_memo(t, lp, v_abs, &w_again) && w_again == w) ++hits;
     }
   }
+  }
   CHECK_EQ(differ, 0);
   CHECK_EQ(hits, calls);
 }
 
-namespace {
-
-// A raster of bull-nose ramps along x, chained: passes in both directions
-// over a bumpy surface, the track on a row, half way between two or
-// anywhere (mirrored rows or not), steps across between passes, now and then
-// a level stretch, a move along y or a diagonal (which break the collinear
-// wedge), pieces from a few um to a few mm.
-std::vector<PointNm> raster_path(double size_mm, double r_mm, double pitch_mm, std::mt19937_64* rng) {
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * u01(*rng); };
-  const double amp = rnd(0.1, 3.0), fx = rnd(0.3, 2.0), fy = rnd(0.3, 2.0);
-  auto z_at = [&](double x, double y) { return 20 + amp * std::sin(x / fx) * std::cos(y / fy); };
-  std::vector<PointNm> p;
-  auto at = [&](double x, double y, double z) {
-    p.push_back(PointNm{std::llround(x * 1e6), std::llround(y * 1e6), std::llround(z * 1e6)});
-  };
-  double y = r_mm;
-  bool forward = true;
-  while (y < size_mm - r_mm) {
-    const double x0 = forward ? r_mm : size_mm - r_mm, x1 = forward ? size_mm - r_mm : r_mm;
-    const double seg = rnd(0.005, 0.5) * (u01(*rng) < 0.2 ? 8 : 1);
-    for (double x = x0; forward ? x <= x1 : x >= x1; x += forward ? seg : -seg) {
-      const double r = u01(*rng);
-      if (r < 0.03) at(x, y + rnd(0.05, 0.5), z_at(x, y));  // across, then back: the wedge starts over
-      else if (r < 0.06) at(x, y, z_at(x - 3 * seg, y));    // a level stretch
-      at(x, y, z_at(x, y));
-    }
-    forward = !forward;
-    const double kind = u01(*rng);
-    const double step = kind < 0.3 ? pitch_mm * std::floor(rnd(1, 8)) : kind < 0.6 ? pitch_mm * (std::floor(rnd(1, 8)) + 0.5)
-                                                                                 : rnd(0.1, 1.5) * r_mm;
-    y += step;
-  }
-  return p;
-}
-
-}  // namespace
-
-TEST(sweep_bull_row_shortcuts_change_no_bit) {
-  // SweepTool::bull_row_shortcuts (the memo's row slots, core/cut/sweep.h)
-  // against the long way (hashed slots): the same grids and visits on
-  // chained rasters, for several bull noses, grids and LSBs.
-  std::mt19937_64 rng(2024);
-  const int64_t tools[][2] = {{mm(3), 500000}, {mm(6), mm(1)}, {mm(6), 2900000}, {mm(4), 50000}, {mm(8), mm(2)}};
-  const int64_t lsbs[] = {500, 1000, 700};
-  int runs = 0, differ = 0;
-  uint64_t updates = 0;
-  for (int k = 0; k < 15; ++k) {
-    const Tool tool = bull(tools[k % 5][0], tools[k % 5][1]);
-    const int64_t pitch = k % 3 == 0 ? 100000 : k % 3 == 1 ? 250000 : 170000, lsb = lsbs[k % 3];
-    const int32_t n = 72;
-    const std::vector<PointNm> path = raster_path(n * pitch / 1e6, tool.diameter_nm / 2e6, pitch / 1e6, &rng);
-    fixtures::TestGrid<uint16_t> on_g(n, n, pitch, lsb), off_g(n, n, pitch, lsb);
-    on_g.fill(mm(30));
-    off_g.fill(mm(30));
-    SweepTool on, off;
-    if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-    off = on;
-    off.bull_row_shortcuts = false;
-    CutStats s_on, s_off;
-    SweepChain c_on, c_off;
-    for (size_t i = 1; i < path.size(); ++i) {
-      sweep_chain_line(&on_g.g, on, path[i - 1], path[i], &s_on, &c_on);
-      sweep_chain_line(&off_g.g, off, path[i - 1], path[i], &s_off, &c_off);
-    }
-    sweep_chain_end(&on_g.g, on, &s_on, &c_on);
-    sweep_chain_end(&off_g.g, off, &s_off, &c_off);
-    ++runs;
-    updates += s_on.dexel_updates;
-    CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);
-    if ((on_g.top != off_g.top || on_g.bottom != off_g.bottom) && ++differ <= 5)
-      std::printf("  bull %lld/%lld pitch %lld lsb %lld: grids differ\n", (long long)tools[k % 5][0],
-                  (long long)tools[k % 5][1], (long long)pitch, (long long)lsb);
-  }
-  std::printf("  bull row shortcuts: %d runs, %llu visits, %d differ\n", runs, (unsigned long long)updates, differ);
-  CHECK_EQ(differ, 0);
-}

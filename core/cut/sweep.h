@@ -68,6 +68,10 @@ struct SweepTool {
   // the same bits without most of a pocket's square roots. Tests turn it
   // off to check exactly that.
   bool skip_under_floor = true;
+  // Rows along x visit a collinear wedge (SweepChain) from the flank
+  // outwards and stop at its edge (core/cut/sweep_line.cpp): the same bits
+  // as every column tested. Tests turn it off to check exactly that.
+  bool wedge_stops = true;
   // Bull-nose chains keep their pieces' w* in row slots of their memo
   // (BullFlankMemo), so that the next piece finds the last one's on every
   // row: the same bits as the hashed slots (and as no memo). Tests turn it
@@ -139,7 +143,8 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
 // track (v0 in [0, p)), one below half a pitch and one above: distinct
 // rows, distinct slots (for tools up to 64 half pitches, 32 rows, in
 // radius), and the last piece's w* on each row waits in the other way for
-// the next piece's wedge. Without the pitch, a hash of |v| and the slope.
+// the next piece's wedge (a lookup tries both ways: pieces often repeat the
+// last one's slope). Without the pitch, a hash of |v| and the slope.
 // Any slot may hold any key (it is checked): the choice only costs hits.
 struct BullFlankMemo {
   static constexpr int kSlotBits = 7;

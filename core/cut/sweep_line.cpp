@@ -650,8 +650,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                                 (caps.start == StartCap::kWedge && (!collinear || ws_prev < ws));
         const bool low_side = step > 0 ? start_side : caps.end;  // columns lo .. f_lo - 1
         const bool high_side = step > 0 ? caps.end : start_side;  // columns f_hi + 1 .. hi
+        // Each end from the flank outwards. The start side's u falls, and a
+        // collinear wedge ends at its first column behind ws_prev (side()
+        // leaves those: the previous piece's lowest point is inside it), so
+        // the loops stop there; the end side (stop: none) goes on.
+        const int64_t stop_u = collinear && t.wedge_stops ? ws_prev : INT64_MIN;
         if (low_side)
-          for (int64_t i = lo; i < f_lo; ++i) side(i);
+          for (int64_t i = f_lo - 1; i >= lo && (step < 0 || u_lo + (i - lo) * step >= stop_u); --i) side(i);
         if (flank_reaches && f_lo <= f_hi) {
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
@@ -678,7 +683,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           }
         }
         if (high_side)
-          for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
+          for (int64_t i = f_hi + 1; i <= hi && (step > 0 || u_lo + (i - lo) * step >= stop_u); ++i) side(i);
       }
     } else {
       for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
