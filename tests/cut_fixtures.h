@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "core/grid/grid.h"
@@ -65,6 +66,41 @@ inline dexmill::CanonRecord arc_record(double cx, double cy, double ra, double a
   r.arc.centre = PointNm{std::llround(cx), std::llround(cy), std::llround(z0)};
   r.arc.turns = sweep > 0 ? 1 : -1;
   return r;
+}
+
+// A raster along x over a size_mm square, chained as a CAM program would
+// be: passes in both directions over a bumpy surface (ramps of every slope),
+// the track on a row, half way between two or anywhere (mirrored rows or
+// not), steps across between passes, now and then a level stretch or a
+// short move across and back (which break the collinear wedge), pieces from
+// a few um to a few mm. r_mm: the tool's radius (the margin kept).
+inline std::vector<dexmill::PointNm> raster_path(double size_mm, double r_mm, double pitch_mm, std::mt19937_64* rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto rnd = [&](double lo, double hi) { return lo + (hi - lo) * u01(*rng); };
+  const double amp = rnd(0.1, 3.0), fx = rnd(0.3, 2.0), fy = rnd(0.3, 2.0);
+  auto z_at = [&](double x, double y) { return 20 + amp * std::sin(x / fx) * std::cos(y / fy); };
+  std::vector<dexmill::PointNm> p;
+  auto at = [&](double x, double y, double z) {
+    p.push_back(dexmill::PointNm{std::llround(x * 1e6), std::llround(y * 1e6), std::llround(z * 1e6)});
+  };
+  double y = r_mm;
+  bool forward = true;
+  while (y < size_mm - r_mm) {
+    const double x0 = forward ? r_mm : size_mm - r_mm, x1 = forward ? size_mm - r_mm : r_mm;
+    const double seg = rnd(0.005, 0.5) * (u01(*rng) < 0.2 ? 8 : 1);
+    for (double x = x0; forward ? x <= x1 : x >= x1; x += forward ? seg : -seg) {
+      const double r = u01(*rng);
+      if (r < 0.03) at(x, y + rnd(0.05, 0.5), z_at(x, y));  // across, then back: the wedge starts over
+      else if (r < 0.06) at(x, y, z_at(x - 3 * seg, y));    // a level stretch
+      at(x, y, z_at(x, y));
+    }
+    forward = !forward;
+    const double kind = u01(*rng);
+    y += kind < 0.3   ? pitch_mm * std::floor(rnd(1, 8))
+         : kind < 0.6 ? pitch_mm * (std::floor(rnd(1, 8)) + 0.5)
+                      : rnd(0.1, 1.5) * r_mm;
+  }
+  return p;
 }
 
 }  // namespace fixtures

@@ -149,13 +149,16 @@ TEST(sweep_bull_ramps_against_oracle) {
 }
 
 TEST(sweep_bull_memo_gives_the_computed_bits) {
-  // The chain's memo is a cache: through it, w* is the bits bull_flank_w
-  // computes, for pieces of several slopes met in turn (as a chain's rows
-  // meet the last piece's), past collisions and evictions, and after a
-  // change of tool (which empties it).
+  // The chain's memo is a cache: through it (hashed slots, or row slots
+  // with the pieces in ways 0, 1, 0), w* is the bits bull_flank_w computes,
+  // for pieces of several slopes met in turn (as a chain's rows meet the
+  // last piece's), past collisions and evictions, and after a change of
+  // tool (which empties it).
   std::mt19937_64 rng(7);
-  BullFlankMemo memo;
   int differ = 0, hits = 0, calls = 0;
+  for (const uint64_t row_inv : {uint64_t{0}, ((uint64_t{1} << 32) + 49999) / 50000}) {  // a 25 um pitch's
+  BullFlankMemo memo;
+  memo.row_inv_q32 = row_inv;
   for (const int64_t rc : {1500000, 500000}) {
     SweepTool t;
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(bull(mm(6), rc)), 500, &t), Status::kOk)) return;
@@ -165,6 +168,7 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
       pieces[k].m_geo_q30 = std::llround(std::ldexp(slopes[k], 30));
       pieces[k].ball_sin_q30 = std::llround(std::ldexp(slopes[k] / std::sqrt(1 + slopes[k] * slopes[k]), 30));
       pieces[k].bull_memo = &memo;
+      pieces[k].bull_way = static_cast<uint8_t>(k & 1);
     }
     for (int it = 0; it < 5000; ++it) {
       const SweepLine& lp = pieces[rng() % 3];
@@ -180,6 +184,8 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
       if (ok && bull_flank_w_memo(t, lp, v_abs, &w_again) && w_again == w) ++hits;
     }
   }
+  }
   CHECK_EQ(differ, 0);
   CHECK_EQ(hits, calls);
 }
+

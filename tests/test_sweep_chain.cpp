@@ -195,3 +195,54 @@ TEST(sweep_chain_equals_full_caps) {
   // rounding apart is one LSB of 4 U); below 0.5 %.
   CHECK(d.differ * 200 <= d.dexels);
 }
+
+TEST(sweep_chain_row_shortcuts_change_no_bit) {
+  // The rows' shortcuts against the long way, on chained rasters along x
+  // (fixtures::raster_path) for every tool kind, several pitches and LSBs:
+  // SweepTool::wedge_stops (a collinear wedge visited from the flank out,
+  // up to its edge) and bull_row_shortcuts (the bull nose's memo in row
+  // slots), both off, must leave the same grids and count the same visits.
+  std::mt19937_64 rng(2024);
+  const Tool tools[] = {fixtures::test_tool(ToolKind::kBullNose, mm(3), 500000, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kBall, mm(3), 0, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kBullNose, mm(6), mm(1), 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kFlat, mm(4), 0, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kBullNose, mm(6), 2900000, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kVBit, mm(6), 0, 90000, mm(60)),
+                        fixtures::test_tool(ToolKind::kBullNose, mm(4), 50000, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kBall, 3175000, 0, 0, mm(60)),
+                        fixtures::test_tool(ToolKind::kBullNose, mm(8), mm(2), 0, mm(60))};
+  const int64_t lsbs[] = {500, 1000, 700};
+  int runs = 0, differ = 0;
+  uint64_t updates = 0;
+  for (int k = 0; k < 18; ++k) {
+    const Tool& tool = tools[k % 9];
+    const int64_t pitch = k % 3 == 0 ? 100000 : k % 3 == 1 ? 250000 : 170000, lsb = lsbs[(k / 3) % 3];
+    const int32_t n = 72;
+    const std::vector<PointNm> path =
+        fixtures::raster_path(n * pitch / 1e6, tool.diameter_nm / 2e6, pitch / 1e6, &rng);
+    fixtures::TestGrid<uint16_t> on_g(n, n, pitch, lsb), off_g(n, n, pitch, lsb);
+    on_g.fill(mm(30));
+    off_g.fill(mm(30));
+    SweepTool on, off;
+    if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
+    off = on;
+    off.wedge_stops = false;
+    off.bull_row_shortcuts = false;
+    CutStats s_on, s_off;
+    SweepChain c_on, c_off;
+    for (size_t i = 1; i < path.size(); ++i) {
+      sweep_chain_line(&on_g.g, on, path[i - 1], path[i], &s_on, &c_on);
+      sweep_chain_line(&off_g.g, off, path[i - 1], path[i], &s_off, &c_off);
+    }
+    sweep_chain_end(&on_g.g, on, &s_on, &c_on);
+    sweep_chain_end(&off_g.g, off, &s_off, &c_off);
+    ++runs;
+    updates += s_on.dexel_updates;
+    CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);
+    if ((on_g.top != off_g.top || on_g.bottom != off_g.bottom) && ++differ <= 5)
+      std::printf("  tool %d pitch %lld lsb %lld: grids differ\n", k % 9, (long long)pitch, (long long)lsb);
+  }
+  std::printf("  row shortcuts: %d runs, %llu visits, %d differ\n", runs, (unsigned long long)updates, differ);
+  CHECK_EQ(differ, 0);
+}

@@ -149,13 +149,29 @@ inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v
   BullFlankMemo::Slot* e = nullptr;
   if (m) {
     if (m->r_u != t.r_u || m->rc_u != t.rc_u) {
+      const uint64_t inv = m->row_inv_q32;
+      const uint8_t way = m->next_way;
       *m = BullFlankMemo{};
       m->r_u = t.r_u;
       m->rc_u = t.rc_u;
+      m->row_inv_q32 = inv;
+      m->next_way = way;
     }
-    const uint64_t h = (static_cast<uint64_t>(key) ^ static_cast<uint64_t>(lp.m_geo_q30) * 0x9E3779B97F4A7C15ull) *
-                       0xC2B2AE3D27D4EB4Full;
-    e = &m->slot[h >> (64 - BullFlankMemo::kSlotBits)];
+    if (m->row_inv_q32) {  // the row's slot in the piece's way (sweep.h, BullFlankMemo)
+      const uint64_t half_pitches = (static_cast<uint64_t>(v_abs) * m->row_inv_q32) >> 32;
+      e = &m->slot[(2 * half_pitches + lp.bull_way) & ((1u << BullFlankMemo::kSlotBits) - 1)];
+      // The other way holds the last piece's: the same slope (a chain's
+      // pieces often repeat one) is a hit too.
+      const BullFlankMemo::Slot* o = &m->slot[(2 * half_pitches + (lp.bull_way ^ 1)) & ((1u << BullFlankMemo::kSlotBits) - 1)];
+      if (o->v_plus1 == key && o->m_q30 == lp.m_geo_q30 && o->sin_q30 == lp.ball_sin_q30) {
+        *w = o->w_u;
+        return true;
+      }
+    } else {
+      const uint64_t h = (static_cast<uint64_t>(key) ^ static_cast<uint64_t>(lp.m_geo_q30) * 0x9E3779B97F4A7C15ull) *
+                         0xC2B2AE3D27D4EB4Full;
+      e = &m->slot[h >> (64 - BullFlankMemo::kSlotBits)];
+    }
     if (e->v_plus1 == key && e->m_q30 == lp.m_geo_q30 && e->sin_q30 == lp.ball_sin_q30) {
       *w = e->w_u;
       return true;

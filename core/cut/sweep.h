@@ -68,6 +68,15 @@ struct SweepTool {
   // the same bits without most of a pocket's square roots. Tests turn it
   // off to check exactly that.
   bool skip_under_floor = true;
+  // Rows along x visit a collinear wedge (SweepChain) from the flank
+  // outwards and stop at its edge (core/cut/sweep_line.cpp): the same bits
+  // as every column tested. Tests turn it off to check exactly that.
+  bool wedge_stops = true;
+  // Bull-nose chains keep their pieces' w* in row slots of their memo
+  // (BullFlankMemo), so that the next piece finds the last one's on every
+  // row: the same bits as the hashed slots (and as no memo). Tests turn it
+  // off to check exactly that.
+  bool bull_row_shortcuts = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 
@@ -126,6 +135,17 @@ void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutSt
 // offsets (its collinear wedge), and finds it here. 128 slots (3 KB): the
 // rows of two pieces of a tool some 60 rows wide. Only bull-nose pieces
 // read and fill it.
+//
+// Which slot: with the grid's pitch known (row_inv_q32, set by the chain),
+// slot 2 k + way for |v| in [k, k + 1) half pitches, way the piece's
+// (SweepLine::bull_way, alternating along the chain). A row's |v| is a
+// whole number of U, v0 + n p or (p - v0) + n p on the two sides of the
+// track (v0 in [0, p)), one below half a pitch and one above: distinct
+// rows, distinct slots (for tools up to 64 half pitches, 32 rows, in
+// radius), and the last piece's w* on each row waits in the other way for
+// the next piece's wedge (a lookup tries both ways: pieces often repeat the
+// last one's slope). Without the pitch, a hash of |v| and the slope.
+// Any slot may hold any key (it is checked): the choice only costs hits.
 struct BullFlankMemo {
   static constexpr int kSlotBits = 7;
   struct Slot {
@@ -135,6 +155,8 @@ struct BullFlankMemo {
   };
   Slot slot[1 << kSlotBits] = {};
   int64_t r_u = 0, rc_u = 0;  // the tool the slots hold (another empties them)
+  uint64_t row_inv_q32 = 0;   // ceil(2^32 / half a pitch in U), or 0: hashed slots
+  uint8_t next_way = 0;       // the next piece's way
 };
 
 // A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
@@ -151,6 +173,7 @@ struct SweepLine {
   bool vbit_inside;          // V-bit: |m| < k
   bool level;                // dz == 0
   bool plunge;               // no horizontal motion (or steeper than 2^24:1)
+  uint8_t bull_way;          // bull nose in a chain (bull_memo set): its memo way (BullFlankMemo), 0 or 1
   BullFlankMemo* bull_memo = nullptr;  // bull nose in a chain: the chain's memo
 };
 

@@ -650,8 +650,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                                 (caps.start == StartCap::kWedge && (!collinear || ws_prev < ws));
         const bool low_side = step > 0 ? start_side : caps.end;  // columns lo .. f_lo - 1
         const bool high_side = step > 0 ? caps.end : start_side;  // columns f_hi + 1 .. hi
+        // Each end from the flank outwards. The start side's u falls, and a
+        // collinear wedge ends at its first column behind ws_prev (side()
+        // leaves those: the previous piece's lowest point is inside it), so
+        // the loops stop there; the end side (stop: none) goes on.
+        const int64_t stop_u = collinear && t.wedge_stops ? ws_prev : INT64_MIN;
         if (low_side)
-          for (int64_t i = lo; i < f_lo; ++i) side(i);
+          for (int64_t i = f_lo - 1; i >= lo && (step < 0 || u_lo + (i - lo) * step >= stop_u); --i) side(i);
         if (flank_reaches && f_lo <= f_hi) {
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
@@ -678,7 +683,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           }
         }
         if (high_side)
-          for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
+          for (int64_t i = f_hi + 1; i <= hi && (step > 0 || u_lo + (i - lo) * step >= stop_u); ++i) side(i);
       }
     } else {
       for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
@@ -762,6 +767,19 @@ void for_each_piece(PointNm a, PointNm b, F piece) {
   }
 }
 
+// A bull-nose piece of chain c (and the last one) use the chain's memo,
+// with row slots (sweep.h, BullFlankMemo) on a grid of pitch_nm > 0 (half a
+// pitch is 2 p U), hashed ones for 0 (SweepTool::bull_row_shortcuts off);
+// the pieces' ways alternate. Not inlined: the other tools' chains compile
+// as without it.
+__attribute__((noinline)) void bull_chain_memo(int64_t pitch_nm, SweepChain* c, SweepLine* lp) {
+  lp->bull_memo = c->last.bull_memo = &c->bull_memo;
+  const uint64_t half_u = 2 * static_cast<uint64_t>(pitch_nm);
+  c->bull_memo.row_inv_q32 = pitch_nm > 0 ? ((static_cast<uint64_t>(1) << 32) + half_u - 1) / half_u : 0;
+  lp->bull_way = c->bull_memo.next_way;
+  c->bull_memo.next_way ^= 1;
+}
+
 }  // namespace
 
 template <class H>
@@ -794,7 +812,10 @@ void sweep_chain_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b,
                                                                      : StartCap::kWedge;
     SweepLine lp;
     // The bull nose's w* through the chain's memo, for this piece and the last.
-    lp.bull_memo = c->last.bull_memo = t.kind == ToolKind::kBullNose ? &c->bull_memo : nullptr;
+    if (t.kind == ToolKind::kBullNose)
+      bull_chain_memo(t.bull_row_shortcuts ? g->pitch_nm : 0, c, &lp);
+    else
+      lp.bull_memo = c->last.bull_memo = nullptr;
     const PieceEnd e = sweep_piece(g, t, from, to, st, PieceCaps{start, &c->last, false, &c->roots}, &lp);
     c->state = e == PieceEnd::kPending ? SweepChain::State::kPending
                : e == PieceEnd::kCovered ? SweepChain::State::kCovered
