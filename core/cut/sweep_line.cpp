@@ -63,17 +63,16 @@ int64_t rho_of(const SweepTool& t, int64_t v2) {
 inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2, int64_t rho) {
   if (lp.level) return 0;
   if (t.kind == ToolKind::kBall) return mul_shift_fit(rho, lp.ball_sin_q30, 30);  // the common case first
-  // rho < 0: the chord is taken only where it is needed.
-  auto rim = [&] { return sign_of(lp.m_geo_q30) * (rho < 0 ? rho_of(t, v2) : rho); };
+  const int64_t rim = sign_of(lp.m_geo_q30) * rho;
   switch (t.kind) {
     case ToolKind::kFlat:
-      return rim();
+      return rim;
     case ToolKind::kBall:
       return mul_shift(rho, lp.ball_sin_q30, 30);
     case ToolKind::kVBit: {
-      if (!lp.vbit_inside) return rim();
+      if (!lp.vbit_inside) return rim;
       const int64_t w = mul_shift(v < 0 ? -v : v, lp.vbit_c1_q30, 30);
-      return w * w + v2 <= t.r2_u ? w : rim();
+      return w * w + v2 <= t.r2_u ? w : rim;
     }
     case ToolKind::kBullNose: {
       // From the torus's contact (core/cut/bull_flank.h); the search of the
@@ -100,10 +99,8 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
 
 int64_t best_w(const SweepTool& t, const SweepLine& lp, int64_t v, int64_t v2) {
   if (lp.level) return 0;
-  // The bull nose's w* needs no chord but where it searches, the V-bit's
-  // only off its cone (rho < 0: their own).
-  const bool lazy = t.kind == ToolKind::kBullNose || t.kind == ToolKind::kVBit;
-  return best_w_rho(t, lp, v, v2, lazy ? -1 : rho_of(t, v2));
+  // The bull nose's w* needs no chord but where it searches (rho < 0: its own).
+  return best_w_rho(t, lp, v, v2, t.kind == ToolKind::kBullNose ? -1 : rho_of(t, v2));
 }
 
 bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, int64_t dy_u, int64_t dz_nm,
@@ -405,10 +402,21 @@ int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps,
   return min_of(w_lo - 1, -div_ceil(reach * kQ30, c) - 2);
 }
 
+// The 32-bit forms of the row set-up and the column loops (rows walked,
+// int32_t offsets, RoundWalk30) only on CPUs without 128-bit integers
+// (mul_shift's test for 32-bit CPUs): with 64-bit registers the 64-bit forms
+// cost the same, and there the loops stay as they were, instruction for
+// instruction.
+#ifdef __SIZEOF_INT128__
+#define DEXMILL_SWEEP_NARROW 0
+#else
+#define DEXMILL_SWEEP_NARROW 1
+#endif
+
 // floor(x * slope / 2^32), mul_shift_fit's bits: with x and the slope
 // within int32 the exact product is one 32 x 32 -> 64-bit multiply (forced
-// inline: a column's height takes one or two).
-// The int32_t form only where the slope fits int32 (general_narrow).
+// inline: a column's height takes one or two). The int32_t form only where
+// the slope fits int32 (general_narrow).
 struct SlopeMul {
   int64_t slope;
   int32_t slope32;
@@ -562,7 +570,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   int64_t ball_floor_v = 0;
   const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
   uint64_t floor_skips = 0;
+#if DEXMILL_SWEEP_NARROW
   const bool ball = t.kind == ToolKind::kBall, flat = t.kind == ToolKind::kFlat;  // flat: a profile of 0
+  const bool vbit_cone = t.kind == ToolKind::kVBit && !lp.plunge && lp.vbit_inside;
   // The general direction's columns in 32-bit integers (u, v, w, u - w) for
   // tools up to R = 2^28 U (67 mm): NarrowRows keeps |v_acc| <= (R + 1) 2^30
   // and u_acc in [u_min, u_max] 2^30 with u_min >= -(4R + 14) (u_min_of:
@@ -573,13 +583,34 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   // int32 (V per U q32 below 1/2: not the steepest ramps on the finest LSBs).
   const bool general_narrow = t.r_u <= (static_cast<int64_t>(1) << 28) && detail::fits_i32(lp.slope_v_q32);
   const SlopeMul slope_v{lp.slope_v_q32};
+  // u_acc and v_acc at column i_first of row j, and their steps along a row
+  // and from one row to the next (dy grows by the pitch): exact integers, so
+  // walked from row to row instead of four 64 x 64-bit products a row.
+  // Within the box |u|, |v| < 2^31.2 U, and a step is p_u 2^30 < 2^62 for a
+  // pitch up to a metre: the step past the last row stays within int64.
+  const int64_t du = lp.plunge ? 0 : p_u * lp.ex_q30, dv = lp.plunge ? 0 : -p_u * lp.ey_q30;
+  const int64_t du_row = lp.plunge ? 0 : p_u * lp.ey_q30, dv_row = lp.plunge ? 0 : p_u * lp.ex_q30;
+  int64_t u_row = 0, v_row = 0;
+  if (!lp.plunge) {
+    const int64_t dy_first_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
+    u_row = dx0_u * lp.ex_q30 + dy_first_u * lp.ey_q30;
+    v_row = dy_first_u * lp.ex_q30 - dx0_u * lp.ey_q30;
+  }
+  for (int64_t j = j_first; j <= j_last;
+       ++j, u_row += du_row, v_row += dv_row, walk ? (across.next(), along.next()) : void()) {
+#else
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
+#endif
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
     if (mirrored && jm < j && jm >= j_first) continue;
     const bool pair = mirrored && jm > j && jm <= j_last;
     const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
     int64_t lo = i_first, hi = i_last;
+#if DEXMILL_SWEEP_NARROW
+    int64_t u_acc = u_row, v_acc = v_row;
+    if (!lp.plunge) {
+#else
     int64_t u_acc = 0, v_acc = 0, du = 0, dv = 0;
     if (!lp.plunge) {
       // u = (P - A) . e and v = (P - A) x e, in U * 2^30, exact increments.
@@ -587,6 +618,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       v_acc = dy_row_u * lp.ex_q30 - dx0_u * lp.ey_q30;
       du = p_u * lp.ex_q30;
       dv = -p_u * lp.ey_q30;
+#endif
       if (along_x) {
         if (v_acc < -r_q30 || v_acc > r_q30) continue;
         lo = x_lo;
@@ -607,6 +639,17 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
     bool row_changed = false, mirror_changed = false;
+#if !DEXMILL_SWEEP_NARROW
+    if (lp.plunge) {
+      int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
+      for (int64_t i = lo; i <= hi; ++i, dx_u_col += p_u) {
+        const int64_t r2 = dx_u_col * dx_u_col + dy_row_u * dy_row_u;
+        if (r2 > reach2) continue;
+        const int64_t h_v = zlow_v + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut(wt, wb, i, h_v, 0, 0);
+      }
+    } else if (dv == 0) {
+#else
     if (lp.plunge) {
       // The tool standing at o: r^2 = dx^2 + dy^2, dx stepping by the pitch.
       // I (dx's type) is int32_t when dx is within it at both ends of the
@@ -633,6 +676,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                         ? plunge_columns(static_cast<int32_t>(dx_lo))
                         : plunge_columns(dx_lo);
     } else if (dv == 0) {
+#endif
       // The move runs along the row (x-parallel): v, w*(v) and the flank's
       // height F(w*) - m*w* are constants of the row; only the ends of the
       // row need the profile per column.
@@ -726,6 +770,54 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           for (int64_t i = f_hi + 1; i <= hi; ++i) side(i);
       }
     } else {
+#if !DEXMILL_SWEEP_NARROW
+      for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
+        const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
+        // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
+        const int64_t v2 = min_of(v * v, t.r2_u);
+        // Under the floor (ball_floor_of) the top is lower than any height
+        // this piece computes here: nothing to cut, and no root.
+        if (cull) {
+          const int64_t floor_v = ball_floor_v + mul_shift_fit(u, lp.slope_v_q32, 32) + sweep_bowl_v(t, v2);
+          if (floor_v >= sweep_keep_v(wt[i])) {
+            ++floor_skips;
+            continue;
+          }
+        }
+        // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
+        // computing w* (a square root for ramps).
+        // The lowest point: behind the start (w = u), beyond the end
+        // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
+        int64_t w = 0, rho = 0;
+        int side = 0;
+        if (u < wr.lo) {
+          side = -1;
+        } else if (u - lp.len_u > wr.hi) {
+          side = 1;
+        } else {
+          if (t.kind == ToolKind::kBall) {  // one root for w* and the flank
+            rho = rho_of(t, v2);
+            w = best_w_rho(t, lp, v, v2, rho);
+          } else {
+            w = best_w(t, lp, v, v2);
+          }
+          side = u < w ? -1 : (u - lp.len_u > w ? 1 : 0);
+        }
+        if (side < 0) {
+          if (!start_ok(u, v, i, dy_row_u)) continue;
+          w = u;
+        } else if (side > 0) {
+          if (!caps.end) continue;
+          w = u - lp.len_u;
+        }
+        const int64_t r2 = w * w + v2;
+        if (r2 > reach2) continue;
+        const int64_t h_v = side == 0 && t.kind == ToolKind::kBall
+                                ? lp.za_v + mul_shift_fit(u, lp.slope_v_q32, 32) + ball_flank_v(t, lp, rho)
+                                : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
+        row_changed |= cut(wt, wb, i, h_v, u, v2);
+      }
+#else
       // The columns of a general direction, u and v walked from their q30
       // accumulators; I (their type) is int32_t where the ranges allow it
       // (general_narrow), so that squares and slope products are one 32 x 32
@@ -765,11 +857,17 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           } else if (u > w_hi_end) {
             side = 1;
           } else {
-            if (ball) {  // one root for w* and the flank
+            if (ball) {  // one root for w* and the flank (best_w_rho's ball case)
               rho = rho_of(t, v2);
-              w = static_cast<I>(best_w_rho(t, lp, v, v2, rho));
+              w = lp.level ? 0 : static_cast<I>(mul_shift_fit(rho, lp.ball_sin_q30, 30));
+            } else if (lp.level) {
+              w = 0;
             } else {
-              w = lp.level ? 0 : static_cast<I>(best_w(t, lp, v, v2));
+              // Inside its cone the V-bit's w* needs no chord (best_w_rho's
+              // own test; where it fails, best_w takes the rim).
+              int64_t ws = 0;
+              if (vbit_cone) ws = mul_shift(v < 0 ? -static_cast<int64_t>(v) : v, lp.vbit_c1_q30, 30);
+              w = static_cast<I>(vbit_cone && ws * ws + v2 <= t.r2_u ? ws : best_w(t, lp, v, v2));
             }
             side = u < w ? -1 : (u - len > w ? 1 : 0);
           }
@@ -791,6 +889,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       };
       row_changed = general_narrow ? columns(RoundWalk30{}, RoundWalk30{})
                                    : columns(RoundWalk30Acc<int64_t>{}, RoundWalk30Acc<int64_t>{});
+#endif
     }
     if (row_changed || mirror_changed) {
       changed = true;
