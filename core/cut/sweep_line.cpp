@@ -572,7 +572,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   uint64_t floor_skips = 0;
 #if DEXMILL_SWEEP_NARROW
   const bool ball = t.kind == ToolKind::kBall, flat = t.kind == ToolKind::kFlat;  // flat: a profile of 0
-  const bool vbit_cone = t.kind == ToolKind::kVBit && !lp.plunge && lp.vbit_inside;
+  // (setup_piece sets vbit_inside only for ramps: test it only there.)
+  const bool vbit_cone = t.kind == ToolKind::kVBit && !lp.plunge && !lp.level && lp.vbit_inside;
   // The general direction's columns in 32-bit integers (u, v, w, u - w) for
   // tools up to R = 2^28 U (67 mm): NarrowRows keeps |v_acc| <= (R + 1) 2^30
   // and u_acc in [u_min, u_max] 2^30 with u_min >= -(4R + 14) (u_min_of:
