@@ -363,20 +363,8 @@ WRange w_range_of(const SweepTool& t, const SweepLine& lp) {
   return WRange{min_of(w_r, int64_t{0}), max_of(w_r, int64_t{0})};
 }
 
-// The 32-bit forms of the row set-up, the column loops and the wedge test
-// (rows walked, int32_t offsets, RoundWalk30) only on CPUs without 128-bit integers
-// (mul_shift's test for 32-bit CPUs): with 64-bit registers the 64-bit forms
-// cost the same, and there the loops stay as they were, instruction for
-// instruction.
-#ifdef __SIZEOF_INT128__
-#define DEXMILL_SWEEP_NARROW 0
-#else
-#define DEXMILL_SWEEP_NARROW 1
-#endif
-
 // u >= w*(v) for piece lp (u, v in its frame, from its end): the piece's
 // lowest point for the column is at that end. Outside w_range_of no root.
-#if !DEXMILL_SWEEP_NARROW
 bool at_or_past_w(const SweepTool& t, const SweepLine& lp, int64_t u, int64_t v) {
   const WRange wr = w_range_of(t, lp);
   if (u >= wr.hi) return true;
@@ -391,33 +379,6 @@ bool prev_ends_here(const SweepTool& t, const SweepLine& prev, int64_t dx, int64
   const int64_t v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
   return at_or_past_w(t, prev, u, v);
 }
-#else
-// On 32-bit CPUs with the piece's w range taken once a piece (wr =
-// w_range_of(t, lp)).
-bool at_or_past_w_in(const SweepTool& t, const SweepLine& lp, const WRange& wr, int64_t u, int64_t v) {
-  if (u >= wr.hi) return true;
-  if (u < wr.lo) return false;
-  return u >= best_w(t, lp, v, min_of(v * v, t.r2_u));
-}
-
-// prev_ends_here with the previous piece's w range taken once a piece, and
-// its products 32 x 32 -> 64 bits where dx, dy and e fit int32 (then each
-// product is below 2^62 in magnitude and their sum, exact as in 64 bits,
-// below 2^63).
-bool prev_ends_here_in(const SweepTool& t, const SweepLine& prev, const WRange& wr, int64_t dx, int64_t dy) {
-  int64_t u, v;
-  if (detail::fits_i32(dx) && detail::fits_i32(dy) && detail::fits_i32(prev.ex_q30) && detail::fits_i32(prev.ey_q30)) {
-    const int64_t x = static_cast<int32_t>(dx), y = static_cast<int32_t>(dy);
-    const int64_t ex = static_cast<int32_t>(prev.ex_q30), ey = static_cast<int32_t>(prev.ey_q30);
-    u = (x * ex + y * ey + kQ30 / 2) >> 30;  // from the joint
-    v = (y * ex - x * ey + kQ30 / 2) >> 30;
-  } else {
-    u = (dx * prev.ex_q30 + dy * prev.ey_q30 + kQ30 / 2) >> 30;
-    v = (dy * prev.ex_q30 - dx * prev.ey_q30 + kQ30 / 2) >> 30;
-  }
-  return at_or_past_w_in(t, prev, wr, u, v);
-}
-#endif
 
 // The least along-track u (U, from a) of a column the piece may cut: behind
 // it the lowest point is the tool at a, and with kWedge only columns the
@@ -440,6 +401,17 @@ int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps,
   const int64_t reach = wbp + mul_shift(t.r_u + 2, sn < 0 ? -sn : sn, 30) + 2;
   return min_of(w_lo - 1, -div_ceil(reach * kQ30, c) - 2);
 }
+
+// The 32-bit forms of the row set-up and the column loops (rows walked,
+// int32_t offsets, RoundWalk30) only on CPUs without 128-bit integers
+// (mul_shift's test for 32-bit CPUs): with 64-bit registers the 64-bit forms
+// cost the same, and there the loops stay as they were, instruction for
+// instruction.
+#ifdef __SIZEOF_INT128__
+#define DEXMILL_SWEEP_NARROW 0
+#else
+#define DEXMILL_SWEEP_NARROW 1
+#endif
 
 // floor(x * slope / 2^32), mul_shift_fit's bits: with x and the slope
 // within int32 the exact product is one 32 x 32 -> 64-bit multiply (forced
@@ -542,20 +514,11 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                          caps.prev->ey_q30 == lp.ey_q30;
   // Start-side column at (u, v), i: cut it? (kWedge: the previous piece's
   // lowest point is at this joint too.)
-#if DEXMILL_SWEEP_NARROW
-  const WRange wr_prev = caps.start == StartCap::kWedge ? w_range_of(t, *caps.prev) : WRange{0, 0};
-  auto start_ok = [&](int64_t u, int64_t v, int64_t i, int64_t dy_row_u) {
-    if (caps.start != StartCap::kWedge) return caps.start == StartCap::kCut;
-    if (collinear) return at_or_past_w_in(t, *caps.prev, wr_prev, u, v);
-    return prev_ends_here_in(t, *caps.prev, wr_prev, dx0_u + (i - i_first) * p_u, dy_row_u);
-  };
-#else
   auto start_ok = [&](int64_t u, int64_t v, int64_t i, int64_t dy_row_u) {
     if (caps.start != StartCap::kWedge) return caps.start == StartCap::kCut;
     if (collinear) return at_or_past_w(t, *caps.prev, u, v);
     return prev_ends_here(t, *caps.prev, dx0_u + (i - i_first) * p_u, dy_row_u);
   };
-#endif
   // The columns within reach across (|v| <= R) and along the track, row
   // after row (u and v grow by p e_y and p e_x from one row to the next).
   // Along x the along-track range is the same on every row (e_y = 0): it is
