@@ -6,6 +6,8 @@
 
 #include <stdint.h>
 
+#include <type_traits>
+
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
@@ -54,6 +56,45 @@ inline int64_t sweep_height_v(const DexelGrid<H>& g, int64_t z_nm) {
 inline int64_t sweep_keep_v(int64_t top_lsb) {
   return (top_lsb << kSweepVBits) - (static_cast<int64_t>(1) << (kSweepVBits - 1));
 }
+
+// round(acc / 2^30) (ties up) for acc = acc0, acc0 + d, acc0 + 2 d, ...: a
+// column's along- or cross-track offset in U from its q30 accumulator, for
+// walks whose every value read fits int32 (the caller's range argument).
+// RoundWalk30Acc<int64_t> serves walks whose values may not fit. For those
+// that do, two forms with the same values: a 64-bit accumulator, and for
+// 32-bit CPUs (where a 64-bit add, round and shift is six instructions and
+// two registers) the biased accumulator acc + 2^29 split into its whole part
+// (mod 2^32: a value read fits, one past the last may wrap unread) and
+// its 30-bit fraction kept in the top bits of a word, so that the fraction's
+// carry is the add's own (adds, adc). Forced inline: -Os calls them
+// otherwise, at twice their cost, once a column.
+template <class I>
+struct RoundWalk30Acc {
+  int64_t acc = 0, d = 0;
+  void start(int64_t acc0, int64_t step) {
+    acc = acc0 + (static_cast<int64_t>(1) << 29);
+    d = step;
+  }
+  __attribute__((always_inline)) I value() const { return static_cast<I>(acc >> 30); }
+  __attribute__((always_inline)) void next() { acc += d; }
+};
+struct RoundWalk30Split {
+  uint32_t whole = 0, frac = 0, dwhole = 0, dfrac = 0;  // value = whole + frac / 2^32
+  void start(int64_t acc0, int64_t step) {
+    const int64_t b = acc0 + (static_cast<int64_t>(1) << 29);
+    whole = static_cast<uint32_t>(b >> 30);  // floor, mod 2^32
+    frac = static_cast<uint32_t>(b) << 2;    // b mod 2^30, times 4
+    dwhole = static_cast<uint32_t>(step >> 30);
+    dfrac = static_cast<uint32_t>(step) << 2;
+  }
+  __attribute__((always_inline)) int32_t value() const { return static_cast<int32_t>(whole); }
+  __attribute__((always_inline)) void next() {
+    const uint32_t f = frac + dfrac;
+    whole += dwhole + (f < frac ? 1u : 0u);  // the fractions' carry
+    frac = f;
+  }
+};
+using RoundWalk30 = std::conditional<(sizeof(void*) >= 8), RoundWalk30Acc<int32_t>, RoundWalk30Split>::type;
 
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top, shaft_above when it is above every possible top (then only

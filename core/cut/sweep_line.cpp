@@ -402,6 +402,31 @@ int64_t u_min_of(const SweepTool& t, const SweepLine& lp, const PieceCaps& caps,
   return min_of(w_lo - 1, -div_ceil(reach * kQ30, c) - 2);
 }
 
+// The 32-bit forms of the row set-up and the column loops (rows walked,
+// int32_t offsets, RoundWalk30) only on CPUs without 128-bit integers
+// (mul_shift's test for 32-bit CPUs): with 64-bit registers the 64-bit forms
+// cost the same, and there the loops stay as they were, instruction for
+// instruction.
+#ifdef __SIZEOF_INT128__
+#define DEXMILL_SWEEP_NARROW 0
+#else
+#define DEXMILL_SWEEP_NARROW 1
+#endif
+
+// floor(x * slope / 2^32), mul_shift_fit's bits: with x and the slope
+// within int32 the exact product is one 32 x 32 -> 64-bit multiply (forced
+// inline: a column's height takes one or two). The int32_t form only where
+// the slope fits int32 (general_narrow).
+struct SlopeMul {
+  int64_t slope;
+  int32_t slope32;
+  explicit SlopeMul(int64_t s) : slope(s), slope32(static_cast<int32_t>(s)) {}
+  __attribute__((always_inline)) int64_t operator()(int32_t x) const {
+    return (static_cast<int64_t>(x) * slope32) >> 32;
+  }
+  __attribute__((always_inline)) int64_t operator()(int64_t x) const { return mul_shift_fit(x, slope, 32); }
+};
+
 // What a piece left for its chain: the tool at its end cut as a min()
 // (covered), pending, or cut with a shaft below some top (open: the next
 // move's start cap reaches higher and is cut again).
@@ -545,13 +570,48 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   int64_t ball_floor_v = 0;
   const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
   uint64_t floor_skips = 0;
+#if DEXMILL_SWEEP_NARROW
+  const bool ball = t.kind == ToolKind::kBall, flat = t.kind == ToolKind::kFlat;  // flat: a profile of 0
+  // (setup_piece sets vbit_inside only for ramps: test it only there.)
+  const bool vbit_cone = t.kind == ToolKind::kVBit && !lp.plunge && !lp.level && lp.vbit_inside;
+  // The general direction's columns in 32-bit integers (u, v, w, u - w) for
+  // tools up to R = 2^28 U (67 mm): NarrowRows keeps |v_acc| <= (R + 1) 2^30
+  // and u_acc in [u_min, u_max] 2^30 with u_min >= -(4R + 14) (u_min_of:
+  // reach <= 2R + 6 over c >= 1/2) and u_max <= l + R + 1 <= 2^29 + 2^28 + 1;
+  // |w*| <= R (w*^2 + v^2 <= R^2, or the rim), so |u|, |v|, |w|, |u - l| and
+  // |u - w*| stay below 2^30 + 2^28 + 14 < 2^31.
+  // The slope products take the 32 x 32-bit form only with a slope within
+  // int32 (V per U q32 below 1/2: not the steepest ramps on the finest LSBs).
+  const bool general_narrow = t.r_u <= (static_cast<int64_t>(1) << 28) && detail::fits_i32(lp.slope_v_q32);
+  const SlopeMul slope_v{lp.slope_v_q32};
+  // u_acc and v_acc at column i_first of row j, and their steps along a row
+  // and from one row to the next (dy grows by the pitch): exact integers, so
+  // walked from row to row instead of four 64 x 64-bit products a row.
+  // Within the box |u|, |v| < 2^31.2 U, and a step is p_u 2^30 < 2^62 for a
+  // pitch up to a metre: the step past the last row stays within int64.
+  const int64_t du = lp.plunge ? 0 : p_u * lp.ex_q30, dv = lp.plunge ? 0 : -p_u * lp.ey_q30;
+  const int64_t du_row = lp.plunge ? 0 : p_u * lp.ey_q30, dv_row = lp.plunge ? 0 : p_u * lp.ex_q30;
+  int64_t u_row = 0, v_row = 0;
+  if (!lp.plunge) {
+    const int64_t dy_first_u = (g->y0_nm + j_first * p - o.y_nm) * kSweepUnitsPerNm;
+    u_row = dx0_u * lp.ex_q30 + dy_first_u * lp.ey_q30;
+    v_row = dy_first_u * lp.ex_q30 - dx0_u * lp.ey_q30;
+  }
+  for (int64_t j = j_first; j <= j_last;
+       ++j, u_row += du_row, v_row += dv_row, walk ? (across.next(), along.next()) : void()) {
+#else
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
+#endif
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
     if (mirrored && jm < j && jm >= j_first) continue;
     const bool pair = mirrored && jm > j && jm <= j_last;
     const int64_t dy_row_u = (g->y0_nm + j * p - o.y_nm) * kSweepUnitsPerNm;
     int64_t lo = i_first, hi = i_last;
+#if DEXMILL_SWEEP_NARROW
+    int64_t u_acc = u_row, v_acc = v_row;
+    if (!lp.plunge) {
+#else
     int64_t u_acc = 0, v_acc = 0, du = 0, dv = 0;
     if (!lp.plunge) {
       // u = (P - A) . e and v = (P - A) x e, in U * 2^30, exact increments.
@@ -559,6 +619,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       v_acc = dy_row_u * lp.ex_q30 - dx0_u * lp.ey_q30;
       du = p_u * lp.ex_q30;
       dv = -p_u * lp.ey_q30;
+#endif
       if (along_x) {
         if (v_acc < -r_q30 || v_acc > r_q30) continue;
         lo = x_lo;
@@ -579,6 +640,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
     H* wt = g->top + g->index(0, static_cast<int32_t>(j));
     H* wb = g->bottom + g->index(0, static_cast<int32_t>(j));
     bool row_changed = false, mirror_changed = false;
+#if !DEXMILL_SWEEP_NARROW
     if (lp.plunge) {
       int64_t dx_u_col = dx0_u + (lo - i_first) * p_u;
       for (int64_t i = lo; i <= hi; ++i, dx_u_col += p_u) {
@@ -588,6 +650,34 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         row_changed |= cut(wt, wb, i, h_v, 0, 0);
       }
     } else if (dv == 0) {
+#else
+    if (lp.plunge) {
+      // The tool standing at o: r^2 = dx^2 + dy^2, dx stepping by the pitch.
+      // I (dx's type) is int32_t when dx is within it at both ends of the
+      // row (so everywhere between), for one-multiply squares; dx is walked
+      // unsigned, so that the step past the last column may wrap unread.
+      const int64_t dy2 = dy_row_u * dy_row_u;
+      const int64_t dx_lo = dx0_u + (lo - i_first) * p_u, dx_hi = dx_lo + (hi - lo) * p_u;
+      auto plunge_columns = [&](auto dx_first) {
+        using I = decltype(dx_first);
+        using UI = typename std::make_unsigned<I>::type;
+        UI dx = static_cast<UI>(dx_first);
+        const UI step = static_cast<UI>(p_u);
+        bool any = false;
+        for (int32_t i = static_cast<int32_t>(lo); i <= static_cast<int32_t>(hi); ++i, dx += step) {
+          const I x = static_cast<I>(dx);
+          const int64_t r2 = static_cast<int64_t>(x) * x + dy2;
+          if (r2 > reach2) continue;
+          const int64_t h_v = zlow_v + (flat ? 0 : sweep_profile_v(t, min_of(r2, t.r2_u)));
+          any |= shaft_above ? sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, true) : cut(wt, wb, i, h_v, 0, 0);
+        }
+        return any;
+      };
+      row_changed = detail::fits_i32(dx_lo) && detail::fits_i32(dx_hi) && detail::fits_i32(p_u)
+                        ? plunge_columns(static_cast<int32_t>(dx_lo))
+                        : plunge_columns(dx_lo);
+    } else if (dv == 0) {
+#endif
       // The move runs along the row (x-parallel): v, w*(v) and the flank's
       // height F(w*) - m*w* are constants of the row; only the ends of the
       // row need the profile per column.
@@ -686,6 +776,7 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
           for (int64_t i = f_hi + 1; i <= hi && (step > 0 || u_lo + (i - lo) * step >= stop_u); ++i) side(i);
       }
     } else {
+#if !DEXMILL_SWEEP_NARROW
       for (int64_t i = lo; i <= hi; ++i, u_acc += du, v_acc += dv) {
         const int64_t u = (u_acc + kQ30 / 2) >> 30, v = (v_acc + kQ30 / 2) >> 30;
         // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
@@ -732,6 +823,79 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
                                 : lp.za_v + mul_shift_fit(u - w, lp.slope_v_q32, 32) + sweep_profile_v(t, min_of(r2, t.r2_u));
         row_changed |= cut(wt, wb, i, h_v, u, v2);
       }
+#else
+      // The columns of a general direction, u and v walked from their q30
+      // accumulators; I (their type) is int32_t where the ranges allow it
+      // (general_narrow), so that squares and slope products are one 32 x 32
+      // -> 64-bit multiply on a 32-bit CPU.
+      auto columns = [&](auto uw, auto vw) {
+        using I = decltype(uw.value());
+        uw.start(u_acc, du);
+        vw.start(v_acc, dv);
+        // u < wr.lo and u - l > wr.hi, as comparisons of u alone.
+        const I w_lo = static_cast<I>(wr.lo), w_hi_end = static_cast<I>(wr.hi + lp.len_u);
+        const I len = static_cast<I>(lp.len_u);
+        bool any = false;
+        uint32_t skips = 0;  // floor_skips of the row: at most nx
+        // Column indices within [0, nx) fit int32.
+        for (int32_t i = static_cast<int32_t>(lo); i <= static_cast<int32_t>(hi); ++i, uw.next(), vw.next()) {
+          const I u = uw.value(), v = vw.value();
+          // |v_acc| <= (R + 1) 2^30 (NarrowRows), so v^2 < reach2 = (R + 2)^2.
+          const int64_t v2 = min_of(static_cast<int64_t>(v) * v, t.r2_u);
+          // Under the floor (ball_floor_of) the top is lower than any height
+          // this piece computes here: nothing to cut, and no root.
+          if (cull) {
+            const int64_t floor_v = ball_floor_v + slope_v(u) + sweep_bowl_v(t, v2);
+            if (floor_v >= sweep_keep_v(wt[i])) {
+              ++skips;
+              continue;
+            }
+          }
+          // w* in [wr.lo, wr.hi]: outside, the clamp is decided without
+          // computing w* (a square root for ramps).
+          // The lowest point: behind the start (w = u), beyond the end
+          // (w = u - l) or on the flank (w = w*), as clamp(w*, u - l, u).
+          I w = 0;
+          int64_t rho = 0;
+          int side = 0;
+          if (u < w_lo) {
+            side = -1;
+          } else if (u > w_hi_end) {
+            side = 1;
+          } else {
+            if (ball) {  // one root for w* and the flank (best_w_rho's ball case)
+              rho = rho_of(t, v2);
+              w = lp.level ? 0 : static_cast<I>(mul_shift_fit(rho, lp.ball_sin_q30, 30));
+            } else if (lp.level) {
+              w = 0;
+            } else {
+              // Inside its cone the V-bit's w* needs no chord (best_w_rho's
+              // own test; where it fails, best_w takes the rim).
+              int64_t ws = 0;
+              if (vbit_cone) ws = mul_shift(v < 0 ? -static_cast<int64_t>(v) : v, lp.vbit_c1_q30, 30);
+              w = static_cast<I>(vbit_cone && ws * ws + v2 <= t.r2_u ? ws : best_w(t, lp, v, v2));
+            }
+            side = u < w ? -1 : (u - len > w ? 1 : 0);
+          }
+          if (side < 0) {
+            if (!start_ok(u, v, i, dy_row_u)) continue;
+            w = u;
+          } else if (side > 0) {
+            if (!caps.end) continue;
+            w = u - len;
+          }
+          const int64_t r2 = static_cast<int64_t>(w) * w + v2;
+          if (r2 > reach2) continue;
+          const int64_t h_v = side == 0 && ball ? lp.za_v + slope_v(u) + ball_flank_v(t, lp, rho)
+                                                : lp.za_v + slope_v(u - w) + sweep_profile_v(t, min_of(r2, t.r2_u));
+          any |= shaft_above ? sweep_cut_dexel<H>(g, &wt[i], &wb[i], h_v, ct_lsb, true) : cut(wt, wb, i, h_v, u, v2);
+        }
+        floor_skips += skips;
+        return any;
+      };
+      row_changed = general_narrow ? columns(RoundWalk30{}, RoundWalk30{})
+                                   : columns(RoundWalk30Acc<int64_t>{}, RoundWalk30Acc<int64_t>{});
+#endif
     }
     if (row_changed || mirror_changed) {
       changed = true;

@@ -244,7 +244,60 @@ inline constexpr RsqrtKnots kRsqrtKnots{};
 // instruction on a Cortex-M4), and the chain is four products deep where two
 // Newton steps on 1/sqrt were seven. The correction loops make the result
 // exact whatever the estimate: they stop only at r^2 <= x < (r + 1)^2.
+//
+// On 32-bit CPUs the same steps in 32-bit words (isqrt_fast_u64_split): the
+// normalisation takes x's words apart instead of a 64-bit variable shift,
+// and the root is handled in 32 bits (s and the corrections' r fit), so that
+// the squares are one 32 x 32 -> 64-bit multiply. Both forms give the same
+// bits (tests/test_isqrt_rows checks both on every host).
+namespace detail {
+inline uint32_t isqrt_fast_u64_split(uint64_t x) {
+  if (x < 4) return x ? 1u : 0u;
+  // As below, in 32-bit words: the normalisation (x's top word after an
+  // even shift) without a 64-bit variable shift.
+  const uint32_t hi = static_cast<uint32_t>(x >> 32), lo = static_cast<uint32_t>(x);
+  int lz;
+  uint32_t m;  // the top word of x << lz
+  if (hi != 0) {
+    lz = __builtin_clz(hi) & ~1;  // 0..30
+    m = lz ? (hi << lz) | (lo >> (32 - lz)) : hi;
+  } else {
+    lz = 32 + (__builtin_clz(lo) & ~1);
+    m = lo << (lz - 32);
+  }
+  const int h = lz >> 1;  // 31 - e
+  const uint32_t k = (m >> 24) - 64;          // the knot below m, 0..191
+  const uint32_t f_q16 = (m >> 8) & 0xffffu;  // m's place between the knots
+  const uint32_t ya = kRsqrtKnots.q30[k], yb = kRsqrtKnots.q30[k + 1];
+  // ya - yb < 2^23, so the product fits 39 bits; y in [2^29, 2^30].
+  const uint32_t y = ya - static_cast<uint32_t>((static_cast<uint64_t>(ya - yb) * f_q16) >> 16);
+  const uint32_t g = static_cast<uint32_t>((static_cast<uint64_t>(m) * y) >> 30);  // < 2^31 + 2^16
+  // 1 - g y in q30: |d| < 2^17 for a seed within 2^-15.
+  const int32_t d = static_cast<int32_t>((static_cast<int64_t>(1) << 30) - static_cast<int64_t>((static_cast<uint64_t>(g) * y) >> 30));
+  // s = g + g d / 2, with g halved to fit a signed 32-bit operand: sqrt(m)
+  // in q30 with a correction below 2^17 in magnitude, so s is in (2^29,
+  // 2^32) and the sum is exact in 32 bits.
+  const int32_t corr = static_cast<int32_t>((static_cast<int64_t>(static_cast<int32_t>(g >> 1)) * d) >> 30);
+  const uint32_t s = g + static_cast<uint32_t>(corr);
+  // sqrt(x) = s 2^(e - 30) = 2 s / 2^h: for h >= 1 that is s >> (h - 1),
+  // below 2^32; for h = 0 (x >= 2^62) 2 s, saturated to 2^32 - 1.
+  uint32_t r;
+  if (h == 0) {
+    const uint64_t r2 = static_cast<uint64_t>(s) << 1;
+    r = r2 > 0xffffffffu ? 0xffffffffu : static_cast<uint32_t>(r2);
+  } else {
+    r = s >> (h - 1);
+  }
+  while (static_cast<uint64_t>(r) * r > x) --r;
+  while (r < 0xffffffffu && static_cast<uint64_t>(r + 1) * (r + 1) <= x) ++r;
+  return r;
+}
+}  // namespace detail
+
 inline uint32_t isqrt_fast_u64(uint64_t x) {
+#ifndef __SIZEOF_INT128__  // 32-bit CPUs (mul_shift's test)
+  return detail::isqrt_fast_u64_split(x);
+#else
   if (x < 4) return x ? 1u : 0u;
   // An even shift puts x's top bit at 62 or 63: sqrt(x) in [2^e, 2^(e+1)),
   // and m = x / 4^e in [1, 4) as q30 (in [2^30, 2^32)), without a branch.
@@ -267,7 +320,9 @@ inline uint32_t isqrt_fast_u64(uint64_t x) {
   while (r * r > x) --r;
   while (r < 0xffffffffu && (r + 1) * (r + 1) <= x) ++r;
   return static_cast<uint32_t>(r);
+#endif
 }
+
 // sqrt(a^2 + b^2) rounded to nearest for |a|, |b| < 2^31 (error <= 0.5).
 uint32_t hypot_round(int64_t a, int64_t b);
 
