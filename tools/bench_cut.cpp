@@ -55,17 +55,22 @@ struct ModeRun {
   double cut_s = 1e300, bound_s = 1e300;
 };
 
-// Seconds of the lower bound: min() of a constant over the logged spans.
-double time_bound(Job* j, const ModeRun& m) {
-  reset(j);
+// Seconds of the lower bound: min() of a constant over n logged spans, on
+// the grid as it is.
+double time_bound_spans(Job* j, const DexelSpan* spans, size_t n) {
   const height_t c = static_cast<height_t>(grid_height_of_z(j->g, j->w.stock_top_nm - kNmPerMm));
   const double t0 = bench::now_s();
-  for (size_t k = 0; k < m.log.count; ++k) {
-    const DexelSpan& sp = m.spans[k];
+  for (size_t k = 0; k < n; ++k) {
+    const DexelSpan& sp = spans[k];
     height_t* row = j->top.data() + j->g.index(0, sp.j);
     for (int32_t i = sp.i0; i <= sp.i1; ++i) row[i] = row[i] < c ? row[i] : c;
   }
   return bench::now_s() - t0;
+}
+
+double time_bound(Job* j, const ModeRun& m) {
+  reset(j);
+  return time_bound_spans(j, m.spans.data(), m.log.count);
 }
 
 double time_cut(Job* j, bool sweep) {
@@ -75,6 +80,8 @@ double time_cut(Job* j, bool sweep) {
   cut(j, sweep, &st);
   return bench::now_s() - t0;
 }
+
+void run_phases(const char* name, Job* j);
 
 void run(const char* name) {
   Job j;
@@ -124,6 +131,55 @@ void run(const char* name) {
                   static_cast<unsigned long long>(counted.instances),
                   static_cast<unsigned long long>(counted.dexel_updates), cut_s,
                   1e9 * cut_s / static_cast<double>(counted.dexel_updates ? counted.dexel_updates : 1), bound, paper);
+  }
+  if (j.w.pocket_start && !big) run_phases(name, &j);
+}
+
+// The sweep's two phases of a scale job timed apart, each against its own
+// bound: the relief finish (short moves along x) and the spiral pocket
+// (moves in every direction), which starts from the grid the relief left
+// (cut untimed before its rounds). Where bound_ratio's time goes.
+void run_phases(const char* name, Job* j) {
+  const std::vector<PointNm>& path = j->w.path;
+  const size_t at[3] = {1, j->w.pocket_start + 1, path.size()};
+  const char* const phase[2] = {"relief", "pocket"};
+  auto moves = [&](size_t from, size_t to, CutStats* st) {
+    SweepChain chain;
+    for (size_t k = from; k < to; ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
+    sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
+  };
+  std::vector<DexelSpan> spans(1 << 22);
+  for (int ph = 0; ph < 2; ++ph) {
+    reset(j);
+    CutStats before;
+    moves(at[0], at[ph], &before);
+    const std::vector<height_t> start_top = j->top, start_bottom = j->bottom;
+    auto restore = [&] {
+      j->top = start_top;
+      j->bottom = start_bottom;
+    };
+    SpanLog log;
+    log.spans = spans.data();
+    log.capacity = spans.size();
+    CutStats counted;
+    counted.log = &log;
+    moves(at[ph], at[ph + 1], &counted);
+    if (log.dropped) continue;
+    double cut_s = 1e300, bound_s = 1e300;
+    bench::best_time_s([&] {
+      restore();
+      CutStats st;
+      const double t0 = bench::now_s();
+      moves(at[ph], at[ph + 1], &st);
+      cut_s = std::min(cut_s, bench::now_s() - t0);
+      restore();
+      bound_s = std::min(bound_s, time_bound_spans(j, spans.data(), log.count));
+      return 0.0;
+    }, bench::single_run() ? 0.0 : 0.6);
+    bench::result(name, "mode=sweep phase=%s moves=%zu dexel_updates=%llu spans=%zu floor_skips=%llu seconds=%.6f "
+                  "bound_seconds=%.6f bound_ratio=%.2f",
+                  phase[ph], at[ph + 1] - at[ph], static_cast<unsigned long long>(counted.dexel_updates), log.count,
+                  static_cast<unsigned long long>(counted.floor_skips), cut_s, bound_s, cut_s / bound_s);
   }
 }
 

@@ -106,6 +106,7 @@ void scale(Workload* w, int32_t n) {
   const double cx = size_mm / 2, cy = size_mm / 2, rmax = size_mm / 2 - 2;
   w->path.push_back(PointNm{w->path.back().x_nm, w->path.back().y_nm, safe});
   w->path.push_back(PointNm{static_cast<int64_t>(cx * 1e6), static_cast<int64_t>(cy * 1e6), safe});
+  w->pocket_start = w->path.size() - 1;
   // r = b * theta with b = stepover / 2 pi; arc length steps of ~0.3 mm.
   const double b = 0.5 / (2 * 3.14159265358979323846);
   for (double th = 0.0; b * th < rmax;) {
@@ -122,6 +123,7 @@ void scale(Workload* w, int32_t n) {
 bool make_workload(const char* name, Workload* w) {
   w->name = name;
   w->path.clear();
+  w->pocket_start = 0;
   if (!std::strcmp(name, "paper-w1")) paper(w, 80, 40, 9, 40, 0, 79, 6400);
   else if (!std::strcmp(name, "paper-w2")) paper(w, 128, 128, 12, 64, 32, 128, 16512);
   else if (!std::strcmp(name, "paper-w3")) paper(w, 256, 256, 6, 128, 64, 256, 65792);

@@ -19,6 +19,9 @@ struct Workload {
   Tool tool;
   std::vector<PointNm> path;     // the tool tip's polyline; path[0] is the start
   int64_t paper_instances;       // Table 2's count, 0 when not a paper job
+  // scale-*: path[pocket_start] begins the spiral pocket (after the relief
+  // finish and a rapid); the bench also times the two phases apart. 0: one phase.
+  size_t pocket_start = 0;
 };
 
 // "paper-w1", "paper-w2", "paper-w3", "scale-1k", "scale-4k"; false if unknown.
