@@ -77,6 +77,11 @@ struct SweepTool {
   // row: the same bits as the hashed slots (and as no memo). Tests turn it
   // off to check exactly that.
   bool bull_row_shortcuts = true;
+  // Bull-nose rows along x whose every top is under the least height the
+  // piece computes on them (core/cut/sweep_line.cpp, bull_row_above) are left
+  // without their contact solve and roots: the same bits. Tests turn it off
+  // to check exactly that.
+  bool bull_row_floor = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 

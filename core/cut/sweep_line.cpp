@@ -186,6 +186,77 @@ bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
   return true;
 }
 
+// The highest of p[0 .. n) (n >= 1): a max() per lane over blocks of a
+// fixed count (-O2 vectorises them), the last block overlapping the one
+// before (a max may see a top twice), and the lanes' max at the end.
+template <class H>
+inline H max_top(const H* p, int64_t n) {
+  constexpr int kBlock = 16;
+  H hi = 0;
+  if (n < kBlock) {
+    for (int64_t k = 0; k < n; ++k) hi = p[k] > hi ? p[k] : hi;
+    return hi;
+  }
+  H lane[kBlock] = {};
+  for (int64_t k = 0;; k += kBlock) {
+    if (k > n - kBlock) k = n - kBlock;
+    for (int e = 0; e < kBlock; ++e) lane[e] = p[k + e] > lane[e] ? p[k + e] : lane[e];
+    if (k == n - kBlock) break;
+  }
+  for (int e = 0; e < kBlock; ++e) hi = lane[e] > hi ? lane[e] : hi;
+  return hi;
+}
+
+// The bull nose's row floor: true when no column of a row along x (the
+// `dv == 0` branch of sweep_piece, cross-track v, v2 = min(v^2, R^2)) can
+// change, because every top of the row, in [row, row + n) and in the mirror
+// row's [mirror, mirror + n) when there is one, is at or under the least
+// height the piece computes on the row. Then the row needs no w* (a quartic's
+// root), no profile and no side column. Only where a cut is a min() (shaft
+// above every top): there a height h_v leaves the dexel as it is exactly
+// when h_v >= sweep_keep_v(top), and the flank's q16 run exactly when
+// h_q16 >= sweep_keep_v(top) 2^16.
+//
+// Proof. Let S(x) = floor(x sl / 2^32) (mul_shift_fit, sl = slope_v_q32, V
+// per U in q32), P = sweep_profile_v, l = len_u, zlow = min(za, zb). P is
+// nondecreasing in r^2 on [0, R^2] (isqrt is monotonic, d = min(r - a, rc)
+// too, and so rc - isqrt(rc^2 - d^2) and its product with v_per_u_q32 > 0),
+// and every r^2 the row passes to it, min(w^2 + v2, R^2), is >= v2, so each
+// profile term is >= P(v2). Along x e = (+-1, 0) and sl = round((zb - za)
+// 2^32 / l), so |l sl / 2^32 - (zb - za)| <= l / 2^33 < 1 (l <= 2^29 U).
+//   start side (w = u): h = za + S(0) + P(..) >= za + P(v2).
+//   end side (w = u - l): h = za + S(l) + P(..) > za + l sl / 2^32 - 1 +
+//     P(v2) > zb - 2 + P(v2).
+//   flank, column k of the run (u = u0 + k step, ws <= u <= ws + l):
+//     h_q16 = (za - S(ws) + P(..) + S(u0)) 2^16 + k dh_q16 with dh_q16 =
+//     floor(step sl / 2^16) > step sl / 2^16 - 1 and S(u0) - S(ws) >
+//     (u0 - ws) sl / 2^32 - 1, so h_q16 / 2^16 > za + P(v2) + (u - ws) sl /
+//     2^32 - 1 - k / 2^16; (u - ws) in [0, l] puts (u - ws) sl / 2^32 at or
+//     above min(0, l sl / 2^32) > min(0, zb - za) - 1, and k < n.
+// So every height (h_q16 / 2^16 for the flank) is above
+//   floor_v = zlow + P(v2) - 3 - floor(n / 2^16),
+// and the row changes nothing when floor_v >= sweep_keep_v(top) for its
+// highest top (sweep_keep_v is increasing). The wedge's
+// and the cap's tests (which columns) do not matter: whichever are cut, each
+// gets one of these heights. Not inlined: the other tools' pieces compile as
+// without it.
+template <class H>
+__attribute__((noinline)) bool bull_row_above(const SweepTool& t, const SweepLine& lp, int64_t v2, const H* row,
+                                              const H* mirror, int64_t n) {
+  H top = max_top(row, n);
+  if (mirror) {
+    const H top_m = max_top(mirror, n);
+    top = top_m > top ? top_m : top;
+  }
+  // floor_v >= sweep_keep_v(top) needs P(v2) >= need: without the profile
+  // when need <= 0 (P >= 0), never when need exceeds P(R^2) = floor(rc g),
+  // its largest value (P is nondecreasing).
+  const int64_t need = sweep_keep_v(top) - min_of(lp.za_v, lp.zb_v) + 3 + (n >> 16);
+  if (need <= 0) return true;
+  if (need > mul_shift_fit(t.rc_u, t.v_per_u_q32, 32)) return false;
+  return sweep_profile_v(t, v2) >= need;
+}
+
 // floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
 // to start, then an add and a compare a step (a Bresenham walk).
 struct FloorWalk {
@@ -545,6 +616,8 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   int64_t ball_floor_v = 0;
   const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
   uint64_t floor_skips = 0;
+  // Bull-nose rows along x under their floor (bull_row_above) are left whole.
+  const bool bull_rows = along_x && shaft_above && t.kind == ToolKind::kBullNose && t.bull_row_floor;
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
@@ -594,6 +667,11 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       const int64_t v = (v_acc + kQ30 / 2) >> 30;
       if (v * v <= reach2) {
         const int64_t v2 = min_of(v * v, t.r2_u);
+        if (bull_rows && bull_row_above(t, lp, v2, wt + lo, pair ? g->top + g->index(0, static_cast<int32_t>(jm)) + lo : nullptr,
+                                        hi - lo + 1)) {
+          ++st->row_skips;
+          continue;
+        }
         // One square root a row: rho serves w* of this piece and of the
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
