@@ -218,28 +218,34 @@ inline H max_top(const H* p, int64_t n) {
 // h_q16 >= sweep_keep_v(top) 2^16.
 //
 // Proof. Let S(x) = floor(x sl / 2^32) (mul_shift_fit, sl = slope_v_q32, V
-// per U in q32), P = sweep_profile_v, l = len_u, zlow = min(za, zb). P is
-// nondecreasing in r^2 on [0, R^2] (isqrt is monotonic, d = min(r - a, rc)
-// too, and so rc - isqrt(rc^2 - d^2) and its product with v_per_u_q32 > 0),
-// and every r^2 the row passes to it, min(w^2 + v2, R^2), is >= v2, so each
-// profile term is >= P(v2). Along x e = (+-1, 0) and sl = round((zb - za)
-// 2^32 / l), so |l sl / 2^32 - (zb - za)| <= l / 2^33 < 1 (l <= 2^29 U).
-//   start side (w = u): h = za + S(0) + P(..) >= za + P(v2).
-//   end side (w = u - l): h = za + S(l) + P(..) > za + l sl / 2^32 - 1 +
-//     P(v2) > zb - 2 + P(v2).
-//   flank, column k of the run (u = u0 + k step, ws <= u <= ws + l):
-//     h_q16 = (za - S(ws) + P(..) + S(u0)) 2^16 + k dh_q16 with dh_q16 =
-//     floor(step sl / 2^16) > step sl / 2^16 - 1 and S(u0) - S(ws) >
-//     (u0 - ws) sl / 2^32 - 1, so h_q16 / 2^16 > za + P(v2) + (u - ws) sl /
-//     2^32 - 1 - k / 2^16; (u - ws) in [0, l] puts (u - ws) sl / 2^32 at or
-//     above min(0, l sl / 2^32) > min(0, zb - za) - 1, and k < n.
-// So every height (h_q16 / 2^16 for the flank) is above
-//   floor_v = zlow + P(v2) - 3 - floor(n / 2^16),
-// and the row changes nothing when floor_v >= sweep_keep_v(top) for its
-// highest top (sweep_keep_v is increasing). The wedge's
-// and the cap's tests (which columns) do not matter: whichever are cut, each
-// gets one of these heights. Not inlined: the other tools' pieces compile as
-// without it.
+// per U in q32), P = sweep_profile_v, l = len_u, step = +-p the columns'
+// step in u, and zlo = za + min(0, S(l)). P is nondecreasing in r^2 on
+// [0, R^2] (isqrt is monotonic, d = min(r - a, rc) too, and so rc -
+// isqrt(rc^2 - d^2) and its product with v_per_u_q32 > 0), and every r^2
+// the row passes to it, min(w^2 + v2, R^2), is >= v2: each profile term is
+// >= P(v2). And floor(x) - floor(y) >= floor(x - y).
+//   start side (w = u): h = za + S(0) + P(..) >= za + P(v2) >= zlo + P(v2).
+//   end side (w = u - l): h = za + S(l) + P(..) >= zlo + P(v2).
+//   flank: column k of the run from u0 (u_k = u0 + k step, ws <= u_k <=
+//     ws + l) gets h_q16 = (za - S(ws) + P(..) + S(u0)) 2^16 + k dh with
+//     dh = floor(step sl / 2^16).
+//     sl >= 0, step > 0: S(u0) >= S(ws) (u0 >= ws) and dh >= 0, so
+//       h_q16 >= (za + P(v2)) 2^16 = (zlo + P(v2)) 2^16.
+//     sl <= 0, step < 0: S(u0) - S(ws) >= floor((u0 - ws) sl / 2^32) >= S(l)
+//       (0 <= u0 - ws <= l) and dh >= 0: h_q16 >= (zlo + P(v2)) 2^16.
+//     sl step < 0 (the run falls, dh rounded down): S(u0) - S(ws) >
+//       (u0 - ws) sl / 2^32 - 1 and k dh >= k step sl / 2^16 - k, so h_q16 >
+//       (za + P(v2) - 1) 2^16 + (u_k - ws) sl / 2^16 - k, and (u_k - ws) sl
+//       / 2^32 >= min(0, l sl / 2^32) >= min(0, S(l)): h_q16 > (zlo + P(v2)
+//       - 1) 2^16 - k, an integer, so h_q16 >= (zlo + P(v2) - 1) 2^16 - (n -
+//       2) for k <= n - 1.
+// So floor_v = zlo + P(v2) - e, e = 0 but where the run falls, e = 1 +
+// ceil((n - 2) / 2^16) there, has every height (the flank's h_q16 / 2^16)
+// at or above it, and the row changes nothing when floor_v >=
+// sweep_keep_v(top) for its highest top (sweep_keep_v is increasing). The
+// wedge's and the cap's tests (which columns) do not matter: whichever are
+// cut, each gets one of these heights. Not inlined: the other tools' pieces
+// compile as without it.
 template <class H>
 __attribute__((noinline)) bool bull_row_above(const SweepTool& t, const SweepLine& lp, int64_t v2, const H* row,
                                               const H* mirror, int64_t n) {
@@ -248,10 +254,13 @@ __attribute__((noinline)) bool bull_row_above(const SweepTool& t, const SweepLin
     const H top_m = max_top(mirror, n);
     top = top_m > top ? top_m : top;
   }
+  const int64_t zlo = lp.za_v + min_of(mul_shift_fit(lp.len_u, lp.slope_v_q32, 32), int64_t{0});
+  const bool falls = lp.ex_q30 < 0 ? lp.slope_v_q32 > 0 : lp.slope_v_q32 < 0;
+  const int64_t e = falls ? 1 + ((n + 65533) >> 16) : 0;
   // floor_v >= sweep_keep_v(top) needs P(v2) >= need: without the profile
   // when need <= 0 (P >= 0), never when need exceeds P(R^2) = floor(rc g),
   // its largest value (P is nondecreasing).
-  const int64_t need = sweep_keep_v(top) - min_of(lp.za_v, lp.zb_v) + 3 + (n >> 16);
+  const int64_t need = sweep_keep_v(top) - zlo + e;
   if (need <= 0) return true;
   if (need > mul_shift_fit(t.rc_u, t.v_per_u_q32, 32)) return false;
   return sweep_profile_v(t, v2) >= need;
