@@ -209,13 +209,12 @@ inline H max_top(const H* p, int64_t n) {
 
 // The bull nose's row floor: true when no column of a row along x (the
 // `dv == 0` branch of sweep_piece, cross-track v, v2 = min(v^2, R^2)) can
-// change, because every top of the row, in [row, row + n) and in the mirror
-// row's [mirror, mirror + n) when there is one, is at or under the least
-// height the piece computes on the row. Then the row needs no w* (a quartic's
-// root), no profile and no side column. Only where a cut is a min() (shaft
-// above every top): there a height h_v leaves the dexel as it is exactly
-// when h_v >= sweep_keep_v(top), and the flank's q16 run exactly when
-// h_q16 >= sweep_keep_v(top) 2^16.
+// change, because every top of the row, in [row, row + n), is at or under
+// the least height the piece computes on the row. Then the row needs no w*
+// (a quartic's root), no profile and no side column. Only where a cut is a
+// min() (shaft above every top): there a height h_v leaves the dexel as it
+// is exactly when h_v >= sweep_keep_v(top), and the flank's q16 run exactly
+// when h_q16 >= sweep_keep_v(top) 2^16.
 //
 // Proof. Let S(x) = floor(x sl / 2^32) (mul_shift_fit, sl = slope_v_q32, V
 // per U in q32), P = sweep_profile_v, l = len_u, step = +-p the columns'
@@ -244,16 +243,10 @@ inline H max_top(const H* p, int64_t n) {
 // at or above it, and the row changes nothing when floor_v >=
 // sweep_keep_v(top) for its highest top (sweep_keep_v is increasing). The
 // wedge's and the cap's tests (which columns) do not matter: whichever are
-// cut, each gets one of these heights. Not inlined: the other tools' pieces
-// compile as without it.
+// cut, each gets one of these heights.
 template <class H>
-__attribute__((noinline)) bool bull_row_above(const SweepTool& t, const SweepLine& lp, int64_t v2, const H* row,
-                                              const H* mirror, int64_t n) {
-  H top = max_top(row, n);
-  if (mirror) {
-    const H top_m = max_top(mirror, n);
-    top = top_m > top ? top_m : top;
-  }
+bool bull_row_above(const SweepTool& t, const SweepLine& lp, int64_t v2, const H* row, int64_t n) {
+  const H top = max_top(row, n);
   const int64_t zlo = lp.za_v + min_of(mul_shift_fit(lp.len_u, lp.slope_v_q32, 32), int64_t{0});
   const bool falls = lp.ex_q30 < 0 ? lp.slope_v_q32 > 0 : lp.slope_v_q32 < 0;
   const int64_t e = falls ? 1 + ((n + 65533) >> 16) : 0;
@@ -264,6 +257,40 @@ __attribute__((noinline)) bool bull_row_above(const SweepTool& t, const SweepLin
   if (need <= 0) return true;
   if (need > mul_shift_fit(t.rc_u, t.v_per_u_q32, 32)) return false;
   return sweep_profile_v(t, v2) >= need;
+}
+
+// The rows of a bull-nose piece along x (sweep_piece's row loop, lo .. hi
+// the columns of every row) that bull_row_above leaves, taken off both ends
+// of rows = [first, last]: each row from either end while it changes
+// nothing (or the loop would pass it by: |v| beyond R + 1). The rows taken
+// off that the loop would have visited are counted here as it counts them
+// (dexel_updates, the span log); a mirror pair may lose one row, whose
+// mirror the loop then cuts alone, with the same heights. Outside the loop,
+// not inlined, and the range returned by value: the row loop, every tool's,
+// compiles as without it (paper-w3's ball: the same instruction count).
+struct RowRange {
+  int64_t first, last;
+};
+template <class H>
+__attribute__((noinline)) RowRange bull_trim_rows(const DexelGrid<H>* g, const SweepTool& t, const SweepLine& lp,
+                                                  int64_t oy_nm, int64_t lo, int64_t hi, CutStats* st, RowRange rows) {
+  const int64_t p = g->pitch_nm, n = hi - lo + 1, reach2 = sweep_reach2(t);
+  const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  auto leaves = [&](int64_t j) {
+    const int64_t v_acc = (g->y0_nm + j * p - oy_nm) * kSweepUnitsPerNm * lp.ex_q30;  // as the loop's (e_y = 0)
+    if (v_acc < -r_q30 || v_acc > r_q30) return true;  // passed by, not counted
+    const int64_t v = (v_acc + kQ30 / 2) >> 30;
+    if (v * v <= reach2 &&
+        !bull_row_above(t, lp, min_of(v * v, t.r2_u), g->top + g->index(0, static_cast<int32_t>(j)) + lo, n))
+      return false;
+    st->dexel_updates += static_cast<uint64_t>(n);
+    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    ++st->row_skips;
+    return true;
+  };
+  while (rows.first <= rows.last && leaves(rows.first)) ++rows.first;
+  while (rows.last > rows.first && leaves(rows.last)) --rows.last;
+  return rows;
 }
 
 // floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
@@ -625,8 +652,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   int64_t ball_floor_v = 0;
   const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
   uint64_t floor_skips = 0;
-  // Bull-nose rows along x under their floor (bull_row_above) are left whole.
-  const bool bull_rows = along_x && shaft_above && t.kind == ToolKind::kBullNose && t.bull_row_floor;
+  // Bull-nose rows along x under their floor (bull_row_above), from both
+  // ends of the piece's rows, are left whole.
+  if (along_x && shaft_above && t.kind == ToolKind::kBullNose && t.bull_row_floor && x_lo <= x_hi) {
+    const RowRange rows = bull_trim_rows(g, t, lp, o.y_nm, x_lo, x_hi, st, RowRange{j_first, j_last});
+    j_first = rows.first;
+    j_last = rows.last;
+  }
   for (int64_t j = j_first; j <= j_last; ++j, walk ? (across.next(), along.next()) : void()) {
     // The row of the pair that comes first does both.
     const int64_t jm = mirror_sum - j;
@@ -676,11 +708,6 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
       const int64_t v = (v_acc + kQ30 / 2) >> 30;
       if (v * v <= reach2) {
         const int64_t v2 = min_of(v * v, t.r2_u);
-        if (bull_rows && bull_row_above(t, lp, v2, wt + lo, pair ? g->top + g->index(0, static_cast<int32_t>(jm)) + lo : nullptr,
-                                        hi - lo + 1)) {
-          ++st->row_skips;
-          continue;
-        }
         // One square root a row: rho serves w* of this piece and of the
         // previous one, and the ball's flank.
         const bool need_rho = !lp.level || (collinear && !caps.prev->level) || t.kind == ToolKind::kBall;
