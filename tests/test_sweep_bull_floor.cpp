@@ -175,7 +175,8 @@ TEST(sweep_bull_row_floor_changes_no_bit) {
 // has za + P(v2) = sweep_keep_v(T) - 1, one V under: its flank takes
 // za + P(v2) exactly (w* = 0 when level; a rise of a few V over the move
 // leaves the first flank column there too), so the row's dexels drop to
-// T - 1. And runs that fall with zlo + P(v2) = sweep_keep_v(T), whose
+// T - 1 (level pieces are left to the row loop, bull_trim_rows: they check
+// only that nothing changes). And runs that fall with zlo + P(v2) = sweep_keep_v(T), whose
 // lowest flank heights are under it by the roundings. With lsb = 256 nm,
 // V = 1 nm: z in nm is za in V.
 TEST(sweep_bull_row_floor_at_its_edge) {

@@ -243,19 +243,37 @@ inline H max_top(const H* p, int64_t n) {
 // at or above it, and the row changes nothing when floor_v >=
 // sweep_keep_v(top) for its highest top (sweep_keep_v is increasing). The
 // wedge's and the cap's tests (which columns) do not matter: whichever are
-// cut, each gets one of these heights.
-template <class H>
-bool bull_row_above(const SweepTool& t, const SweepLine& lp, int64_t v2, const H* row, int64_t n) {
-  const H top = max_top(row, n);
+// cut, each gets one of these heights. bull_row_floor_of computes the
+// piece's part of floor_v, bull_row_above a row's test.
+//
+// The piece's part of the row floor (floor_v = zlo - e + P(v2)), once for
+// its rows: zlo - e, P(R^2) = floor(rc g) (P's largest value: P is
+// nondecreasing), and lim_hi: a top above it has sweep_keep_v(top) >
+// zlo - e + P(R^2) (256 lim_hi > zlo - e + P(R^2) - 128) and keeps its row.
+struct BullRowFloor {
+  int64_t base_v, p_max, lim_hi;
+};
+BullRowFloor bull_row_floor_of(const SweepTool& t, const SweepLine& lp, int64_t n) {
   const int64_t zlo = lp.za_v + min_of(mul_shift_fit(lp.len_u, lp.slope_v_q32, 32), int64_t{0});
   const bool falls = lp.ex_q30 < 0 ? lp.slope_v_q32 > 0 : lp.slope_v_q32 < 0;
   const int64_t e = falls ? 1 + ((n + 65533) >> 16) : 0;
+  BullRowFloor f;
+  f.base_v = zlo - e;
+  f.p_max = mul_shift_fit(t.rc_u, t.v_per_u_q32, 32);
+  f.lim_hi = (f.base_v + f.p_max + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
+  return f;
+}
+
+template <class H>
+bool bull_row_above(const SweepTool& t, const BullRowFloor& f, int64_t v2, const H* row, int64_t n) {
+  // The row's ends first: on uncut stock the test ends there, without the scan.
+  if (f.lim_hi < 0 || static_cast<int64_t>(row[0]) > f.lim_hi || static_cast<int64_t>(row[n - 1]) > f.lim_hi)
+    return false;
   // floor_v >= sweep_keep_v(top) needs P(v2) >= need: without the profile
-  // when need <= 0 (P >= 0), never when need exceeds P(R^2) = floor(rc g),
-  // its largest value (P is nondecreasing).
-  const int64_t need = sweep_keep_v(top) - zlo + e;
+  // when need <= 0 (P >= 0), never when need exceeds P(R^2).
+  const int64_t need = sweep_keep_v(max_top(row, n)) - f.base_v;
   if (need <= 0) return true;
-  if (need > mul_shift_fit(t.rc_u, t.v_per_u_q32, 32)) return false;
+  if (need > f.p_max) return false;
   return sweep_profile_v(t, v2) >= need;
 }
 
@@ -274,14 +292,18 @@ struct RowRange {
 template <class H>
 __attribute__((noinline)) RowRange bull_trim_rows(const DexelGrid<H>* g, const SweepTool& t, const SweepLine& lp,
                                                   int64_t oy_nm, int64_t lo, int64_t hi, CutStats* st, RowRange rows) {
+  // Level pieces need no w* (w* = 0): their rows cost the loop about what
+  // the test would.
+  if (lp.level) return rows;
   const int64_t p = g->pitch_nm, n = hi - lo + 1, reach2 = sweep_reach2(t);
   const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  const BullRowFloor f = bull_row_floor_of(t, lp, n);
   auto leaves = [&](int64_t j) {
     const int64_t v_acc = (g->y0_nm + j * p - oy_nm) * kSweepUnitsPerNm * lp.ex_q30;  // as the loop's (e_y = 0)
     if (v_acc < -r_q30 || v_acc > r_q30) return true;  // passed by, not counted
     const int64_t v = (v_acc + kQ30 / 2) >> 30;
     if (v * v <= reach2 &&
-        !bull_row_above(t, lp, min_of(v * v, t.r2_u), g->top + g->index(0, static_cast<int32_t>(j)) + lo, n))
+        !bull_row_above(t, f, min_of(v * v, t.r2_u), g->top + g->index(0, static_cast<int32_t>(j)) + lo, n))
       return false;
     st->dexel_updates += static_cast<uint64_t>(n);
     if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
