@@ -32,6 +32,7 @@ struct CutStats {
   uint64_t instances = 0;      // cutter placements (stamp) or swept pieces (sweep)
   uint64_t dexel_updates = 0;  // workpiece dexels visited by the cutting loop
   uint64_t floor_skips = 0;    // sweep: of those, left at a test of the ball's floor (no root)
+  uint64_t row_skips = 0;      // sweep: bull-nose rows left at a test of their floor (bull_row_above)
   SpanLog* log = nullptr;      // optional
 };
 

@@ -77,6 +77,12 @@ struct SweepTool {
   // row: the same bits as the hashed slots (and as no memo). Tests turn it
   // off to check exactly that.
   bool bull_row_shortcuts = true;
+  // Bull-nose ramps along x leave the rows at either end of their range
+  // whose every top is at or under the least height the piece computes on
+  // them (core/cut/sweep_line.cpp, bull_row_above, bull_trim_rows): no
+  // contact solve, no roots, the same bits and visit counts. Tests turn it
+  // off to check exactly that.
+  bool bull_row_floor = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 

@@ -186,6 +186,135 @@ bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
   return true;
 }
 
+// The highest of p[0 .. n) (n >= 1): a max() per lane over blocks of a
+// fixed count (-O2 vectorises them), the last block overlapping the one
+// before (a max may see a top twice), and the lanes' max at the end.
+template <class H>
+inline H max_top(const H* p, int64_t n) {
+  constexpr int kBlock = 16;
+  H hi = 0;
+  if (n < kBlock) {
+    for (int64_t k = 0; k < n; ++k) hi = p[k] > hi ? p[k] : hi;
+    return hi;
+  }
+  H lane[kBlock] = {};
+  for (int64_t k = 0;; k += kBlock) {
+    if (k > n - kBlock) k = n - kBlock;
+    for (int e = 0; e < kBlock; ++e) lane[e] = p[k + e] > lane[e] ? p[k + e] : lane[e];
+    if (k == n - kBlock) break;
+  }
+  for (int e = 0; e < kBlock; ++e) hi = lane[e] > hi ? lane[e] : hi;
+  return hi;
+}
+
+// The bull nose's row floor: true when no column of a row along x (the
+// `dv == 0` branch of sweep_piece, cross-track v, v2 = min(v^2, R^2)) can
+// change, because every top of the row, in [row, row + n), is at or under
+// the least height the piece computes on the row. Then the row needs no w*
+// (a quartic's root), no profile and no side column. Only where a cut is a
+// min() (shaft above every top): there a height h_v leaves the dexel as it
+// is exactly when h_v >= sweep_keep_v(top), and the flank's q16 run exactly
+// when h_q16 >= sweep_keep_v(top) 2^16.
+//
+// Proof. Let S(x) = floor(x sl / 2^32) (mul_shift_fit, sl = slope_v_q32, V
+// per U in q32), P = sweep_profile_v, l = len_u, step = +-p the columns'
+// step in u, and zlo = za + min(0, S(l)). P is nondecreasing in r^2 on
+// [0, R^2] (isqrt is monotonic, d = min(r - a, rc) too, and so rc -
+// isqrt(rc^2 - d^2) and its product with v_per_u_q32 > 0), and every r^2
+// the row passes to it, min(w^2 + v2, R^2), is >= v2: each profile term is
+// >= P(v2). And floor(x) - floor(y) >= floor(x - y).
+//   start side (w = u): h = za + S(0) + P(..) >= za + P(v2) >= zlo + P(v2).
+//   end side (w = u - l): h = za + S(l) + P(..) >= zlo + P(v2).
+//   flank: column k of the run from u0 (u_k = u0 + k step, ws <= u_k <=
+//     ws + l) gets h_q16 = (za - S(ws) + P(..) + S(u0)) 2^16 + k dh with
+//     dh = floor(step sl / 2^16).
+//     sl >= 0, step > 0: S(u0) >= S(ws) (u0 >= ws) and dh >= 0, so
+//       h_q16 >= (za + P(v2)) 2^16 = (zlo + P(v2)) 2^16.
+//     sl <= 0, step < 0: S(u0) - S(ws) >= floor((u0 - ws) sl / 2^32) >= S(l)
+//       (0 <= u0 - ws <= l) and dh >= 0: h_q16 >= (zlo + P(v2)) 2^16.
+//     sl step < 0 (the run falls, dh rounded down): S(u0) - S(ws) >
+//       (u0 - ws) sl / 2^32 - 1 and k dh >= k step sl / 2^16 - k, so h_q16 >
+//       (za + P(v2) - 1) 2^16 + (u_k - ws) sl / 2^16 - k, and (u_k - ws) sl
+//       / 2^32 >= min(0, l sl / 2^32) >= min(0, S(l)): h_q16 > (zlo + P(v2)
+//       - 1) 2^16 - k, an integer, so h_q16 >= (zlo + P(v2) - 1) 2^16 - (n -
+//       2) for k <= n - 1.
+// So floor_v = zlo + P(v2) - e, e = 0 but where the run falls, e = 1 +
+// ceil((n - 2) / 2^16) there, has every height (the flank's h_q16 / 2^16)
+// at or above it, and the row changes nothing when floor_v >=
+// sweep_keep_v(top) for its highest top (sweep_keep_v is increasing). The
+// wedge's and the cap's tests (which columns) do not matter: whichever are
+// cut, each gets one of these heights. bull_row_floor_of computes the
+// piece's part of floor_v, bull_row_above a row's test.
+//
+// The piece's part of the row floor (floor_v = zlo - e + P(v2)), once for
+// its rows: zlo - e, P(R^2) = floor(rc g) (P's largest value: P is
+// nondecreasing), and lim_hi: a top above it has sweep_keep_v(top) >
+// zlo - e + P(R^2) (256 lim_hi > zlo - e + P(R^2) - 128) and keeps its row.
+struct BullRowFloor {
+  int64_t base_v, p_max, lim_hi;
+};
+BullRowFloor bull_row_floor_of(const SweepTool& t, const SweepLine& lp, int64_t n) {
+  const int64_t zlo = lp.za_v + min_of(mul_shift_fit(lp.len_u, lp.slope_v_q32, 32), int64_t{0});
+  const bool falls = lp.ex_q30 < 0 ? lp.slope_v_q32 > 0 : lp.slope_v_q32 < 0;
+  const int64_t e = falls ? 1 + ((n + 65533) >> 16) : 0;
+  BullRowFloor f;
+  f.base_v = zlo - e;
+  f.p_max = mul_shift_fit(t.rc_u, t.v_per_u_q32, 32);
+  f.lim_hi = (f.base_v + f.p_max + (static_cast<int64_t>(1) << (kSweepVBits - 1))) >> kSweepVBits;
+  return f;
+}
+
+template <class H>
+bool bull_row_above(const SweepTool& t, const BullRowFloor& f, int64_t v2, const H* row, int64_t n) {
+  // The row's ends first: on uncut stock the test ends there, without the scan.
+  if (f.lim_hi < 0 || static_cast<int64_t>(row[0]) > f.lim_hi || static_cast<int64_t>(row[n - 1]) > f.lim_hi)
+    return false;
+  // floor_v >= sweep_keep_v(top) needs P(v2) >= need: without the profile
+  // when need <= 0 (P >= 0), never when need exceeds P(R^2).
+  const int64_t need = sweep_keep_v(max_top(row, n)) - f.base_v;
+  if (need <= 0) return true;
+  if (need > f.p_max) return false;
+  return sweep_profile_v(t, v2) >= need;
+}
+
+// The rows of a bull-nose piece along x (sweep_piece's row loop, lo .. hi
+// the columns of every row) that bull_row_above leaves, taken off both ends
+// of rows = [first, last]: each row from either end while it changes
+// nothing (or the loop would pass it by: |v| beyond R + 1). The rows taken
+// off that the loop would have visited are counted here as it counts them
+// (dexel_updates, the span log); a mirror pair may lose one row, whose
+// mirror the loop then cuts alone, with the same heights. Outside the loop,
+// not inlined, and the range returned by value: the row loop, every tool's,
+// compiles as without it (paper-w3's ball: the same instruction count).
+struct RowRange {
+  int64_t first, last;
+};
+template <class H>
+__attribute__((noinline)) RowRange bull_trim_rows(const DexelGrid<H>* g, const SweepTool& t, const SweepLine& lp,
+                                                  int64_t oy_nm, int64_t lo, int64_t hi, CutStats* st, RowRange rows) {
+  // Level pieces need no w* (w* = 0): their rows cost the loop about what
+  // the test would.
+  if (lp.level) return rows;
+  const int64_t p = g->pitch_nm, n = hi - lo + 1, reach2 = sweep_reach2(t);
+  const int64_t r_q30 = (t.r_u + 1) * kQ30;
+  const BullRowFloor f = bull_row_floor_of(t, lp, n);
+  auto leaves = [&](int64_t j) {
+    const int64_t v_acc = (g->y0_nm + j * p - oy_nm) * kSweepUnitsPerNm * lp.ex_q30;  // as the loop's (e_y = 0)
+    if (v_acc < -r_q30 || v_acc > r_q30) return true;  // passed by, not counted
+    const int64_t v = (v_acc + kQ30 / 2) >> 30;
+    if (v * v <= reach2 &&
+        !bull_row_above(t, f, min_of(v * v, t.r2_u), g->top + g->index(0, static_cast<int32_t>(j)) + lo, n))
+      return false;
+    st->dexel_updates += static_cast<uint64_t>(n);
+    if (st->log) st->log->add(static_cast<int32_t>(j), static_cast<int32_t>(lo), static_cast<int32_t>(hi));
+    ++st->row_skips;
+    return true;
+  };
+  while (rows.first <= rows.last && leaves(rows.first)) ++rows.first;
+  while (rows.last > rows.first && leaves(rows.last)) --rows.last;
+  return rows;
+}
+
 // floor(n / d) for n = n0, n0 + dn, n0 + 2 dn, ... (d > 0): two divisions
 // to start, then an add and a compare a step (a Bresenham walk).
 struct FloorWalk {
@@ -570,6 +699,13 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   int64_t ball_floor_v = 0;
   const bool cull = walk && shaft_above && t.skip_under_floor && ball_floor_of(t, lp, &ball_floor_v);
   uint64_t floor_skips = 0;
+  // Bull-nose rows along x under their floor (bull_row_above), from both
+  // ends of the piece's rows, are left whole.
+  if (along_x && shaft_above && t.kind == ToolKind::kBullNose && t.bull_row_floor && x_lo <= x_hi) {
+    const RowRange rows = bull_trim_rows(g, t, lp, o.y_nm, x_lo, x_hi, st, RowRange{j_first, j_last});
+    j_first = rows.first;
+    j_last = rows.last;
+  }
 #if DEXMILL_SWEEP_NARROW
   const bool ball = t.kind == ToolKind::kBall, flat = t.kind == ToolKind::kFlat;  // flat: a profile of 0
   // (setup_piece sets vbit_inside only for ramps: test it only there.)
