@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "core/cut/sweep.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
 #include "core/motion/canon.h"
@@ -101,6 +102,30 @@ inline std::vector<dexmill::PointNm> raster_path(double size_mm, double r_mm, do
                       : rnd(0.1, 1.5) * r_mm;
   }
   return p;
+}
+
+// The test of an exact shortcut: cuts twice with cut(grid, tool, stats,
+// chain), with every option on and with SweepTool's `option` off, each into
+// a fresh n x n grid filled to 30 mm, and ends both chains. *equal: the two
+// grids (tops and bottoms) are the same. False when the tool cannot be
+// prepared.
+template <class H, class Cut>
+bool cut_on_and_off(const dexmill::Tool& tool, int32_t n, int64_t pitch, int64_t lsb, bool dexmill::SweepTool::*option,
+                    Cut cut, dexmill::CutStats* s_on, dexmill::CutStats* s_off, bool* equal) {
+  TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
+  with.fill(mm(30));
+  without.fill(mm(30));
+  dexmill::SweepTool on, off;
+  if (dexmill::sweep_tool_prepare(dexmill::tool_profile(tool), lsb, &on) != dexmill::Status::kOk) return false;
+  off = on;
+  off.*option = false;
+  dexmill::SweepChain c_on, c_off;
+  cut(&with.g, on, s_on, &c_on);
+  cut(&without.g, off, s_off, &c_off);
+  dexmill::sweep_chain_end(&with.g, on, s_on, &c_on);
+  dexmill::sweep_chain_end(&without.g, off, s_off, &c_off);
+  *equal = with.top == without.top && with.bottom == without.bottom;
+  return true;
 }
 
 }  // namespace fixtures

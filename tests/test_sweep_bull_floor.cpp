@@ -86,37 +86,29 @@ struct Count {
 template <class H>
 void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int64_t pitch, int64_t lsb, bool chained,
              int64_t dz_nm, Count* c) {
-  fixtures::TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
-  with.fill(mm(30));
-  without.fill(mm(30));
-  SweepTool on, off;
-  if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-  off = on;
-  off.bull_row_floor = false;
-  CutStats s_on, s_off;
-  for (int64_t drop : {int64_t{0}, dz_nm}) {
-    SweepChain c_on, c_off;
-    for (size_t k = 1; k < path.size(); ++k) {
-      PointNm a = path[k - 1], b = path[k];
-      a.z_nm -= drop;
-      b.z_nm -= drop;
-      if (chained) {
-        sweep_chain_line(&with.g, on, a, b, &s_on, &c_on);
-        sweep_chain_line(&without.g, off, a, b, &s_off, &c_off);
-      } else {
-        sweep_line(&with.g, on, a, b, &s_on);
-        sweep_line(&without.g, off, a, b, &s_off);
+  // Both passes through one chain a grid, ended after each pass.
+  auto cut = [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+    for (int64_t drop : {int64_t{0}, dz_nm}) {
+      for (size_t k = 1; k < path.size(); ++k) {
+        PointNm a = path[k - 1], b = path[k];
+        a.z_nm -= drop;
+        b.z_nm -= drop;
+        if (chained) sweep_chain_line(g, t, a, b, st, ch);
+        else sweep_line(g, t, a, b, st);
       }
+      sweep_chain_end(g, t, st, ch);
     }
-    sweep_chain_end(&with.g, on, &s_on, &c_on);
-    sweep_chain_end(&without.g, off, &s_off, &c_off);
-  }
+  };
+  CutStats s_on, s_off;
+  bool equal = false;
+  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTool::bull_row_floor, cut, &s_on, &s_off, &equal)))
+    return;
   ++c->runs;
   c->row_skips += s_on.row_skips;
   c->updates += s_on.dexel_updates;
   CHECK_EQ(s_off.row_skips, uint64_t{0});
   CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);  // a skipped row's columns still count as visited
-  if (with.top != without.top || with.bottom != without.bottom) {
+  if (!equal) {
     if (++c->unequal <= 5)
       std::printf("  m=%d lsb %lld pitch %lld tool d=%lld rc=%lld %s: grids differ\n", int(sizeof(H) * 8),
                   static_cast<long long>(lsb), static_cast<long long>(pitch),

@@ -74,25 +74,16 @@ struct Count {
 // and needs the same grids and visits.
 template <class H, class Cut>
 void compare_skip(const Tool& tool, int32_t n, int64_t pitch, int64_t lsb, const char* what, Count* c, Cut cut) {
-  fixtures::TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
-  with.fill(mm(30));
-  without.fill(mm(30));
-  SweepTool on, off;
-  if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-  off = on;
-  off.skip_under_floor = false;
   CutStats s_on, s_off;
-  SweepChain c_on, c_off;
-  cut(&with.g, on, &s_on, &c_on);
-  cut(&without.g, off, &s_off, &c_off);
-  sweep_chain_end(&with.g, on, &s_on, &c_on);
-  sweep_chain_end(&without.g, off, &s_off, &c_off);
+  bool equal = false;
+  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTool::skip_under_floor, cut, &s_on, &s_off, &equal)))
+    return;
   ++c->runs;
   c->skips += s_on.floor_skips;
   c->updates += s_on.dexel_updates;
   CHECK_EQ(s_off.floor_skips, uint64_t{0});
   CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);  // skipped columns still count as visited
-  if (with.top != without.top || with.bottom != without.bottom) {
+  if (!equal) {
     if (++c->unequal <= 5) std::printf("  %s m=%d lsb %lld tool d=%lld: grids differ\n", what, int(sizeof(H) * 8),
                                        static_cast<long long>(lsb), static_cast<long long>(tool.diameter_nm));
   }
