@@ -35,15 +35,21 @@ double paper_cut_seconds(const char* name) {
 
 // The path as one polyline, as core/cut/mill.h cuts a program: stamping leaves
 // out each joint's repeated instance, sweeping chains the moves.
+// Moves from .. to - 1 of the path (move k ends at path[k]) as one chain.
+void sweep_moves(Job* j, size_t from, size_t to, CutStats* st) {
+  const std::vector<PointNm>& path = j->w.path;
+  SweepChain chain;
+  for (size_t k = from; k < to; ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
+  sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
+}
+
 void cut(Job* j, bool sweep, CutStats* st) {
   const std::vector<PointNm>& path = j->w.path;
   if (!sweep) {
     for (size_t k = 1; k < path.size(); ++k) stamp_line(&j->g, j->cutter, path[k - 1], path[k], st, k == 1);
     return;
   }
-  SweepChain chain;
-  for (size_t k = 1; k < path.size(); ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
-  sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
+  sweep_moves(j, 1, path.size(), st);
 }
 
 // One mode: its logged run (counts, and the spans for the lower bound) and
@@ -135,6 +141,21 @@ void run(const char* name) {
   if (j.w.pocket_start && !big) run_phases(name, &j);
 }
 
+// A phase's timed cut through a call of its own (not inlined), so that
+// callgrind counts each alone: `valgrind --tool=callgrind build/dexmill
+// bench --once scale-1k`, then `callgrind_annotate --inclusive=yes` on this
+// file: the inclusive costs of the two calls in timed_phase(int, ...), the
+// first the relief's, the second the pocket's (the compiler may fold the
+// two instances into one name).
+template <int Phase>
+__attribute__((noinline)) void timed_phase(Job* j, size_t from, size_t to, CutStats* st) {
+  sweep_moves(j, from, to, st);
+}
+void timed_phase(int ph, Job* j, size_t from, size_t to, CutStats* st) {
+  if (ph == 0) timed_phase<0>(j, from, to, st);
+  else timed_phase<1>(j, from, to, st);
+}
+
 // The sweep's two phases of a scale job timed apart, each against its own
 // bound: the relief finish (short moves along x) and the spiral pocket
 // (moves in every direction), which starts from the grid the relief left
@@ -143,16 +164,11 @@ void run_phases(const char* name, Job* j) {
   const std::vector<PointNm>& path = j->w.path;
   const size_t at[3] = {1, j->w.pocket_start + 1, path.size()};
   const char* const phase[2] = {"relief", "pocket"};
-  auto moves = [&](size_t from, size_t to, CutStats* st) {
-    SweepChain chain;
-    for (size_t k = from; k < to; ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
-    sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
-  };
   std::vector<DexelSpan> spans(1 << 22);
   for (int ph = 0; ph < 2; ++ph) {
     reset(j);
     CutStats before;
-    moves(at[0], at[ph], &before);
+    sweep_moves(j, at[0], at[ph], &before);
     const std::vector<height_t> start_top = j->top, start_bottom = j->bottom;
     auto restore = [&] {
       j->top = start_top;
@@ -163,14 +179,14 @@ void run_phases(const char* name, Job* j) {
     log.capacity = spans.size();
     CutStats counted;
     counted.log = &log;
-    moves(at[ph], at[ph + 1], &counted);
+    sweep_moves(j, at[ph], at[ph + 1], &counted);
     if (log.dropped) continue;
     double cut_s = 1e300, bound_s = 1e300;
     bench::best_time_s([&] {
       restore();
       CutStats st;
       const double t0 = bench::now_s();
-      moves(at[ph], at[ph + 1], &st);
+      timed_phase(ph, j, at[ph], at[ph + 1], &st);
       cut_s = std::min(cut_s, bench::now_s() - t0);
       restore();
       bound_s = std::min(bound_s, time_bound_spans(j, spans.data(), log.count));
