@@ -26,7 +26,7 @@ bool in_cylinder(const CompositionInsert& s, int64_t x, int64_t y, int64_t z) {
 
 Status material_set_name(Material* m, const char* name) {
   int32_t n = 0;
-  while (name[n] && n <= kMaterialNameMax) ++n;
+  while (n <= kMaterialNameMax && name[n]) ++n;  // never past the longest name + 1
   if (n == 0 || n > kMaterialNameMax) return Status::kBadArgument;
   for (int32_t i = 0; i < n; ++i) m->name[i] = name[i];
   m->name[n] = '\0';

@@ -216,7 +216,7 @@ struct BlockRunner {
     d->code = e;
     d->col = col ? col : 1;
     int i = 0;
-    for (; word[i] && i < 15; ++i) d->word[i] = word[i];
+    for (; i < 15 && word[i]; ++i) d->word[i] = word[i];
     d->word[i] = 0;
     return e;
   }
