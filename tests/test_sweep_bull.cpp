@@ -148,17 +148,14 @@ TEST(sweep_bull_ramps_against_oracle) {
   CHECK_EQ(moves, 24);
 }
 
-TEST(sweep_bull_memo_gives_the_computed_bits) {
-  // The chain's memo is a cache: through it (hashed slots, or row slots
-  // with the pieces in ways 0, 1, 0), w* is the bits bull_flank_w computes,
-  // for pieces of several slopes met in turn (as a chain's rows meet the
-  // last piece's), past collisions and evictions, and after a change of
-  // tool (which empties it).
-  std::mt19937_64 rng(7);
-  int differ = 0, hits = 0, calls = 0;
-  for (const uint64_t row_inv : {uint64_t{0}, ((uint64_t{1} << 32) + 49999) / 50000}) {  // a 25 um pitch's
+namespace {
+
+// Through a memo with row_inv_q32 (0: hashed slots), w* for pieces of
+// three slopes in ways 0, 1, 0 against bull_flank_w's bits, each asked
+// twice (the second time a hit).
+void check_memo(uint64_t row_inv_q32, std::mt19937_64* rng, int* differ, int* hits, int* calls) {
   BullFlankMemo memo;
-  memo.row_inv_q32 = row_inv;
+  memo.row_inv_q32 = row_inv_q32;
   for (const int64_t rc : {1500000, 500000}) {
     SweepTool t;
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(bull(mm(6), rc)), 500, &t), Status::kOk)) return;
@@ -171,21 +168,33 @@ TEST(sweep_bull_memo_gives_the_computed_bits) {
       pieces[k].bull_way = static_cast<uint8_t>(k & 1);
     }
     for (int it = 0; it < 5000; ++it) {
-      const SweepLine& lp = pieces[rng() % 3];
-      const int64_t v_abs = static_cast<int64_t>(rng() % 200) * 100000;  // 200 row offsets, 25 um apart
+      const SweepLine& lp = pieces[(*rng)() % 3];
+      const int64_t v_abs = static_cast<int64_t>((*rng)() % 200) * 100000;  // 200 row offsets, 25 um apart
       int64_t w_memo = 0, w_abs = 0;
       const bool ok_memo = bull_flank_w_memo(t, lp, v_abs, &w_memo);
       const bool ok = bull_flank_w(t, lp.m_geo_q30, lp.ball_sin_q30, v_abs, &w_abs);
       const int64_t w = lp.m_geo_q30 < 0 ? -w_abs : w_abs;
-      ++calls;
-      if (ok_memo != ok || (ok && w_memo != w)) ++differ;
+      ++*calls;
+      if (ok_memo != ok || (ok && w_memo != w)) ++*differ;
       // Ask again at once: now a hit, the same bits.
       int64_t w_again = 0;
-      if (ok && bull_flank_w_memo(t, lp, v_abs, &w_again) && w_again == w) ++hits;
+      if (ok && bull_flank_w_memo(t, lp, v_abs, &w_again) && w_again == w) ++*hits;
     }
   }
-  }
+}
+
+}  // namespace
+
+TEST(sweep_bull_memo_gives_the_computed_bits) {
+  // The chain's memo is a cache: through it (hashed slots, or row slots
+  // with the pieces in ways 0, 1, 0), w* is the bits bull_flank_w computes,
+  // for pieces of several slopes met in turn (as a chain's rows meet the
+  // last piece's), past collisions and evictions, and after a change of
+  // tool (which empties it).
+  std::mt19937_64 rng(7);
+  int differ = 0, hits = 0, calls = 0;
+  check_memo(0, &rng, &differ, &hits, &calls);
+  check_memo(((uint64_t{1} << 32) + 49999) / 50000, &rng, &differ, &hits, &calls);  // a 25 um pitch's
   CHECK_EQ(differ, 0);
   CHECK_EQ(hits, calls);
 }
-
