@@ -24,7 +24,8 @@ allowed() {
     core/cam) echo "core/design core/grid core/tool core/math";;  # tool paths from a design part
     core/material) echo "core/math";;  # noise, textures, materials: maths only
     core/check) echo "core/motion core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; process rules: materials
-    display) echo "core/assess core/design core/grid core/tool core/math core/material";;
+    core/sim) echo "core/check core/assess core/material core/cut core/design core/motion core/gcode core/grid core/tool core/math";;  # the engine: a run's stages and observers, tied together once
+    display) echo "core/sim core/check core/assess core/cut core/motion core/gcode core/design core/grid core/tool core/math core/material";;
     *) echo "?";;
   esac
 }
