@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/cut/mill.h"
+#include "core/sim/job.h"  // SingleToolLibrary
 #include "core/motion/interp.h"
 #include "core/tool/tool.h"
 
@@ -76,29 +77,6 @@ class ToolTableFile final : public ToolLibrary, public ToolTable {
   std::vector<ToolTableEntry> entries_;
   std::string message_;
   std::vector<std::string> warnings_;
-};
-
-// Every tool number is the same tool: what `run` uses without --tools, so
-// that T/M6 in a program keep the --tool shape, G41/G42 its radius (and
-// G43 a length of 0, as without a table).
-class SingleToolLibrary final : public ToolLibrary, public ToolTable {
- public:
-  explicit SingleToolLibrary(const Tool& t) : tool_(t) {}
-  bool tool(int32_t, Tool* out) const override {
-    *out = tool_;
-    return true;
-  }
-  bool tool_length_nm(int32_t, int64_t* z_nm) const override {
-    *z_nm = 0;
-    return true;
-  }
-  bool tool_radius_nm(int32_t, int64_t* r_nm) const override {
-    *r_nm = tool_.diameter_nm / 2;
-    return true;
-  }
-
- private:
-  Tool tool_;
 };
 
 }  // namespace dexmill

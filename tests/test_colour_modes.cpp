@@ -26,20 +26,22 @@ struct ToolCase {
   t::TestGrid<uint16_t> tg;
   std::vector<uint8_t> cls;
   std::vector<uint32_t> shadow, luts;
-  ToolColours<uint16_t> tc;
+  ToolProvenance<uint16_t> tc;
+  SurfaceColours colours;
   explicit ToolCase(int32_t first_tool) {
     t::make_block(&tg, 40, 30, mm, 20 * mm);
     const size_t n = size_t(tg.g.nx) * tg.g.ny;
     cls.assign(n, 99);
     shadow.assign(n, 0);
     luts.assign(size_t(kMaxColourClasses) * kShadeLevels, 0);
-    tool_colours_init(&tc, tg.g, first_tool, cls.data(), shadow.data(), luts.data());
+    provenance_init(&tc, tg.g, first_tool, kToolColourSlots, cls.data(), shadow.data(), nullptr);
+    tool_colours_init(&colours, tc, luts.data());
   }
   // Cuts a line as the cut pass does, then reports it.
   bool cut(const t::TestCutter& c, PointNm a, PointNm b) {
     CutStats st;
     stamp_line(&tg.g, c.c, a, b, &st);
-    const bool listed = tool_colours_record(&tc, tg.g.dirty);
+    const bool listed = provenance_record(&tc, tg.g.dirty, 1);
     tg.g.dirty = GridRect::none();
     return listed;
   }
@@ -51,14 +53,14 @@ struct ToolCase {
 TEST(tool_colours_class_is_the_last_tool_that_lowered_the_top) {
   ToolCase k(1);
   CHECK_EQ(int(k.at(20, 15)), 0);  // init: all uncut
-  CHECK(k.tc.colours.classify == nullptr);
-  CHECK_EQ(k.tc.colours.nclasses, kMaxColourClasses);
+  CHECK(k.colours.classify == nullptr);
+  CHECK_EQ(k.colours.nclasses, kMaxColourClasses);
   t::TestCutter flat, ball;
   t::make_cutter(k.tg.g, t::flat_tool(6 * mm), &flat);
   t::make_cutter(k.tg.g, t::ball_tool(6 * mm), &ball);
   // T1 slots y = 8, x 5..35, 5 mm deep; T2 slots x = 20 across it, 8 mm deep.
   CHECK(k.cut(flat, PointNm{5 * mm, 8 * mm, 15 * mm}, PointNm{35 * mm, 8 * mm, 15 * mm}));
-  tool_colours_set_tool(&k.tc, 2);
+  provenance_set_tool(&k.tc, 2);
   CHECK(k.cut(ball, PointNm{20 * mm, 3 * mm, 12 * mm}, PointNm{20 * mm, 26 * mm, 12 * mm}));
   CHECK_EQ(int(k.at(10, 8)), 1);   // T1 alone
   CHECK_EQ(int(k.at(20, 20)), 2);  // T2 alone
@@ -66,7 +68,7 @@ TEST(tool_colours_class_is_the_last_tool_that_lowered_the_top) {
   CHECK_EQ(int(k.at(10, 20)), 0);  // no tool
   CHECK_EQ(int(k.at(30, 25)), 0);
   // T1 again, shallower than T2's slot: lowers nothing there, stays T2's.
-  tool_colours_set_tool(&k.tc, 1);
+  provenance_set_tool(&k.tc, 1);
   CHECK(!k.cut(flat, PointNm{14 * mm, 20 * mm, 17 * mm}, PointNm{26 * mm, 20 * mm, 17 * mm}));
   CHECK_EQ(int(k.at(20, 20)), 2);
   CHECK_EQ(int(k.at(15, 20)), 1);  // beside T2's slot: T1's
@@ -74,7 +76,7 @@ TEST(tool_colours_class_is_the_last_tool_that_lowered_the_top) {
   CHECK_EQ(k.tc.tool[0], 1);
   CHECK_EQ(k.tc.tool[1], 2);
   // A tool that cuts nothing is not listed.
-  tool_colours_set_tool(&k.tc, 7);
+  provenance_set_tool(&k.tc, 7);
   CHECK(!k.cut(flat, PointNm{10 * mm, 20 * mm, 25 * mm}, PointNm{30 * mm, 20 * mm, 25 * mm}));
   CHECK_EQ(k.tc.ntools, 2);
 }
@@ -97,7 +99,7 @@ TEST(tool_colours_palette_wraps_after_seven_tools) {
   t::TestCutter flat;
   t::make_cutter(k.tg.g, t::flat_tool(2 * mm), &flat);
   for (int32_t n = 0; n < 9; ++n) {
-    tool_colours_set_tool(&k.tc, 10 + n);
+    provenance_set_tool(&k.tc, 10 + n);
     const int64_t x = (3 + 4 * n) * mm;
     CHECK(k.cut(flat, PointNm{x, 5 * mm, 18 * mm}, PointNm{x, 25 * mm, 18 * mm}));
     CHECK_EQ(int(k.at(3 + 4 * n, 15)), 1 + n % kToolColourSlots);

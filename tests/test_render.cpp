@@ -104,7 +104,8 @@ struct ModeColours {
   HeightClasses<H> heights;
   std::vector<uint8_t> cls;
   std::vector<uint32_t> luts, shadow;
-  ToolColours<H> tool;
+  ToolProvenance<H> tool;
+  SurfaceColours tool_colours;
   SlopeColours<H> slope;
   ThinColours<H> thin;
   MaterialColours<H> material;
@@ -117,7 +118,10 @@ struct ModeColours {
     luts.assign(size_t(kMaxColourClasses) * kShadeLevels, 0);
     switch (c) {
       case IncCase::kHeights: heights.init(g); return &heights.sc;
-      case IncCase::kTool: tool_colours_init(&tool, g, 1, cls.data(), shadow.data(), luts.data()); return &tool.colours;
+      case IncCase::kTool:
+        provenance_init(&tool, g, 1, kToolColourSlots, cls.data(), shadow.data(), nullptr);
+        tool_colours_init(&tool_colours, tool, luts.data());
+        return &tool_colours;
       case IncCase::kSlope: slope_colours_init(&slope, g, cls.data(), luts.data()); return &slope.colours;
       case IncCase::kThin: thin_colours_init(&thin, g, 3 * mm, cls.data(), luts.data()); return &thin.colours;
       case IncCase::kTexture:  // uncut tops (the stock's top) tinted
@@ -176,8 +180,8 @@ void incremental_run(const IncCase& ic, uint64_t seed, int steps) {
     if (rng.range(0, 9)) stamp_line(&tg.g, c.c, a, b, &st);
     if (ic.colours == IncCase::kTool)  // as the cut pass reports every record
       for (ModeColours<H>* m : {&ca, &cb}) {
-        tool_colours_set_tool(&m->tool, tool_number);
-        tool_colours_record(&m->tool, tg.g.dirty);
+        provenance_set_tool(&m->tool, tool_number);
+        provenance_record(&m->tool, tg.g.dirty, 1);
       }
     if (rng.range(0, 9) == 0) pose.visible = !pose.visible;
     if (rng.range(0, 3)) pose.tip = b;

@@ -44,18 +44,24 @@ int check_simulate(int argc, char** argv) {
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i)
     if (std::strcmp(argv[i], "--simulate")) args.push_back(argv[i]);
-  static char fail_on[] = "--fail-on-collision";
+  static char fail_on[] = "--fail-on-collision";  // the verdict: exit 4 on a finding, every check unless named
   args.push_back(fail_on);
   RunOptions o;
   bool help = false;
-  const int code = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
-  if (code != kExitOk || help) return code;
+  const int parsed = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
+  if (parsed != kExitOk || help) return parsed;
   if (o.file.empty()) return fail(kExitUsage, "check --simulate needs a program FILE (or - for stdin)");
   if (run_draws(o))
     return fail(kExitUsage, "check --simulate writes no images or models (use dexmill run); --report is fine");
   o.fail_on_gouge = !o.design.empty();
-  o.simulate_only = true;
-  return run_job(o);
+  o.print_summary = false;
+  RunResult res;
+  const int code = run_job(o, &res);
+  if (res.finished)
+    std::fprintf(stderr, "%s: %llu safety finding(s)%s\n", res.shown_name.c_str(),
+                 static_cast<unsigned long long>(res.safety_findings),
+                 o.design.empty() ? "" : (res.gouged ? ", gouged the design" : ", no gouge"));
+  return code;
 }
 
 }  // namespace

@@ -124,10 +124,13 @@ int cmd_optimize(int argc, char** argv) {
   o.shown_name = shown;
   o.file = input.read_path();
   o.strict = true;  // a program with an error is not rewritten
-  std::vector<int64_t> limits;
-  o.line_feed_limits = &limits;
-  const int cut = run_job(o);
+  o.feed_limits = true;
+  o.print_summary = false;
+  o.print_material_warnings = false;
+  RunResult cut_result;
+  const int cut = run_job(o, &cut_result);
   if (cut != kExitOk) return cut;
+  const std::vector<int64_t>& limits = cut_result.line_feed_limits;
 
   std::vector<unsigned char> bytes;
   const ReadFile rf = read_whole_file(input.read_path(), kMaxProgramBytes, &bytes, &err);

@@ -81,8 +81,6 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
     }
     d->report.triangles = info.triangles;
   }
-  d->seen.assign(gouge_watch_seen_bytes(plan.geo.nx, plan.geo.ny), 0);
-  (void)gouge_watch_init(&d->watch, &d->grid, d->opt, d->seen.data(), d->seen.size());
   if (design_columns(d->grid) == 0) {
     std::fprintf(stderr, "%s: error: the design lies entirely outside the stock%s\n", o.design.c_str(),
                  o.design_pgm ? "" : " (units are mm, machine coordinates; see --design-offset)");
@@ -94,9 +92,9 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
 namespace {
 
 // Prints the warnings of events [d->printed, end).
-void print_events(const DexelGrid<height_t>& g, RunDesign* d, size_t end) {
+void print_events(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign* d, size_t end) {
   for (; d->printed < end; ++d->printed) {
-    const GougeEvent& e = d->watch.events[d->printed];
+    const GougeEvent& e = w.events[d->printed];
     const int64_t design_z = g.z0_nm + e.design_lsb * g.lsb_nm;
     std::fprintf(stderr, "%s:%u:1: warning: gouge %s mm at X%s Y%s (design Z%s, cut Z%s)\n", d->file.c_str(), e.line,
                  nm_to_mm_text(e.depth_lsb * g.lsb_nm, 3).c_str(), nm_to_mm_text(g.x0_nm + e.i * g.pitch_nm, 3).c_str(),
@@ -107,36 +105,33 @@ void print_events(const DexelGrid<height_t>& g, RunDesign* d, size_t end) {
 
 }  // namespace
 
-bool watch_gouges(const DexelGrid<height_t>& g, GridRect changed, uint32_t line, const PointNm& tool,
-                  const GougeOrigin* prev, RunDesign* d) {
-  const bool found = gouge_watch_check(&d->watch, g, changed, line, tool, prev);
+void gouges_after_record(const GougeWatch& w, const DexelGrid<height_t>& g, uint32_t line, bool found, RunDesign* d) {
   if (found) {
     d->marks.clear();
-    for (size_t k = 0; k < d->watch.nevents; ++k) {
-      const GougeEvent& e = d->watch.events[k];
+    for (size_t k = 0; k < w.nevents; ++k) {
+      const GougeEvent& e = w.events[k];
       d->marks.push_back(PointNm{g.x0_nm + e.i * g.pitch_nm, g.y0_nm + e.j * g.pitch_nm, g.z0_nm + e.design_lsb * g.lsb_nm});
     }
   }
   // Lines other than this record's are done (the previous line's end cap
   // came with this record).
   size_t done = d->printed;
-  while (done < d->watch.nevents && d->watch.events[done].line != line) ++done;
-  print_events(g, d, done);
-  return found;
+  while (done < w.nevents && w.events[done].line != line) ++done;
+  print_events(w, g, d, done);
 }
 
-void print_gouges(const DexelGrid<height_t>& g, RunDesign* d) { print_events(g, d, d->watch.nevents); }
+void print_gouges(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign* d) { print_events(w, g, d, w.nevents); }
 
-void assess_design(const DexelGrid<height_t>& g, RunDesign* d) {
+void assess_design(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign* d) {
   AssessResult& r = d->report.result;
   (void)assess(g, d->grid, d->opt, &r);  // same geometry by construction
   auto at = [&g](int32_t i, int32_t j) { return PointNm{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, 0}; };
   if (r.max_gouge_lsb > 0) d->report.max_gouge_at = at(r.max_gouge_i, r.max_gouge_j);
   if (r.max_leftover_lsb > 0) d->report.max_leftover_at = at(r.max_leftover_i, r.max_leftover_j);
-  d->report.gouges_total = d->watch.total;
+  d->report.gouges_total = w.total;
   d->report.gouges.clear();
-  for (size_t k = 0; k < d->watch.nevents; ++k) {
-    const GougeEvent& e = d->watch.events[k];
+  for (size_t k = 0; k < w.nevents; ++k) {
+    const GougeEvent& e = w.events[k];
     ReportGouge rg;
     rg.line = e.line;
     rg.at = PointNm{g.x0_nm + e.i * g.pitch_nm, g.y0_nm + e.j * g.pitch_nm, g.z0_nm + e.design_lsb * g.lsb_nm};

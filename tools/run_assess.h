@@ -1,5 +1,6 @@
 // The design part of `dexmill run --design` (paper §2.5): read before the
-// cut (a bad file costs no simulation), assessed after it into the report.
+// cut (a bad file costs no simulation), watched by the simulation while it
+// cuts (core/assess/gouge_watch.h), assessed after it into the report.
 #ifndef DEXMILL_TOOLS_RUN_ASSESS_H
 #define DEXMILL_TOOLS_RUN_ASSESS_H
 
@@ -30,9 +31,6 @@ struct RunDesign {
   std::vector<uint32_t> luts;
   ErrorColours<height_t> colours;
   RenderOutput::Legend legend;
-  // Gouges charged to their lines while cutting.
-  std::vector<uint8_t> seen;
-  GougeWatch watch;
   std::string file;           // the program, for the warnings
   size_t printed = 0;         // events whose warning is out
   std::vector<PointNm> marks; // where the kept gouges are (deepest column, on the design's surface), for the frames
@@ -46,15 +44,14 @@ int load_design(const RunOptions& o, const GridPlan& plan, const std::string& pr
 // d->colours and d->legend for the outputs to draw with.
 void error_view_init(const DexelGrid<height_t>& g, RunDesign* d);
 
-// After a record of the cut: checks the columns it changed and returns true
-// when there was a new gouge. A line's warning (`FILE:LINE:1: warning:
+// After a record of `line` was watched (w, the simulation's; `found`: the
+// record found a gouge): the marks follow the kept events, and a line's warning (`FILE:LINE:1: warning:
 // gouge 0.31 mm at X.. Y.. (design Z.., cut Z..)`, its deepest column) is
 // printed once the line is done: when a record of another line has been
 // checked, or by print_gouges.
-bool watch_gouges(const DexelGrid<height_t>& g, GridRect changed, uint32_t line, const PointNm& tool,
-                  const GougeOrigin* prev, RunDesign* d);
+void gouges_after_record(const GougeWatch& w, const DexelGrid<height_t>& g, uint32_t line, bool found, RunDesign* d);
 // Prints the warnings not printed yet (the end of the run, or a stop).
-void print_gouges(const DexelGrid<height_t>& g, RunDesign* d);
+void print_gouges(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign* d);
 
 // --overlay (paper figure 9) for the final image: the design drawn as a
 // dexel grid of its own, in a colour of its own, through the view of
@@ -73,8 +70,8 @@ struct OverlayImage {
 bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d, RenderOutput* cut_view,
                    OverlayImage* ov, const FrameView** shown, std::string* err);
 
-// Compares the cut with the design into d->report.
-void assess_design(const DexelGrid<height_t>& g, RunDesign* d);
+// Compares the cut with the design into d->report (with the watch's gouges).
+void assess_design(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign* d);
 
 }  // namespace cli
 }  // namespace dexmill

@@ -22,7 +22,8 @@ std::string short_mm(int64_t nm) {
 // its tools ("T1 FLAT 6"; with more tools than colours, "T1/T8").
 void tool_legend(RunColours* c) {
   RenderOutput::Legend& l = c->legend;
-  const ToolColours<height_t>& t = c->tool;
+  const ToolProvenance<height_t>& t = *c->prov;
+  c->legend_tools = t.ntools;
   l.named = true;
   l.n = 1 + min_of(t.ntools, kToolColourSlots);
   l.colour[0] = kToolUncutColour;
@@ -56,14 +57,15 @@ std::string tool_short_name(const Tool& t) {
 
 const SurfaceColours* RunColours::colours() const {
   switch (mode) {
-    case RunOptions::Color::kTool: return &tool.colours;
+    case RunOptions::Color::kTool: return &tool;
     case RunOptions::Color::kSlope: return &slope.colours;
     case RunOptions::Color::kThin: return &thin.colours;
     default: return nullptr;
   }
 }
 
-void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib) {
+void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,
+                       const ToolProvenance<height_t>* prov) {
   c->mode = o.color;
   if (!c->colours()) return;
   const size_t cells = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
@@ -74,8 +76,8 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
     case RunOptions::Color::kTool:
       c->lib = lib;
       c->initial = o.tool;
-      c->shadow.assign(cells, 0);
-      tool_colours_init(&c->tool, g, kInitialToolNumber, c->cls.data(), c->shadow.data(), c->luts.data());
+      c->prov = prov;
+      tool_colours_init(&c->tool, *prov, c->luts.data());
       tool_legend(c);
       break;
     case RunOptions::Color::kSlope:
@@ -98,13 +100,9 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
   }
 }
 
-void run_colours_record(RunColours* c, GridRect changed) {
-  if (tool_colours_record(&c->tool, changed)) tool_legend(c);
+void run_colours_record(RunColours* c) {
+  if (c->prov && c->prov->ntools != c->legend_tools) tool_legend(c);
 }
-
-void run_colours_tool_change(RunColours* c, int32_t number) { tool_colours_set_tool(&c->tool, number); }
-
-void run_colours_note(RunColours* c, GridRect changed) { tool_colours_note(&c->tool, changed); }
 
 }  // namespace cli
 }  // namespace dexmill

@@ -11,6 +11,7 @@
 
 #include "core/config.h"
 #include "core/cut/mill.h"
+#include "core/sim/provenance.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "display/slope_colours.h"
@@ -28,10 +29,11 @@ constexpr int32_t kInitialToolNumber = -1;
 
 struct RunColours {
   RunOptions::Color mode = RunOptions::Color::kPlain;
-  std::vector<uint8_t> cls;      // a class a dexel
+  std::vector<uint8_t> cls;      // a class a dexel (slope, thin; tool: the simulation's provenance)
   std::vector<uint32_t> luts;    // the renderer's ramps, kMaxColourClasses of them
-  std::vector<uint32_t> shadow;  // tool: the tops as of the last record
-  ToolColours<height_t> tool;
+  const ToolProvenance<height_t>* prov = nullptr;  // tool: which tool cut each column
+  int32_t legend_tools = 0;      // tool: prov->ntools when the legend was made
+  SurfaceColours tool;
   SlopeColours<height_t> slope;
   ThinColours<height_t> thin;
   RenderOutput::Legend legend;
@@ -43,16 +45,14 @@ struct RunColours {
 };
 
 // Sets up o.color's mode over g (as stocked) when it is tool, slope or
-// thin; nothing otherwise. c must stay where it is while outputs use it.
-void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib);
+// thin; nothing otherwise (tool: over the simulation's provenance, prov).
+// c must stay where it is while outputs use it.
+void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,
+                       const ToolProvenance<height_t>* prov);
 
-// The tool mode's hooks in the cut pass (run_job's CutSink; null when the
-// mode is off, so that they cost nothing): after every record, with the
-// rectangle it changed; at a tool change (after recording the record that
-// made it); and for the changes a frame's flush shows.
-void run_colours_record(RunColours* c, GridRect changed);
-void run_colours_tool_change(RunColours* c, int32_t number);
-void run_colours_note(RunColours* c, GridRect changed);
+// The tool mode after every record: the legend names a tool the record
+// listed for the first time.
+void run_colours_record(RunColours* c);
 
 // "flat 6" for flat:6,len=20...: the kind and diameter of a tool's spec.
 std::string tool_short_name(const Tool& t);

@@ -2,6 +2,7 @@
 #include "tools/run_demo.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "core/design/builtin.h"
@@ -9,11 +10,43 @@
 #include "platform/output_file.h"
 #include "platform/report_json.h"
 #include "tools/cli.h"
+#include "tools/demo_program.h"
 #include "tools/run_job.h"
 #include "tools/zig_job.h"
 
 namespace dexmill {
 namespace cli {
+
+int demo_defaults(RunOptions* o) {
+  if (o->image.empty()) o->image = "out/final.ppm";
+  if (o->design.empty()) {  // the demo's own part: its report has an assessment, and out/error.ppm
+    o->design = "(the demo's part)";
+    o->demo_design = true;
+    if (o->error_image.empty()) o->error_image = "out/error.ppm";
+  }
+  if (o->frames_dir.empty()) o->frames_dir = "out/frames";
+  if (o->material.empty()) {
+    o->material = demo_material();
+    if (!o->have_color) o->color = RunOptions::Color::kMaterial;
+  }
+  std::string err;
+  if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
+  const std::string text = demo_program();
+  char e[1300];
+  if (!write_output(kDemoProgramPath, text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
+  return kExitOk;
+}
+
+StockBox demo_stock_box() {
+  int64_t v[6];
+  const char* s = demo_stock();
+  for (int k = 0; k < 6; ++k) {
+    v[k] = std::strtol(s, const_cast<char**>(&s), 10) * kNmPerMm;
+    if (*s == ',') ++s;
+  }
+  return StockBox{PointNm{v[0], v[1], v[2]}, PointNm{v[3], v[4], v[5]}};
+}
+
 int run_demo(RunOptions o) {
   if (o.demo == "list") {
     for (int32_t k = 0; k < builtin_design_count(); ++k) {

@@ -1,23 +1,41 @@
-// `dexmill run`: the whole job. Two passes over the program:
-//   scan  the interpreter alone (core/motion/summary.h): motion counts and
+// `dexmill run`: the options into a job for the engine, and the files and
+// views around it. Two passes over the program:
+//   scan  the interpreter alone (core/sim/scan.h): motion counts and
 //         boxes, the time estimate, the tools it uses; every G-code error
-//         and warning is reported here, and a program with an error is not
-//         cut (exit 1; the report is still written);
-//   cut   the interpreter again into the Mill (core/cut/mill.h) on a grid sized
-//         by tools/run_stock.h, with frames, the live view and the progress
-//         bar fed as it goes;
+//         and warning is reported here; a program with an error is cut up
+//         to its first bad block (with --strict not at all: exit 1, the
+//         report still written);
+//   cut   the simulation (core/sim/simulation.h) on a grid planned from the
+//         scan (core/sim/stock_plan.h), a line a step, with frames, the live
+//         view and the progress bar between steps (tools/run_views.h);
 // then the outputs: --image, --heightmap, --stl, --report, each written
 // completely or not at all (exit 3 when one cannot be written).
 #ifndef DEXMILL_TOOLS_RUN_JOB_H
 #define DEXMILL_TOOLS_RUN_JOB_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "tools/run_options.h"
 
 namespace dexmill {
 namespace cli {
 
-// Runs the job; returns the exit status (CLI.md).
-int run_job(RunOptions o);
+// What the subcommands that run a job for its findings read from it.
+struct RunResult {
+  bool finished = false;     // the run went through to its verdict (exit 0, 1 for a partial cut, or 4)
+  std::string shown_name;    // the program's name in messages
+  uint64_t safety_findings = 0;
+  bool gouged = false;
+  // With RunOptions::feed_limits: per line (the index), the lowest max feed
+  // among the materials that line's feed moves removed (kNoFeedLimit: none;
+  // core/check/process.h); what `dexmill optimize` lowers feeds to.
+  std::vector<int64_t> line_feed_limits;
+};
+
+// Runs the job; returns the exit status (the man page's).
+int run_job(RunOptions o, RunResult* result = nullptr);
 
 }  // namespace cli
 }  // namespace dexmill

@@ -21,7 +21,7 @@ std::string mm_per_min(int64_t nm_per_min) {
 
 }  // namespace
 
-int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock, const DexelGrid<height_t>& g) {
+int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock) {
   m->comp.reset(new StockComposition());
   if (material_preset(what.c_str(), stock, m->comp.get())) {
     m->source = "preset " + what;
@@ -40,8 +40,6 @@ int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock, 
     }
     m->source = what;
   }
-  m->shadow.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), 0);
-  (void)process_watch_init(&m->watch, g, m->comp.get(), m->shadow.data(), m->shadow.size());
   return kExitOk;
 }
 
@@ -62,23 +60,23 @@ std::string process_violation_text(const ProcessViolation& v, const StockComposi
   return "";
 }
 
-void material_print(const RunMaterial& m, const std::string& file) {
-  for (size_t k = 0; k < m.watch.nkept; ++k) {
-    const ProcessViolation& v = m.watch.kept[k];
+void material_print(const RunMaterial& m, const ProcessWatch& w, const std::string& file) {
+  for (size_t k = 0; k < w.nkept; ++k) {
+    const ProcessViolation& v = w.kept[k];
     std::fprintf(stderr, "%s:%u:1: warning: %s\n", file.c_str(), v.line, process_violation_text(v, *m.comp).c_str());
   }
-  if (m.watch.total > m.watch.nkept)
+  if (w.total > w.nkept)
     std::fprintf(stderr, "%s: warning: %llu more process rule violations not listed\n", file.c_str(),
-                 static_cast<unsigned long long>(m.watch.total - m.watch.nkept));
+                 static_cast<unsigned long long>(w.total - w.nkept));
 }
 
-void material_to_report(const RunMaterial& m, const DexelGrid<height_t>& g, RunReport* rep) {
+void material_to_report(const RunMaterial& m, const ProcessWatch& w, const DexelGrid<height_t>& g, RunReport* rep) {
   rep->have_materials = true;
   rep->material_source = m.source;
-  rep->material_violations_total = m.watch.total;
+  rep->material_violations_total = w.total;
   for (int32_t k = 0; k < m.comp->material_count; ++k) {
     const Material& mat = m.comp->materials[k];
-    const MaterialTally& t = m.watch.tally[k];
+    const MaterialTally& t = w.tally[k];
     ReportMaterial r;
     r.name = mat.name;
     r.removed_mm3 = volume_mm3_text(t.removed_nm_columns, 1, g.pitch_nm);
@@ -89,8 +87,8 @@ void material_to_report(const RunMaterial& m, const DexelGrid<height_t>& g, RunR
     r.violations = t.violations;
     rep->materials.push_back(r);
   }
-  for (size_t k = 0; k < m.watch.nkept; ++k) {
-    const ProcessViolation& v = m.watch.kept[k];
+  for (size_t k = 0; k < w.nkept; ++k) {
+    const ProcessViolation& v = w.kept[k];
     rep->material_violations.push_back(ReportViolation{process_rule_name(v.rule), v.line, m.comp->materials[v.material].name,
                                                        process_violation_text(v, *m.comp)});
   }

@@ -1,6 +1,6 @@
 // `--material PRESET|FILE` of `dexmill run` (issue 19): the stock's
-// composition, the process rules watching the cut (core/check/process.h),
-// their warnings and the report's `materials`.
+// composition, for the process rules the simulation runs on the cut
+// (core/check/process.h), their warnings and the report's `materials`.
 #ifndef DEXMILL_TOOLS_RUN_MATERIAL_H
 #define DEXMILL_TOOLS_RUN_MATERIAL_H
 
@@ -21,22 +21,20 @@ namespace cli {
 struct RunMaterial {
   std::unique_ptr<StockComposition> comp;  // a few KB
   std::string source;                      // "preset NAME" or the file
-  ProcessWatch watch;
-  std::vector<uint32_t> shadow;
 };
 
 // Builds the composition of `what` (a preset's name, else a file) over the
-// stock box and starts the watch on the grid as stocked. Returns an exit
-// status (kExitOk; kExitUsage for neither a preset nor a file; the file's
-// read or input error), with the message printed.
-int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock, const DexelGrid<height_t>& g);
+// stock box. Returns an exit status (kExitOk; kExitUsage for neither a
+// preset nor a file; the file's read or input error), with the message
+// printed.
+int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock);
 
-// Prints every kept violation as FILE:LINE:1: warning: ..., and how many
-// were not kept.
-void material_print(const RunMaterial& m, const std::string& file);
+// Prints every kept violation of the watch as FILE:LINE:1: warning: ...,
+// and how many were not kept.
+void material_print(const RunMaterial& m, const ProcessWatch& w, const std::string& file);
 
 // Into the report.
-void material_to_report(const RunMaterial& m, const DexelGrid<height_t>& g, RunReport* rep);
+void material_to_report(const RunMaterial& m, const ProcessWatch& w, const DexelGrid<height_t>& g, RunReport* rep);
 
 // The warning's message for a violation.
 std::string process_violation_text(const ProcessViolation& v, const StockComposition& c);

@@ -53,15 +53,15 @@ struct RunOptions {
   bool window = false;
   std::string fbdev;
   bool quiet = false;
-  bool simulate_only = false;    // `check --simulate`: no summary, a verdict line on stderr
   // `dexmill optimize`: the program's name in messages when `file` is a
   // copy of it (a spooled standard input); empty: from `file`.
   std::string shown_name;
-  // `dexmill optimize`: the cut fills this with each line's lowest max feed
-  // among the materials its feed moves removed (index = line,
-  // kNoFeedLimit: none; core/check/process.h); the run then prints neither
-  // the process warnings nor the summary.
-  std::vector<int64_t>* line_feed_limits = nullptr;
+  // `check --simulate` and `optimize` run a job for its findings: no
+  // summary on stdout (optimize: no process warnings either, but each
+  // line's feed limit kept, tools/run_job.h RunResult).
+  bool print_summary = true;
+  bool print_material_warnings = true;
+  bool feed_limits = false;
   // Live outputs (--window, --fbdev).
   bool exit_when_done = false;   // close the window after the program (fbdev always does)
   int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting

@@ -179,7 +179,8 @@ bool material_view(Arena& a, const DexelGrid<uint16_t>& g, const char* preset, M
 
 // The colour modes' state and memory (the error view has its own).
 struct ModeColours {
-  ToolColours<uint16_t> tool;
+  ToolProvenance<uint16_t> tool;
+  SurfaceColours tool_colours;
   SlopeColours<uint16_t> slope;
   ThinColours<uint16_t> thin;
   MaterialColours<uint16_t> material;
@@ -198,8 +199,9 @@ struct ModeColours {
     uint32_t* shadow = c == Colours::kTool ? a.take<uint32_t>(cells) : luts;
     if (!cls || !luts || !shadow) return false;
     if (c == Colours::kTool) {
-      tool_colours_init(&tool, g, 1, cls, shadow, luts);
-      colours = &tool.colours;
+      provenance_init(&tool, g, 1, kToolColourSlots, cls, shadow, nullptr);
+      tool_colours_init(&tool_colours, tool, luts);
+      colours = &tool_colours;
     } else if (c == Colours::kSlope) {
       slope_colours_init(&slope, g, cls, luts);
       colours = &slope.colours;
@@ -212,8 +214,8 @@ struct ModeColours {
   // The cut pass's report of a record by tool `number` (tool mode only).
   void record(Colours c, int32_t number, const DexelGrid<uint16_t>& g) {
     if (c != Colours::kTool) return;
-    tool_colours_set_tool(&tool, number);
-    tool_colours_record(&tool, g.dirty);
+    provenance_set_tool(&tool, number);
+    provenance_record(&tool, g.dirty, 1);
   }
 };
 

@@ -1,0 +1,121 @@
+// What a simulation is asked to do (core/sim/simulation.h): the grid and
+// stock, the tools, how the program is read, and which observers watch
+// the cut. Plain values and pointers to inputs the caller keeps (a tool
+// library, a design part, a stock's materials): never a file name, never
+// an output. The CLI fills one from its options (tools/run_job.cpp), the
+// embedding API from its calls (display/api/dexmill.h), a panel from its
+// flash.
+#ifndef DEXMILL_CORE_SIM_JOB_H
+#define DEXMILL_CORE_SIM_JOB_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/assess/assess.h"
+#include "core/cut/mill.h"
+#include "core/design/design.h"
+#include "core/gcode/error.h"
+#include "core/material/material.h"
+#include "core/motion/interp.h"
+#include "core/motion/summary.h"
+#include "core/point.h"
+#include "core/sim/stock_plan.h"
+#include "core/tool/tool.h"
+
+namespace dexmill {
+
+// The safety checks (core/check/safety.h) and their limits.
+struct SimChecks {
+  bool rapid = false, spindle = false, below = false, shank = false, holder = false, plunge = false;
+  bool has_table = false;
+  int64_t table_nm = 0;             // the table's Z (machine, nm)
+  const BoxNm* fixtures = nullptr;  // boxes the tool must never enter (caller memory)
+  int nfixtures = 0;
+  bool any() const { return rapid || spindle || below || shank || holder || plunge || has_table || nfixtures > 0; }
+};
+
+// What a tool describes is checked: a flute length turns on the shank
+// check, a holder the holder check, a tool that is not centre cutting the
+// plunge check.
+void sim_checks_for_tools(SimChecks* c, const Tool* tools, int ntools);
+
+// Every T is one tool (no tool table): its length for G43 is 0, its
+// radius G41/G42's.
+class SingleToolLibrary final : public ToolLibrary, public ToolTable {
+ public:
+  explicit SingleToolLibrary(const Tool& t) : tool_(t) {}
+  bool tool(int32_t, Tool* out) const override {
+    *out = tool_;
+    return true;
+  }
+  bool tool_length_nm(int32_t, int64_t* z_nm) const override {
+    *z_nm = 0;
+    return true;
+  }
+  bool tool_radius_nm(int32_t, int64_t* r_nm) const override {
+    *r_nm = tool_.diameter_nm / 2;
+    return true;
+  }
+
+ private:
+  Tool tool_;
+};
+
+struct SimJob {
+  GridPlan plan{};                  // the grid and the stock it holds (core/sim/stock_plan.h)
+  CutMode mode = CutMode::kSweep;   // exact swept envelope, or the paper's instances
+  Tool tool{};                      // in the spindle before any M6
+  const ToolLibrary* library = nullptr;  // what T/M6 load (null: every T is `tool`)
+  const ToolTable* offsets = nullptr;    // G43 H lengths, G41/G42 radii (null: as SingleToolLibrary's)
+  // The tools a program may load besides `tool` (the Mill's memory is sized
+  // for the largest; a larger one loaded later cannot cut: SimError::kToolCannotCut).
+  const Tool* tools = nullptr;
+  int ntools = 0;
+
+  // Reading the program (core/motion/interp.h InterpOptions).
+  bool inch = false;                    // units before any G20/G21
+  int64_t default_feed_nm_per_min = 0;  // a controller's feed for moves with none in force (0: an error)
+  uint64_t max_blocks = kDefaultMaxBlocks;
+  GcodeDiagSink* warnings = nullptr;    // the interpreter's warnings as they come (the simulation also counts them)
+  GcodeMessageSink* notes = nullptr;    // DEBUG/PRINT/MSG comments
+  // Program text fed in pieces (Simulation::feed): the reader's buffer;
+  // 0 when lines come from a LineInput the caller gives (Simulation::read_from).
+  size_t input_buffer_bytes = 0;
+  // Records of one line held back when a step's budget runs out in it
+  // (a canned cycle, a spline); a line with more is cut past the budget.
+  uint32_t queue_records = 64;
+
+  MotionTimeModel time{};               // the time estimate
+  SimChecks checks{};                   // the safety observer (any(): on)
+  const DesignGrid* design = nullptr;   // the gouge watch against this part (null: off); its geometry is plan.geo's
+  AssessOptions assess{};               // its tolerances and the columns assessed
+  const StockComposition* material = nullptr;  // the process rules of the stock's materials (null: off)
+  size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
+  bool provenance = false;              // which tool last cut each column
+  bool provenance_lines = false;        // and which line (needs provenance)
+  int32_t provenance_slots = 7;         // classes for the tools (display/tool_colours.h kToolColourSlots)
+  int32_t provenance_first_tool = -1;   // the number the tool before any M6 is listed under
+
+  // Stopping: at the first record of line stop_line or later (a program cut
+  // up to its first bad block: 0, none), and at the end of a line that
+  // gouged or collided, when asked.
+  uint32_t stop_line = 0;
+  bool stop_at_gouge = false;
+  bool stop_at_collision = false;
+};
+
+// The memory of one reading of a program (about 68 KB): its parameters
+// (core/gcode/params.h) and its o-word control flow (core/motion/oword_store.h).
+struct ProgramMemory {
+  ParamStore params;
+  OwordStore control;
+};
+
+// The interpreter's options for reading the job's program: its units, feed
+// and block limits, notes, and offsets (`fallback` when the job gives
+// none); mem (or null: no parameters) cleared. Warnings go to the job's sink.
+InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, ProgramMemory* mem);
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,64 @@
+// The first pass over a program; see scan.h.
+#include "core/sim/scan.h"
+
+#include "core/math/fixed.h"
+#include "core/sim/gcode_runner.h"
+
+namespace dexmill {
+
+ProgramScan::ProgramScan(const SimJob& job)
+    : summary(job.time), job_(job), single_(job.tool), lib_(job.library ? job.library : &single_) {
+  tools[0] = job.tool;
+  numbers[0] = -1;
+  ntools = 1;
+  max_radius_nm = job.tool.diameter_nm / 2;
+}
+
+void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also) {
+  also_ = also;
+  InterpOptions opt = sim_interp_options(job_, &single_, mem);
+  if (!job_.warnings) opt.warnings = messages;
+  Interp interp(this, opt);
+  interp_ = &interp;
+  GcodeRunner runner(in, &interp, messages, true);
+  while (runner.step() && !bad_tool_line) {
+  }
+  lines = runner.lines();
+  io_error = runner.io_error();
+  interp_ = nullptr;
+  also_ = nullptr;
+}
+
+void ProgramScan::emit(const CanonRecord& r) {
+  summary.emit(r);
+  if (interp_ && (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc))
+    (interp_->state().inch ? inch_moves : mm_moves) = true;
+  if (also_) also_->emit(r);
+  if (r.kind != CanonKind::kToolChange) return;
+  Tool t;
+  if (!lib_->tool(r.tool, &t)) {
+    if (!bad_tool_line) {
+      bad_tool_line = r.line;
+      bad_tool = r.tool;
+    }
+    return;
+  }
+  max_radius_nm = max_of(max_radius_nm, t.diameter_nm / 2);
+  for (int k = 1; k < ntools; ++k)
+    if (numbers[k] == r.tool) return;
+  if (ntools == kScanToolsMax) {
+    ++unlisted;
+    return;
+  }
+  tools[ntools] = t;
+  numbers[ntools] = r.tool;
+  ++ntools;
+}
+
+int64_t ProgramScan::smallest_diameter_nm() const {
+  int64_t smallest = 0;
+  for (int k = 0; k < ntools; ++k) smallest = smallest ? min_of(smallest, tools[k].diameter_nm) : tools[k].diameter_nm;
+  return smallest;
+}
+
+}  // namespace dexmill

@@ -1,0 +1,72 @@
+// The first pass over a program, before anything is cut: what the CLI
+// needs to plan a run it was not given in full (core/sim/stock_plan.h: the
+// default stock from the motion's extents, the default pitch from the
+// smallest tool; the Mill's memory from the largest), the report's counts,
+// bounds and time, the tools it loads and the units its moves are in.
+// It stops at the first input error, or at a T the library does not have
+// (bad_tool_line): the cut goes as far (core/sim/job.h stop_line).
+#ifndef DEXMILL_CORE_SIM_SCAN_H
+#define DEXMILL_CORE_SIM_SCAN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/cut/mill.h"
+#include "core/gcode/line_reader.h"
+#include "core/gcode/messages.h"
+#include "core/motion/interp.h"
+#include "core/motion/summary.h"
+#include "core/sim/job.h"
+#include "core/tool/tool.h"
+
+namespace dexmill {
+
+// Distinct tools a scan lists (the tool before any M6 is the first); a
+// program that loads more is counted (unlisted) and its later tools are
+// not sized for.
+constexpr int kScanToolsMax = 128;
+
+class ProgramScan final : public CanonSink {
+ public:
+  // The job's tool and library (null: every T is the tool), time model and
+  // reading options (kept: a copy).
+  explicit ProgramScan(const SimJob& job);
+  ProgramScan(const ProgramScan&) = delete;
+  ProgramScan& operator=(const ProgramScan&) = delete;
+
+  // Reads the program from `in` with the job's reading options: lines up
+  // to the first error or bad T (messages get the errors and, when the job
+  // has none of its own, the warnings). mem: the program's parameters and
+  // o-word flow. Records also go to `also` (a backplot), when not null.
+  void run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also = nullptr);
+
+  void emit(const CanonRecord& r) override;
+
+  MotionSummary summary;
+  bool inch_moves = false, mm_moves = false;  // units the moves were written in
+  // The tools in the order first loaded: [0] the job's tool (number -1),
+  // then each T number's the first time an M6 loads it.
+  Tool tools[kScanToolsMax];
+  int32_t numbers[kScanToolsMax];
+  int ntools = 0;
+  uint32_t unlisted = 0;       // loads of tools past kScanToolsMax
+  int64_t max_radius_nm = 0;   // of every tool loaded
+  uint32_t bad_tool_line = 0;  // the first M6 of a T the library lacks (0: none), and its number
+  int32_t bad_tool = 0;
+  uint32_t lines = 0;          // lines read
+  bool io_error = false;
+
+  // The smallest diameter among the tools (0 with none).
+  int64_t smallest_diameter_nm() const;
+
+ private:
+  SimJob job_;
+  SingleToolLibrary single_;
+  const ToolLibrary* lib_;
+  const Interp* interp_ = nullptr;
+  CanonSink* also_ = nullptr;
+};
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,293 @@
+// One run of a program on a stock; see simulation.h.
+#include "core/sim/simulation.h"
+
+#include <string.h>
+
+#include "core/grid/volume.h"
+
+namespace dexmill {
+
+namespace {
+
+bool is_move(const CanonRecord& r) {
+  return r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
+}
+
+}  // namespace
+
+void sim_checks_for_tools(SimChecks* c, const Tool* tools, int ntools) {
+  for (int k = 0; k < ntools; ++k) {
+    const Tool& t = tools[k];
+    c->shank = c->shank || t.flute_length_nm > 0;
+    c->holder = c->holder || t.holder_segments > 0;
+    c->plunge = c->plunge || !t.centre_cutting;
+  }
+}
+
+InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, ProgramMemory* mem) {
+  InterpOptions o;
+  o.inch = job.inch;
+  o.tools = job.offsets ? job.offsets : fallback;
+  o.warnings = job.warnings;
+  o.messages = job.notes;
+  o.default_feed_nm_per_min = job.default_feed_nm_per_min;
+  o.max_blocks = job.max_blocks;
+  if (mem) {
+    memset(static_cast<void*>(mem), 0, sizeof *mem);  // as a fresh one: every default is zero (params.h, oword_store.h)
+    o.params = &mem->params;
+    o.control = &mem->control;
+  }
+  return o;
+}
+
+void Simulation::Messages::error(const GcodeDiag& d) {
+  ++errors_;
+  if (nkept < kSimDiagsMax) kept[nkept++] = d;
+  if (forward) forward->error(d);
+}
+
+void Simulation::Messages::warning(const GcodeDiag& d) {
+  ++warnings_;
+  if (warn_to) warn_to->warning(d);
+}
+
+void Simulation::carve(const DesignGrid& blank) { carve_stock(&grid_, job_.plan, blank); }
+
+void Simulation::read_from(LineInput* in) { runner_ = GcodeRunner(in, &interp_, &msgs_, true); }
+
+uint64_t Simulation::grid_material_now() const { return grid_material_lsb(grid_); }
+
+void Simulation::start() {
+  if (started_) return;
+  started_ = true;
+  const size_t cells = static_cast<size_t>(grid_.nx) * static_cast<size_t>(grid_.ny);
+  material_before_ = grid_material_lsb(grid_);
+  if (job_.design) (void)gouge_watch_init(&gouges_, job_.design, job_.assess, gouge_seen_, gouge_watch_seen_bytes(grid_.nx, grid_.ny));
+  if (job_.material) {
+    (void)process_watch_init(&process_, grid_, job_.material, process_shadow_, cells);
+    if (job_.line_feed_lines) process_watch_track_lines(&process_, line_feed_limits_, job_.line_feed_lines);
+  }
+  if (safety_on_) {
+    (void)safety_watch_init(&safety_, grid_, safety_shadow_, cells, safety_tiles_, safety_tile_words_);
+    const SimChecks& c = job_.checks;
+    safety_.check_rapid = c.rapid;
+    safety_.check_spindle = c.spindle;
+    safety_.check_below = c.below;
+    safety_.check_shank = c.shank;
+    safety_.check_holder = c.holder;
+    safety_.check_plunge = c.plunge;
+    safety_.bottom_nm = grid_.z0_nm;
+    safety_.check_table = c.has_table;
+    safety_.table_nm = c.table_nm;
+    if (c.nfixtures > 0) {
+      fixture_grid_fill(&fixture_grid_, c.fixtures, c.nfixtures);
+      safety_.fixtures = &fixture_grid_;
+      safety_.fixture_boxes = c.fixtures;
+      safety_.nfixture_boxes = c.nfixtures;
+    }
+  }
+  if (job_.provenance)
+    provenance_init(&prov_, grid_, job_.provenance_first_tool, job_.provenance_slots, prov_cls_, prov_shadow_,
+                    prov_lines_);
+  load_tool(job_.tool);
+}
+
+void Simulation::load_tool(const Tool& t) {
+  profile_ = tool_profile(t);
+  tool_body_build(t, &body_);
+  if (safety_on_ && started_) safety_watch_set_tool(&safety_, profile_);
+}
+
+void Simulation::emit(const CanonRecord& r) {
+  if (queue_n_ == queue_cap_) {  // a line longer than the queue: its head is cut now
+    process(queue_[queue_head_]);
+    queue_head_ = (queue_head_ + 1) % queue_cap_;
+    --queue_n_;
+  }
+  const InterpState& st = interp_.state();
+  queue_[(queue_head_ + queue_n_) % queue_cap_] = Queued{r, st.spindle_dir, st.spindle_rpm, st.coolant};
+  ++queue_n_;
+}
+
+void Simulation::process(const Queued& q) {
+  const CanonRecord& r = q.r;
+  if (job_.stop_line && r.line >= job_.stop_line) {  // a partial run: nothing of the bad block or after it
+    stopped_at_error_ = true;
+    return;
+  }
+  const bool move = is_move(r);
+  // Where the line before left the tool: a deferred end cap cut now is its.
+  if (move && r.line != last_move_line_) {
+    const PointNm at = mill_.position();
+    origin_ = GougeOrigin{last_move_line_, at, &profile_};
+    safety_origin_ = SafetyOrigin{last_move_, at, &profile_};
+    process_origin_ = ProcessOrigin{last_process_, at, &profile_};
+    have_origin_ = last_move_line_ != 0;
+  }
+  const Status before = mill_.status();
+  mill_.emit(r);
+  if (job_.provenance) {
+    const ProvenanceOrigin po{origin_.line, origin_.end, origin_.tool};
+    provenance_record(&prov_, grid_.dirty, r.line, have_origin_ ? &po : nullptr);
+  }
+  if (job_.design &&
+      gouge_watch_check(&gouges_, grid_, grid_.dirty, r.line, mill_.position(), have_origin_ ? &origin_ : nullptr)) {
+    gouged_ = true;
+    ++gouge_finds_;
+  }
+  const bool spindle_on = q.spindle_dir != 0;
+  SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on, moved_};
+  if (safety_on_) {
+    // M3/M4 in effect (the interpreter's state: a record's rpm is 0 both
+    // after M5 and for M3 with no S word, which a controller runs at its
+    // default speed).
+    m.plunge = safety_is_plunge(r);
+    m.end = r.end;
+    m.body = &body_;
+    if (safety_watch_record(&safety_, grid_, grid_.dirty, r, m, have_origin_ ? &safety_origin_ : nullptr))
+      collided_ = true;
+  }
+  if (move) {
+    last_move_ = m;
+    moved_ = true;
+    last_move_line_ = r.line;
+  }
+  const int64_t t_before = time_.estimated_time_us();
+  time_.emit(r);
+  if (job_.material) check_process(q, move, time_.estimated_time_us() - t_before);
+  status_.line = r.line;
+  status_.pos = mill_.position();
+  if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) status_.feed_nm_per_min = r.feed_nm_per_min;
+  if (r.kind == CanonKind::kToolChange) {
+    status_.tool = r.tool;
+    Tool t;
+    if (library_->tool(r.tool, &t)) {
+      load_tool(t);
+      if (job_.provenance) provenance_set_tool(&prov_, r.tool);
+      if (observer_) observer_->tool_loaded(t);
+    }
+    if (ok(before) && !ok(mill_.status())) stop_with(SimStop::kToolFailed, r.line);
+  }
+  status_.sim_us = time_.estimated_time_us();
+  ++status_.records;
+  if (observer_) {
+    observer_->record(r);
+    observer_->changed(grid_.dirty);
+  }
+  grid_.dirty = GridRect::none();
+  if (!move) return;
+  ++status_.moves;
+  if (observer_) observer_->moved(status_.moves);
+}
+
+// The process rules on what the record removed, in the state it ran in.
+void Simulation::check_process(const Queued& q, bool move, int64_t time_us) {
+  ProcessState s;
+  s.line = q.r.line;
+  s.feed_move = q.r.kind == CanonKind::kFeed || q.r.kind == CanonKind::kArc;
+  s.feed_nm_per_min = q.r.feed_nm_per_min;
+  s.spindle_rpm = q.spindle_rpm;
+  s.spindle_on = q.spindle_dir != 0;
+  s.coolant = q.coolant;
+  s.time_us = time_us;
+  process_watch_record(&process_, grid_, grid_.dirty, s, have_origin_ ? &process_origin_ : nullptr);
+  if (move) last_process_ = s;
+}
+
+void Simulation::stop_with(SimStop why, uint32_t line) {
+  if (finished_) return;
+  stop_ = why;
+  stop_line_ = line;
+  state_ = SimState::kStopped;
+  finish();
+}
+
+// The checks made when a line's records are all cut.
+bool Simulation::line_end_stops() {
+  if (stopped_at_error_) {
+    stop_with(SimStop::kInputError, job_.stop_line);
+    return true;
+  }
+  if (job_.stop_at_gouge && gouged_) {
+    stop_with(SimStop::kGouge, status_.line);
+    return true;
+  }
+  if (job_.stop_at_collision && collided_) {
+    stop_with(SimStop::kCollision, status_.line);
+    return true;
+  }
+  return false;
+}
+
+SimState Simulation::step(const SimBudget& budget) {
+  if (finished_) return state_;
+  start();
+  const uint64_t moves0 = status_.moves, work0 = mill_.stats().dexel_updates;
+  uint32_t lines = 0;
+  for (;;) {
+    if (queue_n_ > 0) {
+      const Queued q = queue_[queue_head_];
+      queue_head_ = (queue_head_ + 1) % queue_cap_;
+      --queue_n_;
+      process(q);
+      if (finished_) return state_;
+      if (queue_n_ == 0 && !runner_.done() && line_end_stops()) return state_;
+      if (status_.moves - moves0 >= budget.moves || mill_.stats().dexel_updates - work0 >= budget.dexel_updates ||
+          (budget.yield && budget.yield(budget.yield_ctx)))
+        return state_ = SimState::kReady;
+      continue;
+    }
+    if (lines >= budget.lines) return state_ = SimState::kReady;
+    if (!runner_.step()) {
+      if (runner_.waiting()) return state_ = SimState::kNeedInput;
+      if (queue_n_ > 0) continue;  // what the end of the input made (a compensation queue's last moves)
+      if (finished_) return state_;
+      // A single pass stops at its first input error, as the scan does.
+      if (!job_.stop_line && msgs_.errors() > 0) {
+        stop_with(SimStop::kInputError, msgs_.kept[0].line);
+        return state_;
+      }
+      state_ = runner_.io_error() ? SimState::kIoError : SimState::kDone;
+      finish();
+      return state_;
+    }
+    ++lines;
+    if (queue_n_ == 0 && line_end_stops()) return state_;
+  }
+}
+
+void Simulation::sync() {
+  mill_.flush();
+  if (job_.provenance) provenance_note(&prov_, grid_.dirty);
+  if (observer_) observer_->changed(grid_.dirty);
+  grid_.dirty = GridRect::none();
+}
+
+void Simulation::finish() {
+  if (finished_) return;
+  start();
+  finished_ = true;
+  if (state_ == SimState::kReady || state_ == SimState::kNeedInput) state_ = SimState::kDone;
+  mill_.finish();
+  if (job_.provenance) provenance_record(&prov_, grid_.dirty, last_move_line_, nullptr);
+  if (job_.design &&
+      gouge_watch_check(&gouges_, grid_, grid_.dirty, last_move_line_, mill_.position(), have_origin_ ? &origin_ : nullptr)) {
+    gouged_ = true;
+    ++gouge_finds_;
+  }
+  if (safety_on_) {  // the deferred end cap, now cut for good, is the last move's
+    CanonRecord cap{};
+    cap.kind = CanonKind::kDwell;
+    cap.line = last_move_.line;
+    if (safety_watch_record(&safety_, grid_, grid_.dirty, cap, last_move_, nullptr)) collided_ = true;
+  }
+  if (job_.material) {  // and to the process rules, in the last move's state
+    ProcessState last = last_process_;
+    last.time_us = 0;
+    process_watch_record(&process_, grid_, grid_.dirty, last, nullptr);
+  }
+  if (observer_) observer_->changed(grid_.dirty);
+  grid_.dirty = GridRect::none();
+}
+
+}  // namespace dexmill

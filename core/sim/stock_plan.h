@@ -1,0 +1,90 @@
+// The stock and its dexel grid, planned before a run (the CLI's defaults
+// and the embedding API's explicit boxes go through the same plan).
+//
+// Default stock (no box given), from a first pass over the program
+// (core/sim/scan.h, core/motion/summary.h), for programs that put Z0 on
+// the stock top as CAM programs do:
+//   top    Z = 0 when any feed reaches below 0; otherwise (a program zeroed on
+//          the table) the highest level a feed reaches: the highest of the
+//          lower ends of the feed moves (a plunge from a safe height counts
+//          at its bottom);
+//   bottom Z = the deepest feed, less a quarter of the cut depth (at least
+//          1 mm), and at least 2 mm below the top;
+//   X, Y   = the box of the feed moves that reach below the top (all feeds,
+//          or all motion, when there are none), widened on every side by
+//          the largest tool radius the program uses plus 2 mm.
+// A program with no motion gets a 50 x 50 x 10 mm block under the origin.
+//
+// The grid: one pitch for x and y, by default from the job: a 32nd of the
+// smallest tool the program uses, but no finer than 1024 dexels and no
+// coarser than 256 across the stock's longer side (fine enough that real
+// programs' walls do not alias into stripes, within a million dexels). A
+// pitch can be given; or a most-dexels-each-way, which gives the finest
+// pitch that fits the stock, keeping its shape. Dexel axes run from the
+// stock's X0, Y0 in steps of the pitch, so the stock is rounded up to whole
+// pitches (by less than one); one ring of hole dexels around it makes its
+// side walls (core/grid/grid.h).
+// Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
+// the stock height in m bits (core/grid/grid.h lsb_for_range).
+#ifndef DEXMILL_CORE_SIM_STOCK_PLAN_H
+#define DEXMILL_CORE_SIM_STOCK_PLAN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/design/design.h"
+#include "core/grid/grid.h"
+#include "core/motion/summary.h"
+#include "core/point.h"
+
+namespace dexmill {
+
+struct StockBox {
+  PointNm lo, hi;
+};
+
+StockBox default_stock(const MotionSummary& s, int64_t max_tool_radius_nm);
+
+struct GridPlan {
+  GridGeometry geo;
+  int32_t stock_nx, stock_ny;  // dexels holding stock: i in [1, stock_nx], j in [1, stock_ny]
+  int64_t top_lsb;             // stock top height
+  StockBox stock;              // the stock as the grid holds it (rounded up to whole pitches)
+};
+
+// Most dexels a run may use (2 x 2 bytes each for 16-bit heights).
+constexpr int64_t kMaxGridCells = 64LL << 20;
+
+// The default grid's bounds and its pitch per tool (see above).
+constexpr int64_t kDefaultMaxAcross = 1024, kDefaultMinAcross = 256, kDefaultDexelsPerTool = 32;
+// The default pitch for a stock and the smallest tool diameter (0: none known).
+int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm);
+
+enum class PlanError : uint8_t {
+  kOk = 0,
+  kGridTooSmall,   // a most-dexels-each-way below 4 x 4
+  kTooManyDexels,  // beyond 65535 a side or kMaxGridCells (want_nx, want_ny say how many)
+  kBadGeometry,    // pitch, size or position out of the grid's range
+};
+
+// Plans the grid for a stock: by grid_nx/ny when given (> 0), else by
+// pitch_nm (the caller's default_pitch_nm when nothing gave one). On
+// kTooManyDexels, *want_nx and *want_ny (when not null) are the grid's size.
+PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
+                    int64_t* want_nx = nullptr, int64_t* want_ny = nullptr);
+
+// Fills a grid set up by grid_init with the plan's stock.
+template <class H>
+void fill_stock(DexelGrid<H>* g, const GridPlan& plan);
+
+// Carves a grid filled by fill_stock to a pre-machined blank's shape, given
+// as a design grid on the plan's geometry (its triangles rasterized by
+// core/design, within 0.5 LSB + 2 nm): each column of the stock takes the
+// blank's highest point over its axis, or becomes a hole where the blank
+// has none.
+template <class H>
+void carve_stock(DexelGrid<H>* g, const GridPlan& plan, const DesignGrid& blank);
+
+}  // namespace dexmill
+
+#endif

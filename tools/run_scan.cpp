@@ -1,0 +1,100 @@
+// The first pass of `dexmill run`; see run_scan.h.
+#include "tools/run_scan.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "core/tool/spec.h"
+#include "tools/cli.h"
+#include "tools/run_path.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+constexpr size_t kMaxReportedWarnings = 100;
+
+// The backplot's pieces, as the scan reads them.
+class PathSink final : public CanonSink {
+ public:
+  explicit PathSink(std::vector<PathSegment>* p) : path_(p) {}
+  void emit(const CanonRecord& r) override { append_path(r, path_); }
+
+ private:
+  std::vector<PathSegment>* path_;
+};
+
+}  // namespace
+
+void RunMessages::error_text(uint32_t line, uint32_t col, const std::string& msg) {
+  ++errors_;
+  if (print_) std::fprintf(stderr, "%s:%u:%u: error: %s\n", file_.c_str(), line, col, msg.c_str());
+  error_list.push_back(ReportDiag{line, col, msg});
+}
+
+void RunMessages::add(const GcodeDiag& d, bool is_error) {
+  char msg[400];
+  gcode_format_message(d, msg, sizeof msg);
+  if (is_error) ++errors_;
+  else ++warnings_;
+  if (print_) {
+    char line[700];
+    gcode_format_diag(file_.c_str(), d, is_error, line, sizeof line);
+    std::fprintf(stderr, "%s\n", line);
+  }
+  if (is_error) error_list.push_back(ReportDiag{d.line, d.col, msg});
+  else if (warning_list.size() < kMaxReportedWarnings) warning_list.push_back(ReportDiag{d.line, d.col, msg});
+}
+
+int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, std::vector<PathSegment>* path,
+              RunMessages* msgs, RunReport* rep) {
+  ProgramScan& s = *scan;
+  {
+    GcodeFile file;
+    if (!file.open(in.read_path.c_str(), in.shown_name.c_str())) return fail(kExitIo, "%s", file.error());
+    file.set_subroutine_path(in.read->subroutine_path);
+    const std::unique_ptr<ProgramMemory> mem(new ProgramMemory());
+    PathSink sink(path);
+    s.run(&file, msgs, mem.get(), path ? &sink : nullptr);
+    if (s.io_error) return fail(kExitIo, "%s", file.error());
+  }
+  if (s.bad_tool_line) {
+    char m[200];
+    const char* table = in.table ? in.table->name().c_str() : "";
+    if (in.table && in.table->has(s.bad_tool))
+      std::snprintf(m, sizeof m, "tool T%d has diameter 0 in the tool table '%s': it cannot cut",
+                    static_cast<int>(s.bad_tool), table);
+    else
+      std::snprintf(m, sizeof m, "tool T%d is not in the tool table '%s'", static_cast<int>(s.bad_tool), table);
+    msgs->error_text(s.bad_tool_line, 1, m);
+  }
+  rep->lines = s.lines;
+  if (s.inch_moves || s.mm_moves) rep->units = s.inch_moves ? (s.mm_moves ? "mixed" : "inch") : "mm";
+  const MotionSummary& sum = s.summary;
+  rep->rapid = sum.count(CanonKind::kTraverse);
+  rep->feed = sum.count(CanonKind::kFeed);
+  rep->arc = sum.count(CanonKind::kArc);
+  rep->dwell = sum.count(CanonKind::kDwell);
+  rep->tool_change = sum.count(CanonKind::kToolChange);
+  rep->errors = msgs->error_list;
+  rep->warnings = msgs->warning_list;
+  for (const GcodeNotes::Note& n : notes.kept)
+    if (rep->messages.size() < 100) rep->messages.push_back(RunReport::Message{n.line, n.kind, n.text});
+  rep->warnings_total = msgs->warnings();
+  for (int k = 1; k < s.ntools; ++k) {
+    char spec[kToolSpecTextMax];
+    tool_spec_format(s.tools[k], spec, sizeof spec);
+    rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec});
+  }
+  rep->estimated_us = sum.estimated_time_us();
+  rep->feed_us = sum.feed_time_us();
+  rep->rapid_us = sum.rapid_time_us();
+  rep->dwell_us = sum.dwell_time_us();
+  rep->have_bounds = sum.motion_box().valid;
+  rep->bounds_lo = sum.motion_box().lo;
+  rep->bounds_hi = sum.motion_box().hi;
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill

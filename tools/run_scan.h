@@ -1,0 +1,58 @@
+// The first pass of `dexmill run` (core/sim/scan.h): the program read once,
+// its diagnostics printed and kept for the report, the report's program
+// part, and the backplot's path when a view wants it.
+#ifndef DEXMILL_TOOLS_RUN_SCAN_H
+#define DEXMILL_TOOLS_RUN_SCAN_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/gcode/messages.h"
+#include "core/sim/job.h"
+#include "core/sim/scan.h"
+#include "display/backplot.h"
+#include "platform/gcode_file.h"
+#include "platform/report_json.h"
+#include "platform/tool_table.h"
+#include "tools/read_options.h"
+
+namespace dexmill {
+namespace cli {
+
+// Prints diagnostics (when asked) and keeps them for the report.
+class RunMessages final : public GcodeMessages {
+ public:
+  RunMessages(const std::string& file, bool print) : file_(file), print_(print) {}
+  void set_file(const char* name) override { file_ = name; }
+  void error(const GcodeDiag& d) override { add(d, true); }
+  void warning(const GcodeDiag& d) override { add(d, false); }
+  // An error found outside the interpreter (a tool the table lacks).
+  void error_text(uint32_t line, uint32_t col, const std::string& msg);
+  std::vector<ReportDiag> error_list, warning_list;
+
+ private:
+  void add(const GcodeDiag& d, bool is_error);
+  std::string file_;
+  bool print_;
+};
+
+// What the scan pass reads: the program's path and its name in messages,
+// its subroutine path, and the table (for the message of a T it lacks).
+struct ScanInput {
+  std::string read_path, shown_name;
+  const ReadOptions* read = nullptr;
+  const ToolTableFile* table = nullptr;
+};
+
+// Runs the scan into *scan, made with job.notes = notes (the path too, when
+// not null), and the report's program part: lines, units, counts, errors and
+// warnings (printed), the program's messages (printed as they come), the
+// tools used, the time and bounds. kExitOk, or kExitIo (printed).
+int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, std::vector<PathSegment>* path,
+              RunMessages* msgs, RunReport* rep);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
