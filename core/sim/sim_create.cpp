@@ -10,9 +10,10 @@
 namespace dexmill {
 
 // Where each part of a simulation lives in its block.
-struct Simulation::Memory {
-  height_t* top = nullptr;
-  height_t* bottom = nullptr;
+template <class H>
+struct SimulationT<H>::Memory {
+  H* top = nullptr;
+  H* bottom = nullptr;
   int32_t* words = nullptr;       // the Mill's (core/cut/mill.h mill_words)
   size_t nwords = 0;
   ProgramMemory* program = nullptr;  // the program's parameters and o-word flow
@@ -53,8 +54,9 @@ class Carver {
   size_t used_ = 0;
 };
 
-DexelGrid<height_t> plan_grid_view(const GridPlan& plan) {
-  DexelGrid<height_t> g;
+template <class H>
+DexelGrid<H> plan_grid_view(const GridPlan& plan) {
+  DexelGrid<H> g;
   g.nx = plan.geo.nx;
   g.ny = plan.geo.ny;
   g.x0_nm = plan.geo.x0_nm;
@@ -66,7 +68,8 @@ DexelGrid<height_t> plan_grid_view(const GridPlan& plan) {
 }
 
 // The tools' checks and the Mill's words for the largest (core/cut/mill.h).
-bool size_tools(const SimJob& job, const DexelGrid<height_t>& g, size_t* words, SimSetup* why) {
+template <class H>
+bool size_tools(const SimJob& job, const DexelGrid<H>& g, size_t* words, SimSetup* why) {
   *words = 0;
   for (int k = -1; k < job.ntools; ++k) {
     const Tool& t = k < 0 ? job.tool : job.tools[k];
@@ -96,12 +99,17 @@ bool size_tools(const SimJob& job, const DexelGrid<height_t>& g, size_t* words, 
 
 // Lays the block out for job: into *m when base is not null. The size, or 0
 // with *why set.
-size_t layout(const SimJob& job, char* base, Simulation::Memory* m, SimSetup* why, size_t self_bytes) {
+template <class H>
+size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m, SimSetup* why, size_t self_bytes) {
   if (!ok(grid_check_geometry(job.plan.geo))) {
     why->error = SimError::kGrid;
     return 0;
   }
-  const DexelGrid<height_t> g = plan_grid_view(job.plan);
+  if (job.plan.top_lsb < 0 || job.plan.top_lsb > height_max<H>()) {  // the stock's height in m bits
+    why->error = SimError::kGrid;
+    return 0;
+  }
+  const DexelGrid<H> g = plan_grid_view<H>(job.plan);
   const size_t cells = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
   size_t words = 0;
   if (!size_tools(job, g, &words, why)) return 0;
@@ -125,13 +133,13 @@ size_t layout(const SimJob& job, char* base, Simulation::Memory* m, SimSetup* wh
   }
   Carver c(base);
   (void)c.take<char>(self_bytes);
-  Simulation::Memory mem;
-  mem.top = c.take<height_t>(cells);
-  mem.bottom = c.take<height_t>(cells);
+  typename SimulationT<H>::Memory mem;
+  mem.top = c.take<H>(cells);
+  mem.bottom = c.take<H>(cells);
   mem.nwords = words;
   mem.words = c.take<int32_t>(words);
   mem.program = c.take<ProgramMemory>(1);
-  mem.queue = c.take<Simulation::Queued>(job.queue_records > 0 ? job.queue_records : 1);
+  mem.queue = c.take<typename SimulationT<H>::Queued>(job.queue_records > 0 ? job.queue_records : 1);
   mem.input = c.take<char>(job.input_buffer_bytes);
   if (job.checks.any()) {
     mem.safety_shadow = c.take<uint32_t>(cells);
@@ -162,44 +170,43 @@ size_t layout(const SimJob& job, char* base, Simulation::Memory* m, SimSetup* wh
 
 }  // namespace
 
-size_t sim_required_bytes(const SimJob& job, SimSetup* why) {
+template <class H>
+size_t SimulationT<H>::required_bytes(const SimJob& job, SimSetup* why) {
   SimSetup dummy;
   SimSetup* w = why ? why : &dummy;
   *w = SimSetup{};
-  return layout(job, nullptr, nullptr, w, sizeof(Simulation));
+  return layout<H>(job, nullptr, nullptr, w, sizeof(SimulationT));
 }
 
-Simulation* sim_create(const SimJob& job, void* mem, size_t bytes, SimSetup* why) {
+template <class H>
+SimulationT<H>* SimulationT<H>::create(const SimJob& job, void* mem, size_t bytes, SimSetup* why) {
   SimSetup dummy;
   SimSetup* w = why ? why : &dummy;
   *w = SimSetup{};
-  const size_t need = layout(job, nullptr, nullptr, w, sizeof(Simulation));
+  const size_t need = layout<H>(job, nullptr, nullptr, w, sizeof(SimulationT));
   if (need == 0) return nullptr;
   if (!mem || bytes < need || (reinterpret_cast<uintptr_t>(mem) & 7) != 0) {
     w->error = SimError::kBufferTooSmall;
     return nullptr;
   }
   char* base = static_cast<char*>(mem);
-  Simulation::Memory m;
-  (void)layout(job, base, &m, w, sizeof(Simulation));
-  Simulation* s = new (base) Simulation(job, m);
+  Memory m;
+  (void)layout<H>(job, base, &m, w, sizeof(SimulationT));
+  SimulationT* s = new (base) SimulationT(job, m);
   if (!ok(s->mill_.set_tool(job.tool))) {
     w->error = SimError::kToolCannotCut;
-    s->~Simulation();
+    s->~SimulationT();
     return nullptr;
   }
   return s;
 }
 
-void sim_destroy(Simulation* s) {
-  if (s) s->~Simulation();
-}
-
-Simulation::Simulation(const SimJob& job, const Memory& m)
+template <class H>
+SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
     : job_(job),
       single_(job.tool),
       library_(job.library ? job.library : &single_),
-      grid_(plan_grid_view(job.plan)),
+      grid_(plan_grid_view<H>(job.plan)),
       mill_(&grid_, job.mode, library_, m.words, m.nwords),
       chunks_(m.input, job.input_buffer_bytes),
       interp_(this,
@@ -234,5 +241,15 @@ Simulation::Simulation(const SimJob& job, const Memory& m)
   load_tool(job.tool);
   status_.tool = 0;
 }
+
+// The members defined here (the class's others: simulation.cpp).
+#define DEXMILL_SIM_CREATE_INSTANTIATE(H)                                                              \
+  template size_t SimulationT<H>::required_bytes(const SimJob&, SimSetup*);                          \
+  template SimulationT<H>* SimulationT<H>::create(const SimJob&, void*, size_t, SimSetup*);          \
+  template SimulationT<H>::SimulationT(const SimJob&, const Memory&);
+DEXMILL_SIM_CREATE_INSTANTIATE(uint8_t)
+DEXMILL_SIM_CREATE_INSTANTIATE(uint16_t)
+DEXMILL_SIM_CREATE_INSTANTIATE(uint32_t)
+#undef DEXMILL_SIM_CREATE_INSTANTIATE
 
 }  // namespace dexmill

@@ -40,24 +40,30 @@ InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, P
   return o;
 }
 
-void Simulation::Messages::error(const GcodeDiag& d) {
+template <class H>
+void SimulationT<H>::Messages::error(const GcodeDiag& d) {
   ++errors_;
   if (nkept < kSimDiagsMax) kept[nkept++] = d;
   if (forward) forward->error(d);
 }
 
-void Simulation::Messages::warning(const GcodeDiag& d) {
+template <class H>
+void SimulationT<H>::Messages::warning(const GcodeDiag& d) {
   ++warnings_;
   if (warn_to) warn_to->warning(d);
 }
 
-void Simulation::carve(const DesignGrid& blank) { carve_stock(&grid_, job_.plan, blank); }
+template <class H>
+void SimulationT<H>::carve(const DesignGrid& blank) { carve_stock(&grid_, job_.plan, blank); }
 
-void Simulation::read_from(LineInput* in) { runner_ = GcodeRunner(in, &interp_, &msgs_, true); }
+template <class H>
+void SimulationT<H>::read_from(LineInput* in) { runner_ = GcodeRunner(in, &interp_, &msgs_, true); }
 
-uint64_t Simulation::grid_material_now() const { return grid_material_lsb(grid_); }
+template <class H>
+uint64_t SimulationT<H>::grid_material_now() const { return grid_material_lsb(grid_); }
 
-void Simulation::start() {
+template <class H>
+void SimulationT<H>::start() {
   if (started_) return;
   started_ = true;
   const size_t cells = static_cast<size_t>(grid_.nx) * static_cast<size_t>(grid_.ny);
@@ -92,13 +98,15 @@ void Simulation::start() {
   load_tool(job_.tool);
 }
 
-void Simulation::load_tool(const Tool& t) {
+template <class H>
+void SimulationT<H>::load_tool(const Tool& t) {
   profile_ = tool_profile(t);
   tool_body_build(t, &body_);
   if (safety_on_ && started_) safety_watch_set_tool(&safety_, profile_);
 }
 
-void Simulation::emit(const CanonRecord& r) {
+template <class H>
+void SimulationT<H>::emit(const CanonRecord& r) {
   if (queue_n_ == queue_cap_) {  // a line longer than the queue: its head is cut now
     process(queue_[queue_head_]);
     queue_head_ = (queue_head_ + 1) % queue_cap_;
@@ -109,7 +117,8 @@ void Simulation::emit(const CanonRecord& r) {
   ++queue_n_;
 }
 
-void Simulation::process(const Queued& q) {
+template <class H>
+void SimulationT<H>::process(const Queued& q) {
   const CanonRecord& r = q.r;
   if (job_.stop_line && r.line >= job_.stop_line) {  // a partial run: nothing of the bad block or after it
     stopped_at_error_ = true;
@@ -181,7 +190,8 @@ void Simulation::process(const Queued& q) {
 }
 
 // The process rules on what the record removed, in the state it ran in.
-void Simulation::check_process(const Queued& q, bool move, int64_t time_us) {
+template <class H>
+void SimulationT<H>::check_process(const Queued& q, bool move, int64_t time_us) {
   ProcessState s;
   s.line = q.r.line;
   s.feed_move = q.r.kind == CanonKind::kFeed || q.r.kind == CanonKind::kArc;
@@ -194,7 +204,8 @@ void Simulation::check_process(const Queued& q, bool move, int64_t time_us) {
   if (move) last_process_ = s;
 }
 
-void Simulation::stop_with(SimStop why, uint32_t line) {
+template <class H>
+void SimulationT<H>::stop_with(SimStop why, uint32_t line) {
   if (finished_) return;
   stop_ = why;
   stop_line_ = line;
@@ -203,7 +214,8 @@ void Simulation::stop_with(SimStop why, uint32_t line) {
 }
 
 // The checks made when a line's records are all cut.
-bool Simulation::line_end_stops() {
+template <class H>
+bool SimulationT<H>::line_end_stops() {
   if (stopped_at_error_) {
     stop_with(SimStop::kInputError, job_.stop_line);
     return true;
@@ -219,7 +231,8 @@ bool Simulation::line_end_stops() {
   return false;
 }
 
-SimState Simulation::step(const SimBudget& budget) {
+template <class H>
+SimState SimulationT<H>::step(const SimBudget& budget) {
   if (finished_) return state_;
   start();
   const uint64_t moves0 = status_.moves, work0 = mill_.stats().dexel_updates;
@@ -256,14 +269,16 @@ SimState Simulation::step(const SimBudget& budget) {
   }
 }
 
-void Simulation::sync() {
+template <class H>
+void SimulationT<H>::sync() {
   mill_.flush();
   if (job_.provenance) provenance_note(&prov_, grid_.dirty);
   if (observer_) observer_->changed(grid_.dirty);
   grid_.dirty = GridRect::none();
 }
 
-void Simulation::finish() {
+template <class H>
+void SimulationT<H>::finish() {
   if (finished_) return;
   start();
   finished_ = true;
@@ -289,5 +304,9 @@ void Simulation::finish() {
   if (observer_) observer_->changed(grid_.dirty);
   grid_.dirty = GridRect::none();
 }
+
+template class SimulationT<uint8_t>;
+template class SimulationT<uint16_t>;
+template class SimulationT<uint32_t>;
 
 }  // namespace dexmill

@@ -125,21 +125,24 @@ class SimObserver {
 // gives a GcodeMessages of its own: Simulation::forward_messages).
 constexpr int kSimDiagsMax = 16;
 
-class Simulation;
-
-// Bytes of memory a simulation of `job` needs (0 with *why set when the job
-// cannot be simulated: a tool too large, fixtures off the lattice...).
-size_t sim_required_bytes(const SimJob& job, SimSetup* why = nullptr);
-// Sets a simulation up in mem (8-byte aligned, `bytes` of it): the stock is
-// filled (fill_stock), nothing is read yet. Null with *why on failure.
-// The simulation lives in mem: nothing to free; sim_destroy ends it.
-Simulation* sim_create(const SimJob& job, void* mem, size_t bytes, SimSetup* why = nullptr);
-void sim_destroy(Simulation* s);
-
-class Simulation final : public CanonSink {
+// A simulation of m-bit heights H (core/grid/grid.h); Simulation is the
+// build's (core/config.h H).
+template <class H>
+class SimulationT final : public CanonSink {
  public:
-  Simulation(const Simulation&) = delete;
-  Simulation& operator=(const Simulation&) = delete;
+  // Bytes of memory a simulation of `job` needs (0 with *why set when the
+  // job cannot be simulated: a tool too large, fixtures off the lattice...).
+  static size_t required_bytes(const SimJob& job, SimSetup* why = nullptr);
+  // Sets a simulation up in mem (8-byte aligned, `bytes` of it): the stock
+  // is filled (fill_stock), nothing is read yet. Null with *why on failure.
+  // The simulation lives in mem: nothing to free; destroy ends it.
+  static SimulationT* create(const SimJob& job, void* mem, size_t bytes, SimSetup* why = nullptr);
+  static void destroy(SimulationT* s) {
+    if (s) s->~SimulationT();
+  }
+
+  SimulationT(const SimulationT&) = delete;
+  SimulationT& operator=(const SimulationT&) = delete;
 
   // -- before the first step
   // Carves the stock to a blank's shape (core/sim/stock_plan.h carve_stock).
@@ -180,9 +183,9 @@ class Simulation final : public CanonSink {
   int32_t failed_tool() const { return mill_.failed_tool(); }
   const SimStatus& status() const { return status_; }
   const SimJob& job() const { return job_; }
-  DexelGrid<height_t>& grid() { return grid_; }
-  const DexelGrid<height_t>& grid() const { return grid_; }
-  const Mill<height_t>& mill() const { return mill_; }
+  DexelGrid<H>& grid() { return grid_; }
+  const DexelGrid<H>& grid() const { return grid_; }
+  const Mill<H>& mill() const { return mill_; }
   const Interp& interp() const { return interp_; }
   const ToolProfile& profile() const { return profile_; }  // the tool in the spindle
   const MotionSummary& time() const { return time_; }
@@ -199,7 +202,7 @@ class Simulation final : public CanonSink {
   const SafetyWatch* safety() const { return safety_on_ ? &safety_ : nullptr; }
   const GougeWatch* gouges() const { return job_.design ? &gouges_ : nullptr; }
   const ProcessWatch* process() const { return job_.material ? &process_ : nullptr; }
-  const ToolProvenance<height_t>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
+  const ToolProvenance<H>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
   bool gouged() const { return gouged_; }
   // Records (and the finish) whose gouge check found a gouge: a front end
   // that marks them redraws its marks when this moves.
@@ -220,10 +223,8 @@ class Simulation final : public CanonSink {
   };
 
  private:
-  friend Simulation* sim_create(const SimJob&, void*, size_t, SimSetup*);
-  friend void sim_destroy(Simulation*);
-  Simulation(const SimJob& job, const Memory& m);
-  ~Simulation() = default;
+  SimulationT(const SimJob& job, const Memory& m);
+  ~SimulationT() = default;
   // Counts and keeps the first diagnostics; forwards them.
   struct Messages final : GcodeMessages {
     GcodeMessages* forward = nullptr;
@@ -247,8 +248,8 @@ class Simulation final : public CanonSink {
   SimJob job_;
   SingleToolLibrary single_;   // the library and offsets when the job gives none
   const ToolLibrary* library_;
-  DexelGrid<height_t> grid_;
-  Mill<height_t> mill_;
+  DexelGrid<H> grid_;
+  Mill<H> mill_;
   ChunkInput chunks_;
   Messages msgs_;
   Interp interp_;
@@ -269,7 +270,7 @@ class Simulation final : public CanonSink {
   ProcessWatch process_;
   uint32_t* process_shadow_;
   int64_t* line_feed_limits_;
-  ToolProvenance<height_t> prov_;
+  ToolProvenance<H> prov_;
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;
   uint32_t* prov_lines_;
@@ -294,6 +295,17 @@ class Simulation final : public CanonSink {
   SimStatus status_{};
   uint64_t material_before_ = 0;
 };
+
+extern template class SimulationT<uint8_t>;
+extern template class SimulationT<uint16_t>;
+extern template class SimulationT<uint32_t>;
+
+using Simulation = SimulationT<height_t>;
+inline size_t sim_required_bytes(const SimJob& job, SimSetup* why = nullptr) { return Simulation::required_bytes(job, why); }
+inline Simulation* sim_create(const SimJob& job, void* mem, size_t bytes, SimSetup* why = nullptr) {
+  return Simulation::create(job, mem, bytes, why);
+}
+inline void sim_destroy(Simulation* s) { Simulation::destroy(s); }
 
 }  // namespace dexmill
 
