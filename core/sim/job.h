@@ -85,7 +85,11 @@ struct SimJob {
   // (a canned cycle, a spline); a line with more is cut past the budget.
   uint32_t queue_records = 64;
 
-  MotionTimeModel time{};               // the time estimate
+  MotionTimeModel time{};               // the time estimate's machine
+  // The time estimate observer (SimStatus::sim_us); the process rules need
+  // it and turn it on. Off, a record costs no length or time arithmetic
+  // (on a Cortex-M4 about 1 % of a cut's instructions: arcs' 128-bit roots).
+  bool time_estimate = true;
   SimChecks checks{};                   // the safety observer (any(): on)
   const DesignGrid* design = nullptr;   // the gouge watch against this part (null: off); its geometry is plan.geo's
   AssessOptions assess{};               // its tolerances and the columns assessed

@@ -162,7 +162,7 @@ void SimulationT<H>::process(const Queued& q) {
     last_move_line_ = r.line;
   }
   const int64_t t_before = time_.estimated_time_us();
-  time_.emit(r);
+  if (job_.time_estimate || job_.material) time_.emit(r);
   if (job_.material) check_process(q, move, time_.estimated_time_us() - t_before);
   status_.line = r.line;
   status_.pos = mill_.position();

@@ -1,9 +1,10 @@
 // libFuzzer target: the whole pipeline, its set-up taken from the input.
-// Bytes -> tool spec and tool table readers -> G-code reader -> interpreter
-// -> cutting (sweep or stamp) into a grid of the input's size, pitch and
-// height type -> drawing step by step, render_update against render_full
-// (tests/fuzz/fuzz_render.h), with backplot, error colours, the gouge watch
-// and the assessment when asked for. Any crash, sanitizer report, broken
+// Bytes -> tool spec and tool table readers -> the simulation
+// (core/sim/simulation.h: G-code reader, interpreter, cutting by sweep or
+// stamp into a grid of the input's size, pitch and height type, the gouge
+// watch, the time estimate) -> drawing step by step, render_update against
+// render_full (tests/fuzz/fuzz_render.h), with backplot, error colours and
+// the assessment when asked for. Any crash, sanitizer report, broken
 // grid invariant or frame that differs from a full redraw is a bug.
 // `make fuzz SECONDS=N`.
 //
@@ -29,6 +30,7 @@
 #include "core/grid/grid.h"
 #include "core/motion/interp.h"
 #include "core/motion/summary.h"
+#include "core/sim/simulation.h"
 #include "core/tool/cutter.h"
 #include "core/tool/spec.h"
 #include "core/tool/tool.h"
@@ -92,55 +94,36 @@ class PathSink final : public CanonSink {
   int64_t sagitta_nm_;
 };
 
-// The cut pass: records into the Mill (what tools/run_job.cpp's CutSink
-// does), the gouge watch after each, a drawing step every few moves.
+// The simulation's observer: a drawing step every few moves, with every
+// change since the last (up to kMaxSteps).
 template <class H>
-class CutSink final : public CanonSink {
+class Steps final : public SimObserver {
  public:
-  CutSink(Mill<H>* mill, DexelGrid<H>* g, const ToolLibrary* lib, fuzz::RedrawCheck<H>* draw, uint32_t every,
-          uint8_t cutter_mode, GougeWatch* watch, MotionSummary* time, int64_t sagitta_nm)
-      : mill_(mill), g_(g), lib_(lib), draw_(draw), every_(every), cutter_mode_(cutter_mode), watch_(watch),
-        time_(time), sagitta_nm_(sagitta_nm), profile_(tool_profile(mill->tool())) {}
+  Steps(SimulationT<H>* sim, fuzz::RedrawCheck<H>* draw, uint32_t every, uint8_t cutter_mode, int64_t sagitta_nm)
+      : sim_(sim), draw_(draw), every_(every), cutter_mode_(cutter_mode), sagitta_nm_(sagitta_nm) {}
 
-  void emit(const CanonRecord& r) override {
-    time_->emit(r);
-    if (records_ >= kMaxCutRecords) return;
-    ++records_;
-    const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
-    if (move && r.line != last_line_) {
-      origin_ = GougeOrigin{last_line_, mill_->position(), &profile_};
-      have_origin_ = last_line_ != 0;
-    }
-    mill_->emit(r);
-    last_line_ = r.line;
-    watch();
-    if (r.kind == CanonKind::kToolChange) {
-      Tool t;
-      if (lib_->tool(r.tool, &t)) {
-        profile_ = tool_profile(t);
-        if (draw_) draw_->set_tool(&profile_);
-      }
-    }
-    pending_.include(g_->dirty);
-    g_->dirty = GridRect::none();
-    if (!move) return;
-    path_done += cli::path_pieces(r, sagitta_nm_);
-    if (++moves_ % every_ == 0) step();
+  void tool_loaded(const Tool& t) override {
+    profile_ = tool_profile(t);
+    if (draw_) draw_->set_tool(&profile_);
+  }
+  void changed(const GridRect& r) override { pending_.include(r); }
+  void record(const CanonRecord& r) override { path_done += cli::path_pieces(r, sagitta_nm_); }
+  void moved(uint64_t moves) override {
+    if (moves % every_ == 0) step();
   }
 
-  // The cut so far complete, then one drawing step (up to kMaxSteps).
+  // The cut so far complete, then one drawing step.
   void step() {
-    mill_->flush();
-    watch();
-    pending_.include(g_->dirty);
-    g_->dirty = pending_;
+    sim_->sync();
+    DexelGrid<H>& g = sim_->grid();
+    g.dirty = pending_;
     pending_ = GridRect::none();
     if (!draw_ || draw_->steps() >= kMaxSteps) return;
-    CutterPose pose{true, mill_->position()};
+    CutterPose pose{true, sim_->mill().position()};
     switch (cutter_mode_) {
       case 1: pose.visible = false; break;
       case 2: pose.visible = (draw_->steps() & 1) != 0; break;
-      case 3: pose.tip.x_nm += g_->pitch_nm; break;
+      case 3: pose.tip.x_nm += g.pitch_nm; break;
       default: break;
     }
     draw_->step(pose);
@@ -149,26 +132,20 @@ class CutSink final : public CanonSink {
   uint32_t path_done = 0;
 
  private:
-  void watch() {
-    if (watch_) (void)gouge_watch_check(watch_, *g_, g_->dirty, last_line_, mill_->position(), have_origin_ ? &origin_ : nullptr);
-  }
-
-  Mill<H>* mill_;
-  DexelGrid<H>* g_;
-  const ToolLibrary* lib_;
+  SimulationT<H>* sim_;
   fuzz::RedrawCheck<H>* draw_;
   uint32_t every_;
   uint8_t cutter_mode_;
-  GougeWatch* watch_;
-  MotionSummary* time_;
   int64_t sagitta_nm_;
-  ToolProfile profile_;
-  GougeOrigin origin_{0, PointNm{0, 0, 0}, nullptr};
-  bool have_origin_ = false;
-  uint32_t last_line_ = 0;
-  uint64_t records_ = 0, moves_ = 0;
+  ToolProfile profile_{};
   GridRect pending_ = GridRect::none();
 };
+
+// The step budget: records past kMaxCutRecords are not cut.
+template <class H>
+bool cut_enough(void* sim) {
+  return static_cast<SimulationT<H>*>(sim)->status().records >= kMaxCutRecords;
+}
 
 int64_t pitch_of(uint8_t b) {
   static const int64_t unit[8] = {1000, 10000, 100000, 1000000, 1, 10, 100, 10000000};
@@ -220,9 +197,9 @@ void run(const PipelineHeader& h, const char* text, size_t n) {
   SingleToolLibrary single(first);
   const ToolLibrary* lib = have_table ? static_cast<const ToolLibrary*>(&table) : &single;
 
-  // The grid.
-  static std::vector<H> top(kMaxSide * kMaxSide), bottom(kMaxSide * kMaxSide);
-  GridGeometry geo;
+  // The grid: the whole of it stock, to depth below Z0.
+  SimJob job;
+  GridGeometry& geo = job.plan.geo;
   geo.nx = 4 + h.b[1] % 61;
   geo.ny = 4 + h.b[2] % 61;
   geo.pitch_nm = pitch_of(h.b[3]);
@@ -232,54 +209,50 @@ void run(const PipelineHeader& h, const char* text, size_t n) {
   static const int64_t headroom[4] = {0, 1, 2, 7};
   geo.z0_nm = -depth_nm;
   geo.lsb_nm = lsb_for_range(depth_nm * (1 + headroom[(h.b[5] >> 5) & 3]), bits);
-  DexelGrid<H> g;
-  FUZZ_REQUIRE(ok(grid_init(&g, geo, top.data(), bottom.data(), top.size())));
-  const int64_t top_lsb = div_round(depth_nm, geo.lsb_nm);
-  grid_block_stock(&g, top_lsb);
-
-  // The cutter: stamp memory for a bounded reach (a larger tool fails
-  // set_tool, and the Mill keeps cutting with the one before).
-  static std::vector<int32_t> words(cutter_storage_words(kMaxStampReach));
-  Mill<H> mill(&g, mode, lib, words.data(), words.size());
-  (void)mill.set_tool(first);
+  job.plan.top_lsb = div_round(depth_nm, geo.lsb_nm);
+  job.plan.stock_nx = geo.nx - 1;
+  job.plan.stock_ny = geo.ny - 1;
+  // Stamping: a bounded reach keeps one execution short (a tool wider
+  // than that is swept).
+  job.mode = mode == CutMode::kStamp && cutter_reach_dex(tool_profile(first), geo.pitch_nm) <= kMaxStampReach
+                 ? CutMode::kStamp
+                 : CutMode::kSweep;
+  job.tool = first;
+  job.library = lib;
+  job.offsets = have_table ? &table : nullptr;
+  job.inch = inch;
+  job.max_blocks = 20000;  // a fuzzed endless loop stays short
+  job.input_buffer_bytes = 4096;
 
   // The design: a 2x2 height image over the stock's columns.
   const bool with_design = (flags & 0x20) != 0;
   static std::vector<int32_t> design_tops(kMaxSide * kMaxSide);
-  static std::vector<uint8_t> seen(gouge_watch_seen_bytes(kMaxSide, kMaxSide));
   DesignGrid design;
   AssessOptions aopt;
-  aopt.region = GridRect{1, 1, g.nx - 1, g.ny - 1};
+  aopt.region = GridRect{1, 1, geo.nx - 1, geo.ny - 1};
   aopt.tol_nm = geo.lsb_nm * (1 + (h.b[10] & 7));
-  GougeWatch watch;
   // A grid wider than the design's range has none (kOutOfRange).
   if (with_design && ok(design_init(&design, geo, design_tops.data(), design_tops.size()))) {
     const uint16_t samples[4] = {static_cast<uint16_t>(h.b[10] & 15), static_cast<uint16_t>(h.b[10] >> 4),
                                  static_cast<uint16_t>(h.b[11] & 15), static_cast<uint16_t>(h.b[11] >> 4)};
     const HeightImage img{samples, 2, 2, 15};
-    FUZZ_REQUIRE(ok(design_from_image(&design, img, g.x0_nm + g.pitch_nm, g.y0_nm + g.pitch_nm,
-                                      g.x0_nm + (g.nx - 2) * g.pitch_nm, g.y0_nm + (g.ny - 2) * g.pitch_nm, geo.z0_nm, 0)));
-    FUZZ_REQUIRE(ok(gouge_watch_init(&watch, &design, aopt, seen.data(), seen.size())));
+    FUZZ_REQUIRE(ok(design_from_image(&design, img, geo.x0_nm + geo.pitch_nm, geo.y0_nm + geo.pitch_nm,
+                                      geo.x0_nm + (geo.nx - 2) * geo.pitch_nm, geo.y0_nm + (geo.ny - 2) * geo.pitch_nm,
+                                      geo.z0_nm, 0)));
+    job.design = &design;
+    job.assess = aopt;
   }
   const bool designed = design.top_lsb != nullptr;
 
   // The program, for the backplot: a scan pass first (as `run` does).
   const char* program = text + pos;
   const size_t program_n = n - pos;
-  InterpOptions iopt;
-  iopt.inch = inch;
-  iopt.tools = have_table ? &table : nullptr;
+  // Parameters, expressions and o-word flow are read too (the fuzzer feeds
+  // them: gcode.dict's #, [ ], functions, sub, call, while ...).
   NoWarnings warnings;
-  iopt.warnings = &warnings;
-  // Parameters and expressions (issue 21) are read too: the fuzzer feeds
-  // them (gcode.dict: #, [ ], functions, operators).
-  static ParamStore params;
-  iopt.params = &params;
-  // O-word control flow too (gcode.dict: sub, call, while ...), with a block
-  // limit that keeps a fuzzed endless loop short.
-  static OwordStore control;
-  iopt.control = &control;
-  iopt.max_blocks = 20000;
+  job.warnings = &warnings;
+  static ProgramMemory memory;
+  const InterpOptions iopt = sim_interp_options(job, nullptr, &memory);
   const int64_t sagitta_nm = max_of<int64_t>(geo.pitch_nm / 4, 1000);
   static std::vector<PathSegment> path;
   path.clear();
@@ -314,35 +287,46 @@ void run(const PipelineHeader& h, const char* text, size_t n) {
     s.zoom_shift = zoom[h.b[6] >> 6];
   }
 
-  MotionTimeModel model;
-  if (h.b[5] & 0x80) model.accel_nm_per_s2 = 500 * kNmPerMm;
-  MotionSummary time(model);
+  if (h.b[5] & 0x80) job.time.accel_nm_per_s2 = 500 * kNmPerMm;
+  static std::vector<uint64_t> mem;
+  mem.assign(SimulationT<H>::required_bytes(job) / 8 + 1, 0);
+  SimulationT<H>* sim = SimulationT<H>::create(job, mem.data(), mem.size() * 8);
+  if (!sim) return;  // a tool the grid cannot take
   const uint32_t every = 1 + (h.b[7] & 15);
-  CutSink<H> sink(&mill, &g, lib, draw ? &check : nullptr, every, static_cast<uint8_t>((h.b[7] >> 5) & 3),
-                  designed ? &watch : nullptr, &time, sagitta_nm);
+  Steps<H> steps(sim, draw ? &check : nullptr, every, static_cast<uint8_t>((h.b[7] >> 5) & 3), sagitta_nm);
+  sim->set_observer(&steps);
+  DexelGrid<H>& g = sim->grid();
   if (draw) {
     check.init(&g, s, designed ? &design : nullptr, aopt, with_path ? &path : nullptr,
-               with_path ? &sink.path_done : &done_zero);
-    const ToolProfile p = tool_profile(mill.tool());
+               with_path ? &steps.path_done : &done_zero);
+    const ToolProfile p = tool_profile(first);
     check.set_tool(&p);
-    CutterPose pose{true, mill.position()};
+    CutterPose pose{true, sim->mill().position()};
     check.step(pose);  // the first frame is drawn whole
   }
-  Interp interp(&sink, iopt);
-  (void)interp_run_text(&interp, program, program_n, nullptr);
-  sink.step();
+  sim->feed(program, program_n);
+  sim->close_input();
+  SimBudget budget;
+  budget.yield = cut_enough<H>;
+  budget.yield_ctx = sim;
+  while (sim->step(budget) == SimState::kReady && sim->status().records < kMaxCutRecords) {
+  }
+  sim->finish();
+  steps.step();
 
   // Invariants of the dexel set: bottom <= top, the stock's height bound.
   for (int32_t k = 0; k < g.nx * g.ny; ++k) {
-    FUZZ_REQUIRE(bottom[k] <= top[k]);
-    FUZZ_REQUIRE(static_cast<int64_t>(top[k]) <= g.top_bound_lsb);
+    FUZZ_REQUIRE(g.bottom[k] <= g.top[k]);
+    FUZZ_REQUIRE(static_cast<int64_t>(g.top[k]) <= g.top_bound_lsb);
   }
   if (designed) {
     AssessResult res;
     FUZZ_REQUIRE(ok(assess(g, design, aopt, &res)));
     FUZZ_REQUIRE(res.gouge_columns + res.leftover_columns + res.within_tol_columns == res.design_columns);
+    const GougeWatch& watch = *sim->gouges();
     FUZZ_REQUIRE(watch.nevents <= kGougeEventsMax && watch.nevents <= watch.total);
   }
+  SimulationT<H>::destroy(sim);
 }
 
 int fuzz_pipeline(const uint8_t* data, size_t size) {

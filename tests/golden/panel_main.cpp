@@ -4,10 +4,10 @@
 // the reference output; tools/scripts/panel.sh requires every line that does
 // not start with "info" to be identical.
 //
-// Pipeline (DESIGN.md "One pipeline"): G-code text in flash -> interpreter
-// (core/motion/interp.h) -> canonical records -> Mill (core/cut/mill.h, exact sweeps)
-// -> static dexel grid -> renderer (display/render.h) -> a 480x272 RGB565
-// frame in a static framebuffer -> its hash.
+// Pipeline: G-code text in flash -> the simulation (core/sim/simulation.h:
+// interpreter, canonical records, Mill with exact sweeps, the dexel grid,
+// the safety observer) in a static block -> renderer (display/render.h) ->
+// a 480x272 RGB565 frame in a static framebuffer -> its hash.
 //
 // Everything lives in static memory sized at compile time. No heap, no
 // stdio, integer only.
@@ -17,7 +17,7 @@
 
 #include "core/assess/assess.h"
 #include "core/check/safety.h"
-#include "core/check/safety_pass.h"
+#include "core/sim/simulation.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
 #include "core/design/design.h"
@@ -47,8 +47,10 @@ constexpr int32_t kNx = 192, kNy = 128;
 constexpr int64_t kPitchNm = um(250);
 constexpr int64_t kStockTopNm = mm(20);
 constexpr int64_t kRangeNm = mm(25);  // material range the m-bit heights cover
-height_t g_top[kNx * kNy];
-height_t g_bottom[kNx * kNy];
+// The simulation's block: the grid, the interpreter's memory, the
+// observers' shadows (core/sim/simulation.h sizes it; checked at start).
+constexpr size_t kSimBytes = 640 * 1024;
+alignas(8) unsigned char g_sim_mem[kSimBytes];
 
 // ---- the tool table (T1..T4) ------------------------------------------------
 struct PanelTool {
@@ -64,16 +66,6 @@ constexpr PanelTool kTools[] = {
 };
 constexpr int kToolCount = static_cast<int>(sizeof kTools / sizeof kTools[0]);
 constexpr int64_t kToolLengthNm = mm(40);
-
-// Cutter dexel sets need (2K+1)^2 * 2 + ... words each (core/tool/cutter.h), K =
-// R / pitch: all of them sized here, at compile time.
-constexpr size_t cutter_words_for(int i) {
-  return i == kToolCount ? 0
-                         : cutter_storage_words(static_cast<int32_t>(kTools[i].diameter_nm / 2 / kPitchNm)) +
-                               cutter_words_for(i + 1);
-}
-constexpr size_t kCutterWords = cutter_words_for(0);
-int32_t g_cutter_words[kCutterWords];
 
 // ---- the demo program: G-code text in flash ---------------------------------
 // T1 ramps into a pocket and zig-zags it, cuts an inner pocket with arcs,
@@ -159,15 +151,44 @@ class PanelLibrary final : public ToolLibrary {
   }
 };
 
-// Feeds the program to the interpreter; returns the lines in error (0
-// expected) and the number of lines.
-int play_program(CanonSink* sink, uint32_t* lines) {
-  InterpOptions opt;
-  Interp in(sink, opt);
-  const size_t len = strlen(kProgram);
-  *lines = 0;
-  for (size_t i = 0; i < len; ++i) *lines += kProgram[i] == '\n';
-  return static_cast<int>(interp_run_text(&in, kProgram, len, nullptr));
+// The four tools, for the Mill's memory.
+Tool g_tools[kToolCount];
+
+// The block as the panel holds it: 48 x 32 mm at 0.25 mm, its top at 20 mm
+// over every column; the program in flash, the panel's tools.
+SimJob panel_job(const PanelLibrary& lib) {
+  SimJob j;
+  const int bits = static_cast<int>(sizeof(height_t) * 8);
+  j.plan.geo = GridGeometry{kNx, kNy, kPitchNm / 2, kPitchNm / 2, kPitchNm, 0, lsb_for_range(kRangeNm, bits)};
+  j.plan.top_lsb = div_round(kStockTopNm, j.plan.geo.lsb_nm);
+  j.plan.stock_nx = kNx - 1;
+  j.plan.stock_ny = kNy - 1;
+  for (int k = 0; k < kToolCount; ++k) (void)lib.tool(k + 1, &g_tools[k]);
+  j.tool = g_tools[0];
+  j.library = &lib;
+  j.tools = g_tools;
+  j.ntools = kToolCount;
+  j.input_buffer_bytes = 1024;
+  j.time_estimate = false;  // what the cut costs is what this panel measures
+  return j;
+}
+
+// Runs the program through a simulation of `job` in the static block
+// (null: the block is too small).
+Simulation* play_program(const SimJob& job) {
+  Simulation* sim = sim_create(job, g_sim_mem, sizeof g_sim_mem);
+  if (!sim) return nullptr;
+  sim->feed(kProgram, strlen(kProgram));
+  sim->close_input();
+  while (sim->step(SimBudget()) == SimState::kReady) {
+  }
+  return sim;
+}
+
+uint32_t program_lines() {
+  uint32_t lines = 0;
+  for (const char* p = kProgram; *p; ++p) lines += *p == '\n';
+  return lines;
 }
 
 // ==== FRAME: render + frame hash ==============================================
@@ -293,35 +314,25 @@ bool overlay_frame(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
 // the block, the shank above the flutes, a clamp beside the block. The
 // grid comes out as the plain cut's; each finding is printed with its line
 // and marked in red on the frame.
-uint32_t g_shadow[kNx * kNy];
-constexpr size_t kTileWords = static_cast<size_t>((kNx >> kSafetyTileBits) + 1) * ((kNy >> kSafetyTileBits) + 1);
-uint32_t g_tiles[kTileWords];
-SafetyWatch g_watch;
-
-bool safety_pass(golden::Out& out, DexelGrid<height_t>* g, const ToolLibrary& lib, uint64_t plain_hash, PointNm* tip) {
-  grid_block_stock(g, grid_height_of_z(*g, kStockTopNm));
-  if (!ok(safety_watch_init(&g_watch, *g, g_shadow, kNx * kNy, g_tiles, kTileWords))) {
+bool safety_pass(golden::Out& out, const PanelLibrary& lib, uint64_t plain_hash, Simulation** done) {
+  SimJob job = panel_job(lib);
+  SimChecks& c = job.checks;
+  c.rapid = c.spindle = c.below = c.shank = c.holder = c.plunge = true;
+  Simulation* sim = play_program(job);
+  if (!sim) {
     out.str("panel FAIL safety set-up").end();
     return false;
   }
-  g_watch.bottom_nm = g->z0_nm;
-  g_watch.check_shank = g_watch.check_holder = g_watch.check_plunge = true;
-  Tool first;
-  (void)lib.tool(1, &first);
-  Mill<height_t> mill(g, CutMode::kSweep, &lib, g_cutter_words, kCutterWords);
-  (void)mill.set_tool(first);
-  SafetyPass<height_t> pass(&mill, g, &g_watch, &lib, first);
-  InterpOptions opt;
-  Interp in(&pass, opt);
-  pass.set_interp(&in);
-  const int errors = static_cast<int>(interp_run_text(&in, kProgram, strlen(kProgram), nullptr));
-  pass.finish();
-  *tip = mill.position();
+  *done = sim;
+  DexelGrid<height_t>* g = &sim->grid();
+  const SafetyWatch& g_watch = *sim->safety();
+  const int errors = static_cast<int>(sim->errors());
+  const PointNm tip = sim->mill().position();
   out.str("panel safety").kv("findings", static_cast<int64_t>(g_watch.total)).kv("errors", errors);
   out.kv("same_grid", grid_hash(*g) == plain_hash ? 1 : 0).end();
   FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
   renderer_set_colours(&g_renderer, nullptr);
-  render_full(&g_renderer, g, CutterPose{true, *tip});
+  render_full(&g_renderer, g, CutterPose{true, tip});
   for (size_t k = 0; k < g_watch.nevents; ++k) {
     const SafetyEvent& e = g_watch.events[k];
     out.str("panel finding ").str(safety_kind_name(e.kind)).kv("line", e.line).kv("depth_um", e.depth_nm / kNmPerUm).end();
@@ -411,49 +422,57 @@ int main(int, char**) {
   golden::Out out(golden::board_write);
   const uint64_t t0 = golden::board_instructions();
 
-  DexelGrid<height_t> g;
-  const int bits = static_cast<int>(sizeof(height_t) * 8);
-  const GridGeometry geo{kNx, kNy, kPitchNm / 2, kPitchNm / 2, kPitchNm, 0, lsb_for_range(kRangeNm, bits)};
-  if (!ok(grid_init(&g, geo, g_top, g_bottom, static_cast<size_t>(kNx) * kNy))) {
-    out.str("panel FAIL set-up").end();
+  const PanelLibrary lib;
+  const SimJob plain = panel_job(lib);
+  const size_t need = sim_required_bytes(plain);
+  Simulation* sim = need && need <= sizeof g_sim_mem ? sim_create(plain, g_sim_mem, sizeof g_sim_mem) : nullptr;
+  if (!sim) {
+    out.str("panel FAIL set-up").kv("sim_bytes", static_cast<int64_t>(need)).end();
     return 1;
   }
-  grid_block_stock(&g, grid_height_of_z(g, kStockTopNm));
+  DexelGrid<height_t>& g = sim->grid();
+  const int bits = static_cast<int>(sizeof(height_t) * 8);
   out.str("panel grid").kv("nx", kNx).kv("ny", kNy).kv("m", bits).kv("pitch_nm", g.pitch_nm).kv("lsb_nm", g.lsb_nm);
-  out.kv("grid_bytes", static_cast<int64_t>(sizeof g_top + sizeof g_bottom)).end();
+  out.kv("grid_bytes", static_cast<int64_t>(2 * sizeof(height_t) * kNx * kNy)).end();
+  out.str("info sim_bytes").kv("n", static_cast<int64_t>(need)).end();
+  sim->start();  // the untouched stock taken (its material, for the volume removed)
   const uint64_t t1 = golden::board_instructions();
 
-  PanelLibrary lib;
-  Mill<height_t> mill(&g, CutMode::kSweep, &lib, g_cutter_words, kCutterWords);
-  uint32_t lines = 0;
-  const int errors = play_program(&mill, &lines);
-  mill.flush();
+  sim->feed(kProgram, strlen(kProgram));
+  sim->close_input();
+  while (sim->step(SimBudget()) == SimState::kReady) {
+  }
+  const Mill<height_t>& mill = sim->mill();
+  const int errors = static_cast<int>(sim->errors());
   const uint64_t t2 = golden::board_instructions();
 
   const uint64_t hash = grid_hash(g);
-  out.str("panel program").kv("lines", lines).kv("errors", errors).kv("status", static_cast<int64_t>(mill.status())).end();
+  out.str("panel program").kv("lines", program_lines()).kv("errors", errors).kv("status", static_cast<int64_t>(mill.status())).end();
   out.str("panel cut").kv("pieces", static_cast<int64_t>(mill.stats().instances));
   out.kv("dexel_updates", static_cast<int64_t>(mill.stats().dexel_updates)).end();
   out.str("panel grid").kx("hash", hash).end();
   const uint64_t t3 = golden::board_instructions();
 
   const ToolProfile prof = tool_profile(mill.tool());
-  const bool drawn = render_frame(out, &g, prof, mill.position());
+  const PointNm end = mill.position();
+  const uint64_t cut_updates = mill.stats().dexel_updates;
+  const bool drawn = render_frame(out, &g, prof, end);
   const uint64_t t4 = golden::board_instructions();
-  const bool assessed = drawn && assess_and_draw(out, &g, mill.position());
+  const bool assessed = drawn && assess_and_draw(out, &g, end);
   const uint64_t t5 = golden::board_instructions();
-  const bool overlaid = assessed && overlay_frame(out, &g, mill.position());
+  const bool overlaid = assessed && overlay_frame(out, &g, end);
   const uint64_t t6 = golden::board_instructions();
-  PointNm tip{0, 0, 0};
-  const bool checked = overlaid && safety_pass(out, &g, lib, hash, &tip);
+  sim_destroy(sim);  // the safety pass cuts the program again in the same block
+  Simulation* checked_sim = nullptr;
+  const bool checked = overlaid && safety_pass(out, lib, hash, &checked_sim);
   const uint64_t t7 = golden::board_instructions();
   MaterialCost mcost;
-  const bool marbled = checked && material_frames(out, &g, prof, tip, &mcost);
+  const bool marbled = checked && material_frames(out, &checked_sim->grid(), prof, checked_sim->mill().position(), &mcost);
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
     info_instructions(out, "setup(grid)", t1 - t0, 0);
-    info_instructions(out, "cut", t2 - t1, mill.stats().dexel_updates);
+    info_instructions(out, "cut", t2 - t1, cut_updates);
     info_instructions(out, "render(480x272)", t4 - t3, 0);
     info_instructions(out, "assess+error_frame(480x272)", t5 - t4, 0);
     info_instructions(out, "overlay(2 frames+blend)", t6 - t5, 0);
@@ -464,5 +483,6 @@ int main(int, char**) {
     info_instructions(out, "marble update(one cut)", mcost.update, 0);
     info_instructions(out, "plain update(one cut)", mcost.plain_update, 0);
   }
+  sim_destroy(checked_sim);
   return (errors == 0 && drawn && assessed && overlaid && checked && marbled) ? 0 : 1;
 }
