@@ -115,7 +115,7 @@ if [ "${1:-}" = "--self-test" ]; then
 fi
 [ $# -gt 0 ] || set -- tools/*.cpp
 if lengths "$@"; then
-  echo "ok: no function of $* is longer than $MAX lines"
+  echo "ok: no function in the $# files checked is longer than $MAX lines"
 else
   exit 1
 fi
