@@ -66,7 +66,7 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-headers check-poison check-layers clean
+.PHONY: all run test test-unit check-headers check-poison check-layers check-function-length clean
 all: $(BIN)
 
 $(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
@@ -96,10 +96,15 @@ check-poison:
 check-layers:
 	@tests/check_layers.sh
 
+# No function of tools/ is longer than 120 lines; the check's self-test
+# first shows that it catches one.
+check-function-length:
+	@tests/check_function_length.sh --self-test && tests/check_function_length.sh
+
 test-unit: $(TEST_BIN) $(BIN)
 	DEXMILL=$(abspath $(BIN)) $(TEST_BIN)
 
-test: check-headers check-poison check-layers test-unit
+test: check-headers check-poison check-layers check-function-length test-unit
 
 run: $(BIN)
 	$(BIN) run

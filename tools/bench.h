@@ -1,5 +1,5 @@
 // `dexmill bench`: benchmarks register themselves (BENCH below), one result
-// line each in the key=value format of ../shared/CLI.md.
+// line each: "name=NAME key=value ...".
 #ifndef DEXMILL_TOOLS_BENCH_H
 #define DEXMILL_TOOLS_BENCH_H
 

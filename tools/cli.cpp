@@ -1,12 +1,13 @@
-// Subcommand dispatch, --help and --version.
+// Subcommand dispatch, --help and --version, and the hidden
+// --man-options (the man page's option lists, tools/option_help.h).
 #include "tools/cli.h"
 
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
 
-#include "core/math/decimal.h"
 #include "platform/process.h"
+#include "tools/option_help.h"
 
 namespace dexmill {
 namespace cli {
@@ -15,16 +16,16 @@ namespace {
 struct Command {
   const char* name;
   int (*fn)(int, char**);
-  const char* summary;
+  CommandDoc (*doc)();
 };
 
 const Command kCommands[] = {
-    {"run", cmd_run, "simulate a program; with no FILE, the built-in demo"},
-    {"path", cmd_path, "print the interpreted motion as a polyline"},
-    {"check", cmd_check, "read and interpret a program, report errors only"},
-    {"bench", cmd_bench, "run benchmarks, one result line each"},
-    {"optimize", cmd_optimize, "the program with feeds lowered to its materials' limits"},
-    {"zig", cmd_zig, "a zig-milling finishing program from a design part"},
+    {"run", cmd_run, run_doc},
+    {"path", cmd_path, path_doc},
+    {"check", cmd_check, check_doc},
+    {"bench", cmd_bench, bench_doc},
+    {"optimize", cmd_optimize, optimize_doc},
+    {"zig", cmd_zig, zig_doc},
 };
 
 void usage(FILE* f) {
@@ -53,28 +54,10 @@ int fail(int code, const char* fmt, ...) {
   return code;
 }
 
-bool parse_units(const char* value, bool* inch) {
-  if (!std::strcmp(value, "mm")) *inch = false;
-  else if (!std::strcmp(value, "inch")) *inch = true;
-  else return fail(kExitUsage, "--units must be mm or inch, not '%s'", value), false;
-  return true;
-}
-
-bool parse_default_feed(const char* value, int64_t* nm_per_min) {
-  Decimal d;
-  std::size_t pos = 0, n = std::strlen(value);
-  const bool number = n && decimal_parse(value, n, &pos, &d) == DecimalParse::kOk && pos == n;
-  *nm_per_min = number ? decimal_to_nm(d, false) : 0;
-  if (*nm_per_min < 1000 || *nm_per_min > 1000000 * 1000000LL)
-    return fail(kExitUsage, "--default-feed needs a feed in mm/min, from 0.001 to 1000000, not '%s'", value), false;
-  return true;
-}
-
-int take_input_file(const char* cmd, const char* arg, const char** file) {
-  if (arg[0] == '-' && arg[1]) return fail(kExitUsage, "unknown option '%s' (try 'dexmill %s --help')", arg, cmd);
-  if (*file) return fail(kExitUsage, "more than one input file ('%s' and '%s')", *file, arg);
-  *file = arg;
-  return kExitOk;
+std::vector<CommandDoc> command_docs() {
+  std::vector<CommandDoc> docs;
+  for (const Command& c : kCommands) docs.push_back(c.doc());
+  return docs;
 }
 
 int main(int argc, char** argv) {
@@ -89,6 +72,10 @@ int main(int argc, char** argv) {
   const char* sub = argv[1];
   if (!std::strcmp(sub, "--help") || !std::strcmp(sub, "-h") || !std::strcmp(sub, "help")) {
     usage(stdout);
+    return kExitOk;
+  }
+  if (!std::strcmp(sub, "--man-options")) {
+    print_man_options(command_docs(), stdout);
     return kExitOk;
   }
   if (!std::strcmp(sub, "--version")) {

@@ -1,14 +1,16 @@
-// The dexmill command line (../shared/CLI.md): subcommands and exit codes.
+// The dexmill command line: subcommands and exit codes.
 #ifndef DEXMILL_TOOLS_CLI_H
 #define DEXMILL_TOOLS_CLI_H
 
 #include <stdint.h>
 
+#include <vector>
+
 namespace dexmill {
 namespace cli {
 
-// Exit status, CLI.md: 0 success, 1 input errors, 2 usage, 3 I/O, 4 the
-// program ran and failed a check the user asked for (--stop-at, --fail-on-*).
+// Exit status: 0 success, 1 input errors, 2 usage, 3 I/O, 4 the program
+// ran and failed a check the user asked for (--stop-at, --fail-on-*).
 enum Exit : int { kExitOk = 0, kExitInput = 1, kExitUsage = 2, kExitIo = 3, kExitCheck = 4 };
 
 int main(int argc, char** argv);
@@ -21,19 +23,18 @@ int cmd_bench(int argc, char** argv);
 int cmd_optimize(int argc, char** argv);
 int cmd_zig(int argc, char** argv);
 
-// The value of --units: "mm" or "inch" into *inch; else prints the usage
-// error and returns false (the caller exits kExitUsage).
-bool parse_units(const char* value, bool* inch);
+// Each subcommand's help, from its option table (tools/option_table.h).
+struct CommandDoc;
+CommandDoc run_doc();
+CommandDoc path_doc();
+CommandDoc check_doc();
+CommandDoc bench_doc();
+CommandDoc optimize_doc();
+CommandDoc zig_doc();
 
-// The value of --default-feed, mm/min, into *nm_per_min (nm/min): the
-// controller's feed for moves made with no F in force. Else prints the
-// usage error and returns false.
-bool parse_default_feed(const char* value, int64_t* nm_per_min);
-
-// A non-option argument of `dexmill CMD`: the one input file, into *file.
-// Returns kExitOk, or prints the usage error for an unknown option or a
-// second file and returns kExitUsage.
-int take_input_file(const char* cmd, const char* arg, const char** file);
+// Every subcommand's, in the order of `dexmill --help`: what
+// `dexmill --man-options` prints.
+std::vector<CommandDoc> command_docs();
 
 // `dexmill: error: MESSAGE` on stderr (printf-style); returns `code`.
 int fail(int code, const char* fmt, ...) __attribute__((format(printf, 2, 3)));

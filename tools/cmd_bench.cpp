@@ -4,9 +4,13 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <string>
+#include <vector>
 
 #include "tools/bench.h"
 #include "tools/cli.h"
+#include "tools/option_help.h"
+#include "tools/option_parse.h"
 
 namespace dexmill {
 namespace bench {
@@ -44,30 +48,58 @@ void result(const char* name, const char* fmt, ...) {
 }  // namespace bench
 
 namespace cli {
+namespace {
+
+struct BenchArgs {
+  bool list = false;
+  std::vector<std::string> names;  // prefixes; none: every benchmark
+};
+
+const Option<BenchArgs> kBenchOptions[] = {
+    {"--list", nullptr, "print the names of the benchmarks instead of running them",
+     [](BenchArgs* a, const char*) -> int { return a->list = true, kExitOk; }},
+    {"--once", nullptr, "every figure from a single run (for instruction counts under valgrind)",
+     [](BenchArgs*, const char*) -> int { return bench::g_once = true, kExitOk; }},
+};
+
+const CommandText kBenchText = {
+    "bench",
+    "usage: dexmill bench [--list] [--once] [NAME...]\n"
+    "  Runs the benchmarks whose names start with a NAME (all without one).\n",
+    nullptr,
+    "bench: ",
+    false,
+};
+
+const OptionTable<BenchArgs>& bench_table() {
+  static const OptionTable<BenchArgs> t = [] {
+    OptionTable<BenchArgs> table;
+    table.text = &kBenchText;
+    table.sections.push_back(section<BenchArgs>(nullptr, option_list(kBenchOptions), [](BenchArgs& a) -> BenchArgs& { return a; }));
+    table.operand = [](BenchArgs* a, const char* arg, int) -> int { return a->names.emplace_back(arg), kExitOk; };
+    return table;
+  }();
+  return t;
+}
+
+}  // namespace
+
+CommandDoc bench_doc() { return command_doc(bench_table()); }
 
 int cmd_bench(int argc, char** argv) {
-  bool list = false;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
-      std::printf("usage: dexmill bench [--list] [--once] [NAME...]\n  Runs the benchmarks whose names start with a NAME (all without one).\n");
-      return kExitOk;
-    }
-    if (!std::strcmp(argv[i], "--list")) list = true;
-    else if (!std::strcmp(argv[i], "--once")) bench::g_once = true;
-    else if (argv[i][0] == '-') return fail(kExitUsage, "bench: unknown option '%s'", argv[i]);
-  }
+  BenchArgs a;
+  bool help = false;
+  const int parsed = parse_options(bench_table(), argc, argv, &a, &help);
+  if (help) print_help(bench_doc(), stdout);
+  if (parsed != kExitOk || help) return parsed;
   int ran = 0;
   for (bench::Case* c = bench::first(); c; c = c->next) {
-    bool selected = true;
-    int names = 0;
-    for (int i = 1; i < argc; ++i) {
-      if (argv[i][0] == '-') continue;
-      if (names++ == 0) selected = false;
-      if (!std::strncmp(c->name, argv[i], std::strlen(argv[i]))) selected = true;
-    }
+    bool selected = a.names.empty();
+    for (const std::string& n : a.names)
+      if (!std::strncmp(c->name, n.c_str(), n.size())) selected = true;
     if (!selected) continue;
     ++ran;
-    if (list) std::printf("%s\n", c->name);
+    if (a.list) std::printf("%s\n", c->name);
     else c->run(c->name);
   }
   if (!ran) return fail(kExitUsage, "bench: no benchmark matches (try 'dexmill bench --list')");

@@ -6,102 +6,145 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
-#include <vector>
-
 #include "tools/cli.h"
+#include "tools/option_help.h"
+#include "tools/option_parse.h"
+#include "tools/option_values.h"
 #include "tools/read_options.h"
 #include "tools/run_job.h"
-#include "tools/run_options.h"
+#include "tools/run_option_table.h"
 
 namespace dexmill {
 namespace cli {
 namespace {
 
-void usage(std::FILE* f) {
-  std::fprintf(f,
-               "usage: dexmill check FILE|- [--max-errors N] [--follow-ons] [--units mm|inch]\n"
-               "                            [--default-feed MM/MIN] [--subroutine-path DIR]\n"
-               "                            [--max-blocks N] [--tools FILE]\n\n"
-               "Reads and interprets the program as `path` does, reporting every error\n"
-               "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
-               "error is skipped and changes nothing; errors that may only follow from\n"
-               "an earlier one (a G1 after the bad line that set F) are counted, not\n"
-               "shown. Exit 0 clean, 1 with errors.\n"
-               "--max-errors: stop after N errors (default 100; 0 = no limit).\n"
-               "--follow-ons: show those errors too, marked (they count towards N).\n"
-               "%s\n"
-               "       dexmill check --simulate FILE [run options]\n\n"
-               "Cuts the program as `run` does with the safety checks (all unless --check\n"
-               "names some) and, with --design, the gouge watch; writes no image. The findings\n"
-               "are warnings; exit 4 when there is one, 0 when clean, 1 with input errors.\n",
-               kReadOptionsUsage);
+// Both forms' settings: check's own, and run's for --simulate.
+struct CheckArgs {
+  std::string file;
+  ReadOptions read;
+  long max_errors = 100;
+  bool follow_ons = false;
+  RunOptions run;
+};
+
+int max_errors(CheckArgs* a, const char* v) {
+  char* end = nullptr;
+  a->max_errors = std::strtol(v, &end, 10);
+  if (!end || *end || a->max_errors < 0) return fail(kExitUsage, "--max-errors needs a count, not '%s'", v);
+  return kExitOk;
+}
+
+const Option<CheckArgs> kCheckOptions[] = {
+    {"--max-errors", "N", "stop after N errors (default 100; 0: no limit)", max_errors},
+    {"--follow-ons", nullptr, "show the errors that may only follow from an earlier one too, marked (they count towards N)",
+     [](CheckArgs* a, const char*) -> int { return a->follow_ons = true, kExitOk; }},
+};
+
+// Its presence picks the table (cmd_check); parsed, it does nothing more.
+const Option<CheckArgs> kSimulateOption[] = {
+    {"--simulate", nullptr,
+     "cut the program as dexmill run does instead, with run's options (below) in place of the ones here",
+     [](CheckArgs*, const char*) -> int { return kExitOk; }},
+};
+
+const CommandText kCheckText = {
+    "check",
+    "usage: dexmill check FILE|- [--max-errors N] [--follow-ons] [reading options]\n"
+    "       dexmill check --simulate FILE|- [run options]\n\n"
+    "Reads and interprets the program as `path` does, reporting every error\n"
+    "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
+    "error is skipped and changes nothing; errors that may only follow from\n"
+    "an earlier one (a G1 after the bad line that set F) are counted, not\n"
+    "shown. Exit 0 clean, 1 with errors.\n\n"
+    "With --simulate it cuts the program as `run` does with the safety checks (all\n"
+    "unless --check names some) and, with --design, the gouge watch; writes no image.\n"
+    "The findings are warnings; exit 4 when there is one, 0 when clean, 1 with input\n"
+    "errors.\n",
+    nullptr,
+};
+
+CheckArgs& whole(CheckArgs& a) { return a; }
+ReadOptions& read_part(CheckArgs& a) { return a.read; }
+RunOptions& run_part(CheckArgs& a) { return a.run; }
+
+const OptionTable<CheckArgs>& check_table() {
+  static const OptionTable<CheckArgs> t = [] {
+    OptionTable<CheckArgs> table;
+    table.text = &kCheckText;
+    table.sections.push_back(section<CheckArgs>(nullptr, option_list(kCheckOptions), whole));
+    table.sections.push_back(section<CheckArgs>(nullptr, option_list(kSimulateOption), whole));
+    table.sections.push_back(section<CheckArgs>("Reading the program", read_option_list(), read_part));
+    table.operand = [](CheckArgs* a, const char* arg, int index) -> int { return take_file(&a->file, arg, index); };
+    return table;
+  }();
+  return t;
+}
+
+const OptionTable<CheckArgs>& simulate_table() {
+  static const OptionTable<CheckArgs> t = [] {
+    OptionTable<CheckArgs> table;
+    table.text = &kCheckText;
+    table.sections.push_back(section<CheckArgs>(nullptr, option_list(kSimulateOption), whole));
+    table.sections.push_back(include<CheckArgs>("With --simulate", run_option_table(), run_part));
+    table.operand = [](CheckArgs* a, const char* arg, int index) -> int { return run_operand(&a->run, arg, index); };
+    return table;
+  }();
+  return t;
 }
 
 int check_simulate(int argc, char** argv) {
-  std::vector<char*> args;
-  for (int i = 0; i < argc; ++i)
-    if (std::strcmp(argv[i], "--simulate")) args.push_back(argv[i]);
-  static char fail_on[] = "--fail-on-collision";  // the verdict: exit 4 on a finding, every check unless named
-  args.push_back(fail_on);
-  RunOptions o;
+  CheckArgs a;
+  // The verdict: exit 4 on a finding, every check unless --check names some.
+  a.run.job.fail_on_collision = true;
   bool help = false;
-  const int parsed = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
+  const int parsed = parse_options(simulate_table(), argc, argv, &a, &help);
+  if (help) print_help(check_doc(), stdout);
   if (parsed != kExitOk || help) return parsed;
-  if (o.file.empty()) return fail(kExitUsage, "check --simulate needs a program FILE (or - for stdin)");
+  if (const int code = finish_run_options(&a.run)) return code;
+  RunOptions& o = a.run;
+  if (o.job.file.empty()) return fail(kExitUsage, "check --simulate needs a program FILE (or - for stdin)");
   if (run_draws(o))
     return fail(kExitUsage, "check --simulate writes no images or models (use dexmill run); --report is fine");
-  o.fail_on_gouge = !o.design.empty();
-  o.print_summary = false;
+  o.job.fail_on_gouge = !o.job.design.empty();
+  o.out.print_summary = false;
   RunResult res;
   const int code = run_job(o, &res);
   if (res.finished)
     std::fprintf(stderr, "%s: %llu safety finding(s)%s\n", res.shown_name.c_str(),
                  static_cast<unsigned long long>(res.safety_findings),
-                 o.design.empty() ? "" : (res.gouged ? ", gouged the design" : ", no gouge"));
+                 o.job.design.empty() ? "" : (res.gouged ? ", gouged the design" : ", no gouge"));
   return code;
 }
 
 }  // namespace
 
+CommandDoc check_doc() {
+  CommandDoc d = command_doc(check_table());
+  for (const SectionDoc& sec : command_doc(simulate_table()).sections)
+    if (sec.see) d.sections.push_back(sec);
+  return d;
+}
+
 int cmd_check(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--simulate")) return check_simulate(argc, argv);
-  const char* file = nullptr;
-  ReadOptions ro;
-  long max_errors = 100;
-  bool follow_ons = false;
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
-      usage(stdout);
-      return kExitOk;
-    }
-    if (const int taken = take_read_option(argc, argv, &i, &ro)) {
-      if (taken < 0) return kExitUsage;
-      continue;
-    }
-    if (!std::strcmp(a, "--follow-ons")) {
-      follow_ons = true;
-      continue;
-    }
-    if (!std::strcmp(a, "--max-errors")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "--max-errors needs a value");
-      char* end = nullptr;
-      max_errors = std::strtol(argv[++i], &end, 10);
-      if (!end || *end || max_errors < 0) return fail(kExitUsage, "--max-errors needs a count, not '%s'", argv[i]);
-      continue;
-    }
-    if (const int code = take_input_file("check", a, &file)) return code;
-  }
-  if (!file) {
-    usage(stderr);
+  if (option_in_args(argc, argv, "--simulate")) return check_simulate(argc, argv);
+  CheckArgs a;
+  bool help = false;
+  const int parsed = parse_options(check_table(), argc, argv, &a, &help);
+  if (help) print_help(check_doc(), stdout);
+  if (parsed != kExitOk || help) return parsed;
+  if (a.file.empty()) {
+    print_help(check_doc(), stderr);
     return kExitUsage;
   }
+  const ReadOptions& ro = a.read;
+  const long max_errors = a.max_errors;
+  const bool follow_ons = a.follow_ons;
   GcodeFile in;
-  if (!in.open(file)) return fail(kExitIo, "%s", in.error());
+  if (!in.open(a.file.c_str())) return fail(kExitIo, "%s", in.error());
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
   ReadSetup setup;

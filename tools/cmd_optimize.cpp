@@ -20,7 +20,9 @@
 #include "tools/feed_word.h"
 #include "tools/optimize_pass.h"
 #include "tools/run_job.h"
-#include "tools/run_options.h"
+#include "tools/option_help.h"
+#include "tools/option_parse.h"
+#include "tools/run_option_table.h"
 #include "tools/run_tool_table.h"
 
 namespace dexmill {
@@ -29,23 +31,48 @@ namespace {
 
 constexpr std::size_t kMaxProgramBytes = std::size_t(1) << 30;
 
-void usage(std::FILE* f) {
-  std::fprintf(f,
-               "usage: dexmill optimize FILE|- --material PRESET|FILE [run options] [-o OUT]\n\n"
-               "Writes the program to standard output (or OUT, replaced whole, which may be FILE\n"
-               "itself) with each cutting move's feed lowered to the lowest max_feed among the\n"
-               "materials it removes, as `dexmill run` cuts it with the same options (--stock,\n"
-               "--grid/--pitch, --tool/--tools, --units, --mode ...). A feed is never raised:\n"
-               "moves through air, rapids and moves within the limits keep theirs. Only F words\n"
-               "change: a lowered line gets its F changed or one added, and the next line that\n"
-               "runs at the programmed feed gets it back; every other byte stays as written.\n"
-               "A line's moves share one F, so a canned cycle's line runs at its slowest hole's\n"
-               "limit. Lowered feeds are written with at most 3 decimals (mm/min) or 4\n"
-               "(inch/min, under G20), rounded down; an inverse-time move (G93) gets its F\n"
-               "scaled by limit / rate, with 6 decimals, rounded down.\n\n"
-               "Prints on standard error the lines changed and the estimated time before and\n"
-               "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
-               "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n");
+struct OptimizeArgs {
+  RunOptions run;
+  std::string out = "-";
+};
+
+const Option<OptimizeArgs> kOptimizeOptions[] = {
+    {"--output", "OUT", "write the program to OUT (replaced whole; it may be FILE itself) instead of standard output",
+     [](OptimizeArgs* a, const char* v) -> int { return a->out = v, kExitOk; }, "-o", "a file (or - for standard output)"},
+};
+
+const CommandText kOptimizeText = {
+    "optimize",
+    "usage: dexmill optimize FILE|- --material PRESET|FILE [run options] [-o OUT]\n\n"
+    "Writes the program to standard output (or OUT, replaced whole, which may be FILE\n"
+    "itself) with each cutting move's feed lowered to the lowest max_feed among the\n"
+    "materials it removes, as `dexmill run` cuts it with the same options (--stock,\n"
+    "--grid/--pitch, --tool/--tools, --units, --mode ...). A feed is never raised:\n"
+    "moves through air, rapids and moves within the limits keep theirs. Only F words\n"
+    "change: a lowered line gets its F changed or one added, and the next line that\n"
+    "runs at the programmed feed gets it back; every other byte stays as written.\n"
+    "A line's moves share one F, so a canned cycle's line runs at its slowest hole's\n"
+    "limit. Lowered feeds are written with at most 3 decimals (mm/min) or 4\n"
+    "(inch/min, under G20), rounded down; an inverse-time move (G93) gets its F\n"
+    "scaled by limit / rate, with 6 decimals, rounded down.\n",
+    "Prints on standard error the lines changed and the estimated time before and\n"
+    "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
+    "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n",
+};
+
+OptimizeArgs& whole(OptimizeArgs& a) { return a; }
+RunOptions& run_part(OptimizeArgs& a) { return a.run; }
+
+const OptionTable<OptimizeArgs>& optimize_table() {
+  static const OptionTable<OptimizeArgs> t = [] {
+    OptionTable<OptimizeArgs> table;
+    table.text = &kOptimizeText;
+    table.sections.push_back(section<OptimizeArgs>(nullptr, option_list(kOptimizeOptions), whole));
+    table.sections.push_back(include<OptimizeArgs>("The cut", run_option_table(), run_part));
+    table.operand = [](OptimizeArgs* a, const char* arg, int index) -> int { return run_operand(&a->run, arg, index); };
+    return table;
+  }();
+  return t;
 }
 
 // Standard output is a regular file that is the program itself: the shell
@@ -85,48 +112,39 @@ void print_summary(const std::string& name, const OptimizeResult& r) {
 
 }  // namespace
 
+CommandDoc optimize_doc() { return command_doc(optimize_table()); }
+
 int cmd_optimize(int argc, char** argv) {
-  // -o is optimize's own; the rest are run's options.
-  std::vector<char*> args;
-  std::string out_path = "-";
-  for (int i = 0; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
-      usage(stdout);
-      return kExitOk;
-    }
-    if (i > 0 && (!std::strcmp(argv[i], "-o") || !std::strcmp(argv[i], "--output"))) {
-      if (i + 1 >= argc) return fail(kExitUsage, "%s needs a file (or - for standard output)", argv[i]);
-      out_path = argv[++i];
-      continue;
-    }
-    args.push_back(argv[i]);
-  }
-  RunOptions o;
+  OptimizeArgs a;
   bool help = false;
-  const int code = parse_run_options(static_cast<int>(args.size()), args.data(), &o, &help);
-  if (code != kExitOk || help) return code;
-  if (o.file.empty()) return fail(kExitUsage, "optimize needs a program FILE (or - for standard input)");
-  if (o.material.empty())
+  const int parsed = parse_options(optimize_table(), argc, argv, &a, &help);
+  if (help) print_help(optimize_doc(), stdout);
+  if (parsed != kExitOk || help) return parsed;
+  if (const int code = finish_run_options(&a.run)) return code;
+  RunOptions& o = a.run;
+  const std::string& out_path = a.out;
+  if (o.job.file.empty()) return fail(kExitUsage, "optimize needs a program FILE (or - for standard input)");
+  if (o.job.material.empty())
     return fail(kExitUsage, "optimize needs --material PRESET|FILE: the feeds are lowered to its materials' limits");
-  if (run_draws(o) || !o.report.empty())
+  if (run_draws(o) || !o.out.report.empty())
     return fail(kExitUsage, "optimize writes the program only (use dexmill run for images, models and reports)");
-  if (o.stop_at_gouge || o.stop_at_collision || o.fail_on_gouge || o.fail_on_collision)
+  if (o.job.stop_at_gouge || o.job.stop_at_collision || o.job.fail_on_gouge || o.job.fail_on_collision)
     return fail(kExitUsage, "optimize cuts the whole program: --stop-at and --fail-on-* are run's");
-  if (out_path == "-" && o.file != "-" && stdout_is(o.file))
+  if (out_path == "-" && o.job.file != "-" && stdout_is(o.job.file))
     return fail(kExitUsage, "standard output is '%s' itself, which the shell has emptied already; write to another "
-                "file, or use -o %s", o.file.c_str(), o.file.c_str());
+                "file, or use -o %s", o.job.file.c_str(), o.job.file.c_str());
 
   // The program as every pass reads it: a copy when it cannot be read twice.
   ProgramInput input;
   std::string err;
-  if (!input.open(o.file, &err)) return fail(kExitIo, "%s", err.c_str());
-  const std::string shown = o.file == "-" ? "<stdin>" : o.file;
-  o.shown_name = shown;
-  o.file = input.read_path();
-  o.strict = true;  // a program with an error is not rewritten
-  o.feed_limits = true;
-  o.print_summary = false;
-  o.print_material_warnings = false;
+  if (!input.open(o.job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+  const std::string shown = o.job.file == "-" ? "<stdin>" : o.job.file;
+  o.job.shown_name = shown;
+  o.job.file = input.read_path();
+  o.job.strict = true;  // a program with an error is not rewritten
+  o.job.feed_limits = true;
+  o.out.print_summary = false;
+  o.view.material_warnings = false;
   RunResult cut_result;
   const int cut = run_job(o, &cut_result);
   if (cut != kExitOk) return cut;
@@ -139,19 +157,19 @@ int cmd_optimize(int argc, char** argv) {
     return rf == ReadFile::kTooLarge ? kExitInput : kExitIo;
   }
   ToolTableFile table;
-  if (!o.read.tools_file.empty()) {
-    const int t = load_tool_table(o.read.tools_file, o.read.inch, &table);
+  if (!o.job.read.tools_file.empty()) {
+    const int t = load_tool_table(o.job.read.tools_file, o.job.read.inch, &table);
     if (t != kExitOk) return t;
   }
   OptimizeInput in;
   in.read_path = input.read_path();
   in.shown_name = shown;
-  in.inch = o.read.inch;
-  SingleToolLibrary single(o.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
-  in.tools = o.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
+  in.inch = o.job.read.inch;
+  SingleToolLibrary single(o.job.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
+  in.tools = o.job.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;
-  in.time_model.rapid_nm_per_min = o.rapid_nm_per_min;
-  in.time_model.accel_nm_per_s2 = o.accel_nm_per_s2;
+  in.time_model.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  in.time_model.accel_nm_per_s2 = o.job.accel_nm_per_s2;
   OptimizeResult res;
   const int pass = optimize_pass(in, &res);
   if (pass != kExitOk) return pass;

@@ -1,8 +1,9 @@
-// `dexmill path FILE [--chord MM] [--units mm|inch]`: the interpreted motion
-// as a polyline (../shared/CLI.md): rapid/feed end points of the tool tip in
-// machine coordinates, mm with 5 decimals, arcs split into chords.
+// `dexmill path FILE [--chord MM] [reading options]`: the interpreted motion
+// as a polyline: rapid/feed end points of the tool tip in machine
+// coordinates, mm with 5 decimals, arcs split into chords.
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 #include "core/math/decimal.h"
 #include "core/math/fixed.h"
@@ -10,6 +11,9 @@
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
+#include "tools/option_help.h"
+#include "tools/option_parse.h"
+#include "tools/option_values.h"
 #include "tools/read_options.h"
 
 namespace dexmill {
@@ -68,56 +72,70 @@ class PathPrinter final : public CanonSink {
   int64_t chord_nm_;
 };
 
-void usage(std::FILE* f) {
-  std::fprintf(f,
-               "usage: dexmill path FILE|- [--chord MM] [--units mm|inch] [--default-feed MM/MIN]\n"
-               "                           [--subroutine-path DIR] [--max-blocks N]\n"
-               "                           [--tools FILE]\n\n"
-               "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
-               "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
-               "offset not applied), mm with 5 decimals. Arcs and splines become chords\n"
-               "with sagitta <= --chord mm (default 0.001). Stops at the first error (exit 1).\n"
+struct PathArgs {
+  std::string file;
+  int64_t chord_nm = 1000;
+  ReadOptions read;
+};
 
-               "%s",
-               kReadOptionsUsage);
+int chord(PathArgs* a, const char* v) {
+  Decimal d;
+  std::size_t pos = 0, n = std::strlen(v);
+  if (decimal_parse(v, n, &pos, &d) != DecimalParse::kOk || pos != n)
+    return fail(kExitUsage, "--chord needs a number of mm, not '%s'", v);
+  a->chord_nm = decimal_to_nm(d, false);
+  if (a->chord_nm < 1 || a->chord_nm > 1000 * kNmPerMm)
+    return fail(kExitUsage, "--chord must be between 0.000001 and 1000 mm, not '%s'", v);
+  return kExitOk;
+}
+
+const Option<PathArgs> kPathOptions[] = {
+    {"--chord", "MM", "the most an arc's or spline's chord may stray from it (sagitta; default 0.001)", chord},
+};
+
+const CommandText kPathText = {
+    "path",
+    "usage: dexmill path FILE|- [--chord MM] [reading options]\n\n"
+    "Prints the interpreted motion as a polyline: `rapid X Y Z` / `feed X Y Z`,\n"
+    "tool tip in machine coordinates (work offsets and G92 applied, tool length\n"
+    "offset not applied), mm with 5 decimals. Arcs and splines become chords\n"
+    "with sagitta <= --chord mm. Stops at the first error (exit 1).\n",
+    nullptr,
+};
+
+ReadOptions& read_part(PathArgs& a) { return a.read; }
+PathArgs& whole(PathArgs& a) { return a; }
+
+const OptionTable<PathArgs>& path_table() {
+  static const OptionTable<PathArgs> t = [] {
+    OptionTable<PathArgs> table;
+    table.text = &kPathText;
+    table.sections.push_back(section<PathArgs>(nullptr, option_list(kPathOptions), whole));
+    table.sections.push_back(section<PathArgs>("Reading the program", read_option_list(), read_part));
+    table.operand = [](PathArgs* a, const char* arg, int index) -> int { return take_file(&a->file, arg, index); };
+    return table;
+  }();
+  return t;
 }
 
 }  // namespace
 
+CommandDoc path_doc() { return command_doc(path_table()); }
+
 int cmd_path(int argc, char** argv) {
-  const char* file = nullptr;
-  int64_t chord_nm = 1000;
-  ReadOptions ro;
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    if (!std::strcmp(a, "--help") || !std::strcmp(a, "-h")) {
-      usage(stdout);
-      return kExitOk;
-    }
-    if (const int taken = take_read_option(argc, argv, &i, &ro)) {
-      if (taken < 0) return kExitUsage;
-      continue;
-    }
-    if (!std::strcmp(a, "--chord")) {
-      if (i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a);
-      const char* v = argv[++i];
-      Decimal d;
-      std::size_t pos = 0, n = std::strlen(v);
-      if (decimal_parse(v, n, &pos, &d) != DecimalParse::kOk || pos != n)
-        return fail(kExitUsage, "--chord needs a number of mm, not '%s'", v);
-      chord_nm = decimal_to_nm(d, false);
-      if (chord_nm < 1 || chord_nm > 1000 * kNmPerMm)
-        return fail(kExitUsage, "--chord must be between 0.000001 and 1000 mm, not '%s'", v);
-      continue;
-    }
-    if (const int code = take_input_file("path", a, &file)) return code;
-  }
-  if (!file) {
-    usage(stderr);
+  PathArgs a;
+  bool help = false;
+  const int parsed = parse_options(path_table(), argc, argv, &a, &help);
+  if (help) print_help(path_doc(), stdout);
+  if (parsed != kExitOk || help) return parsed;
+  if (a.file.empty()) {
+    print_help(path_doc(), stderr);
     return kExitUsage;
   }
+  const int64_t chord_nm = a.chord_nm;
+  const ReadOptions& ro = a.read;
   GcodeFile in;
-  if (!in.open(file)) return fail(kExitIo, "%s", in.error());
+  if (!in.open(a.file.c_str())) return fail(kExitIo, "%s", in.error());
   static char outbuf[1 << 16];
   std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
   GcodeStderrMessages msgs(in.name());

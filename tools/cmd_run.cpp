@@ -1,9 +1,10 @@
-// `dexmill run [FILE|-] [options]` (../shared/CLI.md): options, then the job
-// (tools/run_job.h). With no FILE it runs the built-in demo.
+// `dexmill run [FILE|-] [options]`: the options (tools/run_option_table.h),
+// then the job (tools/run_job.h). With no FILE it runs the built-in demo.
 #include "tools/cli.h"
-#include "tools/run_job.h"
+#include "tools/option_help.h"
 #include "tools/run_demo.h"
-#include "tools/run_options.h"
+#include "tools/run_job.h"
+#include "tools/run_option_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -12,8 +13,9 @@ int cmd_run(int argc, char** argv) {
   RunOptions o;
   bool help = false;
   const int code = parse_run_options(argc, argv, &o, &help);
+  if (help) print_help(run_doc(), stdout);
   if (code != kExitOk || help) return code;
-  if (!o.demo.empty()) return run_demo(o);
+  if (!o.job.demo.empty()) return run_demo(o);
   return run_job(o);
 }
 

@@ -23,7 +23,7 @@ struct OptimizeInput {
   std::string shown_name;                    // its name in messages
   bool inch = false;                         // --units inch
   const ToolTable* tools = nullptr;          // --tools (or --tool), for G43 H and G41 D as the cut had it
-  const std::vector<int64_t>* limits = nullptr;  // per line, from the cut (RunOptions::line_feed_limits)
+  const std::vector<int64_t>* limits = nullptr;  // per line, from the cut (RunResult::line_feed_limits, tools/run_job.h)
   MotionTimeModel time_model;
 };
 

@@ -5,51 +5,75 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/math/decimal.h"
 #include "tools/cli.h"
 #include "tools/run_tool_table.h"
 
 namespace dexmill {
 namespace cli {
+namespace {
 
-const char kReadOptionsUsage[] =
-    "--units mm|inch: units before any G20/G21 (mm).\n"
-    "--default-feed MM/MIN: the controller's feed for moves made with no F in force\n"
-    "  (warned once; without it such a move is an error).\n"
-    "--subroutine-path DIR[:DIR...]: where `o<name> call` finds NAME.ngc when the\n"
-    "  program does not define the subroutine (LinuxCNC's SUBROUTINE_PATH).\n"
-    "--max-blocks N: blocks a program may run once it loops or calls (default\n"
-    "  10000000; 0: no limit); an endless loop stops with an error naming it.\n"
-    "--tools FILE: a LinuxCNC tool table: G41/G42 take the tool radius (D / 2)\n"
-    "  from it (without one the radius is 0, with a warning), G43 the length.\n";
+int parse_units(ReadOptions* o, const char* v) {
+  if (!std::strcmp(v, "mm")) o->inch = false;
+  else if (!std::strcmp(v, "inch")) o->inch = true;
+  else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+  return kExitOk;
+}
 
-int take_read_option(int argc, char** argv, int* i, ReadOptions* o) {
-  const char* a = argv[*i];
-  const bool known = !std::strcmp(a, "--units") || !std::strcmp(a, "--default-feed") ||
-                     !std::strcmp(a, "--subroutine-path") || !std::strcmp(a, "--max-blocks") ||
-                     !std::strcmp(a, "--tools");
-  if (!known) return 0;
-  if (*i + 1 >= argc) return fail(kExitUsage, "%s needs a value", a), -1;
-  const char* v = argv[++*i];
-  if (!std::strcmp(a, "--tools")) return o->tools_file = v, 1;
-  if (!std::strcmp(a, "--units")) return parse_units(v, &o->inch) ? 1 : -1;
-  if (!std::strcmp(a, "--default-feed")) return parse_default_feed(v, &o->default_feed_nm_per_min) ? 1 : -1;
-  if (!std::strcmp(a, "--subroutine-path")) {
-    if (!*v) return fail(kExitUsage, "--subroutine-path needs a directory"), -1;
-    for (const char* p = v; *p;) {
-      const char* e = std::strchr(p, ':');
-      const std::size_t n = e ? static_cast<std::size_t>(e - p) : std::strlen(p);
-      if (n) o->subroutine_path.emplace_back(p, n);
-      p += n + (e ? 1 : 0);
-    }
-    return 1;
+int parse_default_feed(ReadOptions* o, const char* v) {
+  Decimal d;
+  std::size_t pos = 0, n = std::strlen(v);
+  const bool number = n && decimal_parse(v, n, &pos, &d) == DecimalParse::kOk && pos == n;
+  o->default_feed_nm_per_min = number ? decimal_to_nm(d, false) : 0;
+  if (o->default_feed_nm_per_min < 1000 || o->default_feed_nm_per_min > 1000000 * 1000000LL)
+    return fail(kExitUsage, "--default-feed needs a feed in mm/min, from 0.001 to 1000000, not '%s'", v);
+  return kExitOk;
+}
+
+int parse_subroutine_path(ReadOptions* o, const char* v) {
+  if (!*v) return fail(kExitUsage, "--subroutine-path needs a directory");
+  for (const char* p = v; *p;) {
+    const char* e = std::strchr(p, ':');
+    const std::size_t n = e ? static_cast<std::size_t>(e - p) : std::strlen(p);
+    if (n) o->subroutine_path.emplace_back(p, n);
+    p += n + (e ? 1 : 0);
   }
+  return kExitOk;
+}
+
+int parse_max_blocks(ReadOptions* o, const char* v) {
   char* end = nullptr;
   const unsigned long long n = std::strtoull(v, &end, 10);
   if (!*v || *end || v[0] == '-' || n > 1000000000000ULL)
-    return fail(kExitUsage, "--max-blocks needs a count from 0 (no limit) to 1000000000000, not '%s'", v), -1;
+    return fail(kExitUsage, "--max-blocks needs a count from 0 (no limit) to 1000000000000, not '%s'", v);
   o->max_blocks = n;
-  return 1;
+  return kExitOk;
 }
+
+const Option<ReadOptions> kReadOptions[] = {
+    {"--units", "mm|inch", "units of programs that never say G20/G21, and of the tool table (default mm)",
+     parse_units},
+    {"--default-feed", "MM/MIN",
+     "the controller's feed for moves made with no F in force (warned once; default: none, such a move is an "
+     "error)",
+     parse_default_feed},
+    {"--subroutine-path", "DIR[:DIR]",
+     "where `o<name> call` finds NAME.ngc when the program does not define the subroutine (LinuxCNC's "
+     "SUBROUTINE_PATH)",
+     parse_subroutine_path},
+    {"--max-blocks", "N",
+     "blocks a program may run once it loops or calls (default 10000000; 0: no limit); an endless loop stops "
+     "with an error naming it",
+     parse_max_blocks},
+    {"--tools", "FILE",
+     "a LinuxCNC tool table: T/M6 pick from it, G43 takes the tool length and G41/G42 the radius (D/2) from it "
+     "(without a table run takes --tool's; path and check take 0, with a warning)",
+     [](ReadOptions* o, const char* v) -> int { return o->tools_file = v, kExitOk; }},
+};
+
+}  // namespace
+
+OptionList<ReadOptions> read_option_list() { return option_list(kReadOptions); }
 
 int ReadSetup::load_tools(const ReadOptions& o) {
   if (o.tools_file.empty()) return kExitOk;

@@ -1,7 +1,8 @@
-// How a program is read, the options `path`, `check` and `run` share
-// (../shared/CLI.md): --units, --default-feed, --subroutine-path,
-// --max-blocks and --tools, and the setting up of the interpreter's memory and source
-// from them (one place, not one per command).
+// How a program is read, the options `path`, `check` and `run` share:
+// --units, --default-feed, --subroutine-path, --max-blocks and --tools, one
+// option list that each of their tables includes (tools/option_table.h),
+// and the setting up of the interpreter's memory and source from them (one
+// place, not one per command).
 #ifndef DEXMILL_TOOLS_READ_OPTIONS_H
 #define DEXMILL_TOOLS_READ_OPTIONS_H
 
@@ -14,6 +15,7 @@
 #include "core/motion/interp.h"
 #include "platform/gcode_file.h"
 #include "platform/tool_table.h"
+#include "tools/option_table.h"
 
 namespace dexmill {
 namespace cli {
@@ -26,13 +28,8 @@ struct ReadOptions {
   std::string tools_file;                    // --tools FILE: a LinuxCNC tool table
 };
 
-// The usage text of these options (indented as the commands' own).
-extern const char kReadOptionsUsage[];
-
-// If argv[*i] is one of these options, reads it and its value (moving *i)
-// and returns 1; returns 0 for another argument; prints the usage error
-// and returns -1 for a bad value.
-int take_read_option(int argc, char** argv, int* i, ReadOptions* o);
+// The options, for the tables of path, check and run.
+OptionList<ReadOptions> read_option_list();
 
 // The memory of one reading of a program (parameters, o-word control
 // flow) and its tool table, attached to `opt` with the options' values; the

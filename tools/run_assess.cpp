@@ -13,7 +13,7 @@
 namespace dexmill {
 namespace cli {
 
-int load_design(const RunOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d) {
+int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d) {
   d->file = program;
   const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
   d->tops.assign(cells, kNoDesign);
@@ -171,7 +171,7 @@ bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d
   ov->out->share_view_of(*cut_view);
   ov->out->draw(&ov->grid, CutterPose{});
   const ScreenRect all{0, 0, fb.width, fb.height};
-  if (o.overlay == RunOptions::Overlay::kDesign) {
+  if (o.view.overlay == ViewOptions::Overlay::kDesign) {
     overlay_blend(cut_view->view(), cut_view->depth(), ov->out->view(), ov->out->depth(), all);
     *shown = &cut_view->view();
   } else {

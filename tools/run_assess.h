@@ -38,7 +38,7 @@ struct RunDesign {
 
 // Reads o.design onto the grid of `plan`. Returns kExitOk, or the exit code
 // after printing the error (input errors: the file's own message).
-int load_design(const RunOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d);
+int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d);
 
 // The error view (paper §2.5.1, figure 10) of grid g against the design:
 // d->colours and d->legend for the outputs to draw with.

@@ -57,30 +57,30 @@ std::string tool_short_name(const Tool& t) {
 
 const SurfaceColours* RunColours::colours() const {
   switch (mode) {
-    case RunOptions::Color::kTool: return &tool;
-    case RunOptions::Color::kSlope: return &slope.colours;
-    case RunOptions::Color::kThin: return &thin.colours;
+    case ViewOptions::Color::kTool: return &tool;
+    case ViewOptions::Color::kSlope: return &slope.colours;
+    case ViewOptions::Color::kThin: return &thin.colours;
     default: return nullptr;
   }
 }
 
 void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,
                        const ToolProvenance<height_t>* prov) {
-  c->mode = o.color;
+  c->mode = o.view.color;
   if (!c->colours()) return;
   const size_t cells = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
   c->cls.assign(cells, 0);
   c->luts.assign(static_cast<size_t>(kMaxColourClasses) * kShadeLevels, 0);
   RenderOutput::Legend& l = c->legend;
   switch (c->mode) {
-    case RunOptions::Color::kTool:
+    case ViewOptions::Color::kTool:
       c->lib = lib;
-      c->initial = o.tool;
+      c->initial = o.job.tool;
       c->prov = prov;
       tool_colours_init(&c->tool, *prov, c->luts.data());
       tool_legend(c);
       break;
-    case RunOptions::Color::kSlope:
+    case ViewOptions::Color::kSlope:
       slope_colours_init(&c->slope, g, c->cls.data(), c->luts.data());
       l.n = kSlopeBands;
       for (int32_t k = 0; k < kSlopeBands; ++k) l.colour[k] = kSlopeBandColour[k];
@@ -88,13 +88,13 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
       l.title = "DEG";
       break;
     default:  // thin: thinnest on the left
-      thin_colours_init(&c->thin, g, o.thin_nm, c->cls.data(), c->luts.data());
+      thin_colours_init(&c->thin, g, o.view.thin_nm, c->cls.data(), c->luts.data());
       l.n = kThinBands;
       l.colour[0] = kThinBandColour[kThinUnderHalf];
       l.colour[1] = kThinBandColour[kThinUnder];
       l.colour[2] = kThinBandColour[kThinNot];
-      l.labels[0] = short_mm(o.thin_nm / 2);
-      l.labels[1] = short_mm(o.thin_nm);
+      l.labels[0] = short_mm(o.view.thin_nm / 2);
+      l.labels[1] = short_mm(o.view.thin_nm);
       l.title = "MM THICK";
       break;
   }

@@ -28,7 +28,7 @@ namespace cli {
 constexpr int32_t kInitialToolNumber = -1;
 
 struct RunColours {
-  RunOptions::Color mode = RunOptions::Color::kPlain;
+  ViewOptions::Color mode = ViewOptions::Color::kPlain;
   std::vector<uint8_t> cls;      // a class a dexel (slope, thin; tool: the simulation's provenance)
   std::vector<uint32_t> luts;    // the renderer's ramps, kMaxColourClasses of them
   const ToolProvenance<height_t>* prov = nullptr;  // tool: which tool cut each column
@@ -44,7 +44,7 @@ struct RunColours {
   const SurfaceColours* colours() const;
 };
 
-// Sets up o.color's mode over g (as stocked) when it is tool, slope or
+// Sets up o.view.color's mode over g (as stocked) when it is tool, slope or
 // thin; nothing otherwise (tool: over the simulation's provenance, prov).
 // c must stay where it is while outputs use it.
 void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,

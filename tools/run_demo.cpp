@@ -18,16 +18,16 @@ namespace dexmill {
 namespace cli {
 
 int demo_defaults(RunOptions* o) {
-  if (o->image.empty()) o->image = "out/final.ppm";
-  if (o->design.empty()) {  // the demo's own part: its report has an assessment, and out/error.ppm
-    o->design = "(the demo's part)";
-    o->demo_design = true;
-    if (o->error_image.empty()) o->error_image = "out/error.ppm";
+  if (o->out.image.empty()) o->out.image = "out/final.ppm";
+  if (o->job.design.empty()) {  // the demo's own part: its report has an assessment, and out/error.ppm
+    o->job.design = "(the demo's part)";
+    o->job.demo_design = true;
+    if (o->out.error_image.empty()) o->out.error_image = "out/error.ppm";
   }
-  if (o->frames_dir.empty()) o->frames_dir = "out/frames";
-  if (o->material.empty()) {
-    o->material = demo_material();
-    if (!o->have_color) o->color = RunOptions::Color::kMaterial;
+  if (o->out.frames_dir.empty()) o->out.frames_dir = "out/frames";
+  if (o->job.material.empty()) {
+    o->job.material = demo_material();
+    if (!o->view.have_color) o->view.color = ViewOptions::Color::kMaterial;
   }
   std::string err;
   if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
@@ -48,7 +48,7 @@ StockBox demo_stock_box() {
 }
 
 int run_demo(RunOptions o) {
-  if (o.demo == "list") {
+  if (o.job.demo == "list") {
     for (int32_t k = 0; k < builtin_design_count(); ++k) {
       const BuiltinDesign& b = builtin_design_at(k);
       std::printf("%-9s %3d x %-3d dexels of %s mm, %d-dexel ball, %-10s %s\n", b.name, b.nx, b.ny,
@@ -56,34 +56,34 @@ int run_demo(RunOptions o) {
     }
     return kExitOk;
   }
-  const BuiltinDesign* b = builtin_design_find(o.demo.c_str());
-  if (!b) return fail(kExitUsage, "no built-in part '%s' (dexmill run --demo list)", o.demo.c_str());
-  builtin_setup(*b, o.tool_given, &o);
-  const std::string dir = "out/" + o.demo;
+  const BuiltinDesign* b = builtin_design_find(o.job.demo.c_str());
+  if (!b) return fail(kExitUsage, "no built-in part '%s' (dexmill run --demo list)", o.job.demo.c_str());
+  builtin_setup(*b, o.job.tool_given, &o.job);
+  const std::string dir = "out/" + o.job.demo;
   std::string err;
   if (!make_dirs(dir, &err)) return fail(kExitIo, "%s", err.c_str());
   // The paper's path: stripes one dexel apart, a position on every dexel,
   // the tool lifted at the end of each and returned at rapid.
   ZigJob job;
-  zig_fit_to_material(o, &job.prog);
+  zig_fit_to_material(o.job, &job.prog);
   std::string text;
   ZigProgramStats st;
   GridPlan plan;
-  const int code = zig_generate(o, &job, &text, &st, &plan);
+  const int code = zig_generate(o.job, &job, &text, &st, &plan);
   if (code != kExitOk) return code;
-  if (!o.quiet) zig_print_stats(plan, st);
-  o.file = dir + "/" + o.demo + ".ngc";
+  if (!o.view.quiet) zig_print_stats(plan, st);
+  o.job.file = dir + "/" + o.job.demo + ".ngc";
   char e[1300];
-  if (!write_output(o.file.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
-  if (o.image.empty()) o.image = dir + "/final.png";
-  if (o.error_image.empty()) o.error_image = dir + "/error.png";
-  if (o.frames_dir.empty()) o.frames_dir = dir + "/frames";
-  if (o.report.empty()) o.report = dir + "/report.json";
-  if (!o.have_color) o.color = RunOptions::Color::kMaterial;
+  if (!write_output(o.job.file.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
+  if (o.out.image.empty()) o.out.image = dir + "/final.png";
+  if (o.out.error_image.empty()) o.out.error_image = dir + "/error.png";
+  if (o.out.frames_dir.empty()) o.out.frames_dir = dir + "/frames";
+  if (o.out.report.empty()) o.out.report = dir + "/report.json";
+  if (!o.view.have_color) o.view.color = ViewOptions::Color::kMaterial;
   const int rc = run_job(o);
-  if (rc == kExitOk && !o.quiet)
+  if (rc == kExitOk && !o.view.quiet)
     std::fprintf(stderr, "dexmill: demo %s written to %s/ (%s.ngc, final.png, error.png, frames/, report.json)\n",
-                 o.demo.c_str(), dir.c_str(), o.demo.c_str());
+                 o.job.demo.c_str(), dir.c_str(), o.job.demo.c_str());
   return rc;
 }
 

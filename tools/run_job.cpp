@@ -85,10 +85,10 @@ bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<heigh
 // The report, with the whole run's time (when asked for); false when it
 // cannot be written (printed).
 bool write_report(const RunOptions& o, Run* run) {
-  if (o.report.empty()) return true;
+  if (o.out.report.empty()) return true;
   run->rep.timing.emplace_back("total", clock_now_s() - run->t_start);
   char e[1300];
-  if (write_report_json(o.report.c_str(), run->rep, e, sizeof e)) return true;
+  if (write_report_json(o.out.report.c_str(), run->rep, e, sizeof e)) return true;
   fail(kExitIo, "%s", e);
   return false;
 }
@@ -97,54 +97,54 @@ bool write_report(const RunOptions& o, Run* run) {
 // folder made and emptied: before anything long happens.
 int prepare(RunOptions* o, Run* run) {
   std::string err;
-  run->demo = o->file.empty();
-  run->read_path = run->shown_name = o->file;
+  run->demo = o->job.file.empty();
+  run->read_path = run->shown_name = o->job.file;
   if (run->demo) {
     if (const int code = demo_defaults(o)) return code;
     run->read_path = run->shown_name = kDemoProgramPath;
   }
-  if (const int code = check_outputs(*o, {o->file, o->read.tools_file, o->design, o->stock_stl}, &run->formats))
+  if (const int code = check_outputs(o->out, {o->job.file, o->job.read.tools_file, o->job.design, o->job.stock_stl}, &run->formats))
     return code;
   if (!run->demo) {
-    if (o->file == "-") run->shown_name = "<stdin>";
-    if (!o->shown_name.empty()) run->shown_name = o->shown_name;
-    if (!run->input.open(o->file, &err)) return fail(kExitIo, "%s", err.c_str());
+    if (o->job.file == "-") run->shown_name = "<stdin>";
+    if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
+    if (!run->input.open(o->job.file, &err)) return fail(kExitIo, "%s", err.c_str());
     run->read_path = run->input.read_path();
   }
-  if (o->frames_dir.empty()) return kExitOk;
+  if (o->out.frames_dir.empty()) return kExitOk;
   uint32_t removed = 0;
-  if (!make_dirs(o->frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (access(o->frames_dir.c_str(), W_OK) != 0)
-    return fail(kExitIo, "cannot write frames into '%s': %s", o->frames_dir.c_str(), std::strerror(errno));
-  if (!remove_old_frames(o->frames_dir, &removed, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (removed && !o->quiet && !run->demo)
-    std::fprintf(stderr, "dexmill: removed %u frames of an earlier run from '%s'\n", removed, o->frames_dir.c_str());
+  if (!make_dirs(o->out.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (access(o->out.frames_dir.c_str(), W_OK) != 0)
+    return fail(kExitIo, "cannot write frames into '%s': %s", o->out.frames_dir.c_str(), std::strerror(errno));
+  if (!remove_old_frames(o->out.frames_dir, &removed, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (removed && !o->view.quiet && !run->demo)
+    std::fprintf(stderr, "dexmill: removed %u frames of an earlier run from '%s'\n", removed, o->out.frames_dir.c_str());
   return kExitOk;
 }
 
 // The tool table (or the demo's) and the library T/M6 pick from.
 int load_tools(const RunOptions& o, Run* run) {
-  run->have_table = !o.read.tools_file.empty() || run->demo;
-  if (!o.read.tools_file.empty()) {
-    if (const int code = load_tool_table(o.read.tools_file, o.read.inch, &run->table)) return code;
+  run->have_table = !o.job.read.tools_file.empty() || run->demo;
+  if (!o.job.read.tools_file.empty()) {
+    if (const int code = load_tool_table(o.job.read.tools_file, o.job.read.inch, &run->table)) return code;
   } else if (run->demo) {
     const char* t = demo_tool_table();
     if (run->table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
       return fail(kExitInput, "%s", run->table.message().c_str());
   }
   for (const std::string& w : run->table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
-  run->single.reset(new SingleToolLibrary(o.tool));
+  run->single.reset(new SingleToolLibrary(o.job.tool));
   run->lib = run->have_table ? static_cast<const ToolLibrary*>(&run->table) : run->single.get();
   SimJob& j = run->job;
-  j.mode = o.mode;
-  j.tool = o.tool;
+  j.mode = o.job.mode;
+  j.tool = o.job.tool;
   j.library = run->lib;
   j.offsets = run->have_table ? static_cast<const ToolTable*>(&run->table) : run->single.get();
-  j.inch = o.read.inch;
-  j.default_feed_nm_per_min = o.read.default_feed_nm_per_min;
-  j.max_blocks = o.read.max_blocks;
-  j.time.rapid_nm_per_min = o.rapid_nm_per_min;
-  j.time.accel_nm_per_s2 = o.accel_nm_per_s2;
+  j.inch = o.job.read.inch;
+  j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
+  j.max_blocks = o.job.read.max_blocks;
+  j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  j.time.accel_nm_per_s2 = o.job.accel_nm_per_s2;
   return kExitOk;
 }
 
@@ -153,11 +153,11 @@ int load_tools(const RunOptions& o, Run* run) {
 int plan_stock(const RunOptions& o, const ProgramScan& scan, Run* run) {
   RunReport& rep = run->rep;
   StockBox stock;
-  if (!o.stock_stl.empty()) {
-    if (const int code = read_stock_stl(o.stock_stl, &run->blank, &stock)) return code;
+  if (!o.job.stock_stl.empty()) {
+    if (const int code = read_stock_stl(o.job.stock_stl, &run->blank, &stock)) return code;
     rep.stock_source = "stl";
-  } else if (o.have_stock) {
-    stock = StockBox{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
+  } else if (o.job.have_stock) {
+    stock = StockBox{PointNm{o.job.stock_nm[0], o.job.stock_nm[1], o.job.stock_nm[2]}, PointNm{o.job.stock_nm[3], o.job.stock_nm[4], o.job.stock_nm[5]}};
     rep.stock_source = "option";
   } else if (run->demo) {
     stock = demo_stock_box();
@@ -166,10 +166,10 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, Run* run) {
     stock = default_stock(scan.summary, scan.max_radius_nm);
     rep.stock_source = "program";
   }
-  int64_t pitch_nm = o.pitch_nm;
-  if (!pitch_nm && !o.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
+  int64_t pitch_nm = o.job.pitch_nm;
+  if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
   std::string err;
-  if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, &run->plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, &run->plan, &err)) return fail(kExitUsage, "%s", err.c_str());
   // A tool narrower than the pitch may fall between the dexel axes and cut
   // nothing: say so rather than show an untouched block.
   for (int k = 0; k < scan.ntools; ++k)
@@ -202,7 +202,7 @@ int setup_failed(const SimSetup& why, const RunOptions& o, const Run& run) {
     case SimError::kToolTooLargeSweep:
       return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 268 mm)", spec);
     case SimError::kToolInvalid:
-    case SimError::kToolCannotCut: return fail(kExitUsage, "the tool %s cannot cut this grid", o.tool_text.c_str());
+    case SimError::kToolCannotCut: return fail(kExitUsage, "the tool %s cannot cut this grid", o.job.tool_text.c_str());
     case SimError::kFixturesOutside:
       return fail(kExitUsage, "--fixture: the fixtures hold no dexel column of the stock's lattice, or span more than "
                   "65535 of them");
@@ -220,23 +220,23 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, Run* run) {
   run->tools.assign(scan.tools + 1, scan.tools + scan.ntools);
   j.tools = run->tools.data();
   j.ntools = static_cast<int>(run->tools.size());
-  if (!o.design.empty()) {  // before the cut: a bad file costs no simulation
-    if (const int code = load_design(o, run->plan, run->shown_name, &run->design)) return code;
+  if (!o.job.design.empty()) {  // before the cut: a bad file costs no simulation
+    if (const int code = load_design(o.job, run->plan, run->shown_name, &run->design)) return code;
     j.design = &run->design.grid;
     j.assess = run->design.opt;
   }
-  j.checks = safety_checks(o.checks);
+  j.checks = safety_checks(o.job.checks);
   sim_checks_for_tools(&j.checks, scan.tools, scan.ntools);
-  if (!o.material.empty()) {
+  if (!o.job.material.empty()) {
     const BoxNm box{run->plan.stock.lo, run->plan.stock.hi};
-    if (const int code = material_start(&run->material, o.material, box)) return code;
+    if (const int code = material_start(&run->material, o.job.material, box)) return code;
     j.material = run->material.comp.get();
-    if (o.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+    if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
   }
-  j.provenance = o.color == RunOptions::Color::kTool;
+  j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
-  j.stop_at_gouge = o.stop_at_gouge;
-  j.stop_at_collision = o.stop_at_collision;
+  j.stop_at_gouge = o.job.stop_at_gouge;
+  j.stop_at_collision = o.job.stop_at_collision;
   SimSetup why;
   const size_t bytes = sim_required_bytes(j, &why);
   if (!bytes) return setup_failed(why, o, *run);
@@ -250,12 +250,12 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, Run* run) {
   run->sim->start();
   RunViews::Inputs in;
   in.lib = run->lib;
-  in.design = o.design.empty() ? nullptr : &run->design;
-  in.material = o.material.empty() ? nullptr : &run->material;
+  in.design = o.job.design.empty() ? nullptr : &run->design;
+  in.material = o.job.material.empty() ? nullptr : &run->material;
   in.path = run->want_path ? &run->path : nullptr;
   in.motion_moves = run->rep.rapid + run->rep.feed + run->rep.arc;
   in.total_us = run->rep.estimated_us;
-  in.top_lsb = o.stock_stl.empty() ? static_cast<uint32_t>(run->plan.top_lsb) : 0u;
+  in.top_lsb = o.job.stock_stl.empty() ? static_cast<uint32_t>(run->plan.top_lsb) : 0u;
   return run->views.open(o, run->sim, in);
 }
 
@@ -270,11 +270,11 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   if (v.has_frames()) v.write_frame();  // the untouched stock
   GcodeFile in;
   if (!in.open(run->read_path.c_str(), run->shown_name.c_str())) return fail(kExitIo, "%s", in.error());
-  in.set_subroutine_path(o.read.subroutine_path);
+  in.set_subroutine_path(o.job.read.subroutine_path);
   sim.read_from(&in);
   SimBudget line;
   line.lines = 1;
-  Progress progress(stderr, !o.quiet && !v.live());
+  Progress progress(stderr, !o.view.quiet && !v.live());
   while (sim.step(line) == SimState::kReady) {
     progress.update(in.bytes_read(), in.total_bytes(), sim.status().moves);
     if (!v.frame_error.empty()) break;
@@ -297,7 +297,7 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     safety_to_report(*safety, &run->rep);
   }
   if (const ProcessWatch* w = sim.process()) {
-    if (o.print_material_warnings) material_print(run->material, *w, run->shown_name);
+    if (o.view.material_warnings) material_print(run->material, *w, run->shown_name);
     material_to_report(run->material, *w, sim.grid(), &run->rep);
   }
   if (sim.io_error()) return fail(kExitIo, "%s", in.error());
@@ -335,18 +335,18 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   if (const int code = v.write_images(o, run->plan, run->formats.image, run->formats.error_image)) return code;
   char e[1300];
   const double t_files = clock_now_s();
-  if (!o.heightmap.empty() && !write_heightmap(o.heightmap.c_str(), run->formats.heightmap, sim.grid(), e, sizeof e))
+  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), run->formats.heightmap, sim.grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
   double stl_s = 0;
-  if (!o.stl.empty()) {
+  if (!o.out.stl.empty()) {
     const double t_stl = clock_now_s();
-    if (!write_stl(o.stl.c_str(), sim.grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    if (!write_stl(o.out.stl.c_str(), sim.grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
     stl_s = clock_now_s() - t_stl;
   }
   v.write_s += clock_now_s() - t_files;
   rep.timing.emplace_back("render", v.render_s);
   rep.timing.emplace_back("write", v.write_s);
-  if (!o.stl.empty()) rep.timing.emplace_back("stl", stl_s);  // a part of write
+  if (!o.out.stl.empty()) rep.timing.emplace_back("stl", stl_s);  // a part of write
   if (!write_report(o, run)) return kExitIo;
   if (v.live() && !user_quit && !v.live_view().wait_done(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
@@ -362,13 +362,13 @@ int run_job(RunOptions o, RunResult* result) {
   if (const int code = load_tools(o, &run)) return code;
   RunReport& rep = run.rep;
   rep.file = run.shown_name;
-  rep.units = o.read.inch ? "inch" : "mm";
-  rep.mode = o.mode == CutMode::kSweep ? "sweep" : "stamp";
-  rep.default_tool = o.tool_text;
-  rep.tool_table = run.demo && o.read.tools_file.empty() ? "(built-in demo table)" : o.read.tools_file;
+  rep.units = o.job.read.inch ? "inch" : "mm";
+  rep.mode = o.job.mode == CutMode::kSweep ? "sweep" : "stamp";
+  rep.default_tool = o.job.tool_text;
+  rep.tool_table = run.demo && o.job.read.tools_file.empty() ? "(built-in demo table)" : o.job.read.tools_file;
   rep.height_bits = DEXMILL_HEIGHT_BITS;
-  rep.rapid_nm_per_min = o.rapid_nm_per_min;
-  rep.accel_nm_per_s2 = o.accel_nm_per_s2;
+  rep.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  rep.accel_nm_per_s2 = o.job.accel_nm_per_s2;
 
   // -- the scan: what the program does, before anything is cut
   RunMessages msgs(run.shown_name, true);
@@ -377,10 +377,10 @@ int run_job(RunOptions o, RunResult* result) {
   scan_job.notes = &notes;
   std::unique_ptr<ProgramScan> scan(new ProgramScan(scan_job));
   // The backplot's path: for --path-overlay, and for a live view (its p key).
-  run.want_path = o.path_overlay || o.window || !o.fbdev.empty();
+  run.want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
   {
     const double t0 = clock_now_s();
-    const ScanInput in{run.read_path, run.shown_name, &o.read, &run.table};
+    const ScanInput in{run.read_path, run.shown_name, &o.job.read, &run.table};
     if (const int code = scan_pass(in, scan.get(), notes, run.want_path ? &run.path : nullptr, &msgs, &rep))
       return code;
     rep.timing.emplace_back("scan", clock_now_s() - t0);
@@ -388,7 +388,7 @@ int run_job(RunOptions o, RunResult* result) {
   // A program with an input error is cut up to its first bad block (as
   // LinuxCNC's preview draws the path up to it), unless --strict.
   if (msgs.errors()) {
-    if (o.strict) return write_report(o, &run) ? kExitInput : kExitIo;
+    if (o.job.strict) return write_report(o, &run) ? kExitInput : kExitIo;
     run.job.stop_line = rep.errors.front().line;
     rep.stopped_reason = "error";
     rep.stopped_line = run.job.stop_line;
@@ -409,15 +409,15 @@ int run_job(RunOptions o, RunResult* result) {
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
   }
-  const bool no_output = o.image.empty() && o.error_image.empty() && o.frames_dir.empty() && o.heightmap.empty() &&
-                         o.stl.empty() && o.report.empty() && !run.views.live();
-  if (no_output && o.print_summary) std::fputs(report_summary_text(rep).c_str(), stdout);
+  const bool no_output = o.out.image.empty() && o.out.error_image.empty() && o.out.frames_dir.empty() && o.out.heightmap.empty() &&
+                         o.out.stl.empty() && o.out.report.empty() && !run.views.live();
+  if (no_output && o.out.print_summary) std::fputs(report_summary_text(rep).c_str(), stdout);
   if (run.job.stop_line) return kExitInput;
-  if (sim.gouged() && (o.stop_at_gouge || o.fail_on_gouge)) return kExitCheck;
-  if (sim.collided() && (o.stop_at_collision || o.fail_on_collision)) return kExitCheck;
-  if (!o.quiet && run.demo)
+  if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
+  if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
+  if (!o.view.quiet && run.demo)
     std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
-                 image_format_extension(o.frame_format));
+                 image_format_extension(o.out.frame_format));
   return kExitOk;
 }
 

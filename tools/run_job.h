@@ -28,7 +28,7 @@ struct RunResult {
   std::string shown_name;    // the program's name in messages
   uint64_t safety_findings = 0;
   bool gouged = false;
-  // With RunOptions::feed_limits: per line (the index), the lowest max feed
+  // With JobOptions::feed_limits: per line (the index), the lowest max feed
   // among the materials that line's feed moves removed (kNoFeedLimit: none;
   // core/check/process.h); what `dexmill optimize` lowers feeds to.
   std::vector<int64_t> line_feed_limits;

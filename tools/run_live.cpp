@@ -71,27 +71,27 @@ LiveView::~LiveView() = default;
 
 int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const CameraChoice& cam, int64_t total_us,
                    std::string* err) {
-  exit_when_done_ = o.exit_when_done || !o.window;
-  hold_ms_ = o.hold_ms;
+  exit_when_done_ = o.view.exit_when_done || !o.view.window;
+  hold_ms_ = o.view.hold_ms;
   // By default the whole job in about 20 s, but never faster than real time...
   // slower than real time is never wanted either: at least x1.
-  speed_milli_ = o.speed_milli ? o.speed_milli : max_of<int64_t>(1000, total_us / 20000);
-  if (o.window) {
+  speed_milli_ = o.view.speed_milli ? o.view.speed_milli : max_of<int64_t>(1000, total_us / 20000);
+  if (o.view.window) {
     if (!Window::available()) {
       Window w;
       *err = w.error();
       return kExitUsage;
     }
     std::unique_ptr<WindowScreen> ws(new WindowScreen());
-    scale_ = band_scale(o.width);
-    if (!ws->window.open(o.width, o.height + band_height(scale_), "dexmill")) {
+    scale_ = band_scale(o.view.width);
+    if (!ws->window.open(o.view.width, o.view.height + band_height(scale_), "dexmill")) {
       *err = ws->window.error();
       return kExitIo;
     }
     screen_ = std::move(ws);
   } else {
     std::unique_ptr<PanelScreen> ps(new PanelScreen());
-    if (!ps->fb.open(o.fbdev.c_str())) {
+    if (!ps->fb.open(o.view.fbdev.c_str())) {
       *err = ps->fb.error();
       return kExitIo;
     }

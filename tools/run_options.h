@@ -1,6 +1,16 @@
-// The options of `dexmill run` (../shared/CLI.md), parsed and checked before
-// anything is read or written: a bad value is a usage error (exit 2) with a
-// message that names the option and what it wants.
+// The settings of `dexmill run`, parsed and checked before anything is
+// read or written: a bad value is a usage error (exit 2) with a message
+// that names the option and what it wants. Three parts:
+//   job   what the engine is asked to do: the program, the stock, the grid,
+//         the tools, the mode, how the program is read, the design and its
+//         tolerances, the material, the checks and the verdict. The files
+//         the job is made from are named here too (the program, --tools,
+//         --stock FILE.stl, --design, --material): they are inputs, read
+//         into the engine's job (tools/run_job.cpp). No output is.
+//   out   the files written: images, frames, heightmap, STL, report.
+//   view  how the run is shown: frame size, camera, colours, overlays,
+//         the live window or framebuffer and its pace, the terminal.
+// The options themselves are the table of tools/run_option_table.h.
 #ifndef DEXMILL_TOOLS_RUN_OPTIONS_H
 #define DEXMILL_TOOLS_RUN_OPTIONS_H
 
@@ -11,12 +21,12 @@
 
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
-#include "core/motion/summary.h"
 #include "core/design/builtin.h"
+#include "core/motion/summary.h"
 #include "core/tool/tool.h"
-#include "tools/read_options.h"
 #include "display/camera.h"
 #include "platform/image_file.h"
+#include "tools/read_options.h"
 
 namespace dexmill {
 namespace cli {
@@ -28,58 +38,73 @@ struct SafetyChoice {
   int64_t table_nm = 0;
   std::vector<BoxNm> fixtures;
   bool any() const { return rapid || spindle || below || shank || holder || plunge || has_table || !fixtures.empty(); }
+  void all() { rapid = spindle = below = shank = holder = plunge = true; }
 };
 
-struct RunOptions {
-  std::string file;              // input; "-" is standard input; empty: the built-in demo
+struct JobOptions {
+  JobOptions();                  // the default tool parsed from tool_text
+  std::string file;              // the program; "-" is standard input; empty: the built-in demo
+  // `dexmill optimize`: the program's name in messages when `file` is a
+  // copy of it (a spooled standard input); empty: from `file`.
+  std::string shown_name;
   bool have_stock = false;
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
   std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
-  Tool tool;                     // --tool (default flat:6)
   std::string tool_text = "flat:6";
+  Tool tool;                     // --tool, parsed from tool_text
   bool tool_given = false;       // --tool was given
   CutMode mode = CutMode::kSweep;
-  std::string image;             // --image (demo: out/final.ppm)
-  std::string frames_dir;        // --frames
-  ImageFormat frame_format = ImageFormat::kPng;  // --frame-format
-  int64_t every = 0;             // --every; 0: about 100 frames over the program
-  int32_t width = 640, height = 480;  // --size
-  ViewPreset view = ViewPreset::kIso;
-  bool have_azimuth = false, have_elevation = false;
-  int64_t azimuth_mdeg = 0, elevation_mdeg = 0;
-  std::string heightmap, stl, report;
-  bool window = false;
-  std::string fbdev;
-  bool quiet = false;
-  // `dexmill optimize`: the program's name in messages when `file` is a
-  // copy of it (a spooled standard input); empty: from `file`.
-  std::string shown_name;
-  // `check --simulate` and `optimize` run a job for its findings: no
-  // summary on stdout (optimize: no process warnings either, but each
-  // line's feed limit kept, tools/run_job.h RunResult).
-  bool print_summary = true;
-  bool print_material_warnings = true;
-  bool feed_limits = false;
-  // Live outputs (--window, --fbdev).
-  bool exit_when_done = false;   // close the window after the program (fbdev always does)
-  int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
-  int64_t speed_milli = 0;       // --speed X: simulated seconds per second, x1000; 0: auto
-  // The design part to assess against (paper §2.5).
-  std::string design;            // --design FILE.stl|FILE.pgm
-  bool demo_design = false;      // the built-in demo's own part (tools/demo_program.h), no file
+  ReadOptions read;              // --units, --default-feed, --subroutine-path, --max-blocks, --tools
+  int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
+  int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
+  bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
+  std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
   // --demo NAME: one of the paper's workpieces (core/design/builtin.h) cut
   // end to end; the design of `builtin` is used when it is set.
   std::string demo;
+  // The design part to assess against (paper §2.5).
+  std::string design;            // --design FILE.stl|FILE.pgm (a built-in part: its name in brackets)
+  bool demo_design = false;      // the built-in demo's own part (tools/demo_program.h), no file
   const BuiltinDesign* builtin = nullptr;
-  std::string error_image;       // --error-image FILE.ppm: the final frame in the error view
   bool design_pgm = false;       // by the extension
   bool have_design_z = false;
   int64_t design_z_nm[2] = {};   // --design-z ZLOW,ZHIGH (PGM: black, white)
   int64_t design_offset_nm[3] = {};  // --design-offset X,Y,Z (STL)
   int64_t tolerance_nm = 50000;  // --tolerance MM (0.05)
   std::vector<ToleranceBox> tolerance_boxes;  // --tolerance-box X0,Y0,X1,Y1,TOL (repeatable)
+  // Safety checks (core/check/safety.h): --check rapid,spindle,below,
+  // shank,holder,plunge|all, --table Z, --fixture (repeatable). run_job also
+  // turns on what a tool describes (a flute length, a holder, nocentre).
+  SafetyChoice checks;
+  // The verdict: stop at the first gouge or safety finding (exit 4), or
+  // run to the end and exit 4 if there was one. --stop-at any is resolved
+  // by finish_run_options into the other two.
+  bool stop_at_gouge = false, stop_at_collision = false, stop_at_any = false;
+  bool fail_on_gouge = false, fail_on_collision = false;
+  // `dexmill optimize`: each line's feed limit kept (tools/run_job.h RunResult).
+  bool feed_limits = false;
+};
+
+struct OutputOptions {
+  std::string image;             // --image (demo: out/final.ppm)
+  std::string error_image;       // --error-image FILE.ppm: the final frame in the error view
+  std::string frames_dir;        // --frames
+  ImageFormat frame_format = ImageFormat::kPng;  // --frame-format
+  int64_t every = 0;             // --every; 0: about 100 frames over the program
+  std::string heightmap, stl, report;
+  // With none of the files above: the summary on stdout (`check
+  // --simulate` and `optimize` run a job for its findings, without it).
+  bool print_summary = true;
+};
+
+struct ViewOptions {
+  int32_t width = 640, height = 480;  // --size
+  ViewPreset preset = ViewPreset::kIso;  // --view
+  bool have_preset = false;
+  bool have_azimuth = false, have_elevation = false;
+  int64_t azimuth_mdeg = 0, elevation_mdeg = 0;
   // --color; with --material and no --color, material; --thin alone, thin.
   enum class Color : uint8_t { kPlain, kError, kMaterial, kTool, kSlope, kThin } color = Color::kPlain;
   bool have_color = false;
@@ -88,36 +113,30 @@ struct RunOptions {
   // --overlay: the design translucent over the cut (shows overcut), or the
   // cut translucent over the design (shows undercut), in --image.
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
-  bool stop_at_gouge = false;    // --stop-at gouge|any: stop at the first gouge, exit 4
-  bool stop_at_collision = false;  // --stop-at collision|any: stop at the first safety finding, exit 4
-  bool fail_on_collision = false;  // --fail-on-collision
-  // Safety checks (core/check/safety.h): --check rapid,spindle,below,
-  // shank,holder,plunge|all, --table Z, --fixture (repeatable). run_job also
-  // turns on what a tool describes (a flute length, a holder, nocentre).
-  SafetyChoice checks;
-  std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
-  bool fail_on_gouge = false;    // --fail-on-gouge: run to the end, exit 4 if any
-  int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
-  ReadOptions read;  // --units, --default-feed, --subroutine-path, --max-blocks
-  int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
-  bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
   bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)
+  // Live outputs (--window, --fbdev).
+  bool window = false;
+  std::string fbdev;
+  bool exit_when_done = false;   // close the window after the program (fbdev always does)
+  int64_t hold_ms = 0;           // --hold S: keep the last frame this long before exiting
+  int64_t speed_milli = 0;       // --speed X: simulated seconds per second, x1000; 0: auto
+  // The terminal: -q, no progress bar and notes; `optimize` prints no
+  // process warnings (its rewrite acts on them).
+  bool quiet = false;
+  bool material_warnings = true;
 };
 
-// Parses argv[1..argc) (argv[0] is "run"). Returns kExitOk, or prints the
-// error and returns kExitUsage; *help is set for --help (usage printed).
-int parse_run_options(int argc, char** argv, RunOptions* out, bool* help);
+struct RunOptions {
+  JobOptions job;
+  OutputOptions out;
+  ViewOptions view;
+};
 
-void run_usage(std::FILE* f);
-
-// A decimal number as written (exactly, never through floating point),
-// times `scale` (1e6 for mm -> nm, 1000 for s -> ms), rounded to nearest;
-// false when s[0, n) is anything else.
-bool parse_scaled(const char* s, std::size_t n, int64_t scale, int64_t* out);
-bool parse_scaled(const char* s, int64_t scale, int64_t* out);
-
-// True for the run options that take a value (the next argument).
-bool run_option_takes_value(const char* a);
+// The checks of the options against each other, once all are in, and what
+// follows from them: --stop-at any, the checks a verdict on collisions runs
+// when none are named (all), the colour --thin and --material imply.
+// Returns kExitOk, or prints the usage error and returns kExitUsage.
+int finish_run_options(RunOptions* o);
 
 // True when o asks for a picture or a model (--image, --error-image,
 // --frames, --heightmap, --stl) or a live view: what the subcommands that

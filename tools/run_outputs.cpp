@@ -6,10 +6,10 @@
 
 #include <cerrno>
 #include <cstring>
-#include <strings.h>
 
 #include "platform/output_file.h"
 #include "tools/cli.h"
+#include "tools/option_values.h"
 
 namespace dexmill {
 namespace cli {
@@ -93,11 +93,6 @@ int inspect(Output* out, std::string* err) {
   return kExitOk;
 }
 
-bool ends_with(const std::string& s, const char* ext) {
-  const size_t n = std::strlen(ext);
-  return s.size() > n && strcasecmp(s.c_str() + s.size() - n, ext) == 0;
-}
-
 // An existing device, FIFO or socket (after links): written through, so
 // its name needs no extension.
 bool is_special(const std::string& path) {
@@ -111,11 +106,11 @@ bool is_special(const std::string& path) {
 
 bool output_format(const char* option, const std::string& path, bool heightmap, ImageFormat fallback,
                    ImageFormat* format, std::string* err) {
-  if (ends_with(path, ".png")) {
+  if (has_extension(path, ".png")) {
     *format = ImageFormat::kPng;
-  } else if (!heightmap && ends_with(path, ".ppm")) {
+  } else if (!heightmap && has_extension(path, ".ppm")) {
     *format = ImageFormat::kPpm;
-  } else if (heightmap && ends_with(path, ".pgm")) {
+  } else if (heightmap && has_extension(path, ".pgm")) {
     *format = ImageFormat::kPgm;
   } else if (is_stdout_path(path) || (base_of(path).find('.') == std::string::npos && is_special(path))) {
     *format = fallback;
@@ -127,7 +122,7 @@ bool output_format(const char* option, const std::string& path, bool heightmap, 
   return true;
 }
 
-int check_outputs(const RunOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats) {
+int check_outputs(const OutputOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats) {
   std::string err;
   if (!o.image.empty() && !output_format("--image", o.image, false, ImageFormat::kPng, &formats->image, &err))
     return fail(kExitUsage, "%s", err.c_str());

@@ -34,7 +34,7 @@ bool output_format(const char* option, const std::string& path, bool heightmap, 
 // bad extension, two outputs on standard output, an output that is an
 // input or another output) or kExitIo (no such folder, not writable, a
 // directory).
-int check_outputs(const RunOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats);
+int check_outputs(const OutputOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats);
 
 }  // namespace cli
 }  // namespace dexmill

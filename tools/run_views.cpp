@@ -13,12 +13,12 @@ namespace cli {
 
 bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) {
   // A still frame of its own at --size.
-  pixels->assign(static_cast<size_t>(o.width) * static_cast<size_t>(o.height), 0);
+  pixels->assign(static_cast<size_t>(o.view.width) * static_cast<size_t>(o.view.height), 0);
   FrameView fb;
   fb.pixels = pixels->data();
-  fb.width = o.width;
-  fb.height = o.height;
-  fb.stride_bytes = o.width * 4;
+  fb.width = o.view.width;
+  fb.height = o.view.height;
+  fb.stride_bytes = o.view.width * 4;
   fb.format = PixelFormat::kXrgb8888;
   out->reset(new RenderOutput());
   std::string err;
@@ -30,15 +30,15 @@ bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::un
 // The colour mode of every output but the error view, and the error view's.
 void RunViews::set_colours(const RunOptions& o, const Inputs& in) {
   const DexelGrid<height_t>& grid = sim_->grid();
-  if (o.color == RunOptions::Color::kError || error_out_) {
+  if (o.view.color == ViewOptions::Color::kError || error_out_) {
     error_view_init(grid, in.design);
     for (RenderOutput* out : outputs_) {
-      if (out != error_out_.get() && o.color != RunOptions::Color::kError) continue;
+      if (out != error_out_.get() && o.view.color != ViewOptions::Color::kError) continue;
       out->set_colours(&in.design->colours.colours);
       out->set_legend(&in.design->legend);
     }
   }
-  if (o.color == RunOptions::Color::kMaterial) {
+  if (o.view.color == ViewOptions::Color::kMaterial) {
     material_cls_.assign(static_cast<size_t>(grid.nx) * static_cast<size_t>(grid.ny), 0);
     material_luts_.assign(static_cast<size_t>(kMaxColourClasses) * kShadeLevels, 0);
     material_colours_init(&material_colours_, grid, *in.material->comp, material_cls_.data(), material_luts_.data());
@@ -62,40 +62,40 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
   sim_ = sim;
   in_ = in;
   DexelGrid<height_t>& grid = sim->grid();
-  cam_.preset = o.view;
-  if (o.have_azimuth || o.have_elevation) {
+  cam_.preset = o.view.preset;
+  if (o.view.have_azimuth || o.view.have_elevation) {
     const Camera iso = camera_preset(ViewPreset::kIso);
     cam_.angles = true;
-    cam_.azimuth_bam = o.have_azimuth ? bam_from_mdeg(o.azimuth_mdeg) : iso.azimuth_bam;
-    cam_.elevation_bam = o.have_elevation ? static_cast<int32_t>(bam_from_mdeg(o.elevation_mdeg)) : iso.elevation_bam;
+    cam_.azimuth_bam = o.view.have_azimuth ? bam_from_mdeg(o.view.azimuth_mdeg) : iso.azimuth_bam;
+    cam_.elevation_bam = o.view.have_elevation ? static_cast<int32_t>(bam_from_mdeg(o.view.elevation_mdeg)) : iso.elevation_bam;
   }
   std::string err;
-  is_live_ = o.window || !o.fbdev.empty();
+  is_live_ = o.view.window || !o.view.fbdev.empty();
   if (is_live_) {
     const int code = live_.open(o, grid, cam_, in.total_us, &err);
     if (code != kExitOk) return fail(code, "%s", err.c_str());
     outputs_.push_back(live_.output());
   }
-  if (!o.frames_dir.empty()) {
-    frames_.reset(new FrameFiles(o.frames_dir, o.frame_format, o.width, o.height));
+  if (!o.out.frames_dir.empty()) {
+    frames_.reset(new FrameFiles(o.out.frames_dir, o.out.frame_format, o.view.width, o.view.height));
     frames_out_.reset(new RenderOutput());
     if (!frames_out_->init(grid, frames_->frame(), cam_, &err)) return fail(kExitUsage, "%s", err.c_str());
-    every_ = o.every ? static_cast<uint64_t>(o.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
+    every_ = o.out.every ? static_cast<uint64_t>(o.out.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
     outputs_.push_back(frames_out_.get());
   }
   // The final image is the frame of the live view or of the sequence when
   // there is one (the same pixels), else a frame of its own.
   image_src_ = is_live_ ? live_.output() : frames_out_.get();
-  if (!o.image.empty() && !image_src_) {
+  if (!o.out.image.empty() && !image_src_) {
     if (!still(o, &image_pixels_, &image_out_)) return kExitUsage;
     outputs_.push_back(image_out_.get());
     image_src_ = image_out_.get();
   }
-  if (!o.error_image.empty()) {
+  if (!o.out.error_image.empty()) {
     if (!still(o, &error_pixels_, &error_out_)) return kExitUsage;
     outputs_.push_back(error_out_.get());
   }
-  for (RenderOutput* out : outputs_) out->set_tool(o.tool);
+  for (RenderOutput* out : outputs_) out->set_tool(o.job.tool);
   set_colours(o, in);
   // The gouges found so far, marked in every frame and live view; the
   // safety findings so far in magenta; the fixtures in every frame.
@@ -103,8 +103,8 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     for (RenderOutput* out : outputs_) out->add_marks(&in.design->marks, Rgb{255, 32, 24});
   if (sim->safety())
     for (RenderOutput* out : outputs_) out->add_marks(&safety_marks_.points, Rgb{255, 40, 255});
-  if (!o.checks.fixtures.empty())
-    for (RenderOutput* out : outputs_) out->set_fixtures(&o.checks.fixtures);
+  if (!o.job.checks.fixtures.empty())
+    for (RenderOutput* out : outputs_) out->set_fixtures(&o.job.checks.fixtures);
   grid.dirty = grid.bounds();
   changed(grid.dirty);
   grid.dirty = GridRect::none();
@@ -112,11 +112,11 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
   if (in.path)
     for (RenderOutput* out : outputs_) {
       out->set_path(in.path, &path_done_);
-      out->set_path_visible(o.path_overlay);
+      out->set_path_visible(o.view.path_overlay);
     }
   if (is_live_) live_.set_before_draw([sim] { sim->sync(); });
-  status.inch = o.read.inch;
-  status.tool_spec = o.tool_text;
+  status.inch = o.job.read.inch;
+  status.tool_spec = o.job.tool_text;
   sim->set_observer(this);
   return kExitOk;
 }
@@ -185,19 +185,19 @@ int RunViews::write_images(const RunOptions& o, const GridPlan& plan, const Imag
   char e[1300];
   const CutterPose pose{true, sim_->mill().position()};
   DexelGrid<height_t>* grid = &sim_->grid();
-  if (!o.image.empty()) {
+  if (!o.out.image.empty()) {
     const double t0 = clock_now_s();
     RenderOutput* live_out = is_live_ ? live_.output() : nullptr;
     if (image_src_ != live_out) image_src_->draw(grid, pose);
     const FrameView* shown = &image_src_->view();
     OverlayImage overlay;
     std::string err;
-    if (o.overlay != RunOptions::Overlay::kNone && image_src_ != live_out &&
+    if (o.view.overlay != ViewOptions::Overlay::kNone && image_src_ != live_out &&
         !overlay_image(o, plan, *in_.design, image_src_, &overlay, &shown, &err))
       return fail(kExitUsage, "%s", err.c_str());
     const double t1 = clock_now_s();
     render_s += t1 - t0;
-    if (!write_frame_image(o.image.c_str(), image, *shown, e, sizeof e)) return fail(kExitIo, "%s", e);
+    if (!write_frame_image(o.out.image.c_str(), image, *shown, e, sizeof e)) return fail(kExitIo, "%s", e);
     write_s += clock_now_s() - t1;
   }
   if (error_out_) {
@@ -205,7 +205,7 @@ int RunViews::write_images(const RunOptions& o, const GridPlan& plan, const Imag
     error_out_->draw(grid, pose);
     const double t1 = clock_now_s();
     render_s += t1 - t0;
-    if (!write_frame_image(o.error_image.c_str(), error, error_out_->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    if (!write_frame_image(o.out.error_image.c_str(), error, error_out_->view(), e, sizeof e)) return fail(kExitIo, "%s", e);
     write_s += clock_now_s() - t1;
   }
   return kExitOk;

@@ -13,7 +13,7 @@
 namespace dexmill {
 namespace cli {
 
-void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o) {
+void builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o) {
   o->builtin = &b;
   o->design = std::string("(built-in part ") + b.name + ")";
   o->design_pgm = false;
@@ -37,7 +37,7 @@ void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o) {
   if (o->material.empty()) o->material = b.material;
 }
 
-void zig_fit_to_material(const RunOptions& o, ZigProgramOptions* p) {
+void zig_fit_to_material(const JobOptions& o, ZigProgramOptions* p) {
   static StockComposition comp;
   const BoxNm box{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
   if (!material_preset(o.material.c_str(), box, &comp)) return;  // a file: its own business
@@ -54,7 +54,7 @@ void zig_fit_to_material(const RunOptions& o, ZigProgramOptions* p) {
   if (lo <= hi) p->spindle_rpm = clamp(p->spindle_rpm, lo, hi);
 }
 
-int zig_generate(const RunOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan_out) {
+int zig_generate(const JobOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan_out) {
   // The grid `run` would use for this stock and tool.
   const StockBox stock{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
   const int64_t pitch_nm = o.pitch_nm || o.grid_nx ? o.pitch_nm : default_pitch_nm(stock, o.tool.diameter_nm);

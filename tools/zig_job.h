@@ -1,5 +1,5 @@
 // `dexmill zig`'s job, shared with `dexmill run --demo` (issue 23): a
-// zig-milling program for the design a RunOptions names (a file, or a
+// zig-milling program for the design a job (JobOptions) names (a file, or a
 // built-in part of core/design/builtin.h) on the grid `run` would use for
 // its stock, pitch or grid and tool.
 #ifndef DEXMILL_TOOLS_ZIG_JOB_H
@@ -25,17 +25,17 @@ struct ZigJob {
 // Sets o up for built-in part b: its block as the stock, its pitch (unless
 // o gives --pitch or --grid), its ball (unless tool_given), its material
 // (unless o gives one), and b as the design.
-void builtin_setup(const BuiltinDesign& b, bool tool_given, RunOptions* o);
+void builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o);
 
 // Feeds and spindle speed within every limit of o's material preset (paper
 // §2.6: the process rules then pass): the lowest max feed (at most the
 // feed already set), a third of it to plunge, a speed inside every range.
 // Nothing for a material file or none.
-void zig_fit_to_material(const RunOptions& o, ZigProgramOptions* p);
+void zig_fit_to_material(const JobOptions& o, ZigProgramOptions* p);
 
 // The program for o's design, stock, grid and tool into *text; the grid
 // used into *plan. Returns an exit status (the message printed).
-int zig_generate(const RunOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan);
+int zig_generate(const JobOptions& o, ZigJob* z, std::string* text, ZigProgramStats* st, GridPlan* plan);
 
 // "dexmill zig: grid ..., N stripes, N positions, N moves, T s" on stderr.
 void zig_print_stats(const GridPlan& plan, const ZigProgramStats& st);
