@@ -185,17 +185,15 @@ TEST(run_partial_cuts_up_to_the_bad_block) {
   CHECK(has(rep, "\"status\": \"error\""));
   CHECK(has(rep, "\"stopped\": {\"reason\": \"error\", \"line\": 4}"));
   CHECK(rep.find("\"removed_mm3\": 0.000") == std::string::npos);  // line 3 cut
-  // The same cut as the program without its bad block and what follows.
+  // That the cut is the program's without its bad block and what follows,
+  // and that a tool the table lacks stops it at its T line, is the
+  // engine's (test_sim_reading.cpp). The frame marks the bad block in
+  // amber; the same frame of the program without it has no amber.
   std::FILE* f = std::fopen((d + "good3.ngc").c_str(), "wb");
   if (f) {
     std::fputs("G21 G90\nG0 Z5\nG1 X10 Y10 Z-1 F300\n", f);
     std::fclose(f);
   }
-  CHECK_EQ(run("%/good3.ngc -q --size 160x120 --stock " + std::string("-5,-5,-2,25,15,0") + " --heightmap %/good3.pgm").code, 0);
-  CHECK_EQ(run("bad_word.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --heightmap %/part2.pgm").code, 1);
-  CHECK_EQ(file_hash(d + "good3.pgm"), file_hash(d + "part2.pgm"));
-  // The frame marks the bad block in amber; the same frame without the
-  // error has no amber.
   CHECK_EQ(run("bad_word.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --image %/amber.ppm").code, 1);
   CHECK_EQ(run("%/good3.ngc -q --size 160x120 --stock -5,-5,-2,25,15,0 --image %/plain3.ppm").code, 0);
   auto amber_pixels = [](const std::string& ppm) {
@@ -207,10 +205,6 @@ TEST(run_partial_cuts_up_to_the_bad_block) {
   };
   CHECK(amber_pixels(slurp(d + "amber.ppm")) > 10);
   CHECK_EQ(amber_pixels(slurp(d + "plain3.ppm")), 0);
-  // A tool the table lacks stops the cut at its T line the same way.
-  r = run("unknown_tool.ngc --tools tools.tbl --report %/tool.json");
-  CHECK_EQ(r.code, 1);
-  CHECK(has(slurp(d + "tool.json"), "\"stopped\": {\"reason\": \"error\", \"line\": 4}"));
 }
 
 TEST(run_window_needs_glfw_or_a_display) {
@@ -410,11 +404,9 @@ TEST(run_stock_from_an_stl_blank) {
   CHECK_EQ(r.code, 0);
   const std::string rep = slurp(tmp_dir() + "/blank.json");
   CHECK(has(rep, "\"stock\": {\"min_mm\": [-2.0000, -2.0000, -10.0000], \"max_mm\": [34.0001, 24.0396, 0.0000], \"source\": \"stl\"}"));
-  // Less to remove than from the full box: the step was never there.
+  // Less to remove than from the full box (the step was never there: the
+  // engine's, test_sim_plan.cpp).
   CHECK(has(rep, "\"removed_mm3\": 1090.985"));
-  r = run("pocket.ngc -q --size 160x120 --stock -2,-2,-10,34,24.0396,0 --report %/box.json");
-  CHECK_EQ(r.code, 0);
-  CHECK(slurp(tmp_dir() + "/box.json").find("\"removed_mm3\": 1090.985") == std::string::npos);
   check_hash(tmp_dir() + "/blank.ppm", 0x422a6b00decf2f6cULL);
   write_file(tmp_dir() + "/flat.stl", "solid f\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n  endloop\n endfacet\nendsolid f\n");
   r = run("pocket.ngc -q --stock %/flat.stl");
