@@ -169,6 +169,22 @@ Run& Run::tolerance_box(const char* x0, const char* y0, const char* x1, const ch
   return *this;
 }
 
+Run& Run::check_all() {
+  job.checks.rapid = job.checks.spindle = job.checks.below = true;
+  job.checks.shank = job.checks.holder = job.checks.plunge = true;
+  return *this;
+}
+Run& Run::table(const char* z_mm) {
+  job.checks.has_table = true;
+  job.checks.table_nm = nm(z_mm);
+  return *this;
+}
+Run& Run::fixture(const char* mm) {
+  const StockBox b = stock_box(mm);
+  o_->checks.fixtures.push_back(BoxNm{b.lo, b.hi});
+  return *this;
+}
+
 bool Run::program(const std::string& path, const SimBudget& b, bool sync_each_step) {
   const cli::RunOptions& o = *o_;
   job.tool = o.tool;
@@ -212,6 +228,8 @@ bool Run::program(const std::string& path, const SimBudget& b, bool sync_each_st
     job.design = &design_.grid;
     job.assess = design_.opt;
   }
+  job.checks.fixtures = o.checks.fixtures.data();
+  job.checks.nfixtures = static_cast<int>(o.checks.fixtures.size());
   sim_checks_for_tools(&job.checks, scan_->tools, scan_->ntools);
   if (!o.material.empty()) {
     const BoxNm stock{job.plan.stock.lo, job.plan.stock.hi};

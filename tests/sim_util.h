@@ -82,6 +82,9 @@ class Run {
   Run& design(const std::string& what);   // --design FILE.stl|FILE.pgm|PART
   Run& design_z(const char* low_mm, const char* high_mm);  // --design-z
   Run& tolerance_box(const char* x0, const char* y0, const char* x1, const char* y1, const char* tol);
+  Run& check_all();                       // --check all
+  Run& table(const char* z_mm);           // --table Z
+  Run& fixture(const char* mm);           // --fixture X0,Y0,Z0,X1,Y1,Z1
   // The rest: checks, stops, provenance, time model, straight into the job
   // (the tools' own checks are added as the CLI adds them).
   SimJob job;
