@@ -249,7 +249,8 @@ bool Run::program(const std::string& path, const SimBudget& b, bool sync_each_st
 }
 
 bool Run::text(const char* name, const std::string& text, const SimBudget& b, bool sync_each_step) {
-  return program(run_cli::write_tmp(name, text.c_str()), b, sync_each_step);
+  // Apart from the files the CLI tests write to the same folder.
+  return program(run_cli::write_tmp(("sim-" + std::string(name)).c_str(), text.c_str()), b, sync_each_step);
 }
 
 std::string Run::removed_mm3() {

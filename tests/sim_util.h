@@ -95,7 +95,7 @@ class Run {
   // the cut after every step with `sync_each_step`); false when the job
   // could not be set up (CHECKed).
   bool program(const std::string& path, const dexmill::SimBudget& b = dexmill::SimBudget(), bool sync_each_step = false);
-  // The same for text, written to the temporary folder as `name`.
+  // The same for text, written to the temporary folder as sim-NAME.
   bool text(const char* name, const std::string& text, const dexmill::SimBudget& b = dexmill::SimBudget(),
             bool sync_each_step = false);
 

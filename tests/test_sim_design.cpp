@@ -33,10 +33,10 @@ std::string unnamed(std::string a, const std::string& file) {
 
 TEST(sim_design_assessment_names_the_gouge_and_the_leftover) {
   const std::string d = run_cli::tmp_dir() + "/";
-  run_cli::write_file(d + "sim_pd.stl", pocket_part::ascii_stl(pocket_part::design()));
-  run_cli::write_file(d + "sim_pdb.stl", pocket_part::binary_stl(pocket_part::design()));
+  run_cli::write_file(d + "sim-pd.stl", pocket_part::ascii_stl(pocket_part::design()));
+  run_cli::write_file(d + "sim-pdb.stl", pocket_part::binary_stl(pocket_part::design()));
   Run r;
-  CHECK(r.design(d + "sim_pd.stl").program(run_file("pocket.ngc")));
+  CHECK(r.design(d + "sim-pd.stl").program(run_file("pocket.ngc")));
   CHECK(r.sim().state() == SimState::kDone);
   // The one gouge, charged to the G81 line while cutting: 8 mm at
   // X28.044 Y15.130, the design at Z0, the cut at Z-8.
@@ -60,11 +60,11 @@ TEST(sim_design_assessment_names_the_gouge_and_the_leftover) {
   CHECK(has(a, "\"within_tolerance_percent\": 88.55"));
   // The same mesh as binary STL: the same assessment but for the file's name.
   Run b;
-  CHECK(b.design(d + "sim_pdb.stl").program(run_file("pocket.ngc")));
-  CHECK(unnamed(a, "sim_pd.stl") == unnamed(b.assessment(), "sim_pdb.stl"));
+  CHECK(b.design(d + "sim-pdb.stl").program(run_file("pocket.ngc")));
+  CHECK(unnamed(a, "sim-pd.stl") == unnamed(b.assessment(), "sim-pdb.stl"));
   // A tolerance of 3 mm inside a box over the pocket's corner at (2, 2) forgives its leftover.
   Run t;
-  CHECK(t.design(d + "sim_pd.stl").tolerance_box("0", "0", "6", "6", "3").program(run_file("pocket.ngc")));
+  CHECK(t.design(d + "sim-pd.stl").tolerance_box("0", "0", "6", "6", "3").program(run_file("pocket.ngc")));
   const std::string at = t.assessment();
   CHECK(has(at, "\"tolerance_boxes\": 1"));
   CHECK(at.find("\"x_mm\": 2.0870, \"y_mm\": 2.0870") == std::string::npos);
@@ -117,14 +117,14 @@ TEST(sim_design_from_a_height_image) {
   // right half may go to Z-3 (black): the pocket's left part is a 3 mm
   // gouge, the G81 hole on the right 5 mm. P5 and P2 alike.
   const std::string d = run_cli::tmp_dir() + "/";
-  run_cli::write_file(d + "sim_half.pgm", std::string("P5\n# design\n2 1\n255\n") + '\xff' + '\x00');
-  run_cli::write_file(d + "sim_half2.pgm", "P2\n2 1\n255\n255 0\n");
+  run_cli::write_file(d + "sim-half.pgm", std::string("P5\n# design\n2 1\n255\n") + '\xff' + '\x00');
+  run_cli::write_file(d + "sim-half2.pgm", "P2\n2 1\n255\n255 0\n");
   Run p5, p2;
-  CHECK(p5.design(d + "sim_half.pgm").design_z("-3", "0").program(run_file("pocket.ngc")));
-  CHECK(p2.design(d + "sim_half2.pgm").design_z("-3", "0").program(run_file("pocket.ngc")));
+  CHECK(p5.design(d + "sim-half.pgm").design_z("-3", "0").program(run_file("pocket.ngc")));
+  CHECK(p2.design(d + "sim-half2.pgm").design_z("-3", "0").program(run_file("pocket.ngc")));
   const std::string a = p5.assessment();
   CHECK(has(a, "\"kind\": \"pgm\", \"triangles\": 0"));
   CHECK(has(a, "\"max_gouge\": {\"mm\": 5.0000, \"x_mm\": 27.1305, \"y_mm\": 15.1305}"));
   CHECK(has(a, "\"gouged\": {\"area_mm2\": 239.037,"));
-  CHECK(unnamed(a, "sim_half.pgm") == unnamed(p2.assessment(), "sim_half2.pgm"));
+  CHECK(unnamed(a, "sim-half.pgm") == unnamed(p2.assessment(), "sim-half2.pgm"));
 }

@@ -34,7 +34,7 @@ uint64_t total(Run& r) { return r.sim().process() ? r.sim().process()->total : U
 }  // namespace
 
 TEST(sim_material_feed_spindle_coolant_on_their_lines) {
-  const std::string mat = run_cli::write_tmp("sandwich.txt", kSandwich);
+  const std::string mat = run_cli::write_tmp("sim-sandwich.txt", kSandwich);
   // Line 6 runs 2000 mm/min through both layers (over alu's 1200); line 10
   // floods the wood; line 13 runs 2000 in the wood alone (fine).
   Run r;

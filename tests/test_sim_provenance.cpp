@@ -38,7 +38,7 @@ bool cut(Run* r, const std::string& table, const SimBudget& b, bool sync_each_st
 }  // namespace
 
 TEST(sim_provenance_gives_each_tool_its_class) {
-  const std::string table = run_cli::write_tmp("two_tools.tbl", "T1 P1 D6 ;flat:6\nT2 P2 D6 ;ball:6\n");
+  const std::string table = run_cli::write_tmp("sim-two_tools.tbl", "T1 P1 D6 ;flat:6\nT2 P2 D6 ;ball:6\n");
   Run r;
   CHECK(cut(&r, table, SimBudget(), false));
   CHECK(r.sim().state() == SimState::kDone);
