@@ -69,6 +69,13 @@ std::string write_tmp(const char* name, const char* text) {
   return path;
 }
 
+void write_file(const std::string& path, const std::string& bytes) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fwrite(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+}
+
 Result run(const std::string& args, const char* stdin_file, bool in_tmp, const std::string& prefix) {
   return run_command("run " + args, stdin_file, in_tmp, prefix);
 }

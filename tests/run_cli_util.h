@@ -26,6 +26,8 @@ uint64_t file_hash(const std::string& path);
 Result run(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false, const std::string& prefix = "");
 // Writes text to tmp_dir()/name; returns the path.
 std::string write_tmp(const char* name, const char* text);
+// Writes bytes (any, NULs too) to path.
+void write_file(const std::string& path, const std::string& bytes);
 // The same for any subcommand: args begin with it ("check --simulate ...").
 Result run_command(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false,
                    const std::string& prefix = "");

@@ -1,20 +1,24 @@
 // `dexmill optimize` (issue 19, feed optimisation) on programs the test
 // writes: the output differs from the input only in F words on the lines
-// expected, cuts the identical grid when `dexmill run` re-simulates it (the
-// heightmaps' bytes), and gives no feed warning; a program within the
+// expected, cuts the identical grid when the engine re-simulates it with
+// the job `dexmill run` would make (tests/sim_util.h), and breaks no feed
+// limit; a program within the
 // limits comes back byte for byte; moves in air and in a faster material
 // keep their feed; inch programs, canned cycles, G93, block delete and CRLF
 // files; usage and input errors. Then the pieces in-process: the F number
 // (tools/feed_word.h), the per-line rule and the splice (tools/feed_rewrite.h).
 #include <sys/wait.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "core/check/process.h"
 #include "core/math/decimal.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
+#include "tests/sim_util.h"
 #include "tools/feed_rewrite.h"
 #include "tools/feed_word.h"
 
@@ -39,23 +43,37 @@ int feed_warnings(const std::string& s) {
   return n;
 }
 
-// Optimizes `name` (written with `text`) with `opts`; the output is written
-// beside it as opt-NAME. Then both are cut by `dexmill run` with the same
-// options: the heightmaps must be the same bytes, and the output must give
-// no feed warning. Returns the optimize run (its out is the program).
-Result optimize_and_recut(const char* name, const char* text, const std::string& opts) {
+// The cut of a program with kStock's stock, pitch and tool and the
+// material (`dexmill run` with those options), on the engine.
+struct Cut {
+  sim_test::Run run;
+  bool ok = false;
+  Cut(const std::string& program, const std::string& material, bool inch) {
+    run.stock("0,0,-20,40,40,0").pitch("0.25").tool("flat:6").material(material);
+    if (inch) run.inch();
+    ok = run.program(program);
+  }
+  // The feed rule's violations (the warnings "warning: feed ...").
+  size_t feed_violations() { return ok ? run.violations(dexmill::ProcessRule::kFeed).size() : SIZE_MAX; }
+};
+
+// Optimizes `name` (written with `text`) with kStock, the material and the
+// units; the output is written beside it as opt-NAME. Then both are cut
+// with the same job: the grids must be the same, and the output must break
+// no feed limit. Returns the optimize run (its out is the program).
+Result optimize_and_recut(const char* name, const char* text, const std::string& material, bool inch = false) {
   const std::string in = write_tmp(name, text);
-  const Result r = run_command("optimize " + in + opts);
+  const Result r = run_command("optimize " + in + kStock + (inch ? " --units inch" : "") + " --material " + material);
   CHECK_EQ(r.code, 0);
   const std::string out = write_tmp((std::string("opt-") + name).c_str(), r.out.c_str());
-  const Result a = run(in + opts + " --heightmap " + in + ".pgm");
-  const Result b = run(out + opts + " --heightmap " + out + ".pgm");
-  CHECK_EQ(a.code, 0);
-  CHECK_EQ(b.code, 0);
-  const std::string ha = slurp(in + ".pgm"), hb = slurp(out + ".pgm");
-  CHECK(!ha.empty());
-  CHECK(ha == hb);
-  CHECK_EQ(feed_warnings(b.err), 0);
+  Cut a(in, material, inch), b(out, material, inch);
+  CHECK(a.ok && b.ok);
+  if (!a.ok || !b.ok) return r;
+  CHECK(a.run.sim().state() == dexmill::SimState::kDone);
+  CHECK(b.run.sim().state() == dexmill::SimState::kDone);
+  CHECK_GT(a.run.sim().removed_lsb(), uint64_t{0});
+  CHECK_EQ(a.run.grid_hash(), b.run.grid_hash());
+  CHECK_EQ(b.feed_violations(), size_t{0});
   return r;
 }
 
@@ -64,16 +82,19 @@ Result optimize_and_recut(const char* name, const char* text, const std::string&
 TEST(optimize_lowers_the_one_line_over_a_limit) {
   if (skip()) return;
   const std::string mat = write_tmp("opt-sandwich.txt", kSandwich);
-  const std::string opts = std::string(kStock) + " --material " + mat;
   // Line 6 runs 2000 mm/min through both layers (over alu's 1200); line 7
   // goes on in air past the block, line 11 at 2000 in the wood alone.
   const char* prog =
       "G21 G90\nM3 S12000\nG0 Z5\nG0 X-5 Y10\nG1 Z-15 F300\nG1 X45 F2000 ; through both\nG1 Y14\nG0 Z5\n"
       "G0 X-5 Y25\nG1 Z-4 F300\nG1 X45 F2000\nG0 Z5\nM2\n";
-  const Result before = run(write_tmp("opt-one.ngc", prog) + opts + " --report /dev/null");
-  CHECK_EQ(feed_warnings(before.err), 1);
-  CHECK(has(before.err, "opt-one.ngc:6:1: warning: feed 2000 mm/min over alu's limit 1200 mm/min"));
-  const Result r = optimize_and_recut("opt-one.ngc", prog, opts);
+  Cut before(write_tmp("opt-one.ngc", prog), mat, false);
+  CHECK_EQ(before.feed_violations(), size_t{1});
+  const std::vector<dexmill::ProcessViolation> v = before.run.violations(dexmill::ProcessRule::kFeed);
+  if (v.size() == 1) {
+    CHECK_EQ(v[0].line, 6u);
+    CHECK(has(before.run.message(v[0]), "feed 2000 mm/min over alu's limit 1200 mm/min"));
+  }
+  const Result r = optimize_and_recut("opt-one.ngc", prog, mat);
   // Only F words: line 6 changed, line 7 given the programmed feed back
   // (the air move keeps its 2000), the wood-only line 11 as written.
   CHECK_EQ(r.out, std::string("G21 G90\nM3 S12000\nG0 Z5\nG0 X-5 Y10\nG1 Z-15 F300\nG1 X45 F1200 ; through both\n"
@@ -83,7 +104,7 @@ TEST(optimize_lowers_the_one_line_over_a_limit) {
   CHECK(has(r.err, " after (+"));
   CHECK_EQ(feed_warnings(r.err), 0);  // the input's warnings are not repeated
   // The output again: nothing left to do, byte for byte.
-  const Result again = run_command("optimize " + tmp_dir() + "/opt-opt-one.ngc" + opts);
+  const Result again = run_command("optimize " + tmp_dir() + "/opt-opt-one.ngc" + kStock + " --material " + mat);
   CHECK(again.code == 0 && again.out == r.out);
 }
 
@@ -95,7 +116,7 @@ TEST(optimize_keeps_a_program_within_limits_byte_for_byte) {
   const char* prog =
       "%\r\nN10 G21 G90 (metric)\r\nN20 M3 S12000\r\nN30 G0 X-5 Y10 Z5\r\nN40 G1  Z-15 F300 ;plunge\r\n"
       "N50 G1 X45 F1000\r\nN60 G1 Z10 F9000\r\nN70 G1 X-5\r\nN80 G0 Z5\r\n%";
-  const Result r = optimize_and_recut("opt-calm.ngc", prog, std::string(kStock) + " --material " + mat);
+  const Result r = optimize_and_recut("opt-calm.ngc", prog, mat);
   CHECK(r.out == prog);
   CHECK(has(r.err, "0 line(s) changed"));
   CHECK(has(r.err, "(+0.0%)"));
@@ -112,7 +133,7 @@ TEST(optimize_two_materials_and_crlf) {
       "G21 G90 M3 S12000\r\nG0 X-5 Y10 Z5\r\nG1 Z-5 F300\r\nG1 X45 F4000\r\nG1 Y20 Z-15 F300\r\nG1 X-5 F2000\r\n"
       "G1 Y30 Z-5 F2500\r\nG1 X45\r\nG0 Z5\r\nG0 X5 Y-5\r\nG1 Z-15 F300\r\nG2 X35 Y-5 I15 J0 F2000\r\nG0 Z5\r\n"
       "M2\r\n";
-  const Result r = optimize_and_recut("opt-two.ngc", prog, std::string(kStock) + " --material wood-on-aluminium");
+  const Result r = optimize_and_recut("opt-two.ngc", prog, "wood-on-aluminium");
   CHECK_EQ(r.out, std::string("G21 G90 M3 S12000\r\nG0 X-5 Y10 Z5\r\nG1 Z-5 F300\r\nG1 X45 F3000\r\nG1 Y20 Z-15 F300\r\n"
                               "G1 X-5 F1500\r\nG1 Y30 Z-5 F2500\r\nG1 X45\r\nG0 Z5\r\nG0 X5 Y-5\r\nG1 Z-15 F300\r\n"
                               "G2 X35 Y-5 I15 J0 F1500\r\nG0 Z5\r\nM2\r\n"));
@@ -128,12 +149,12 @@ TEST(optimize_inch_programs) {
   // back.
   const char* prog =
       "G20 G90\nM3 S12000\nG0 X-0.2 Y0.4 Z0.2\nG1 Z-0.6 F12\ng1x1.8f80(cut)\nG1 Y0.55\nG0 Z0.2\nM2\n";
-  const Result r = optimize_and_recut("opt-inch.ngc", prog, std::string(kStock) + " --material " + mat);
+  const Result r = optimize_and_recut("opt-inch.ngc", prog, mat);
   CHECK_EQ(r.out, std::string("G20 G90\nM3 S12000\nG0 X-0.2 Y0.4 Z0.2\nG1 Z-0.6 F12\ng1x1.8f47.244(cut)\nG1 Y0.55 F80\n"
                               "G0 Z0.2\nM2\n"));
   // Programs with no G20 under --units inch: the same.
   const char* bare = "G90\nM3 S12000\nG0 X-0.2 Y0.4 Z0.2\nG1 Z-0.6 F12\nG1 X1.8 F80\nG0 Z0.2\nM2\n";
-  const Result u = optimize_and_recut("opt-bare.ngc", bare, std::string(kStock) + " --units inch --material " + mat);
+  const Result u = optimize_and_recut("opt-bare.ngc", bare, mat, true);
   CHECK(has(u.out, "G1 X1.8 F47.244\n"));
 }
 
@@ -143,7 +164,6 @@ TEST(optimize_canned_cycles_g93_and_block_delete) {
   const std::string mat = write_tmp("opt-insert.txt",
                                     "material wood wood max_feed=3000 coolant=no\nmaterial alu plain max_feed=1200\n"
                                     "box 25,0,-20,40,40,-3 alu\ndefault wood\n");
-  const std::string opts = std::string(kStock) + " --material " + mat;
   // Line 4 drills three holes 10 mm apart (G91 L3): only the last reaches
   // the aluminium, and the line's one F goes to its limit; line 6's hole,
   // in the wood, keeps its feed. Line 10 (G93) runs 50 mm at F100 (5000
@@ -154,7 +174,7 @@ TEST(optimize_canned_cycles_g93_and_block_delete) {
       "G21 G90\nM3 S12000\nG0 X5 Y20 Z5\nG91 G81 X10 Z-10 R-3 L3 F2000\nG90\nG81 X10 Y30 Z-5 R2 F2000\nG80\n"
       "G0 X-5 Y5 Z5\nG1 Z-6 F500\nG93 G1 X45 F100\nG94 G0 Z5\nG0 X-5 Y12\nG1 Z-6 F500\n/G1 X45 F2000\nG1 X-5 Y16\n"
       "G0 Z5\nM2\n";
-  const Result r = optimize_and_recut("opt-cycle.ngc", prog, opts);
+  const Result r = optimize_and_recut("opt-cycle.ngc", prog, mat);
   CHECK_EQ(r.out, std::string("G21 G90\nM3 S12000\nG0 X5 Y20 Z5\nG91 G81 X10 Z-10 R-3 L3 F1200\nG90\n"
                               "G81 X10 Y30 Z-5 R2 F2000\nG80\nG0 X-5 Y5 Z5\nG1 Z-6 F500\nG93 G1 X45 F24\nG94 G0 Z5\n"
                               "G0 X-5 Y12\nG1 Z-6 F500\n/G1 X45 F1200\nG1 X-5 Y16 F1200\nG0 Z5\nM2\n"));

@@ -2,7 +2,8 @@
 // `path` read them, message comments print as FILE:LINE: debug|print|message
 // and reach `run`'s report, expression errors are FILE:LINE:COL errors with
 // exit 1, and LinuxCNC's semantics hold end to end (assignments after the
-// line, the position parameters after a move).
+// line, the position parameters after a move; the probe's results are the
+// engine's, test_sim_reading.cpp).
 #include <string>
 
 #include "tests/run_cli_util.h"
@@ -58,16 +59,4 @@ TEST(params_errors_are_file_line_col) {
     CHECK_EQ(r.code, 1);
     CHECK(has(r.err, c.message));
   }
-}
-
-// #5061-#5070 after a probe move: its end point (the machine's contact
-// point cannot be known), in the coordinates in force then, and 1.
-TEST(params_probe_results_are_the_end_point) {
-  if (skip()) return;
-  const std::string p = write_tmp("probe_params.ngc",
-                                  "G21 G90\nG10 L2 P1 X10\nG54\nG0 X5 Y5 Z5\nG38.2 Z-2 F50\n"
-                                  "G0 X[#5061 + 1] Y#5062 Z[#5063 + #5070]\nM2\n");
-  const Result r = run_command("path " + p);
-  CHECK_EQ(r.code, 0);
-  CHECK(has(r.out, "feed 15.00000 5.00000 -2.00000\nrapid 16.00000 5.00000 -1.00000"));
 }

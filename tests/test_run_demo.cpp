@@ -2,9 +2,11 @@
 // panel end to end (its zig program, the cut from aluminium, the frames,
 // the final and error images, the report's assessment: no gouge, the
 // leftover where the 4.5 mm ball cannot reach); `dexmill zig` of a built-in
-// part gives the demo's program; --design takes a built-in part; usage
-// errors. The four demos' grids and frames are pinned in the golden section
-// "demo" on every xcheck target.
+// part gives the demo's program, which cut on the engine against the part
+// (tests/sim_util.h) assesses alike; usage errors. The free-form part's zig
+// program, cut on the engine, leaves the scallop its stepover predicts.
+// The four demos' grids and frames are pinned in the golden section "demo"
+// on every xcheck target.
 #include <sys/stat.h>
 
 #include <cmath>
@@ -15,6 +17,7 @@
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
+#include "tests/sim_util.h"
 
 namespace {
 
@@ -57,11 +60,12 @@ TEST(demo_panel_end_to_end) {
   CHECK_EQ(z.code, 0);
   CHECK(z.out == slurp(dir + "panel.ngc"));
   CHECK(has(z.out, "(dexmill zig: built-in part panel, tool ball:4.5,"));
-  // And simulating that program by hand with --design panel assesses alike.
-  const Result h = run(dir + "panel.ngc --stock 0,0,-10,39.5,19.5,0 --pitch 0.5 --tool ball:4.5 --design panel -q --report " +
-                       tmp_dir() + "/hand.json");
-  CHECK_EQ(h.code, 0);
-  CHECK(has(assessment_of(slurp(tmp_dir() + "/hand.json")), "\"max_gouge\": null"));
+  // And cutting that program by hand with the panel as the design (as
+  // `dexmill run ... --design panel` would) assesses alike.
+  sim_test::Run h;
+  CHECK(h.stock("0,0,-10,39.5,19.5,0").pitch("0.5").tool("ball:4.5").design("panel").program(dir + "panel.ngc"));
+  CHECK(h.sim().state() == dexmill::SimState::kDone);
+  CHECK(has(h.assessment(), "\"max_gouge\": null"));
 }
 
 TEST(demo_usage_errors) {
@@ -92,12 +96,14 @@ TEST(zig_leftover_matches_the_scallop_the_stepover_predicts) {
   // stripes (half of all) keep more than 0.02 mm, none more than the bound,
   // none is gouged.
   const double R = 1.5, p = 0.5, flat = R - std::sqrt(R * R - p * p), bound = flat * (1 + 0.63 * 0.63);
-  Result r = run_command("zig freeform --stepover 1 -o " + tmp_dir() + "/ff.ngc");
+  const Result r = run_command("zig freeform --stepover 1 -o " + tmp_dir() + "/ff.ngc");
   CHECK_EQ(r.code, 0);
-  r = run(tmp_dir() + "/ff.ngc --stock 0,0,-30,127.5,127.5,0 --pitch 0.5 --tool ball:3 --design freeform -q --report " +
-          tmp_dir() + "/ff.json");
-  CHECK_EQ(r.code, 0);
-  const std::string a = assessment_of(slurp(tmp_dir() + "/ff.json"));
+  // Cut on the engine as `dexmill run ff.ngc --stock 0,0,-30,127.5,127.5,0
+  // --pitch 0.5 --tool ball:3 --design freeform` would.
+  sim_test::Run cut;
+  CHECK(cut.stock("0,0,-30,127.5,127.5,0").pitch("0.5").tool("ball:3").design("freeform").program(tmp_dir() + "/ff.ngc"));
+  CHECK(cut.sim().state() == dexmill::SimState::kDone);
+  const std::string a = cut.assessment();
   CHECK(has(a, "\"max_gouge\": null"));
   // The histogram: columns per band, edges -1 -0.5 -0.2 -0.1 -0.05 -0.02
   // -0.01 0.01 0.02 0.05 0.1 0.2 0.5 1 (mm): bin k lies under edge k.

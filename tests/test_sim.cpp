@@ -13,9 +13,11 @@
 #include "core/sim/simulation.h"
 #include "core/tool/spec.h"
 #include "platform/gcode_file.h"
+#include "platform/report_json.h"
 #include "tests/alloc_count.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
+#include "tests/sim_util.h"
 
 using namespace dexmill;
 
@@ -23,52 +25,8 @@ namespace {
 
 constexpr int64_t mm = kNmPerMm;
 
-// A job on a box stock X0..X1 x Y0..Y1 x Z0..0 at `pitch`, with one tool.
-SimJob box_job(int64_t x0, int64_t y0, int64_t z0, int64_t x1, int64_t y1, int64_t pitch_nm, const char* tool) {
-  SimJob j;
-  const StockBox box{PointNm{x0, y0, z0}, PointNm{x1, y1, 0}};
-  CHECK(plan_grid(box, 0, 0, pitch_nm, &j.plan) == PlanError::kOk);
-  CHECK(tool_spec_parse(tool, std::strlen(tool), &j.tool) == ToolSpecError::kOk);
-  j.input_buffer_bytes = LineReader::kStartBytes;
-  return j;
-}
-
-// A simulation with its memory.
-struct Engine {
-  std::vector<uint64_t> mem;
-  Simulation* sim = nullptr;
-  explicit Engine(const SimJob& j) {
-    SimSetup why;
-    const size_t n = sim_required_bytes(j, &why);
-    CHECK(n > 0);
-    mem.assign(n / 8 + 1, 0);
-    sim = sim_create(j, mem.data(), mem.size() * 8, &why);
-    CHECK(sim != nullptr);
-  }
-  ~Engine() { sim_destroy(sim); }
-  // Feeds text in pieces of `piece` bytes, stepping with `b` between; the
-  // final state.
-  SimState run(const std::string& text, size_t piece, const SimBudget& b = SimBudget()) {
-    size_t at = 0;
-    SimState s = SimState::kReady;
-    for (int guard = 0; guard < 10000000; ++guard) {
-      s = sim->step(b);
-      if (s == SimState::kNeedInput) {
-        if (at >= text.size()) {
-          sim->close_input();
-        } else {
-          const size_t n = std::min(piece, text.size() - at);
-          sim->feed(text.data() + at, n);
-          at += n;
-        }
-        continue;
-      }
-      if (s != SimState::kReady) break;
-    }
-    return s;
-  }
-  uint64_t grid_hash() const { return dexmill::grid_hash(sim->grid()); }
-};
+using sim_test::box_job;
+using sim_test::Engine;
 
 const char kRapidIntoStock[] =
     "G21 G90\nG0 X0 Y0 Z5\nM3 S1000\nG0 Z-1\nG0 X10\nG1 X20 F100\nM30\n";
@@ -97,22 +55,22 @@ TEST(sim_rapid_removal_does_not_depend_on_an_s_word) {
   CHECK_EQ(removed[0], removed[1]);
 }
 
-// The same through `dexmill run`: both programs report the same volume.
-TEST(run_rapid_removal_does_not_depend_on_an_s_word) {
-  if (run_cli::skip()) return;
+// The same set up as `dexmill run` sets it up (the program read from a
+// file, a line a step): the report's rapid_removed_mm3 is the same for both.
+TEST(sim_run_rapid_removal_does_not_depend_on_an_s_word) {
   std::string vol[2];
   const char* programs[2] = {kRapidIntoStock, kRapidIntoStockS};
+  dexmill::SimBudget line;
+  line.lines = 1;
   for (int k = 0; k < 2; ++k) {
-    const std::string p = run_cli::write_tmp(k ? "s_word.ngc" : "no_s_word.ngc", programs[k]);
-    const run_cli::Result r =
-        run_cli::run(p + " --check rapid --stock -5,-5,-5,30,10,0 --tool flat:6 --pitch 0.1 --report %/sword.json -q");
-    CHECK_EQ(r.code, 0);
-    const std::string rep = run_cli::slurp(run_cli::tmp_dir() + "/sword.json");
-    const size_t at = rep.find("\"rapid_removed_mm3\"");
-    CHECK(at != std::string::npos);
-    if (at != std::string::npos) vol[k] = rep.substr(at, rep.find(',', at) - at);
+    sim_test::Run r;
+    r.stock("-5,-5,-5,30,10,0").tool("flat:6").pitch("0.1");
+    r.job.checks.rapid = true;
+    CHECK(r.text(k ? "s_word.ngc" : "no_s_word.ngc", programs[k], line));
+    const DexelGrid<height_t>& g = r.sim().grid();
+    vol[k] = volume_mm3_text(r.sim().safety()->rapid_removed_lsb, g.lsb_nm, g.pitch_nm);
   }
-  CHECK(!vol[0].empty());
+  CHECK(vol[0] != "0.000");
   CHECK(vol[0] == vol[1]);
   if (vol[0] != vol[1]) std::printf("  %s against %s\n", vol[0].c_str(), vol[1].c_str());
 }

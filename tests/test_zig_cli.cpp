@@ -1,14 +1,16 @@
 // `dexmill zig` (issue 23): programs generated from design parts the test
 // writes (a PGM relief with a raised block, steep steps and a pit; an STL
-// pyramid) are simulated with the same options and --design: no gouge,
-// lifted or zigzag, along x or y, with a flat or a ball; the header says
-// how the program was made and how to simulate it; usage errors.
+// pyramid) are cut on the engine with the job of the same options and the
+// design (tests/sim_util.h): no gouge, lifted or zigzag, along x or y, with
+// a flat or a ball, and no warning reading them; the header says how the
+// program was made and how to simulate it; usage errors.
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
+#include "tests/sim_util.h"
 
 namespace {
 
@@ -28,28 +30,52 @@ std::string relief_pgm() {
   return s;
 }
 
+// The stock, tool and grid a program is made for and cut with, and the
+// design's heights (a PGM's; null for an STL).
+struct Job {
+  const char* stock;
+  const char* tool;
+  const char* pitch;
+  const char* z_low;
+  const char* z_high;
+  // As `dexmill zig` and `dexmill run` take them.
+  std::string options() const {
+    return std::string("--stock ") + stock + " --tool " + tool + " --pitch " + pitch +
+           (z_low ? std::string(" --design-z ") + z_low + "," + z_high : std::string());
+  }
+};
+
+const Job kRelief{"0,0,-20,60,40,0", "ball:4", "0.25", "-14", "-2"};
+
 struct Assessment {
   bool ok = false;
   std::string text;
 };
 
-// Generates with zig_args, simulates with run_args (the same stock, tool,
-// design options), returns the report's assessment.
-Assessment zig_then_run(const std::string& design, const std::string& shared, const std::string& zig_args, const char* name) {
+// Generates with `dexmill zig` (and zig_args), cuts the program on the
+// engine with the same job and the design (as `dexmill run PROGRAM
+// OPTIONS --design DESIGN` would), returns the report's assessment.
+// *r, when given, is the run.
+Assessment zig_then_cut(const std::string& design, const Job& job, const std::string& zig_args, const char* name,
+                        sim_test::Run* r = nullptr) {
   Assessment a;
   const std::string prog = tmp_dir() + "/" + name + ".ngc";
-  Result r = run_command("zig " + design + " " + shared + " " + zig_args + " -o " + prog);
-  CHECK_EQ(r.code, 0);
-  if (r.code != 0) {
-    std::printf("%s\n", r.err.c_str());
+  const Result z = run_command("zig " + design + " " + job.options() + " " + zig_args + " -o " + prog);
+  CHECK_EQ(z.code, 0);
+  if (z.code != 0) {
+    std::printf("%s\n", z.err.c_str());
     return a;
   }
-  CHECK(has(r.err, "dexmill zig: grid"));
-  const std::string rep = tmp_dir() + "/" + name + ".json";
-  r = run(prog + " " + shared + " --design " + design + " -q --report " + rep);
-  CHECK_EQ(r.code, 0);
-  a.text = assessment_of(slurp(rep));
-  a.ok = r.code == 0;
+  CHECK(has(z.err, "dexmill zig: grid"));
+  sim_test::Run own;
+  sim_test::Run& run = r ? *r : own;
+  run.stock(job.stock).tool(job.tool).pitch(job.pitch).design(design);
+  if (job.z_low) run.design_z(job.z_low, job.z_high);
+  if (!run.program(prog)) return a;
+  CHECK(run.sim().state() == dexmill::SimState::kDone);
+  CHECK_EQ(run.scan_errors(), 0u);
+  a.text = run.assessment();
+  a.ok = run.sim().state() == dexmill::SimState::kDone;
   return a;
 }
 
@@ -64,17 +90,16 @@ TEST(zig_programs_cut_no_gouge) {
   const std::string design = tmp_dir() + "/relief.pgm";
   struct Case {
     const char* name;
-    const char* shared;
+    Job job;
     const char* zig;
   } cases[] = {
-      {"ball-x", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25", ""},
-      {"ball-y-zigzag", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25",
-       "--direction y --zigzag --stepover 0.5 --step 0.75"},
-      {"flat-x", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool flat:3 --pitch 0.25", "--stepover 1"},
-      {"bull-zigzag", "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool bull:6:1.5 --pitch 0.25", "--zigzag"},
+      {"ball-x", kRelief, ""},
+      {"ball-y-zigzag", kRelief, "--direction y --zigzag --stepover 0.5 --step 0.75"},
+      {"flat-x", Job{"0,0,-20,60,40,0", "flat:3", "0.25", "-14", "-2"}, "--stepover 1"},
+      {"bull-zigzag", Job{"0,0,-20,60,40,0", "bull:6:1.5", "0.25", "-14", "-2"}, "--zigzag"},
   };
   for (const Case& c : cases) {
-    const Assessment a = zig_then_run(design, c.shared, c.zig, c.name);
+    const Assessment a = zig_then_cut(design, c.job, c.zig, c.name);
     if (!a.ok) continue;
     // No column of the part cut below it (the gouge watch and the
     // assessment agree), and most of the surface within 0.05 mm.
@@ -83,8 +108,7 @@ TEST(zig_programs_cut_no_gouge) {
     if (!has(a.text, "\"max_gouge\": null")) std::printf("%s: %s\n", c.name, a.text.c_str());
   }
   // With an allowance the whole surface keeps at least that much.
-  const Assessment a = zig_then_run(design, "--stock 0,0,-20,60,40,0 --design-z -14,-2 --tool ball:4 --pitch 0.25",
-                                    "--allowance 0.3", "allowance");
+  const Assessment a = zig_then_cut(design, kRelief, "--allowance 0.3", "allowance");
   CHECK(has(a.text, "\"max_gouge\": null"));
   CHECK(has(a.text, "\"within_tolerance_percent\": 0.00"));
 }
@@ -99,19 +123,20 @@ TEST(zig_program_header_and_stl_design) {
                                     "facet normal 0 0 1\nouter loop\nvertex 40 40 -15\nvertex 0 40 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
                                     "facet normal 0 0 1\nouter loop\nvertex 0 40 -15\nvertex 0 0 -15\nvertex 20 20 -5\nendloop\nendfacet\n"
                                     "endsolid p\n");
-  const std::string shared = "--stock 0,0,-20,40,40,0 --tool ball:6 --pitch 0.25";
-  const Assessment a = zig_then_run(stl, shared, "--stepover 1", "pyramid");
+  const Job job{"0,0,-20,40,40,0", "ball:6", "0.25", nullptr, nullptr};
+  const std::string shared = job.options();
+  sim_test::Run cut;
+  const Assessment a = zig_then_cut(stl, job, "--stepover 1", "pyramid", &cut);
   CHECK(has(a.text, "\"max_gouge\": null"));
   // The header: how it was made, how to simulate it; then plain G-code that
-  // dexmill reads without a warning.
+  // dexmill reads without a warning (as `dexmill check` would say).
   const std::string prog = slurp(tmp_dir() + "/pyramid.ngc");
   CHECK(has(prog, "(dexmill zig: "));
   CHECK(has(prog, "tool ball:6, stripes along x every 1.0000 mm"));
   CHECK(has(prog, "(simulate with: dexmill run PROGRAM --stock 0.000,0.000,-20.000,40.000,40.000,0.000 --pitch 0.2500"));
   CHECK(has(prog, "G21 G90 G17 G94\nS12000 M3\nG0 Z5\n"));
-  Result r = run_command("check " + tmp_dir() + "/pyramid.ngc");
-  CHECK_EQ(r.code, 0);
-  CHECK(r.err.empty());
+  CHECK_EQ(cut.scan_errors() + cut.scan_warnings(), 0u);
+  Result r;
   // To standard output when no -o.
   r = run_command("zig " + stl + " " + shared + " --stepover 4");
   CHECK_EQ(r.code, 0);

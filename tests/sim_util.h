@@ -1,0 +1,137 @@
+// Engine tests without the binary: the simulation (core/sim/simulation.h)
+// driven in this process, as every front end drives it.
+//
+// Engine: a simulation over its memory, for a job the test builds itself,
+// with text fed in pieces and budgets of any size.
+//
+// Run: a job set up as `dexmill run` sets one up from its options (the same
+// defaults: a flat:6, the stock from the program's extents, the pitch from
+// its smallest tool), then the program cut to its end: the first pass over
+// the program (core/sim/scan.h) gives the tools, the stock and pitch when
+// the test gives none, and the first bad block, where the cut stops; the
+// inputs the options name (a tool table, a material, a design part, an STL
+// blank) are read by the same readers as the CLI's. What it found is read
+// from the simulation (safety(), gouges(), process(), provenance()), and the
+// report's figures of an assessment are the report's own text.
+#ifndef DEXMILL_TESTS_SIM_UTIL_H
+#define DEXMILL_TESTS_SIM_UTIL_H
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/sim/scan.h"
+#include "core/sim/simulation.h"
+#include "platform/tool_table.h"
+#include "tools/run_assess.h"
+#include "tools/run_material.h"
+
+namespace sim_test {
+
+using dexmill::SimJob;
+using dexmill::SimState;
+using dexmill::Simulation;
+
+// A length written in mm ("-0.25"), exactly in nm, as the CLI reads it.
+int64_t nm(const char* mm);
+// "X0,Y0,Z0,X1,Y1,Z1" in mm.
+dexmill::StockBox stock_box(const char* mm);
+// A tool from its spec ("ball:6,len=20").
+dexmill::Tool tool(const char* spec);
+// A file of tests/run.
+std::string run_file(const char* name);
+
+// A job on a box stock X0..X1 x Y0..Y1 x Z0..0 at `pitch`, with one tool,
+// its program fed in pieces.
+SimJob box_job(int64_t x0, int64_t y0, int64_t z0, int64_t x1, int64_t y1, int64_t pitch_nm, const char* tool);
+
+// A simulation with its memory.
+struct Engine {
+  std::vector<uint64_t> mem;
+  Simulation* sim = nullptr;
+  explicit Engine(const SimJob& j);
+  ~Engine() { dexmill::sim_destroy(sim); }
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+  // Feeds text in pieces of `piece` bytes, stepping with `b` between; the
+  // final state.
+  SimState run(const std::string& text, size_t piece, const dexmill::SimBudget& b = dexmill::SimBudget());
+  // Reads lines from `in`, stepping with `b`; with `sync_each_step` the cut
+  // so far is shown after every step (as a frame drawn there does). Then
+  // the end of the cut (finish). The final state.
+  SimState run(dexmill::LineInput* in, const dexmill::SimBudget& b, bool sync_each_step);
+  uint64_t grid_hash() const { return dexmill::grid_hash(sim->grid()); }
+};
+
+class Run {
+ public:
+  Run();
+  Run(const Run&) = delete;
+  Run& operator=(const Run&) = delete;
+
+  // -- the options (each as `dexmill run`'s of the same name)
+  Run& stock(const char* mm);             // --stock X0,Y0,Z0,X1,Y1,Z1
+  Run& stock_stl(const std::string& path);  // --stock FILE.stl: a pre-machined blank
+  Run& pitch(const char* mm);             // --pitch
+  Run& grid(int32_t nx, int32_t ny);      // --grid NXxNY
+  Run& tool(const char* spec);            // --tool
+  Run& tools(const std::string& path);    // --tools FILE
+  Run& inch();                            // --units inch
+  Run& material(const std::string& what);  // --material PRESET|FILE
+  Run& design(const std::string& what);   // --design FILE.stl|FILE.pgm|PART
+  Run& design_z(const char* low_mm, const char* high_mm);  // --design-z
+  Run& tolerance_box(const char* x0, const char* y0, const char* x1, const char* y1, const char* tol);
+  Run& check_all();                       // --check all
+  Run& table(const char* z_mm);           // --table Z
+  Run& fixture(const char* mm);           // --fixture X0,Y0,Z0,X1,Y1,Z1
+  // The rest: checks, stops, provenance, time model, straight into the job
+  // (the tools' own checks are added as the CLI adds them).
+  SimJob job;
+  // The simulation's hooks, when the test watches the records (or null).
+  dexmill::SimObserver* observer = nullptr;
+
+  // -- the run: the program cut to its end, stepping with `b` (and showing
+  // the cut after every step with `sync_each_step`); false when the job
+  // could not be set up (CHECKed).
+  bool program(const std::string& path, const dexmill::SimBudget& b = dexmill::SimBudget(), bool sync_each_step = false);
+  // The same for text, written to the temporary folder as sim-NAME.
+  bool text(const char* name, const std::string& text, const dexmill::SimBudget& b = dexmill::SimBudget(),
+            bool sync_each_step = false);
+
+  // -- what it gives
+  Simulation& sim() { return *engine_->sim; }
+  const dexmill::ProgramScan& scan() const { return *scan_; }
+  const dexmill::GridPlan& plan() const { return job.plan; }
+  uint32_t scan_errors() const { return scan_errors_; }
+  uint32_t scan_warnings() const { return scan_warnings_; }
+  uint64_t grid_hash() const { return engine_->grid_hash(); }
+  // The material removed, as the report writes it ("1090.985").
+  std::string removed_mm3();
+  // Kept safety events of one kind.
+  std::vector<dexmill::SafetyEvent> events(dexmill::SafetyKind k);
+  // A safety event's message, as the warning and the report give it.
+  std::string message(const dexmill::SafetyEvent& e);
+  // Kept violations of one rule, and one's message.
+  std::vector<dexmill::ProcessViolation> violations(dexmill::ProcessRule r);
+  std::string message(const dexmill::ProcessViolation& v);
+  // The report's assessment object against the design (its text, from its
+  // key to the line before the timing).
+  std::string assessment();
+
+ private:
+  // The options above, as the CLI's readers of the inputs take them.
+  std::unique_ptr<dexmill::cli::RunOptions> o_;
+  std::unique_ptr<dexmill::ToolTableFile> table_;
+  std::unique_ptr<dexmill::ProgramScan> scan_;
+  std::vector<dexmill::Tool> tools_;
+  dexmill::cli::RunDesign design_;
+  dexmill::cli::RunMaterial material_;
+  std::vector<dexmill::TriangleNm> blank_;
+  std::unique_ptr<Engine> engine_;
+  uint32_t scan_errors_ = 0, scan_warnings_ = 0;
+};
+
+}  // namespace sim_test
+
+#endif
