@@ -86,7 +86,9 @@ SimState Engine::run(const std::string& text, size_t piece, const SimBudget& b) 
   return s;
 }
 
-SimState Engine::run(LineInput* in, const SimBudget& b, bool sync_each_step) {
+SimState Engine::run(LineInput* in, const SimBudget& b, bool sync_each_step) { return run_lines(sim, in, b, sync_each_step); }
+
+SimState run_lines(Simulation* sim, LineInput* in, const SimBudget& b, bool sync_each_step) {
   sim->read_from(in);
   while (sim->step(b) == SimState::kReady)
     if (sync_each_step) sim->sync();
@@ -94,56 +96,43 @@ SimState Engine::run(LineInput* in, const SimBudget& b, bool sync_each_step) {
   return sim->state();
 }
 
-namespace {
-
-// The first pass's diagnostics: counted, and the first error's line (where
-// the cut stops, as `dexmill run` stops it).
-struct ScanMessages final : GcodeMessages {
-  uint32_t first_error_line = 0;
-  void error(const GcodeDiag& d) override {
-    if (!errors_++) first_error_line = d.line;
-  }
-  void warning(const GcodeDiag&) override { ++warnings_; }
-};
-
-}  // namespace
-
-Run::Run() : o_(new cli::RunOptions()) { o_->tool = sim_test::tool("flat:6"); }
+Run::Run() { o.job.tool = sim_test::tool("flat:6"); }
 
 Run& Run::stock(const char* mm) {
   const StockBox b = stock_box(mm);
   const int64_t v[6] = {b.lo.x_nm, b.lo.y_nm, b.lo.z_nm, b.hi.x_nm, b.hi.y_nm, b.hi.z_nm};
-  for (int k = 0; k < 6; ++k) o_->stock_nm[k] = v[k];
-  o_->have_stock = true;
+  for (int k = 0; k < 6; ++k) o.job.stock_nm[k] = v[k];
+  o.job.have_stock = true;
   return *this;
 }
 Run& Run::stock_stl(const std::string& path) {
-  o_->stock_stl = path;
+  o.job.stock_stl = path;
   return *this;
 }
 Run& Run::pitch(const char* mm) {
-  o_->pitch_nm = nm(mm);
+  o.job.pitch_nm = nm(mm);
   return *this;
 }
 Run& Run::grid(int32_t nx, int32_t ny) {
-  o_->grid_nx = nx;
-  o_->grid_ny = ny;
+  o.job.grid_nx = nx;
+  o.job.grid_ny = ny;
   return *this;
 }
 Run& Run::tool(const char* spec) {
-  o_->tool = sim_test::tool(spec);
+  o.job.tool = sim_test::tool(spec);
+  o.job.tool_text = spec;
   return *this;
 }
 Run& Run::tools(const std::string& path) {
-  o_->read.tools_file = path;
+  o.job.read.tools_file = path;
   return *this;
 }
 Run& Run::inch() {
-  o_->read.inch = true;
+  o.job.read.inch = true;
   return *this;
 }
 Run& Run::material(const std::string& what) {
-  o_->material = what;
+  o.job.material = what;
   return *this;
 }
 Run& Run::design(const std::string& what) {
@@ -152,99 +141,51 @@ Run& Run::design(const std::string& what) {
     const size_t n = std::strlen(e);
     return what.size() >= n && what.compare(what.size() - n, n, e) == 0;
   };
-  o_->design_pgm = ends(".pgm");
-  o_->builtin = ends(".stl") || ends(".pgm") ? nullptr : builtin_design_find(what.c_str());
-  CHECK(ends(".stl") || ends(".pgm") || o_->builtin);
-  o_->design = o_->builtin ? "(built-in part " + what + ")" : what;
+  o.job.design_pgm = ends(".pgm");
+  o.job.builtin = ends(".stl") || ends(".pgm") ? nullptr : builtin_design_find(what.c_str());
+  CHECK(ends(".stl") || ends(".pgm") || o.job.builtin);
+  o.job.design = o.job.builtin ? "(built-in part " + what + ")" : what;
   return *this;
 }
 Run& Run::design_z(const char* low_mm, const char* high_mm) {
-  o_->design_z_nm[0] = nm(low_mm);
-  o_->design_z_nm[1] = nm(high_mm);
-  o_->have_design_z = true;
+  o.job.design_z_nm[0] = nm(low_mm);
+  o.job.design_z_nm[1] = nm(high_mm);
+  o.job.have_design_z = true;
   return *this;
 }
 Run& Run::tolerance_box(const char* x0, const char* y0, const char* x1, const char* y1, const char* tol) {
-  o_->tolerance_boxes.push_back(ToleranceBox{nm(x0), nm(y0), nm(x1), nm(y1), nm(tol)});
+  o.job.tolerance_boxes.push_back(ToleranceBox{nm(x0), nm(y0), nm(x1), nm(y1), nm(tol)});
   return *this;
 }
-
 Run& Run::check_all() {
-  job.checks.rapid = job.checks.spindle = job.checks.below = true;
-  job.checks.shank = job.checks.holder = job.checks.plunge = true;
+  cli::SafetyChoice& c = o.job.checks;
+  c.rapid = c.spindle = c.below = c.shank = c.holder = c.plunge = true;
   return *this;
 }
 Run& Run::table(const char* z_mm) {
-  job.checks.has_table = true;
-  job.checks.table_nm = nm(z_mm);
+  o.job.checks.has_table = true;
+  o.job.checks.table_nm = nm(z_mm);
   return *this;
 }
 Run& Run::fixture(const char* mm) {
   const StockBox b = stock_box(mm);
-  o_->checks.fixtures.push_back(BoxNm{b.lo, b.hi});
+  o.job.checks.fixtures.push_back(BoxNm{b.lo, b.hi});
+  return *this;
+}
+Run& Run::provenance() {
+  o.view.color = cli::ViewOptions::Color::kTool;  // what turns it on in `dexmill run`
   return *this;
 }
 
 bool Run::program(const std::string& path, const SimBudget& b, bool sync_each_step) {
-  const cli::RunOptions& o = *o_;
-  job.tool = o.tool;
-  job.inch = o.read.inch;
-  if (!o.read.tools_file.empty()) {
-    table_.reset(new ToolTableFile());
-    if (!CHECK(table_->load(o.read.tools_file.c_str(), o.read.inch) == ToolTableFile::Load::kOk)) return false;
-    job.library = table_.get();
-    job.offsets = table_.get();
-  }
-  // The first pass: the tools, the extents, the first bad block.
-  scan_.reset(new ProgramScan(job));
-  {
-    GcodeFile file;
-    if (!CHECK(file.open(path.c_str()))) return false;
-    ScanMessages msgs;
-    const std::unique_ptr<ProgramMemory> mem(new ProgramMemory());
-    scan_->run(&file, &msgs, mem.get());
-    scan_errors_ = msgs.errors() + (scan_->bad_tool_line ? 1 : 0);
-    scan_warnings_ = msgs.warnings();
-    job.stop_line = msgs.errors() ? msgs.first_error_line : scan_->bad_tool_line;
-  }
-  // The stock and its grid.
-  StockBox box;
-  if (!o.stock_stl.empty()) {
-    if (!CHECK_EQ(cli::read_stock_stl(o.stock_stl, &blank_, &box), int(cli::kExitOk))) return false;
-  } else if (o.have_stock) {
-    box = StockBox{PointNm{o.stock_nm[0], o.stock_nm[1], o.stock_nm[2]}, PointNm{o.stock_nm[3], o.stock_nm[4], o.stock_nm[5]}};
-  } else {
-    box = default_stock(scan_->summary, scan_->max_radius_nm);
-  }
-  int64_t pitch_nm = o.pitch_nm;
-  if (!pitch_nm && !o.grid_nx) pitch_nm = default_pitch_nm(box, scan_->smallest_diameter_nm());
-  if (!CHECK(plan_grid(box, o.grid_nx, o.grid_ny, pitch_nm, &job.plan) == PlanError::kOk)) return false;
-  // The tools the program loads, the observers its inputs ask for.
-  tools_.assign(scan_->tools + 1, scan_->tools + scan_->ntools);
-  job.tools = tools_.data();
-  job.ntools = static_cast<int>(tools_.size());
-  if (!o.design.empty()) {
-    if (!CHECK_EQ(cli::load_design(o, job.plan, path, &design_), int(cli::kExitOk))) return false;
-    job.design = &design_.grid;
-    job.assess = design_.opt;
-  }
-  job.checks.fixtures = o.checks.fixtures.data();
-  job.checks.nfixtures = static_cast<int>(o.checks.fixtures.size());
-  sim_checks_for_tools(&job.checks, scan_->tools, scan_->ntools);
-  if (!o.material.empty()) {
-    const BoxNm stock{job.plan.stock.lo, job.plan.stock.hi};
-    if (!CHECK_EQ(cli::material_start(&material_, o.material, stock), int(cli::kExitOk))) return false;
-    job.material = material_.comp.get();
-  }
-  // The cut.
-  engine_.reset(new Engine(job));
-  if (!engine_->sim) return false;
-  if (!blank_.empty() && !CHECK_EQ(cli::carve_stock(&sim().grid(), job.plan, blank_), int(cli::kExitOk))) return false;
+  o.job.file = path;
+  setup_.reset(new cli::RunSetup());
+  setup_->print = false;
+  if (!CHECK_EQ(cli::run_setup(&o, setup_.get()), int(cli::kExitOk))) return false;
   sim().set_observer(observer);
-  sim().start();
   GcodeFile in;
-  if (!CHECK(in.open(path.c_str()))) return false;
-  engine_->run(&in, b, sync_each_step);
+  if (!CHECK(in.open(setup_->read_path.c_str()))) return false;
+  run_lines(&sim(), &in, b, sync_each_step);
   return true;
 }
 
@@ -281,17 +222,17 @@ std::vector<ProcessViolation> Run::violations(ProcessRule r) {
   return out;
 }
 
-std::string Run::message(const ProcessViolation& v) { return cli::process_violation_text(v, *material_.comp); }
+std::string Run::message(const ProcessViolation& v) { return cli::process_violation_text(v, *setup_->material.comp); }
 
 std::string Run::assessment() {
   const GougeWatch* w = sim().gouges();
   if (!CHECK(w != nullptr)) return "";
-  cli::assess_design(*w, sim().grid(), &design_);
+  cli::assess_design(*w, sim().grid(), &setup_->design);
   RunReport rep;
   rep.lsb_nm = sim().grid().lsb_nm;
   rep.pitch_nm = sim().grid().pitch_nm;
   rep.have_assessment = true;
-  rep.assessment = design_.report;
+  rep.assessment = setup_->design.report;
   return run_cli::assessment_of(report_json_text(rep));
 }
 

@@ -4,13 +4,10 @@
 // Engine: a simulation over its memory, for a job the test builds itself,
 // with text fed in pieces and budgets of any size.
 //
-// Run: a job set up as `dexmill run` sets one up from its options (the same
-// defaults: a flat:6, the stock from the program's extents, the pitch from
-// its smallest tool), then the program cut to its end: the first pass over
-// the program (core/sim/scan.h) gives the tools, the stock and pitch when
-// the test gives none, and the first bad block, where the cut stops; the
-// inputs the options name (a tool table, a material, a design part, an STL
-// blank) are read by the same readers as the CLI's. What it found is read
+// Run: a job set up from options by `dexmill run`'s own set-up
+// (tools/run_setup.h: its defaults, the first pass's tools, stock, pitch and
+// first bad block, the inputs read by the CLI's readers), then the program
+// cut to its end. What it found is read
 // from the simulation (safety(), gouges(), process(), provenance()), and the
 // report's figures of an assessment are the report's own text.
 #ifndef DEXMILL_TESTS_SIM_UTIL_H
@@ -24,8 +21,8 @@
 #include "core/sim/scan.h"
 #include "core/sim/simulation.h"
 #include "platform/tool_table.h"
-#include "tools/run_assess.h"
-#include "tools/run_material.h"
+#include "tools/run_options.h"
+#include "tools/run_setup.h"
 
 namespace sim_test {
 
@@ -64,13 +61,17 @@ struct Engine {
   uint64_t grid_hash() const { return dexmill::grid_hash(sim->grid()); }
 };
 
+// Reads lines from `in` into sim, stepping with `b` (and showing the cut
+// after every step with `sync_each_step`), then finishes; the final state.
+SimState run_lines(Simulation* sim, dexmill::LineInput* in, const dexmill::SimBudget& b, bool sync_each_step);
+
 class Run {
  public:
   Run();
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
 
-  // -- the options (each as `dexmill run`'s of the same name)
+  // -- the options (each as `dexmill run`'s of the same name; the rest in o)
   Run& stock(const char* mm);             // --stock X0,Y0,Z0,X1,Y1,Z1
   Run& stock_stl(const std::string& path);  // --stock FILE.stl: a pre-machined blank
   Run& pitch(const char* mm);             // --pitch
@@ -85,9 +86,10 @@ class Run {
   Run& check_all();                       // --check all
   Run& table(const char* z_mm);           // --table Z
   Run& fixture(const char* mm);           // --fixture X0,Y0,Z0,X1,Y1,Z1
-  // The rest: checks, stops, provenance, time model, straight into the job
-  // (the tools' own checks are added as the CLI adds them).
-  SimJob job;
+  Run& provenance();                      // --color tool: which tool cut each column
+  // The options, as `dexmill run` parses them into (the rest: checks, stops,
+  // time model; the tools' own checks are added as the CLI adds them).
+  dexmill::cli::RunOptions o;
   // The simulation's hooks, when the test watches the records (or null).
   dexmill::SimObserver* observer = nullptr;
 
@@ -100,12 +102,13 @@ class Run {
             bool sync_each_step = false);
 
   // -- what it gives
-  Simulation& sim() { return *engine_->sim; }
-  const dexmill::ProgramScan& scan() const { return *scan_; }
-  const dexmill::GridPlan& plan() const { return job.plan; }
-  uint32_t scan_errors() const { return scan_errors_; }
-  uint32_t scan_warnings() const { return scan_warnings_; }
-  uint64_t grid_hash() const { return engine_->grid_hash(); }
+  Simulation& sim() { return *setup_->sim; }
+  const SimJob& job() const { return setup_->job; }
+  const dexmill::ProgramScan& scan() const { return *setup_->scan; }
+  const dexmill::GridPlan& plan() const { return setup_->job.plan; }
+  uint32_t scan_errors() const { return setup_->scan_errors; }
+  uint32_t scan_warnings() const { return setup_->scan_warnings; }
+  uint64_t grid_hash() const { return dexmill::grid_hash(setup_->sim->grid()); }
   // The material removed, as the report writes it ("1090.985").
   std::string removed_mm3();
   // Kept safety events of one kind.
@@ -120,16 +123,7 @@ class Run {
   std::string assessment();
 
  private:
-  // The options above, as the CLI's readers of the inputs take them.
-  std::unique_ptr<dexmill::cli::RunOptions> o_;
-  std::unique_ptr<dexmill::ToolTableFile> table_;
-  std::unique_ptr<dexmill::ProgramScan> scan_;
-  std::vector<dexmill::Tool> tools_;
-  dexmill::cli::RunDesign design_;
-  dexmill::cli::RunMaterial material_;
-  std::vector<dexmill::TriangleNm> blank_;
-  std::unique_ptr<Engine> engine_;
-  uint32_t scan_errors_ = 0, scan_warnings_ = 0;
+  std::unique_ptr<dexmill::cli::RunSetup> setup_;
 };
 
 }  // namespace sim_test

@@ -65,7 +65,7 @@ TEST(sim_run_rapid_removal_does_not_depend_on_an_s_word) {
   for (int k = 0; k < 2; ++k) {
     sim_test::Run r;
     r.stock("-5,-5,-5,30,10,0").tool("flat:6").pitch("0.1");
-    r.job.checks.rapid = true;
+    r.o.job.checks.rapid = true;
     CHECK(r.text(k ? "s_word.ngc" : "no_s_word.ngc", programs[k], line));
     const DexelGrid<height_t>& g = r.sim().grid();
     vol[k] = volume_mm3_text(r.sim().safety()->rapid_removed_lsb, g.lsb_nm, g.pitch_nm);

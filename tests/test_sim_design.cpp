@@ -90,7 +90,7 @@ TEST(sim_gouges_are_traced_to_their_line) {
   // removed than the whole run).
   Run stopped;
   against_design(&stopped);
-  stopped.job.stop_at_gouge = true;
+  stopped.o.job.stop_at_gouge = true;
   CHECK(stopped.program(run_file("gouge_one.ngc")));
   CHECK(stopped.sim().stop_reason() == SimStop::kGouge);
   CHECK_EQ(stopped.sim().stop_line(), 7u);

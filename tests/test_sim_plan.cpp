@@ -85,8 +85,8 @@ TEST(sim_rapid_rate_and_acceleration_set_the_time_estimate) {
   } cases[] = {{5000, 0, 1200}, {10000, 0, 600}, {5000, 100, 2033}, {10000, 100, 2000}};
   for (const Case& c : cases) {
     Run r;
-    r.job.time.rapid_nm_per_min = c.rapid_mm_per_min * kNmPerMm;
-    r.job.time.accel_nm_per_s2 = c.accel_mm_per_s2 * kNmPerMm;
+    r.o.job.rapid_nm_per_min = c.rapid_mm_per_min * kNmPerMm;
+    r.o.job.accel_nm_per_s2 = c.accel_mm_per_s2 * kNmPerMm;
     CHECK(r.text("rapid.ngc", prog));
     CHECK_EQ(ms(r.scan().summary.estimated_time_us()), c.want_ms);
     CHECK_EQ(r.sim().time().estimated_time_us(), r.scan().summary.estimated_time_us());

@@ -31,7 +31,7 @@ uint8_t class_at(Run& r, int64_t x_mm, int64_t y_mm) {
 
 bool cut(Run* r, const std::string& table, const SimBudget& b, bool sync_each_step) {
   r->stock("0,0,-10,40,40,0").pitch("0.25").tools(table);
-  r->job.provenance = true;
+  r->provenance();
   return r->text("two_tools.ngc", kTwoTools, b, sync_each_step);
 }
 

@@ -19,12 +19,12 @@ TEST(sim_partial_cut_is_the_program_up_to_its_bad_block) {
   Run part;
   CHECK(part.stock(stock).program(run_file("bad_word.ngc")));
   CHECK_EQ(part.scan_errors(), 1u);
-  CHECK_EQ(part.job.stop_line, 4u);
+  CHECK_EQ(part.job().stop_line, 4u);
   CHECK_GT(part.sim().removed_lsb(), uint64_t{0});  // line 3 cut
   // The same cut as the program without its bad block and what follows.
   Run good;
   CHECK(good.stock(stock).text("good3.ngc", "G21 G90\nG0 Z5\nG1 X10 Y10 Z-1 F300\n"));
-  CHECK_EQ(good.job.stop_line, 0u);
+  CHECK_EQ(good.job().stop_line, 0u);
   CHECK_EQ(part.grid_hash(), good.grid_hash());
 }
 
@@ -33,7 +33,7 @@ TEST(sim_tool_the_table_lacks_stops_the_cut_at_its_line) {
   CHECK(r.tools(run_file("tools.tbl")).program(run_file("unknown_tool.ngc")));
   CHECK_EQ(r.scan().bad_tool_line, 4u);
   CHECK_EQ(r.scan().bad_tool, 7);
-  CHECK_EQ(r.job.stop_line, 4u);
+  CHECK_EQ(r.job().stop_line, 4u);
   CHECK(r.sim().stop_reason() == SimStop::kInputError);
   CHECK_EQ(r.sim().stop_line(), 4u);
 }

@@ -128,8 +128,8 @@ TEST(sim_safety_end_cap_is_charged_to_the_move_that_made_it) {
 TEST(sim_safety_stops_at_the_collision) {
   Run r;
   small_block(&r);
-  r.job.checks.rapid = true;
-  r.job.stop_at_collision = true;
+  r.o.job.checks.rapid = true;
+  r.o.job.stop_at_collision = true;
   CHECK(r.text("safety_bad.ngc", kBad));
   CHECK(r.sim().stop_reason() == SimStop::kCollision);
   CHECK_EQ(r.sim().stop_line(), 6u);
@@ -211,7 +211,7 @@ TEST(sim_safety_fixtures_are_never_entered) {
   // Stopping at collisions stops there.
   Run stop;
   block(&stop, "ball:6");
-  stop.job.stop_at_collision = true;
+  stop.o.job.stop_at_collision = true;
   CHECK(stop.fixture("42,10,-30,50,30,3").text("fixture.ngc", prog));
   CHECK(stop.sim().stop_reason() == SimStop::kCollision);
   CHECK_EQ(stop.sim().stop_line(), 7u);
@@ -243,7 +243,7 @@ TEST(sim_safety_findings_past_the_list_are_counted_once_each) {
   }
   text += "G0 Z5\nM2\n";
   Run r;
-  r.job.checks.rapid = true;
+  r.o.job.checks.rapid = true;
   CHECK(r.stock("0,0,-30,40,40,0").pitch("0.2").text("many.ngc", text));
   CHECK_EQ(total(r), uint64_t{70});
   CHECK_EQ(r.sim().safety()->nevents, kSafetyEventsMax);

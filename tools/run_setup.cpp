@@ -1,0 +1,232 @@
+// The set-up of `dexmill run`; see run_setup.h.
+#include "tools/run_setup.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "core/tool/spec.h"
+#include "platform/clock.h"
+#include "platform/frame_files.h"
+#include "tools/cli.h"
+#include "tools/demo_program.h"
+#include "tools/run_colours.h"
+#include "tools/run_demo.h"
+#include "tools/run_safety.h"
+#include "tools/run_scan.h"
+#include "tools/run_stock.h"
+#include "tools/run_tool_table.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// The demo's defaults, the outputs checked, the program opened, the frame
+// folder made and emptied: before anything long happens.
+int prepare(RunOptions* o, RunSetup* run) {
+  std::string err;
+  run->demo = o->job.file.empty();
+  run->read_path = run->shown_name = o->job.file;
+  if (run->demo) {
+    if (const int code = demo_defaults(o)) return code;
+    run->read_path = run->shown_name = kDemoProgramPath;
+  }
+  if (const int code = check_outputs(o->out, {o->job.file, o->job.read.tools_file, o->job.design, o->job.stock_stl}, &run->formats))
+    return code;
+  if (!run->demo) {
+    if (o->job.file == "-") run->shown_name = "<stdin>";
+    if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
+    if (!run->input.open(o->job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+    run->read_path = run->input.read_path();
+  }
+  if (o->out.frames_dir.empty()) return kExitOk;
+  uint32_t removed = 0;
+  if (!make_dirs(o->out.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (access(o->out.frames_dir.c_str(), W_OK) != 0)
+    return fail(kExitIo, "cannot write frames into '%s': %s", o->out.frames_dir.c_str(), std::strerror(errno));
+  if (!remove_old_frames(o->out.frames_dir, &removed, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (removed && !o->view.quiet && !run->demo)
+    std::fprintf(stderr, "dexmill: removed %u frames of an earlier run from '%s'\n", removed, o->out.frames_dir.c_str());
+  return kExitOk;
+}
+
+// The tool table (or the demo's) and the library T/M6 pick from.
+int load_tools(const RunOptions& o, RunSetup* run) {
+  run->have_table = !o.job.read.tools_file.empty() || run->demo;
+  if (!o.job.read.tools_file.empty()) {
+    if (const int code = load_tool_table(o.job.read.tools_file, o.job.read.inch, &run->table)) return code;
+  } else if (run->demo) {
+    const char* t = demo_tool_table();
+    if (run->table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
+      return fail(kExitInput, "%s", run->table.message().c_str());
+  }
+  for (const std::string& w : run->table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
+  run->single.reset(new SingleToolLibrary(o.job.tool));
+  run->lib = run->have_table ? static_cast<const ToolLibrary*>(&run->table) : run->single.get();
+  SimJob& j = run->job;
+  j.mode = o.job.mode;
+  j.tool = o.job.tool;
+  j.library = run->lib;
+  j.offsets = run->have_table ? static_cast<const ToolTable*>(&run->table) : run->single.get();
+  j.inch = o.job.read.inch;
+  j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
+  j.max_blocks = o.job.read.max_blocks;
+  j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  j.time.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  return kExitOk;
+}
+
+// The stock (an STL blank, the option's box, the demo's, or the program's
+// extents) and the grid that holds it.
+int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
+  RunReport& rep = run->rep;
+  StockBox stock;
+  if (!o.job.stock_stl.empty()) {
+    if (const int code = read_stock_stl(o.job.stock_stl, &run->blank, &stock)) return code;
+    rep.stock_source = "stl";
+  } else if (o.job.have_stock) {
+    stock = StockBox{PointNm{o.job.stock_nm[0], o.job.stock_nm[1], o.job.stock_nm[2]}, PointNm{o.job.stock_nm[3], o.job.stock_nm[4], o.job.stock_nm[5]}};
+    rep.stock_source = "option";
+  } else if (run->demo) {
+    stock = demo_stock_box();
+    rep.stock_source = "demo";
+  } else {
+    stock = default_stock(scan.summary, scan.max_radius_nm);
+    rep.stock_source = "program";
+  }
+  int64_t pitch_nm = o.job.pitch_nm;
+  if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
+  std::string err;
+  if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, &run->plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  // A tool narrower than the pitch may fall between the dexel axes and cut
+  // nothing: say so rather than show an untouched block.
+  for (int k = 0; k < scan.ntools; ++k)
+    if (scan.tools[k].diameter_nm < run->plan.geo.pitch_nm) {
+      char spec[kToolSpecTextMax];
+      tool_spec_format(scan.tools[k], spec, sizeof spec);
+      std::fprintf(stderr, "dexmill: warning: the tool %s is narrower than the grid's pitch (%s mm) and may cut nothing; "
+                   "give a finer --pitch\n", spec, nm_to_mm_text(run->plan.geo.pitch_nm, 4).c_str());
+      break;
+    }
+  const GridPlan& plan = run->plan;
+  rep.have_stock = true;
+  rep.stock_lo = plan.stock.lo;
+  rep.stock_hi = plan.stock.hi;
+  rep.nx = plan.geo.nx;
+  rep.ny = plan.geo.ny;
+  rep.pitch_nm = plan.geo.pitch_nm;
+  rep.lsb_nm = plan.geo.lsb_nm;
+  return kExitOk;
+}
+
+// The engine's message for a job it cannot set up.
+int setup_failed(const SimSetup& why, const RunOptions& o, const RunSetup& run) {
+  char spec[kToolSpecTextMax];
+  tool_spec_format(why.tool < 0 ? run.job.tool : run.job.tools[why.tool], spec, sizeof spec);
+  switch (why.error) {
+    case SimError::kToolTooWideStamp:
+      return fail(kExitUsage, "the tool %s spans more than %d dexels at this pitch; use a coarser --pitch or --mode sweep",
+                  spec, 2 * kCutterMaxReach + 1);
+    case SimError::kToolTooLargeSweep:
+      return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 268 mm)", spec);
+    case SimError::kToolInvalid:
+    case SimError::kToolCannotCut: return fail(kExitUsage, "the tool %s cannot cut this grid", o.job.tool_text.c_str());
+    case SimError::kFixturesOutside:
+      return fail(kExitUsage, "--fixture: the fixtures hold no dexel column of the stock's lattice, or span more than "
+                  "65535 of them");
+    case SimError::kFixturesTooLarge:
+      return fail(kExitUsage, "--fixture: the fixtures span more than 64 M dexel columns at this pitch; use a coarser --pitch");
+    default: return fail(kExitUsage, "the stock and grid give a geometry the dexel grid cannot hold");
+  }
+}
+
+// The job's observers from the options, the engine made over its memory,
+// the stock carved, the design and the views set up.
+int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
+  SimJob& j = run->job;
+  j.plan = run->plan;
+  run->tools.assign(scan.tools + 1, scan.tools + scan.ntools);
+  j.tools = run->tools.data();
+  j.ntools = static_cast<int>(run->tools.size());
+  if (!o.job.design.empty()) {  // before the cut: a bad file costs no simulation
+    if (const int code = load_design(o.job, run->plan, run->shown_name, &run->design)) return code;
+    j.design = &run->design.grid;
+    j.assess = run->design.opt;
+  }
+  j.checks = safety_checks(o.job.checks);
+  sim_checks_for_tools(&j.checks, scan.tools, scan.ntools);
+  if (!o.job.material.empty()) {
+    const BoxNm box{run->plan.stock.lo, run->plan.stock.hi};
+    if (const int code = material_start(&run->material, o.job.material, box)) return code;
+    j.material = run->material.comp.get();
+    if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+  }
+  j.provenance = o.view.color == ViewOptions::Color::kTool;
+  j.provenance_first_tool = kInitialToolNumber;
+  j.stop_at_gouge = o.job.stop_at_gouge;
+  j.stop_at_collision = o.job.stop_at_collision;
+  SimSetup why;
+  const size_t bytes = sim_required_bytes(j, &why);
+  if (!bytes) return setup_failed(why, o, *run);
+  run->memory.assign((bytes + 7) / 8, 0);
+  run->sim = sim_create(j, run->memory.data(), bytes, &why);
+  if (!run->sim) return setup_failed(why, o, *run);
+  if (!run->blank.empty()) {
+    const int code = carve_stock(&run->sim->grid(), run->plan, run->blank);
+    if (code != kExitOk) return code;
+  }
+  run->sim->start();
+  return kExitOk;
+}
+
+// The first pass and its verdict on the program: the report's program
+// part; a program with an input error is cut up to its first bad block (as
+// LinuxCNC's preview draws the path up to it), unless --strict.
+int first_pass(const RunOptions& o, RunSetup* run) {
+  RunReport& rep = run->rep;
+  rep.file = run->shown_name;
+  rep.units = o.job.read.inch ? "inch" : "mm";
+  rep.mode = o.job.mode == CutMode::kSweep ? "sweep" : "stamp";
+  rep.default_tool = o.job.tool_text;
+  rep.tool_table = run->demo && o.job.read.tools_file.empty() ? "(built-in demo table)" : o.job.read.tools_file;
+  rep.height_bits = DEXMILL_HEIGHT_BITS;
+  rep.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  rep.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  RunMessages msgs(run->shown_name, run->print);
+  GcodeNotes notes(run->shown_name.c_str(), run->print);
+  SimJob scan_job = run->job;
+  scan_job.notes = &notes;
+  run->scan.reset(new ProgramScan(scan_job));
+  run->want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
+  const double t0 = clock_now_s();
+  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table};
+  if (const int code = scan_pass(in, run->scan.get(), notes, run->want_path ? &run->path : nullptr, &msgs, &rep))
+    return code;
+  rep.timing.emplace_back("scan", clock_now_s() - t0);
+  run->scan_errors = msgs.errors();
+  run->scan_warnings = msgs.warnings();
+  if (!msgs.errors()) return kExitOk;
+  if (o.job.strict) {
+    run->refused = true;
+    return kExitInput;
+  }
+  run->job.stop_line = rep.errors.front().line;
+  rep.stopped_reason = "error";
+  rep.stopped_line = run->job.stop_line;
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_setup(RunOptions* o, RunSetup* s) {
+  if (const int code = prepare(o, s)) return code;
+  if (const int code = load_tools(*o, s)) return code;
+  if (const int code = first_pass(*o, s)) return code;
+  if (const int code = plan_stock(*o, *s->scan, s)) return code;
+  return start_engine(*o, *s->scan, s);
+}
+
+}  // namespace cli
+}  // namespace dexmill
