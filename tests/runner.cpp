@@ -1,9 +1,15 @@
 // main() of the test binary: runs every registered case (or those whose name
-// contains one of the arguments) and prints `N passed, M failed`.
+// contains one of the arguments; with `--jobs N` in N processes) and prints
+// `N passed, M failed`.
 #include "tests/runner.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace t {
 namespace {
@@ -42,22 +48,79 @@ const char* tests_dir() {
 
 }  // namespace t
 
+namespace {
+
+// Runs case c; true when it passed.
+bool run_case(t::Case* c) {
+  t::g_case_failures = 0;
+  c->fn();
+  if (!t::g_case_failures) return true;
+  std::printf("FAILED %s (%s:%d), %d check(s)\n", c->name, c->file, c->line, t::g_case_failures);
+  return false;
+}
+
+// With --jobs N (N > 1) the cases run in N worker processes, which take
+// the next case from a pipe as they become free (the oracle tests take
+// seconds, most cases milliseconds); each worker's output is line by line,
+// and its counts come back on a second pipe. The cases share nothing but
+// the files they name (each process has its own temporary folder).
+void run_parallel(const std::vector<t::Case*>& cases, int jobs, int* passed, int* failed) {
+  int work[2], counts[2];
+  if (pipe(work) != 0 || pipe(counts) != 0) {
+    std::perror("runner: pipe");
+    std::exit(2);
+  }
+  for (uint32_t k = 0; k < cases.size(); ++k)
+    if (write(work[1], &k, sizeof k) != static_cast<ssize_t>(sizeof k)) std::exit(2);  // within the pipe's buffer
+  close(work[1]);
+  std::fflush(stdout);
+  for (int w = 0; w < jobs; ++w) {
+    if (fork() != 0) continue;
+    setvbuf(stdout, nullptr, _IOLBF, 0);
+    int32_t mine[2] = {0, 0};
+    uint32_t k;
+    while (read(work[0], &k, sizeof k) == static_cast<ssize_t>(sizeof k)) ++mine[run_case(cases[k]) ? 0 : 1];
+    std::fflush(stdout);
+    if (write(counts[1], mine, sizeof mine) != static_cast<ssize_t>(sizeof mine)) _exit(2);
+    _exit(0);
+  }
+  close(work[0]);
+  close(counts[1]);
+  int32_t got[2];
+  int reported = 0;
+  while (read(counts[0], got, sizeof got) == static_cast<ssize_t>(sizeof got)) {
+    *passed += got[0];
+    *failed += got[1];
+    ++reported;
+  }
+  int status = 0;
+  while (wait(&status) > 0) {
+  }
+  if (reported != jobs) {
+    std::printf("runner: %d of %d workers did not report (a case crashed one)\n", jobs - reported, jobs);
+    ++*failed;
+  }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  int passed = 0, failed = 0;
+  int passed = 0, failed = 0, jobs = 1;
+  std::vector<t::Case*> cases;
+  std::vector<const char*> names;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--jobs") && i + 1 < argc) jobs = std::atoi(argv[++i]);
+    else names.push_back(argv[i]);
+  }
   for (t::Case* c = t::g_head; c; c = c->next) {
-    if (argc > 1) {
-      bool match = false;
-      for (int i = 1; i < argc; ++i) match = match || std::strstr(c->name, argv[i]);
-      if (!match) continue;
-    }
-    t::g_case_failures = 0;
-    c->fn();
-    if (t::g_case_failures) {
-      ++failed;
-      std::printf("FAILED %s (%s:%d), %d check(s)\n", c->name, c->file, c->line, t::g_case_failures);
-    } else {
-      ++passed;
-    }
+    bool match = names.empty();
+    for (const char* n : names) match = match || std::strstr(c->name, n);
+    if (match) cases.push_back(c);
+  }
+  if (jobs > 1) {
+    run_parallel(cases, jobs, &passed, &failed);
+  } else {
+    for (t::Case* c : cases) ++(run_case(c) ? passed : failed);
   }
   std::printf("%d passed, %d failed\n", passed, failed);
   return failed ? 1 : 0;
