@@ -45,7 +45,7 @@ endif
 # core/ has one folder per pipeline stage (README: "Where things live").
 rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
 CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
-DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))
+DISPLAY_SRC  := $(sort $(call rwildcard,display,*.cpp))
 PLATFORM_SRC := $(sort $(wildcard platform/*.cpp))
 TOOLS_SRC    := $(sort $(filter-out tools/main.cpp,$(wildcard tools/*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
