@@ -148,6 +148,51 @@ TEST(api_runs_cut_as_the_engine_does) {
   CHECK_EQ(a.grid_hash(), want);
 }
 
+namespace {
+
+// A deadline that has passed after `left` records.
+struct Deadline {
+  int left = 0;
+  int asked = 0;
+};
+int32_t deadline_passed(void* ctx) {
+  Deadline* d = static_cast<Deadline*>(ctx);
+  ++d->asked;
+  return d->left-- <= 0 ? 1 : 0;
+}
+
+}  // namespace
+
+// The yield callback ends a step after the record it answers 1 to; the cut
+// is the same.
+TEST(api_yield_ends_a_step) {
+  const std::string prog = pocket_text();
+  Api a(pocket_job());
+  CHECK_EQ(dm_feed(a.sim, prog.data(), prog.size()), DM_OK);
+  CHECK_EQ(dm_end_input(a.sim), DM_OK);
+  Deadline d;
+  dm_budget b{};
+  b.yield = deadline_passed;
+  b.yield_ctx = &d;
+  int32_t state = DM_READY;
+  int steps = 0;
+  uint64_t most = 0, last = 0;
+  while (state == DM_READY && steps < 100000) {
+    d.left = 1;  // two records a step
+    CHECK_EQ(dm_step(a.sim, &b, &state), DM_OK);
+    dm_progress p;
+    CHECK_EQ(dm_get_progress(a.sim, &p), DM_OK);
+    most = std::max<uint64_t>(most, p.records - last);
+    last = p.records;
+    ++steps;
+  }
+  CHECK_EQ(state, DM_DONE);
+  CHECK_EQ(most, uint64_t{2});
+  CHECK(steps > 10);
+  CHECK(d.asked >= 2 * (steps - 1));
+  CHECK_EQ(a.grid_hash(), engine_hash(prog));
+}
+
 // What the API says about the cut: heights where the pocket was cut, the
 // volume it removed, where the tool ended.
 TEST(api_heights_volume_and_position) {
