@@ -8,6 +8,9 @@ namespace dexmill {
 
 namespace {
 
+// The renderer's defaults, as a constant (flash, not code that builds them).
+constexpr RenderOptions kViewOptions{};
+
 // A rectangle more to present: appended, or merged into the last one when
 // the list is full.
 void add_rect(RenderResult* res, const ScreenRect& r) {
@@ -52,7 +55,7 @@ void draw_legend(StockView* v, RenderResult* res) {
 }  // namespace
 
 size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height) {
-  return renderer_scratch_bytes(g, width, height, RenderOptions().zformat);
+  return renderer_scratch_bytes(g, width, height, kViewOptions.zformat);
 }
 
 Status stock_view_init(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam,
@@ -72,7 +75,7 @@ Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const Frame
   Renderer<height_t>* r = &v->r;
   const bool had_camera = r->fb.pixels != nullptr;
   const Camera keep = r->cam;
-  const Status s = renderer_init(r, g, fb, RenderOptions(), scratch, scratch_bytes);
+  const Status s = renderer_init(r, g, fb, kViewOptions, scratch, scratch_bytes);
   if (!ok(s)) return s;
   v->fb = fb;
   // Keep direction and zoom; refit only the target to the new aspect.
