@@ -4,6 +4,11 @@
 #   make run          build and run the built-in demo (writes out/)
 #   make test         build and run every test (SAN=1: under ASan+UBSan)
 #   make CXX=clang++  the same with clang
+#   make lib          build/libdexmill.a and .so (the C API, display/api/dexmill.h) and
+#                     build/libdexmill_io.a (image files, platform/dexmill_io.h)
+#   make install      PREFIX=/usr/local DESTDIR=...: the binary, the libraries, their
+#                     headers and pkg-config file, the man page, the Python wrapper;
+#                     make uninstall removes exactly those
 #   make GLFW=1       build/glfw/dexmill, with the live window of `dexmill run --window`
 #                     (libglfw3-dev: tools/scripts/install-deps.sh window); its own
 #                     build folder, so switching does not rebuild the rest
@@ -29,6 +34,11 @@ LDSAN    := -fsanitize=address,undefined
 endif
 # Rules of core/ and display/: integer only, no exceptions, no RTTI.
 INTFLAGS := -fno-exceptions -fno-rtti -include core/integer_only.h
+# core/ and display/ are compiled once for the binary, the tests and the
+# libraries: position independent (the shared library) and hidden but for
+# the C API's dm_ functions (display/api/dexmill.h DM_API). Not for the
+# embedded checks, which take INTFLAGS alone.
+PICFLAGS := -fPIC -fvisibility=hidden
 HOSTFLAGS :=
 LDFLAGS  += $(LDSAN)
 LDLIBS   ?=
@@ -45,7 +55,7 @@ endif
 # core/ has one folder per pipeline stage (README: "Where things live").
 rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
 CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
-DISPLAY_SRC  := $(sort $(wildcard display/*.cpp))
+DISPLAY_SRC  := $(sort $(call rwildcard,display,*.cpp))
 PLATFORM_SRC := $(sort $(wildcard platform/*.cpp))
 TOOLS_SRC    := $(sort $(filter-out tools/main.cpp,$(wildcard tools/*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
@@ -62,17 +72,20 @@ BIN      := $(BUILD)/dexmill
 TEST_BIN := $(BUILD)/dexmill_tests
 
 # Rebuild everything when the compiler or the flags change.
-FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(LDFLAGS) $(LDLIBS)
+FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(PICFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-headers check-poison check-layers check-function-length clean
+.PHONY: all run test test-unit check-headers check-poison check-layers check-function-length check-c-api check-lib \
+        test-embed test-python test-install lib install uninstall clean
 all: $(BIN)
 
 $(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
 $(BUILD)/obj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
-	$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS),$(HOSTFLAGS)) -c $< -o $@
+	$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS) $(PICFLAGS),$(HOSTFLAGS)) -c $< -o $@
+# The io header includes dexmill.h as an embedder's program does.
+$(BUILD)/obj/platform/dexmill_io.o: HOSTFLAGS += -Idisplay/api
 
 $(BIN): $(MAIN_OBJ) $(HOST_OBJ) $(INT_OBJ)
 	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
@@ -101,16 +114,102 @@ check-layers:
 check-function-length:
 	@tests/check_function_length.sh --self-test && tests/check_function_length.sh
 
+# The cases run in TEST_JOBS worker processes (tests/runner.cpp --jobs).
+TEST_JOBS ?= 2
 test-unit: $(TEST_BIN) $(BIN)
-	DEXMILL=$(abspath $(BIN)) $(TEST_BIN)
+	DEXMILL=$(abspath $(BIN)) $(TEST_BIN) --jobs $(TEST_JOBS)
 
-test: check-headers check-poison check-layers check-function-length test-unit
+test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit test-embed \
+      test-python test-install
 
 run: $(BIN)
 	$(BIN) run
 
 clean:
 	rm -rf build
+
+# ---- the library: the C API over core/ and display/ (display/api/dexmill.h) --
+# libdexmill.a and .so hold the same objects the binary links; the .so
+# exports the dm_ functions only. libdexmill_io.a is the platform's image
+# encoders behind platform/dexmill_io.h, with the one display object they
+# use, so it links beside either.
+API_VERSION := $(shell sed -n 's/^\#define DEXMILL_API_VERSION \([0-9]*\).*/\1/p' display/api/dexmill.h)
+API_CC   ?= $(if $(findstring clang,$(CXX)),clang,gcc)
+C99FLAGS := -std=c99 -Wall -Wextra -Werror -pedantic
+LIB_A    := $(BUILD)/libdexmill.a
+LIB_SO   := $(BUILD)/libdexmill.so
+LIB_IO   := $(BUILD)/libdexmill_io.a
+IO_OBJ   := $(call obj,platform/dexmill_io.cpp platform/image_file.cpp platform/ppm.cpp platform/png.cpp platform/pgm.cpp \
+              platform/read_file.cpp platform/deflate.cpp platform/output_file.cpp platform/process.cpp \
+              display/framebuffer.cpp)
+EMBED    := $(BUILD)/embed
+lib: $(LIB_A) $(LIB_SO) $(LIB_IO)
+$(LIB_A): $(INT_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+$(LIB_SO): $(INT_OBJ)
+	$(CXX) -shared $(LDFLAGS) $^ -o $@
+$(LIB_IO): $(IO_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+# The example embedder (tools/examples/embed.c), a C program on the libraries.
+$(EMBED): tools/examples/embed.c display/api/dexmill.h platform/dexmill_io.h $(LIB_A) $(LIB_IO) $(FLAGS_STAMP)
+	$(API_CC) $(C99FLAGS) -O2 -Idisplay/api -Iplatform $< $(LIB_IO) $(LIB_A) -lstdc++ $(LDSAN) -o $@
+
+# The C API header compiles as C99 (and as C++: check-headers).
+check-c-api:
+	@$(API_CC) $(C99FLAGS) -fsyntax-only -x c display/api/dexmill.h && \
+	  $(API_CC) $(C99FLAGS) -Idisplay/api -fsyntax-only -x c platform/dexmill_io.h && \
+	  echo "ok: dexmill.h and dexmill_io.h compile as C99"
+# The shared library exports the dm_ functions and nothing else.
+check-lib: $(LIB_SO)
+	@bad=$$(nm -D --defined-only $< | awk '{ print $$NF }' | grep -v -E '^(dm_|_init$$|_fini$$)'); \
+	  if [ -n "$$bad" ]; then echo "FAIL: $< exports more than dm_*:"; echo "$$bad" | head; exit 1; fi; \
+	  echo "ok: $< exports $$(nm -D --defined-only $< | grep -c ' dm_') dm_ functions and nothing else"
+# embed.c's frames are `dexmill run`'s, byte for byte.
+test-embed: $(EMBED) $(BIN)
+	tests/embed_check.sh $(abspath $(BIN)) $(abspath $(EMBED))
+# The Python wrapper over the shared library (not under the sanitizers: the
+# interpreter would have to load their runtime first).
+test-python: $(LIB_SO) $(BIN)
+	@if [ -n "$(SAN)" ]; then echo "skip: the Python wrapper under SAN"; else \
+	  DEXMILL_LIB=$(abspath $(LIB_SO)) DEXMILL=$(abspath $(BIN)) python3 tests/test_python_api.py; fi
+# make install into a temporary DESTDIR, an embedder built from what it
+# installed (pkg-config), make uninstall leaving nothing.
+test-install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1 $(EMBED)
+	@if [ -n "$(SAN)" ]; then echo "skip: the installed libraries under SAN"; else \
+	  tests/install_check.sh "$(MAKE)" $(API_CC) $(abspath $(EMBED)); fi
+
+# ---- make install / uninstall ------------------------------------------------
+# The Python wrapper goes to PREFIX/share/dexmill/python (add it to
+# PYTHONPATH); it finds PREFIX/lib/libdexmill.so from there.
+PREFIX   ?= /usr/local
+DESTDIR  ?=
+PYDIR    := share/dexmill/python
+INSTALLED := bin/dexmill lib/libdexmill.a lib/libdexmill.so lib/libdexmill_io.a include/dexmill.h \
+             include/dexmill_io.h lib/pkgconfig/dexmill.pc share/man/man1/dexmill.1 $(PYDIR)/dexmill.py
+# The man page: tools/man/dexmill.1 with the option lists `dexmill
+# --man-options` prints (roff) at its marker line; without that option the
+# marker line is left out.
+MAN_MARKER := ^\.\\" @OPTIONS@$$
+$(BUILD)/dexmill.1: tools/man/dexmill.1 $(BIN)
+	@if $(BIN) --man-options > $@.options 2>/dev/null; then \
+	  sed -e '/$(MAN_MARKER)/{r $@.options' -e 'd;}' $< > $@; \
+	else sed -e '/$(MAN_MARKER)/d' $< > $@; fi; rm -f $@.options
+install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include \
+	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/$(PYDIR)
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/dexmill
+	install -m 644 $(LIB_A) $(LIB_IO) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 display/api/dexmill.h platform/dexmill_io.h $(DESTDIR)$(PREFIX)/include/
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(API_VERSION)|' tools/pkgconfig/dexmill.pc.in \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/dexmill.pc
+	install -m 644 $(BUILD)/dexmill.1 $(DESTDIR)$(PREFIX)/share/man/man1/dexmill.1
+	install -m 644 tools/python/dexmill.py $(DESTDIR)$(PREFIX)/$(PYDIR)/dexmill.py
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(INSTALLED))
+	-rmdir $(DESTDIR)$(PREFIX)/$(PYDIR) $(DESTDIR)$(PREFIX)/share/dexmill 2>/dev/null
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 

@@ -47,6 +47,18 @@ void tri(RasterTarget* t, const View& v, const FixtureMesh& m, int a, int b, int
 
 }  // namespace
 
+BoxNm fixtures_box(BoxNm around, const BoxNm* boxes, int n) {
+  BoxNm b = around;
+  for (int k = 0; k < n; ++k) {
+    const BoxNm& f = boxes[k];
+    b.lo = PointNm{min_of(b.lo.x_nm, min_of(f.lo.x_nm, f.hi.x_nm)), min_of(b.lo.y_nm, min_of(f.lo.y_nm, f.hi.y_nm)),
+                   min_of(b.lo.z_nm, min_of(f.lo.z_nm, f.hi.z_nm))};
+    b.hi = PointNm{max_of(b.hi.x_nm, max_of(f.lo.x_nm, f.hi.x_nm)), max_of(b.hi.y_nm, max_of(f.lo.y_nm, f.hi.y_nm)),
+                   max_of(b.hi.z_nm, max_of(f.lo.z_nm, f.hi.z_nm))};
+  }
+  return b;
+}
+
 void fixture_light(const Lighting& l, FixtureShades* s) {
   for (int f = 0; f < kFixtureFaces; ++f) s->face[f] = shade_of_normal(l, kFaceNormals[f]);
 }

@@ -27,6 +27,10 @@ namespace dexmill {
 // Fixtures a renderer draws at most (display/render.h renderer_set_fixtures).
 constexpr int kFixturesMax = 8;
 
+// `around` widened to hold boxes[0, n) (lo and hi in either order on each
+// axis): the scene a renderer frames with its fixtures.
+BoxNm fixtures_box(BoxNm around, const BoxNm* boxes, int n);
+
 // Faces of a box, in this order: -x, +x, -y, +y, -z (bottom), +z (top).
 constexpr int kFixtureFaces = 6;
 

@@ -266,15 +266,7 @@ Status renderer_set_fixtures(Renderer<H>* r, const BoxNm* boxes, int n) {
   r->fixtures = n > 0 ? boxes : nullptr;
   r->nfixtures = min_of(n, kFixturesMax);
   // The scene's box, widened to hold every fixture drawn.
-  BoxNm& b = r->scene.box;
-  b = r->scene_bare;
-  for (int k = 0; k < r->nfixtures; ++k) {
-    const BoxNm& f = boxes[k];
-    b.lo = PointNm{min_of(b.lo.x_nm, min_of(f.lo.x_nm, f.hi.x_nm)), min_of(b.lo.y_nm, min_of(f.lo.y_nm, f.hi.y_nm)),
-                   min_of(b.lo.z_nm, min_of(f.lo.z_nm, f.hi.z_nm))};
-    b.hi = PointNm{max_of(b.hi.x_nm, max_of(f.lo.x_nm, f.hi.x_nm)), max_of(b.hi.y_nm, max_of(f.lo.y_nm, f.hi.y_nm)),
-                   max_of(b.hi.z_nm, max_of(f.lo.z_nm, f.hi.z_nm))};
-  }
+  r->scene.box = fixtures_box(r->scene_bare, boxes, r->nfixtures);
   r->need_full = true;
   return n > kFixturesMax ? Status::kBufferTooSmall : Status::kOk;
 }

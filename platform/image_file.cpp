@@ -18,13 +18,17 @@ const char* image_format_extension(ImageFormat f) {
   return "";
 }
 
-bool write_frame_image(const char* path, ImageFormat format, const FrameView& fb, char* err, std::size_t errn) {
-  if (format != ImageFormat::kPng) return write_ppm(path, fb, err, errn);
+void frame_png(const FrameView& fb, std::vector<uint8_t>* out) {
   std::vector<uint8_t> rgb(static_cast<std::size_t>(fb.width) * 3 * static_cast<std::size_t>(fb.height));
   for (int32_t y = 0; y < fb.height; ++y)
     frame_row_rgb(fb, y, rgb.data() + static_cast<std::size_t>(y) * 3 * static_cast<std::size_t>(fb.width));
+  png_encode_rgb8(rgb.data(), fb.width, fb.height, out);
+}
+
+bool write_frame_image(const char* path, ImageFormat format, const FrameView& fb, char* err, std::size_t errn) {
+  if (format != ImageFormat::kPng) return write_ppm(path, fb, err, errn);
   std::vector<uint8_t> png;
-  png_encode_rgb8(rgb.data(), fb.width, fb.height, &png);
+  frame_png(fb, &png);
   return write_output(path, png.data(), png.size(), err, errn);
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "display/framebuffer.h"
 
@@ -15,6 +16,9 @@ enum class ImageFormat : uint8_t { kPpm, kPgm, kPng };
 
 // The file name extension of a format, without the dot.
 const char* image_format_extension(ImageFormat f);
+
+// fb as a PNG file in memory (replacing *out).
+void frame_png(const FrameView& fb, std::vector<uint8_t>* out);
 
 // Writes fb as `path` in `format` (kPpm or kPng). On failure returns false
 // with a message in err.

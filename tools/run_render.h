@@ -1,8 +1,12 @@
-// One drawing of the simulation for `dexmill run`: a renderer
-// (display/render.h) with its memory, over a framebuffer view that a Screen
-// owns. Several can watch one grid (PPM frames at --size and a window at its
-// own size): each keeps the grid changes it has not drawn yet, since a
-// render consumes the grid's dirty rectangle.
+// One drawing of the simulation for `dexmill run`: the display's view of
+// the stock (display/stock_view.h: camera, tool, colours, legend, marks,
+// fixtures, path, the draw sequence) with the memory it needs, over a
+// framebuffer view that a Screen owns. Several can watch one grid (PPM
+// frames at --size and a window at its own size): each keeps the grid
+// changes it has not drawn yet, since a render consumes the grid's dirty
+// rectangle. What it adds to the view is hosted: the renderer's scratch,
+// and the legend's and marks' lists as std::string and std::vector, handed
+// to the view before each draw.
 #ifndef DEXMILL_TOOLS_RUN_RENDER_H
 #define DEXMILL_TOOLS_RUN_RENDER_H
 
@@ -16,20 +20,15 @@
 #include "core/tool/tool.h"
 #include "display/backplot.h"
 #include "display/legend.h"
-#include "display/marker.h"
 #include "display/overlay.h"
 #include "display/render.h"
+#include "display/stock_view.h"
 
 namespace dexmill {
 namespace cli {
 
 // The camera the options ask for: a preset, or azimuth and elevation.
-struct CameraChoice {
-  ViewPreset preset = ViewPreset::kIso;
-  bool angles = false;
-  uint32_t azimuth_bam = 0;
-  int32_t elevation_bam = 0;
-};
+using ::dexmill::CameraChoice;
 
 class RenderOutput {
  public:
@@ -58,7 +57,8 @@ class RenderOutput {
   // Points marked over every frame in `colour` (the gouges found so far in
   // red, the block a partial run stopped at in amber); kept by the caller.
   void add_marks(const std::vector<PointNm>* m, Rgb colour) { marks_.push_back(Marks{m, colour}); }
-  // Boxes drawn in every frame (--fixture; caller memory, kept by pointer).
+  // Boxes drawn in every frame (--fixture; caller memory, kept by pointer:
+  // the vector must not change while it is set).
   void set_fixtures(const std::vector<BoxNm>* f);
 
   // The toolpath drawn over every frame (display/backplot.h): path[0, *done)
@@ -66,13 +66,13 @@ class RenderOutput {
   void set_path(const std::vector<PathSegment>* path, const uint32_t* done);
   // Shows or hides the path (the live view's p key); the next draw is full.
   void set_path_visible(bool on);
-  bool path_visible() const { return path_ && path_on_; }
-  // Grid changes since the last call of take_dirty (every output gets them).
-  void note_dirty(const GridRect& r) { pending_.include(r); }
+  bool path_visible() const { return stock_view_path_visible(*v_); }
+  // A grid change to draw with the next frame (every output gets them).
+  void note_dirty(const GridRect& r) { stock_view_note(v_.get(), r); }
   // Draws what changed (everything after init, resize or a camera change).
   RenderResult draw(DexelGrid<height_t>* g, const CutterPose& pose);
 
-  const FrameView& view() const { return fb_; }
+  const FrameView& view() const { return v_->fb; }
   DepthView depth() const;
   // Draws with the scene frame and camera of `other` (a grid of the same
   // geometry): the two frames can be overlaid (display/overlay.h).
@@ -83,27 +83,21 @@ class RenderOutput {
   Camera initial_camera() const;
 
  private:
-  std::unique_ptr<Renderer<height_t>> r_;
+  std::unique_ptr<StockView> v_;
   std::vector<uint64_t> scratch_;
-  FrameView fb_;
-  CameraChoice choice_;
-  bool have_tool_ = false;
-  ToolProfile profile_{};
-  GridRect pending_ = GridRect::none();
-  const SurfaceColours* colours_ = nullptr;
   const Legend* legend_ = nullptr;
+  std::unique_ptr<ViewLegend> view_legend_;  // legend_ as the view draws it
   struct Marks {
     const std::vector<PointNm>* points;
     Rgb colour;
   };
   std::vector<Marks> marks_;
+  std::vector<ViewMarks> view_marks_;  // marks_ as the view draws them
   const std::vector<PathSegment>* path_ = nullptr;
   const uint32_t* path_done_ = nullptr;
-  uint32_t path_drawn_done_ = 0;  // *path_done_ when the path was last drawn
-  bool path_on_ = true;
-  const std::vector<BoxNm>* fixtures_ = nullptr;
 
-  void draw_path(RenderResult* res);
+  // The renderer's scratch for drawing g into fb (replaced).
+  void* scratch_for(const DexelGrid<height_t>& g, const FrameView& fb, size_t* bytes);
 };
 
 // Moves the grid's dirty rectangle into every output (then clears it).

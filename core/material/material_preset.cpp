@@ -144,13 +144,17 @@ Material material_granite(BoxNm stock) {
   return m;
 }
 
+int32_t material_preset_index(const char* name) {
+  for (int32_t k = 0; k < kPresetCount; ++k)
+    if (same_name(name, kPresets[k].name)) return k;
+  return -1;
+}
+
 bool material_preset(const char* name, BoxNm stock, StockComposition* out) {
-  for (const Preset& p : kPresets) {
-    // The presets fit the composition's capacities by construction, so a
-    // known name always builds.
-    if (same_name(name, p.name)) return p.build(stock, out);
-  }
-  return false;
+  // The presets fit the composition's capacities by construction, so a
+  // known name always builds.
+  const int32_t k = material_preset_index(name);
+  return k >= 0 && kPresets[k].build(stock, out);
 }
 
 int32_t material_preset_count() { return kPresetCount; }

@@ -26,6 +26,9 @@ namespace dexmill {
 // false (out untouched) for an unknown name.
 bool material_preset(const char* name, BoxNm stock, StockComposition* out);
 
+// The preset's place in the order above, -1 for an unknown name.
+int32_t material_preset_index(const char* name);
+
 // The preset names in the order above, for help texts: i in 0..count-1.
 int32_t material_preset_count();
 const char* material_preset_name(int32_t i);

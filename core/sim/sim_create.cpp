@@ -4,6 +4,7 @@
 
 #include "core/cut/sweep.h"
 #include "core/grid/volume.h"
+#include "core/sim/carver.h"
 #include "core/sim/simulation.h"
 #include "core/tool/cutter.h"
 
@@ -35,24 +36,6 @@ struct SimulationT<H>::Memory {
 };
 
 namespace {
-
-// Hands out 8-byte aligned pieces of a block (or only counts them, with no
-// block).
-class Carver {
- public:
-  explicit Carver(char* base) : base_(base) {}
-  template <class T>
-  T* take(size_t n) {
-    const size_t at = (used_ + 7) & ~size_t{7};
-    used_ = at + n * sizeof(T);
-    return base_ ? reinterpret_cast<T*>(base_ + at) : nullptr;
-  }
-  size_t used() const { return used_; }
-
- private:
-  char* base_;
-  size_t used_ = 0;
-};
 
 template <class H>
 DexelGrid<H> plan_grid_view(const GridPlan& plan) {

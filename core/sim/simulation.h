@@ -132,6 +132,10 @@ class SimulationT final : public CanonSink {
  public:
   // Bytes of memory a simulation of `job` needs (0 with *why set when the
   // job cannot be simulated: a tool too large, fixtures off the lattice...).
+  // It reads the job's values, its tools and fixtures and the design's
+  // geometry; of its other inputs (library, offsets, material, sinks) only
+  // whether they are given, so a front end may size a job before it has
+  // built them (the embedding API's dm_required_bytes).
   static size_t required_bytes(const SimJob& job, SimSetup* why = nullptr);
   // Sets a simulation up in mem (8-byte aligned, `bytes` of it): the stock
   // is filled (fill_stock), nothing is read yet. Null with *why on failure.

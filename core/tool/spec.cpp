@@ -189,15 +189,19 @@ ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
     const ToolSpecError e = parse_options(s + comma + 1, n - comma - 1, &t);
     if (e != ToolSpecError::kOk) return e;
   }
+  const ToolSpecError e = tool_spec_complete(&t);
+  if (e == ToolSpecError::kOk) *out = t;
+  return e;
+}
+
+ToolSpecError tool_spec_complete(Tool* t) {
   // Range checks before the length rule, which evaluates the profile.
-  if (t.diameter_nm < kNmPerUm || t.diameter_nm > 1000 * kNmPerMm || t.flute_length_nm > 10000 * kNmPerMm ||
-      t.stick_out_nm > 10000 * kNmPerMm)
+  if (t->diameter_nm < kNmPerUm || t->diameter_nm > 1000 * kNmPerMm || t->flute_length_nm > 10000 * kNmPerMm ||
+      t->stick_out_nm > 10000 * kNmPerMm)
     return ToolSpecError::kOutOfRange;
-  if (t.kind == ToolKind::kBullNose && t.corner_radius_nm > t.diameter_nm / 2) return ToolSpecError::kOutOfRange;
-  t.length_nm = tool_default_length_nm(t);
-  if (!ok(tool_check(t))) return ToolSpecError::kOutOfRange;
-  *out = t;
-  return ToolSpecError::kOk;
+  if (t->kind == ToolKind::kBullNose && t->corner_radius_nm > t->diameter_nm / 2) return ToolSpecError::kOutOfRange;
+  t->length_nm = tool_default_length_nm(*t);
+  return ok(tool_check(*t)) ? ToolSpecError::kOk : ToolSpecError::kOutOfRange;
 }
 
 size_t tool_spec_format(const Tool& t, char* buf, size_t n) {

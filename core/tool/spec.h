@@ -44,6 +44,11 @@ const char* tool_spec_message(ToolSpecError e);
 // Parses s[0, n). On success *out is a tool that passes tool_check.
 ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out);
 
+// A tool whose fields are set (the shape, the sizes, the options above)
+// made whole as a spec makes it: range checks, the stick-out rule, then
+// tool_check. kOk or kOutOfRange (t then undefined).
+ToolSpecError tool_spec_complete(Tool* t);
+
 // The stick-out: stick_out_nm when given, else the rule above, for a tool
 // whose other fields are set.
 int64_t tool_default_length_nm(const Tool& t);

@@ -1,0 +1,136 @@
+// The embedding API: a simulation drawn into the caller's framebuffer, as
+// `dexmill run` draws it (display/stock_view.h; dexmill.h).
+#include <new>
+
+#include "core/math/trig.h"
+#include "display/api/frame.h"
+#include "display/api/handles.h"
+
+using namespace dexmill;
+using namespace dexmill::api;
+
+static_assert(DM_RECTS_MAX == kMaxDirtyRects && DM_FRAME_MAX_SIDE == kFrameMaxSide, "the renderer's limits");
+
+namespace dexmill {
+namespace api {
+
+void ViewFan::tool_loaded(const Tool& t) {
+  current = t;
+  for (dm_view* v = first; v; v = v->next) stock_view_set_tool(&v->v, t);
+}
+
+void ViewFan::changed(const GridRect& r) {
+  for (dm_view* v = first; v; v = v->next) stock_view_note(&v->v, r);
+}
+
+}  // namespace api
+}  // namespace dexmill
+
+namespace {
+
+// The view's own part of its block; the renderer's scratch follows.
+constexpr size_t kViewHead = (sizeof(dm_view) + 7) & ~size_t{7};
+
+dm_status camera_of(const dm_camera* c, CameraChoice* out) {
+  CameraChoice ch;
+  if (c) {
+    if (c->preset < DM_VIEW_ISO || c->preset > DM_VIEW_RIGHT || c->elevation_mdeg < -90000 || c->elevation_mdeg > 90000)
+      return DM_E_ARGUMENT;
+    ch.preset = static_cast<ViewPreset>(c->preset);
+    ch.angles = c->angles != 0;
+    ch.azimuth_bam = bam_from_mdeg(c->azimuth_mdeg);
+    ch.elevation_bam = static_cast<int32_t>(bam_from_mdeg(c->elevation_mdeg));
+  }
+  *out = ch;
+  return DM_OK;
+}
+
+ScreenRect screen_rect(const dm_rect& r) { return ScreenRect{r.x0, r.y0, r.x1, r.y1}; }
+
+bool side_ok(int32_t n) { return n >= 1 && n <= kFrameMaxSide; }
+
+bool finished(const Simulation& s) {
+  return s.state() == SimState::kDone || s.state() == SimState::kStopped || s.state() == SimState::kIoError;
+}
+
+}  // namespace
+
+extern "C" {
+
+dm_status dm_view_bytes(const dm_sim* sim, int32_t width, int32_t height, size_t* bytes) {
+  if (!live(sim) || !bytes) return DM_E_ARGUMENT;
+  *bytes = 0;
+  if (!side_ok(width) || !side_ok(height)) return DM_E_FRAME;
+  *bytes = kViewHead + stock_view_scratch_bytes(sim->sim->grid(), width, height);
+  return DM_OK;
+}
+
+dm_status dm_view_create(dm_sim* sim, const dm_frame* frame, const dm_camera* camera, void* mem, size_t bytes,
+                         dm_view** out) {
+  if (!live(sim) || !out) return DM_E_ARGUMENT;
+  *out = nullptr;
+  FrameView fb;
+  CameraChoice choice;
+  if (const dm_status s = frame_view_of(frame, &fb)) return s;
+  if (const dm_status s = camera_of(camera, &choice)) return s;
+  size_t need = 0;
+  (void)dm_view_bytes(sim, fb.width, fb.height, &need);
+  if (!mem || (reinterpret_cast<uintptr_t>(mem) & 7) != 0 || bytes < need) return DM_E_MEMORY;
+  dm_view* v = new (mem) dm_view();
+  DexelGrid<height_t>& grid = sim->sim->grid();
+  const Status st = stock_view_init(&v->v, grid, fb, choice, static_cast<char*>(mem) + kViewHead, need - kViewHead);
+  if (!ok(st)) {
+    v->tag = 0;
+    return st == Status::kBufferTooSmall ? DM_E_MEMORY : DM_E_FRAME;
+  }
+  stock_view_set_tool(&v->v, sim->views.current);
+  const SimChecks& checks = sim->sim->job().checks;
+  if (checks.nfixtures > 0) stock_view_set_fixtures(&v->v, checks.fixtures, checks.nfixtures);
+  stock_view_note(&v->v, grid.bounds());
+  v->sim = sim;
+  v->next = sim->views.first;
+  sim->views.first = v;
+  v->tag = kViewTag;
+  *out = v;
+  return DM_OK;
+}
+
+dm_status dm_render(dm_view* view, dm_rect* rects, int32_t max_rects, int32_t* nrects) {
+  if (!view || view->tag != kViewTag || !nrects || max_rects < 0 || (max_rects > 0 && !rects)) return DM_E_ARGUMENT;
+  *nrects = 0;
+  if (!live(view)) return DM_E_STATE;
+  Simulation& s = *view->sim->sim;
+  // The cut so far, the deferred end cap shown (after the end it is cut).
+  if (!finished(s)) s.sync();
+  const RenderResult res = stock_view_draw(&view->v, &s.grid(), CutterPose{true, s.mill().position()});
+  int32_t n = 0;
+  for (int k = 0; k < res.nrects && max_rects > 0; ++k) {
+    ScreenRect r = res.rects[k];
+    if (n == max_rects) r = rect_union(r, screen_rect(rects[--n]));  // the rest merged into the last
+    rects[n++] = dm_rect{r.x0, r.y0, r.x1, r.y1};
+  }
+  *nrects = n;
+  return DM_OK;
+}
+
+dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  CameraChoice choice;
+  if (const dm_status s = camera_of(camera, &choice)) return s;
+  stock_view_choose_camera(&view->v, choice);
+  return DM_OK;
+}
+
+void dm_view_destroy(dm_view* view) {
+  if (!view || view->tag != kViewTag) return;
+  if (live(view->sim))
+    for (dm_view** at = &view->sim->views.first; *at; at = &(*at)->next)
+      if (*at == view) {
+        *at = view->next;
+        break;
+      }
+  view->tag = 0;  // a dm_view has nothing else to end (handles.h)
+}
+
+}  // extern "C"

@@ -1,0 +1,188 @@
+// One drawing of a simulation's stock; see stock_view.h.
+#include "display/stock_view.h"
+
+#include "core/math/fixed.h"
+#include "display/marker.h"
+
+namespace dexmill {
+
+namespace {
+
+// The renderer's defaults, as a constant (flash, not code that builds them).
+constexpr RenderOptions kViewOptions{};
+
+// A rectangle more to present: appended, or merged into the last one when
+// the list is full.
+void add_rect(RenderResult* res, const ScreenRect& r) {
+  if (res->nrects < kMaxDirtyRects) res->rects[res->nrects++] = r;
+  else res->rects[res->nrects - 1] = rect_union(res->rects[res->nrects - 1], r);
+}
+
+// The path over what render_update drew, inside each rectangle it
+// repainted (the whole frame after a full redraw; where pieces turned to
+// done, stock_view_draw had it repaint). Every piece is redrawn in order
+// inside each, so the pixels equal a full redraw's (backplot.h).
+void draw_path(StockView* v, RenderResult* res) {
+  const uint32_t done = min_of(v->path_done, v->path_n);
+  const BackplotColours colours;
+  const DepthView depth = stock_view_depth(*v);
+  for (int k = 0; k < res->nrects; ++k)
+    backplot_draw(v->fb, depth, v->r.view, v->path, v->path_n, done, res->rects[k], colours);
+  v->path_drawn_done = done;
+}
+
+void draw_marks(StockView* v, RenderResult* res) {
+  const int32_t radius = v->fb.height >= 400 ? 8 : 4;
+  for (int32_t m = 0; m < v->nmarks; ++m) {
+    const ViewMarks& list = v->marks[m];
+    const uint32_t value = pixel_pack(v->fb.format, list.colour);
+    ScreenRect all{0, 0, 0, 0};
+    for (uint32_t k = 0; k < list.n; ++k)
+      all = rect_union(all, marker_draw(v->fb, v->r.view, list.points[k], radius, value));
+    if (!all.empty()) add_rect(res, all);
+  }
+}
+
+void draw_legend(StockView* v, RenderResult* res) {
+  const ViewLegend& l = *v->legend;
+  const char* labels[kLegendMaxSwatches];
+  for (int32_t k = 0; k < l.n && k < kLegendMaxSwatches; ++k) labels[k] = l.labels[k];
+  if (l.named) legend_draw_named(v->fb, l.colour, l.n, labels);
+  else legend_draw(v->fb, l.colour, l.n, labels, l.title);
+  add_rect(res, legend_rect(v->fb));
+}
+
+}  // namespace
+
+size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height) {
+  return renderer_scratch_bytes(g, width, height, kViewOptions.zformat);
+}
+
+Status stock_view_init(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam,
+                       void* scratch, size_t scratch_bytes) {
+  const Status s = stock_view_resize(v, g, fb, scratch, scratch_bytes);
+  if (ok(s)) stock_view_choose_camera(v, cam);
+  return s;
+}
+
+void stock_view_choose_camera(StockView* v, const CameraChoice& cam) {
+  v->choice = cam;
+  stock_view_set_camera(v, stock_view_initial_camera(*v));
+}
+
+Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, void* scratch,
+                         size_t scratch_bytes) {
+  Renderer<height_t>* r = &v->r;
+  const bool had_camera = r->fb.pixels != nullptr;
+  const Camera keep = r->cam;
+  const Status s = renderer_init(r, g, fb, kViewOptions, scratch, scratch_bytes);
+  if (!ok(s)) return s;
+  v->fb = fb;
+  // Keep direction and zoom; refit only the target to the new aspect.
+  if (had_camera) renderer_set_camera(r, keep);
+  if (v->have_tool) renderer_set_tool(r, &v->profile);
+  renderer_set_colours(r, v->colours);
+  if (v->fixtures) (void)renderer_set_fixtures(r, v->fixtures, v->nfixtures);
+  return Status::kOk;
+}
+
+void stock_view_set_tool(StockView* v, const Tool& t) {
+  v->profile = tool_profile(t);
+  v->have_tool = true;
+  renderer_set_tool(&v->r, &v->profile);
+}
+
+void stock_view_set_colours(StockView* v, const SurfaceColours* c) {
+  v->colours = c;
+  renderer_set_colours(&v->r, c);
+}
+
+void stock_view_set_legend(StockView* v, const ViewLegend* l) { v->legend = l; }
+
+void stock_view_set_marks(StockView* v, const ViewMarks* lists, int32_t n) {
+  v->marks = n > 0 ? lists : nullptr;
+  v->nmarks = lists && n > 0 ? n : 0;
+}
+
+void stock_view_set_fixtures(StockView* v, const BoxNm* boxes, int32_t n) {
+  v->fixtures = boxes;
+  v->nfixtures = boxes && n > 0 ? n : 0;
+  (void)renderer_set_fixtures(&v->r, boxes, v->nfixtures);  // the first kFixturesMax
+  stock_view_set_camera(v, stock_view_initial_camera(*v));  // framed with the stock
+}
+
+void stock_view_set_path(StockView* v, const PathSegment* segs, uint32_t n, uint32_t done) {
+  stock_view_path_progress(v, segs, n, done);
+  v->has_path = true;
+  v->path_drawn_done = 0;
+  v->r.need_full = true;
+}
+
+void stock_view_remove_path(StockView* v) {
+  stock_view_path_progress(v, nullptr, 0, 0);
+  v->has_path = false;
+  v->path_drawn_done = 0;
+  v->r.need_full = true;
+}
+
+void stock_view_path_progress(StockView* v, const PathSegment* segs, uint32_t n, uint32_t done) {
+  v->path = segs;
+  v->path_n = segs ? n : 0;
+  v->path_done = done;
+}
+
+void stock_view_show_path(StockView* v, bool on) {
+  v->path_on = on;
+  v->r.need_full = true;
+}
+
+RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterPose& pose) {
+  const bool path = stock_view_path_visible(*v);
+  // Backplot pieces that turned to done since the last draw: the renderer
+  // repaints where they lie, and draw_path draws the path there again.
+  if (path) {
+    const uint32_t done = min_of(v->path_done, v->path_n);
+    if (done > v->path_drawn_done)
+      renderer_invalidate(&v->r, backplot_bounds(v->fb, v->r.view, v->path, v->path_drawn_done, done));
+  }
+  const GridRect saved = g->dirty;
+  g->dirty = v->pending;
+  v->pending = GridRect::none();
+  RenderResult res = render_update(&v->r, g, pose);
+  g->dirty = saved;
+  if (path) draw_path(v, &res);
+  draw_marks(v, &res);
+  if (v->legend) draw_legend(v, &res);
+  return res;
+}
+
+DepthView stock_view_depth(const StockView& v) {
+  DepthView d;
+  d.z = v.r.target.z;
+  d.stride_bytes = v.r.target.z_stride;
+  d.format = v.r.target.zformat;
+  return d;
+}
+
+void stock_view_share_frame(StockView* v, const StockView& other) {
+  renderer_share_frame(&v->r, other.r);
+  renderer_set_camera(&v->r, stock_view_camera(other));
+}
+
+void stock_view_set_camera(StockView* v, const Camera& c) { renderer_set_camera(&v->r, c); }
+
+Camera stock_view_initial_camera(const StockView& v) {
+  // The stock and the fixtures beside it (a clamp cut off at the frame's
+  // edge hides what the check found there).
+  const BoxNm box = fixtures_box(renderer_stock_box(v.r), v.fixtures, v.nfixtures);
+  const CameraChoice& ch = v.choice;
+  Camera c = camera_preset(ch.angles ? ViewPreset::kIso : ch.preset);
+  if (ch.angles) {
+    c.azimuth_bam = ch.azimuth_bam;
+    c.elevation_bam = ch.elevation_bam;
+  }
+  camera_fit(&c, box, v.fb.width, v.fb.height);
+  return c;
+}
+
+}  // namespace dexmill

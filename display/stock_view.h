@@ -1,0 +1,141 @@
+// One drawing of a simulation's stock: what `dexmill run` draws into each
+// of its frames, windows and images, and what the embedding API
+// (display/api/dexmill.h) draws into an embedder's framebuffer. A renderer
+// (display/render.h) with a camera chosen as a preset or as angles and
+// fitted to the stock and the fixtures beside it, the tool, a colour mode
+// and its legend, marks over the picture, fixtures and the backplot path,
+// drawn in one order: the grid's changes (incremental), the path inside
+// every rectangle that was repainted, the marks, the legend.
+//
+// Several views can watch one grid (a frame sequence and a window at its
+// own size): each keeps the grid changes it has not drawn yet
+// (stock_view_note), since a render consumes the grid's dirty rectangle.
+//
+// Everything a view draws from is caller memory, read by pointer at each
+// draw (colours, legend, marks, fixtures, path): a caller whose lists move
+// or grow passes them again before drawing. The renderer's scratch is the
+// caller's too (stock_view_scratch_bytes). Integer only, no heap.
+#ifndef DEXMILL_DISPLAY_STOCK_VIEW_H
+#define DEXMILL_DISPLAY_STOCK_VIEW_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/config.h"
+#include "core/grid/grid.h"
+#include "core/point.h"
+#include "core/status.h"
+#include "core/tool/tool.h"
+#include "display/backplot.h"
+#include "display/legend.h"
+#include "display/overlay.h"
+#include "display/render.h"
+
+namespace dexmill {
+
+// The camera a front end asks for: a preset, or azimuth and elevation
+// (then the iso preset's projection); fitted to the stock either way.
+struct CameraChoice {
+  ViewPreset preset = ViewPreset::kIso;
+  bool angles = false;
+  uint32_t azimuth_bam = 0;
+  int32_t elevation_bam = 0;
+};
+
+// A legend strip (display/legend.h): limits between the swatches
+// (labels[0, n - 1)) and a title, or a name for each swatch (named:
+// labels[0, n)). A label holds what any legend of dexmill writes (the tool
+// legend's longest: ten tool numbers of 11 characters with 9 slashes).
+constexpr size_t kViewLabelBytes = 136;
+struct ViewLegend {
+  Rgb colour[kLegendMaxSwatches];
+  int32_t n = 0;
+  char labels[kLegendMaxSwatches][kViewLabelBytes];
+  char title[kViewLabelBytes];
+  bool named = false;
+};
+
+// Points marked in one colour over every frame (display/marker.h).
+struct ViewMarks {
+  const PointNm* points;
+  uint32_t n;
+  Rgb colour;
+};
+
+// The view's state; fields are internal.
+struct StockView {
+  Renderer<height_t> r;
+  FrameView fb;
+  CameraChoice choice;
+  bool have_tool = false;
+  ToolProfile profile{};
+  GridRect pending = GridRect::none();  // grid changes not drawn yet
+  const SurfaceColours* colours = nullptr;
+  const ViewLegend* legend = nullptr;
+  const ViewMarks* marks = nullptr;
+  int32_t nmarks = 0;
+  const BoxNm* fixtures = nullptr;
+  int32_t nfixtures = 0;
+  bool has_path = false;
+  bool path_on = true;
+  const PathSegment* path = nullptr;
+  uint32_t path_n = 0;
+  uint32_t path_done = 0;        // pieces cut so far
+  uint32_t path_drawn_done = 0;  // path_done when the path was last drawn
+};
+
+// Scratch bytes for drawing grid g into a width x height frame.
+size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height);
+
+// (Re)starts drawing g into fb with the chosen camera; scratch (8-byte
+// aligned) of at least stock_view_scratch_bytes. The renderer's status
+// (kBadArgument for a frame or grid it cannot draw, kBufferTooSmall).
+Status stock_view_init(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam,
+                       void* scratch, size_t scratch_bytes);
+// A new frame size (a window resized), with scratch for it: keeps the
+// camera's direction and zoom, the tool, the colours and the fixtures.
+Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, void* scratch,
+                         size_t scratch_bytes);
+
+void stock_view_set_tool(StockView* v, const Tool& t);
+// A colour mode (null: the workpiece colour), kept across resizes.
+void stock_view_set_colours(StockView* v, const SurfaceColours* c);
+// Drawn over every frame (null: none).
+void stock_view_set_legend(StockView* v, const ViewLegend* l);
+// lists[0, n) of marks drawn over every frame, in order.
+void stock_view_set_marks(StockView* v, const ViewMarks* lists, int32_t n);
+// Boxes drawn in every frame (at most kFixturesMax); the camera is framed
+// again to hold them with the stock.
+void stock_view_set_fixtures(StockView* v, const BoxNm* boxes, int32_t n);
+
+// The toolpath over every frame (display/backplot.h): a new path (n may be
+// 0), drawn whole with the next frame; segs[0, done) as done.
+void stock_view_set_path(StockView* v, const PathSegment* segs, uint32_t n, uint32_t done);
+// No path any more; the next frame is drawn whole.
+void stock_view_remove_path(StockView* v);
+// The same path as it is now (moved, longer, more of it done).
+void stock_view_path_progress(StockView* v, const PathSegment* segs, uint32_t n, uint32_t done);
+// Shows or hides the path; the next frame is drawn whole.
+void stock_view_show_path(StockView* v, bool on);
+inline bool stock_view_path_visible(const StockView& v) { return v.has_path && v.path_on; }
+
+// A change of the grid to draw with the next frame.
+inline void stock_view_note(StockView* v, const GridRect& r) { v->pending.include(r); }
+// Draws what changed (everything after init, a resize or a camera, tool,
+// colour, fixture or path change) into the frame; the rectangles say where.
+RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterPose& pose);
+
+DepthView stock_view_depth(const StockView& v);
+// Draws with the scene frame and camera of `other` (a grid of the same
+// geometry): the two frames can be overlaid (display/overlay.h).
+void stock_view_share_frame(StockView* v, const StockView& other);
+inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
+void stock_view_set_camera(StockView* v, const Camera& c);
+// The chosen camera fitted to the stock and the fixtures.
+Camera stock_view_initial_camera(const StockView& v);
+// Another choice, taken as the camera now.
+void stock_view_choose_camera(StockView* v, const CameraChoice& cam);
+
+}  // namespace dexmill
+
+#endif
