@@ -300,9 +300,9 @@ class SimulationT final : public CanonSink {
   uint64_t material_before_ = 0;
 };
 
-extern template class SimulationT<uint8_t>;
-extern template class SimulationT<uint16_t>;
-extern template class SimulationT<uint32_t>;
+// Made for the build's heights in core/sim/simulation.cpp; for another m,
+// include core/sim/simulation_impl.h.
+extern template class SimulationT<height_t>;
 
 using Simulation = SimulationT<height_t>;
 inline size_t sim_required_bytes(const SimJob& job, SimSetup* why = nullptr) { return Simulation::required_bytes(job, why); }

@@ -31,6 +31,7 @@
 #include "core/motion/interp.h"
 #include "core/motion/summary.h"
 #include "core/sim/simulation.h"
+#include "core/sim/simulation_impl.h"  // the 8- and 32-bit engines
 #include "core/tool/cutter.h"
 #include "core/tool/spec.h"
 #include "core/tool/tool.h"
