@@ -27,6 +27,7 @@
 #include "core/tool/tool.h"
 #include "core/cut/sweep.h"
 #include "core/material/material_preset.h"
+#include "display/api/dexmill.h"
 #include "display/error_colours.h"
 #include "display/material_colours.h"
 #include "display/marker.h"
@@ -410,6 +411,73 @@ bool material_frames(golden::Out& out, DexelGrid<height_t>* g, const ToolProfile
   return true;
 }
 
+// ==== API: the same program through the embedding API (display/api/dexmill.h)
+// as a controller would drive it: the text read in 256-byte blocks (an SD
+// card's), steps of 8 moves, the view redrawn after each into the panel's
+// framebuffer (only what changed); the removed volume, the moves and the
+// last frame's hash, equal on the board and the host.
+alignas(8) unsigned char g_view_mem[kFrameW * kFrameH * 2 + kNx * kNy * 4 + 256 * 1024];
+
+bool api_preview(golden::Out& out, uint64_t* steps_out) {
+  dm_job job;
+  if (dm_job_init(&job, DEXMILL_API_VERSION) != DM_OK) return false;
+  job.stock = dm_box{{0, 0, 0}, {mm(48), mm(32), kStockTopNm}};
+  job.pitch_nm = kPitchNm;
+  const char* specs[kToolCount] = {"flat:6,len=20,stick=40", "ball:4,len=20,stick=40", "vbit:6:90,len=20,stick=40",
+                                   "bull:8:1,len=20,stick=40"};
+  job.tool.spec = specs[0];
+  for (int k = 0; k < kToolCount; ++k) {
+    job.tools[k].spec = specs[k];
+    job.tools[k].number = k + 1;
+  }
+  job.ntools = kToolCount;
+  job.input_buffer_bytes = DM_INPUT_MIN_BYTES;
+  size_t need = 0;
+  dm_sim* sim = nullptr;
+  if (dm_required_bytes(&job, &need) != DM_OK || need > sizeof g_sim_mem ||
+      dm_create(&job, g_sim_mem, sizeof g_sim_mem, &sim) != DM_OK) {
+    out.str("panel FAIL api set-up").kv("bytes", static_cast<int64_t>(need)).end();
+    return false;
+  }
+  dm_frame frame{g_frame, kFrameW, kFrameH, kFrameW * 2, DM_RGB565};
+  dm_camera cam{DM_VIEW_ISO, 0, 0, 0};
+  size_t view_need = 0;
+  dm_view* view = nullptr;
+  if (dm_view_bytes(sim, kFrameW, kFrameH, &view_need) != DM_OK || view_need > sizeof g_view_mem ||
+      dm_view_create(sim, &frame, &cam, g_view_mem, sizeof g_view_mem, &view) != DM_OK) {
+    out.str("panel FAIL api view").kv("bytes", static_cast<int64_t>(view_need)).end();
+    dm_destroy(sim);
+    return false;
+  }
+  const size_t len = strlen(kProgram);
+  size_t at = 0;
+  dm_budget budget{8, 0, 0, nullptr, nullptr};
+  int32_t state = DM_READY;
+  uint64_t steps = 0;
+  while (state == DM_READY || state == DM_NEED_INPUT) {
+    if (state == DM_NEED_INPUT) {
+      const size_t n = len - at < 256 ? len - at : 256;
+      if (n) (void)dm_feed(sim, kProgram + at, n);
+      else (void)dm_end_input(sim);
+      at += n;
+    }
+    if (dm_step(sim, &budget, &state) != DM_OK) break;
+    dm_rect rects[8];
+    int32_t nrects = 0;
+    (void)dm_render(view, rects, 8, &nrects);
+    ++steps;
+  }
+  dm_progress p;
+  (void)dm_get_progress(sim, &p);
+  const FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  out.str("panel api").kv("state", state).kv("moves", static_cast<int64_t>(p.moves)).kv("errors", p.errors);
+  out.kv("removed_um3", static_cast<int64_t>(p.removed_um3)).kx("frame", frame_hash(fb)).end();
+  dm_view_destroy(view);
+  dm_destroy(sim);
+  *steps_out = steps;
+  return state == DM_DONE && p.errors == 0;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -468,6 +536,12 @@ int main(int, char**) {
   const uint64_t t7 = golden::board_instructions();
   MaterialCost mcost;
   const bool marbled = checked && material_frames(out, &checked_sim->grid(), prof, checked_sim->mill().position(), &mcost);
+  const uint64_t t8 = golden::board_instructions();
+  sim_destroy(checked_sim);
+  checked_sim = nullptr;
+  uint64_t api_steps = 0;
+  const bool api = marbled && api_preview(out, &api_steps);
+  const uint64_t t9 = golden::board_instructions();
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
@@ -482,7 +556,8 @@ int main(int, char**) {
     info_instructions(out, "plain full frame", mcost.plain_full, 0);
     info_instructions(out, "marble update(one cut)", mcost.update, 0);
     info_instructions(out, "plain update(one cut)", mcost.plain_update, 0);
+    info_instructions(out, "api: cut in 8-move steps, a redraw after each", t9 - t8, 0);
+    out.str("info api steps").kv("n", static_cast<int64_t>(api_steps)).end();
   }
-  sim_destroy(checked_sim);
-  return (errors == 0 && drawn && assessed && overlaid && checked && marbled) ? 0 : 1;
+  return (errors == 0 && drawn && assessed && overlaid && checked && marbled && api) ? 0 : 1;
 }
