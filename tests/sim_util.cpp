@@ -1,6 +1,7 @@
 // The engine tests' harness; see sim_util.h.
 #include "tests/sim_util.h"
 
+#include <cstdio>
 #include <cstring>
 
 #include "core/gcode/messages.h"
@@ -44,6 +45,17 @@ Tool tool(const char* spec) {
   Tool t;
   CHECK(tool_spec_parse(spec, std::strlen(spec), &t) == ToolSpecError::kOk);
   return t;
+}
+
+std::string seventy_rapids() {
+  std::string text = "G21 G90\nM3 S1000\nG0 X-5 Y2 Z5\nG0 Z-1\n";
+  for (int k = 0; k < 70; ++k) {
+    char line[64];
+    std::snprintf(line, sizeof line, "G0 X%d Y%.1f\n", k % 2 ? -5 : 45, 2 + 0.5 * k);
+    text += line;
+  }
+  text += "G0 Z5\nM2\n";
+  return text;
 }
 
 std::string run_file(const char* name) { return std::string(t::tests_dir()) + "/run/" + name; }

@@ -38,6 +38,9 @@ dexmill::StockBox stock_box(const char* mm);
 dexmill::Tool tool(const char* spec);
 // A file of tests/run.
 std::string run_file(const char* name);
+// 70 rapids on lines of their own, each through fresh stock of a
+// 0,0,-30,40,40,0 block: more safety findings than a watch keeps.
+std::string seventy_rapids();
 
 // A job on a box stock X0..X1 x Y0..Y1 x Z0..0 at `pitch`, with one tool,
 // its program fed in pieces.

@@ -235,13 +235,7 @@ TEST(sim_safety_plunge_without_centre_cutting) {
 
 TEST(sim_safety_findings_past_the_list_are_counted_once_each) {
   // 70 rapids, each through fresh stock on its own line: 64 kept, 70 in all.
-  std::string text = "G21 G90\nM3 S1000\nG0 X-5 Y2 Z5\nG0 Z-1\n";
-  for (int k = 0; k < 70; ++k) {
-    char line[64];
-    std::snprintf(line, sizeof line, "G0 X%d Y%.1f\n", k % 2 ? -5 : 45, 2 + 0.5 * k);
-    text += line;
-  }
-  text += "G0 Z5\nM2\n";
+  const std::string text = sim_test::seventy_rapids();
   Run r;
   r.o.job.checks.rapid = true;
   CHECK(r.stock("0,0,-30,40,40,0").pitch("0.2").text("many.ngc", text));
