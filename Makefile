@@ -245,14 +245,14 @@ panel-w3:
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
 #   make fuzz SECONDS=N           the pipeline target N seconds (default 60)
-#   make fuzz FUZZ_TARGET=T ...   target T: pipeline, tool_table, stl or pgm
+#   make fuzz FUZZ_TARGET=T ...   target T: pipeline, tool_table, stl, pgm or material
 #   make fuzz-all SECONDS=N       every target, N seconds each, one after another
 # Target T is tests/fuzz/fuzz_T.cpp; it runs over its corpus
 # build/fuzz/corpus/T and its seeds tests/fuzz/seeds/T, with its dictionary.
 # What it finds (crash-*, timeout-*, oom-*) lands in build/fuzz/found/T;
 # kept in tests/fuzz/regress/T, `make test` replays it.
 SECONDS ?= 60
-FUZZ_TARGETS := pipeline tool_table stl pgm
+FUZZ_TARGETS := pipeline tool_table stl pgm material
 FUZZ_TARGET ?= pipeline
 FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
             -fno-sanitize-recover=all
@@ -260,7 +260,8 @@ FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
 # The readers and run's backplot path are host code (std, exceptions),
 # linked into every target.
 FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/tool_table.cpp platform/stl_read.cpp platform/pgm.cpp \
-                   platform/read_file.cpp platform/output_file.cpp platform/process.cpp tools/run_path.cpp)
+                   platform/read_file.cpp platform/output_file.cpp platform/process.cpp platform/material_file.cpp \
+                   tools/run_path.cpp)
 # Per target: the longest input (the pipeline's seeds are whole programs,
 # binary STL seeds a hundred triangles), the dictionary, further options (a
 # reader must not be made to allocate hundreds of MB by a few KB of input).
@@ -268,13 +269,16 @@ FUZZ_MAXLEN_pipeline := 8192
 FUZZ_MAXLEN_tool_table := 4096
 FUZZ_MAXLEN_stl := 8192
 FUZZ_MAXLEN_pgm := 4096
+FUZZ_MAXLEN_material := 4096
 FUZZ_DICT_pipeline := tests/fuzz/gcode.dict
 FUZZ_DICT_tool_table := tests/fuzz/tool_table.dict
 FUZZ_DICT_stl := tests/fuzz/stl.dict
 FUZZ_DICT_pgm := tests/fuzz/pgm.dict
+FUZZ_DICT_material := tests/fuzz/material.dict
 FUZZ_OPTS_tool_table := -malloc_limit_mb=64
 FUZZ_OPTS_stl := -malloc_limit_mb=64
 FUZZ_OPTS_pgm := -malloc_limit_mb=64
+FUZZ_OPTS_material := -malloc_limit_mb=64
 .PHONY: fuzz fuzz-all
 # Objects reached through the build/fuzz/fuzz_% pattern are kept, not
 # deleted as intermediates.

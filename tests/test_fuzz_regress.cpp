@@ -10,6 +10,7 @@
 #include <vector>
 
 #define DEXMILL_FUZZ_REPLAY
+#include "tests/fuzz/fuzz_material.cpp"
 #include "tests/fuzz/fuzz_pgm.cpp"
 #include "tests/fuzz/fuzz_pipeline.cpp"
 #include "tests/fuzz/fuzz_stl.cpp"
@@ -46,7 +47,8 @@ struct Target {
 const Target kTargets[] = {{"pipeline", fuzz_pipeline::fuzz_pipeline},
                            {"tool_table", fuzz_tool_table::fuzz_tool_table},
                            {"stl", fuzz_stl::fuzz_stl},
-                           {"pgm", fuzz_pgm::fuzz_pgm}};
+                           {"pgm", fuzz_pgm::fuzz_pgm},
+                           {"material", fuzz_material::fuzz_material}};
 
 }  // namespace
 
