@@ -55,17 +55,12 @@ bool make_dirs(const std::string& dir, std::string* err) {
   return true;
 }
 
-namespace {
-
-// frame-NNNNNN.png or frame-NNNNNN.ppm: the names FrameFiles writes.
 bool is_frame_name(const char* name) {
   if (std::strncmp(name, "frame-", 6) != 0) return false;
   for (int k = 6; k < 12; ++k)
     if (name[k] < '0' || name[k] > '9') return false;
   return std::strcmp(name + 12, ".png") == 0 || std::strcmp(name + 12, ".ppm") == 0;
 }
-
-}  // namespace
 
 bool remove_old_frames(const std::string& dir, uint32_t* removed, std::string* err) {
   *removed = 0;

@@ -38,6 +38,9 @@ class FrameFiles final : public Screen {
 // when a component exists and is not a directory.
 bool make_dirs(const std::string& dir, std::string* err);
 
+// frame-NNNNNN.png or frame-NNNNNN.ppm: the names FrameFiles writes.
+bool is_frame_name(const char* name);
+
 // Removes the files of an earlier sequence from `dir` (frame-NNNNNN.png and
 // .ppm, nothing else), so that a shorter run's frames are not mixed with a
 // longer run's. Sets *removed to their count. False with a message when one
