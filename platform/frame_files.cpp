@@ -55,9 +55,6 @@ bool make_dirs(const std::string& dir, std::string* err) {
   return true;
 }
 
-namespace {
-
-// frame-NNNNNN.png or frame-NNNNNN.ppm: the names FrameFiles writes.
 bool is_frame_name(const char* name) {
   if (std::strncmp(name, "frame-", 6) != 0) return false;
   for (int k = 6; k < 12; ++k)
@@ -65,28 +62,26 @@ bool is_frame_name(const char* name) {
   return std::strcmp(name + 12, ".png") == 0 || std::strcmp(name + 12, ".ppm") == 0;
 }
 
-}  // namespace
-
-bool remove_old_frames(const std::string& dir, uint32_t* removed, std::string* err) {
-  *removed = 0;
+bool find_old_frames(const std::string& dir, std::vector<std::string>* paths, std::string* err) {
+  paths->clear();
   DIR* d = opendir(dir.c_str());
   if (!d) {
     *err = "cannot read directory '" + dir + "': " + std::strerror(errno);
     return false;
   }
-  bool ok = true;
-  while (const dirent* e = readdir(d)) {
-    if (!is_frame_name(e->d_name)) continue;
-    const std::string path = dir + "/" + e->d_name;
-    if (unlink(path.c_str()) != 0) {
-      *err = "cannot remove the earlier frame '" + path + "': " + std::strerror(errno);
-      ok = false;
-      break;
-    }
-    ++*removed;
-  }
+  while (const dirent* e = readdir(d))
+    if (is_frame_name(e->d_name)) paths->push_back(dir + "/" + e->d_name);
   closedir(d);
-  return ok;
+  return true;
+}
+
+bool remove_old_frames(const std::vector<std::string>& paths, std::string* err) {
+  for (const std::string& path : paths)
+    if (unlink(path.c_str()) != 0 && errno != ENOENT) {
+      *err = "cannot remove the earlier frame '" + path + "': " + std::strerror(errno);
+      return false;
+    }
+  return true;
 }
 
 }  // namespace dexmill

@@ -38,11 +38,19 @@ class FrameFiles final : public Screen {
 // when a component exists and is not a directory.
 bool make_dirs(const std::string& dir, std::string* err);
 
-// Removes the files of an earlier sequence from `dir` (frame-NNNNNN.png and
-// .ppm, nothing else), so that a shorter run's frames are not mixed with a
-// longer run's. Sets *removed to their count. False with a message when one
-// cannot be removed or the folder cannot be read.
-bool remove_old_frames(const std::string& dir, uint32_t* removed, std::string* err);
+// frame-NNNNNN.png or frame-NNNNNN.ppm: the names FrameFiles writes.
+bool is_frame_name(const char* name);
+
+// The files of an earlier sequence in `dir` (frame-NNNNNN.png and .ppm,
+// nothing else) as DIR/NAME: what a run removes before its first frame, so
+// that a shorter run's frames are not mixed with a longer run's (each one
+// checked first: platform/file_guard.h). False with a message when the
+// folder cannot be read.
+bool find_old_frames(const std::string& dir, std::vector<std::string>* paths, std::string* err);
+
+// Removes the files find_old_frames found. False with a message when one
+// cannot be removed.
+bool remove_old_frames(const std::vector<std::string>& paths, std::string* err);
 
 }  // namespace dexmill
 

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/gcode/lex.h"
+#include "platform/file_guard.h"
 #include "platform/process.h"
 
 namespace dexmill {
@@ -61,6 +62,7 @@ bool GcodeFile::open_one(const char* path) {
 }
 
 GcodeFile::Fill GcodeFile::read_bytes(char* buf, std::size_t n, std::size_t* got) {
+  if (refused_) return Fill::kError;
   std::size_t k;
   if (cur_ == 0 && tee_ && read_off_ < teed_) {
     // Read again after a seek back: from the copy.
@@ -141,6 +143,15 @@ bool GcodeFile::open_subroutine(const char* name, SourcePos* start) {
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode)) {
       std::fclose(f);
       continue;
+    }
+    if (guard_ && guard_->register_input(path, "subroutine") != FileGuard::Verdict::kOk) {
+      // Nothing more is read: the reader's buffer is dropped, so the next
+      // line is a read, which fails.
+      std::fclose(f);
+      std::snprintf(error_, sizeof error_, "%s", guard_->message().c_str());
+      refused_ = true;
+      reader_.restart(reader_.next_offset(), reader_.line_number() + 1);
+      return false;
     }
     const uint16_t k = nfiles_++;
     files_[k] = Opened{f, true, LineReader::FileState{}, 0, path};

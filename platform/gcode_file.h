@@ -36,6 +36,8 @@
 
 namespace dexmill {
 
+class FileGuard;
+
 // The program's LineInput (core/gcode/line_reader.h), so also its
 // GcodeSource: o-word loops and calls seek back in it, and `o<name> call`
 // opens NAME.ngc from the subroutine path. A pipe (standard input) is copied
@@ -59,6 +61,12 @@ class GcodeFile final : public LineInput, private ByteSource {
   bool open_subroutine(const char* name, SourcePos* start) override;
   // Directories searched for NAME.ngc (LinuxCNC's SUBROUTINE_PATH), in order.
   void set_subroutine_path(std::vector<std::string> dirs) { sub_path_ = std::move(dirs); }
+  // The command's guard (platform/file_guard.h): each subroutine file is
+  // registered as an input when a call opens it. One that is an output
+  // stops the reading there (an I/O error of the runner, with refused()
+  // true and the guard's message in error(): a usage error).
+  void set_guard(FileGuard* guard) { guard_ = guard; }
+  bool refused() const { return refused_; }
   // The program's name for messages (name() is the current file's).
   const char* program_name() const override { return files_[0].name.c_str(); }
   // The file the last line came from (0: the program).
@@ -110,6 +118,8 @@ class GcodeFile final : public LineInput, private ByteSource {
   uint16_t nfiles_ = 1;
   uint16_t cur_ = 0;
   std::vector<std::string> sub_path_;
+  FileGuard* guard_ = nullptr;
+  bool refused_ = false;
   // The program read from a pipe: its copy so far (see open()).
   std::FILE* tee_ = nullptr;
   uint64_t teed_ = 0;

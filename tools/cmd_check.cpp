@@ -9,8 +9,10 @@
 #include <string>
 
 #include "core/motion/interp.h"
+#include "platform/file_guard.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
+#include "tools/guard_inputs.h"
 #include "tools/option_help.h"
 #include "tools/option_parse.h"
 #include "tools/option_values.h"
@@ -112,7 +114,8 @@ int check_simulate(int argc, char** argv) {
   o.job.fail_on_gouge = !o.job.design.empty();
   o.out.print_summary = false;
   RunResult res;
-  const int code = run_job(o, &res);
+  FileGuard guard;
+  const int code = run_job(o, &guard, &res);
   if (res.finished)
     std::fprintf(stderr, "%s: %llu safety finding(s)%s\n", res.shown_name.c_str(),
                  static_cast<unsigned long long>(res.safety_findings),
@@ -143,8 +146,11 @@ int cmd_check(int argc, char** argv) {
   const ReadOptions& ro = a.read;
   const long max_errors = a.max_errors;
   const bool follow_ons = a.follow_ons;
+  FileGuard guard;  // it writes nothing, but reads the program, its subroutines and --tools
+  if (const int code = guard_read_inputs(a.file, ro, &guard)) return code;
   GcodeFile in;
   if (!in.open(a.file.c_str())) return fail(kExitIo, "%s", in.error());
+  in.set_guard(&guard);
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
   ReadSetup setup;
@@ -162,7 +168,7 @@ int cmd_check(int argc, char** argv) {
       break;
     }
   }
-  if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+  if (runner.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   if (runner.follow_ons() && !follow_ons)
     std::fprintf(stderr,
                  "%s: %u more error(s) not shown: each may only follow from one above (--follow-ons shows them)\n",

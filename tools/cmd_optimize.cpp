@@ -5,19 +5,18 @@
 // Three passes: the cut exactly as `dexmill run` makes it (tools/run_job.h,
 // which gives each line's limit), the rewrite (tools/optimize_pass.h), then
 // the output, written whole or not at all.
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "platform/file_guard.h"
 #include "platform/output_file.h"
 #include "platform/program_input.h"
 #include "platform/read_file.h"
 #include "tools/cli.h"
 #include "tools/feed_word.h"
+#include "tools/guard_inputs.h"
 #include "tools/optimize_pass.h"
 #include "tools/run_job.h"
 #include "tools/option_help.h"
@@ -75,14 +74,6 @@ const OptionTable<OptimizeArgs>& optimize_table() {
   return t;
 }
 
-// Standard output is a regular file that is the program itself: the shell
-// emptied it before we ran (`dexmill optimize a.ngc ... > a.ngc`).
-bool stdout_is(const std::string& path) {
-  struct stat out, in;
-  return fstat(STDOUT_FILENO, &out) == 0 && S_ISREG(out.st_mode) && stat(path.c_str(), &in) == 0 &&
-         out.st_dev == in.st_dev && out.st_ino == in.st_ino;
-}
-
 // "1:23.4" (minutes, seconds), or "h:mm:ss" from an hour.
 std::string duration_text(int64_t us) {
   char b[48];
@@ -130,9 +121,12 @@ int cmd_optimize(int argc, char** argv) {
     return fail(kExitUsage, "optimize writes the program only (use dexmill run for images, models and reports)");
   if (o.job.stop_at_gouge || o.job.stop_at_collision || o.job.fail_on_gouge || o.job.fail_on_collision)
     return fail(kExitUsage, "optimize cuts the whole program: --stop-at and --fail-on-* are run's");
-  if (out_path == "-" && o.job.file != "-" && stdout_is(o.job.file))
-    return fail(kExitUsage, "standard output is '%s' itself, which the shell has emptied already; write to another "
-                "file, or use -o %s", o.job.file.c_str(), o.job.file.c_str());
+  // The output may be the program (read whole before it is written), no
+  // other input; the cut registers the rest (platform/file_guard.h).
+  FileGuard guard;
+  if (const int code = guard_status(guard, guard.register_input(o.job.file, FileGuard::kProgram))) return code;
+  if (const int code = guard_status(guard, guard.check_output(out_path == "-" ? "" : "-o", out_path, FileGuard::kProgram)))
+    return code;
 
   // The program as every pass reads it: a copy when it cannot be read twice.
   ProgramInput input;
@@ -146,7 +140,7 @@ int cmd_optimize(int argc, char** argv) {
   o.out.print_summary = false;
   o.view.material_warnings = false;
   RunResult cut_result;
-  const int cut = run_job(o, &cut_result);
+  const int cut = run_job(o, &guard, &cut_result);
   if (cut != kExitOk) return cut;
   const std::vector<int64_t>& limits = cut_result.line_feed_limits;
 

@@ -9,8 +9,10 @@
 #include "core/math/fixed.h"
 #include "core/motion/arc_chords.h"
 #include "core/motion/interp.h"
+#include "platform/file_guard.h"
 #include "platform/gcode_file.h"
 #include "tools/cli.h"
+#include "tools/guard_inputs.h"
 #include "tools/option_help.h"
 #include "tools/option_parse.h"
 #include "tools/option_values.h"
@@ -134,8 +136,12 @@ int cmd_path(int argc, char** argv) {
   }
   const int64_t chord_nm = a.chord_nm;
   const ReadOptions& ro = a.read;
+  FileGuard guard;
+  if (const int code = guard_read_inputs(a.file, ro, &guard)) return code;
+  if (const int code = guard_status(guard, guard.check_output("", "-"))) return code;
   GcodeFile in;
   if (!in.open(a.file.c_str())) return fail(kExitIo, "%s", in.error());
+  in.set_guard(&guard);
   static char outbuf[1 << 16];
   std::setvbuf(stdout, outbuf, _IOFBF, sizeof outbuf);
   GcodeStderrMessages msgs(in.name());
@@ -158,7 +164,7 @@ int cmd_path(int argc, char** argv) {
   GcodeRunner runner(&in, &interp, &msgs, true);
   runner.run_all();
   if (std::fflush(stdout) != 0 || std::ferror(stdout)) return fail(kExitIo, "cannot write the path to standard output");
-  if (runner.io_error()) return fail(kExitIo, "%s", in.error());
+  if (runner.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   return msgs.errors() ? kExitInput : kExitOk;
 }
 

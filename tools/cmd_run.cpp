@@ -1,5 +1,6 @@
 // `dexmill run [FILE|-] [options]`: the options (tools/run_option_table.h),
 // then the job (tools/run_job.h). With no FILE it runs the built-in demo.
+#include "platform/file_guard.h"
 #include "tools/cli.h"
 #include "tools/option_help.h"
 #include "tools/run_demo.h"
@@ -15,8 +16,9 @@ int cmd_run(int argc, char** argv) {
   const int code = parse_run_options(argc, argv, &o, &help);
   if (help) print_help(run_doc(), stdout);
   if (code != kExitOk || help) return code;
-  if (!o.job.demo.empty()) return run_demo(o);
-  return run_job(o);
+  FileGuard guard;  // every file the run reads, writes or removes (platform/file_guard.h)
+  if (!o.job.demo.empty()) return run_demo(o, &guard);
+  return run_job(o, &guard);
 }
 
 }  // namespace cli

@@ -14,9 +14,11 @@
 
 #include "core/math/fixed.h"
 #include "core/tool/spec.h"
+#include "platform/file_guard.h"
 #include "platform/output_file.h"
 #include "platform/report_json.h"
 #include "tools/cli.h"
+#include "tools/guard_inputs.h"
 #include "tools/run_assess.h"
 #include "tools/option_help.h"
 #include "tools/option_parse.h"
@@ -163,6 +165,9 @@ int cmd_zig(int argc, char** argv) {
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");
 
   if (!o.job.have_stock) return fail(kExitUsage, "zig needs --stock X0,Y0,Z0,X1,Y1,Z1 (the block the design is cut from)");
+  FileGuard guard;  // the program is never the design, nor another file the options name
+  if (const int code = guard_job_inputs(o.job, "", &guard)) return code;
+  if (const int code = guard_status(guard, guard.check_output(z.out == "-" ? "" : "-o", z.out))) return code;
   std::string text;
   ZigProgramStats st;
   GridPlan plan;

@@ -7,7 +7,6 @@
 
 #include "core/design/builtin.h"
 #include "platform/frame_files.h"
-#include "platform/output_file.h"
 #include "platform/report_json.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
@@ -31,9 +30,7 @@ int demo_defaults(RunOptions* o) {
   }
   std::string err;
   if (!make_dirs("out", &err)) return fail(kExitIo, "%s", err.c_str());
-  const std::string text = demo_program();
-  char e[1300];
-  if (!write_output(kDemoProgramPath, text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
+  o->job.made_program = demo_program();
   return kExitOk;
 }
 
@@ -47,7 +44,7 @@ StockBox demo_stock_box() {
   return StockBox{PointNm{v[0], v[1], v[2]}, PointNm{v[3], v[4], v[5]}};
 }
 
-int run_demo(RunOptions o) {
+int run_demo(RunOptions o, FileGuard* guard) {
   if (o.job.demo == "list") {
     for (int32_t k = 0; k < builtin_design_count(); ++k) {
       const BuiltinDesign& b = builtin_design_at(k);
@@ -73,14 +70,13 @@ int run_demo(RunOptions o) {
   if (code != kExitOk) return code;
   if (!o.view.quiet) zig_print_stats(plan, st);
   o.job.file = dir + "/" + o.job.demo + ".ngc";
-  char e[1300];
-  if (!write_output(o.job.file.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
+  o.job.made_program = text;  // written once the guard has seen every file
   if (o.out.image.empty()) o.out.image = dir + "/final.png";
   if (o.out.error_image.empty()) o.out.error_image = dir + "/error.png";
   if (o.out.frames_dir.empty()) o.out.frames_dir = dir + "/frames";
   if (o.out.report.empty()) o.out.report = dir + "/report.json";
   if (!o.view.have_color) o.view.color = ViewOptions::Color::kMaterial;
-  const int rc = run_job(o);
+  const int rc = run_job(o, guard);
   if (rc == kExitOk && !o.view.quiet)
     std::fprintf(stderr, "dexmill: demo %s written to %s/ (%s.ngc, final.png, error.png, frames/, report.json)\n",
                  o.job.demo.c_str(), dir.c_str(), o.job.demo.c_str());

@@ -8,18 +8,19 @@
 #define DEXMILL_TOOLS_RUN_DEMO_H
 
 #include "core/sim/stock_plan.h"
+#include "platform/file_guard.h"
 #include "tools/run_options.h"
 
 namespace dexmill {
 namespace cli {
 
-int run_demo(RunOptions o);
+int run_demo(RunOptions o, FileGuard* guard);
 
 // The built-in demo of `dexmill run` with no FILE (tools/demo_program.h):
-// writes its program to kDemoProgramPath and fills in what the options
-// leave out (out/final.ppm, its part's error view out/error.ppm, frames in
-// out/frames, its material drawn in its colours). kExitOk or an exit code
-// (printed).
+// its program for kDemoProgramPath (JobOptions::made_program) and what the
+// options leave out (out/final.ppm, its part's error view out/error.ppm,
+// frames in out/frames, its material drawn in its colours). kExitOk or an
+// exit code (printed).
 constexpr const char* kDemoProgramPath = "out/demo.ngc";
 int demo_defaults(RunOptions* o);
 // The block it is written for.

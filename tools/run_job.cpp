@@ -83,6 +83,7 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   GcodeFile in;
   if (!in.open(su.read_path.c_str(), su.shown_name.c_str())) return fail(kExitIo, "%s", in.error());
   in.set_subroutine_path(o.job.read.subroutine_path);
+  in.set_guard(su.guard);
   sim.read_from(&in);
   SimBudget line;
   line.lines = 1;
@@ -112,7 +113,7 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     if (o.view.material_warnings) material_print(su.material, *w, su.shown_name);
     material_to_report(su.material, *w, sim.grid(), &su.rep);
   }
-  if (sim.io_error()) return fail(kExitIo, "%s", in.error());
+  if (sim.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   if (!v.frame_error.empty()) return fail(kExitIo, "%s", v.frame_error.c_str());
   if (v.live_view().failed()) return fail(kExitIo, "%s", v.live_view().error().c_str());
   if (v.has_frames() && (v.last_frame_moves != sim.status().moves || su.job.stop_line) && !v.write_frame())
@@ -168,10 +169,11 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
 
 }  // namespace
 
-int run_job(RunOptions o, RunResult* result) {
+int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
   Run run;
   run.t_start = clock_now_s();
   RunSetup& su = run.setup;
+  su.guard = guard;
   if (const int code = run_setup(&o, &su)) {
     if (su.refused && !write_report(o, &run)) return kExitIo;  // --strict: the report of a program not cut
     return code;
@@ -189,9 +191,7 @@ int run_job(RunOptions o, RunResult* result) {
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
   }
-  const bool no_output = o.out.image.empty() && o.out.error_image.empty() && o.out.frames_dir.empty() && o.out.heightmap.empty() &&
-                         o.out.stl.empty() && o.out.report.empty() && !run.views.live();
-  if (no_output && o.out.print_summary) std::fputs(report_summary_text(su.rep).c_str(), stdout);
+  if (run_prints_summary(o)) std::fputs(report_summary_text(su.rep).c_str(), stdout);
   if (su.job.stop_line) return kExitInput;
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;

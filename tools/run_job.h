@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "platform/file_guard.h"
 #include "tools/run_options.h"
 
 namespace dexmill {
@@ -34,8 +35,10 @@ struct RunResult {
   std::vector<int64_t> line_feed_limits;
 };
 
-// Runs the job; returns the exit status (the man page's).
-int run_job(RunOptions o, RunResult* result = nullptr);
+// Runs the job; returns the exit status (the man page's). Every file it
+// reads, writes or removes goes through the command's `guard`
+// (platform/file_guard.h), with what the command registered before.
+int run_job(RunOptions o, FileGuard* guard, RunResult* result = nullptr);
 
 }  // namespace cli
 }  // namespace dexmill

@@ -82,5 +82,7 @@ bool run_draws(const RunOptions& o) {
          !f.stl.empty() || o.view.window || !o.view.fbdev.empty();
 }
 
+bool run_prints_summary(const RunOptions& o) { return o.out.print_summary && !run_draws(o) && o.out.report.empty(); }
+
 }  // namespace cli
 }  // namespace dexmill

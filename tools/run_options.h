@@ -47,6 +47,10 @@ struct JobOptions {
   // `dexmill optimize`: the program's name in messages when `file` is a
   // copy of it (a spooled standard input); empty: from `file`.
   std::string shown_name;
+  // The demos: the program's text, written to its path (`file`, or the
+  // built-in demo's) once the input guard has checked every file the run
+  // reads, writes and removes (tools/run_setup.cpp).
+  std::string made_program;
   bool have_stock = false;
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
   std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
@@ -142,6 +146,10 @@ int finish_run_options(RunOptions* o);
 // --frames, --heightmap, --stl) or a live view: what the subcommands that
 // only simulate (`check --simulate`, `optimize`) refuse.
 bool run_draws(const RunOptions& o);
+
+// True when the run prints its summary on standard output: it writes none
+// of the files above, nor a report, and print_summary is on.
+bool run_prints_summary(const RunOptions& o);
 
 }  // namespace cli
 }  // namespace dexmill

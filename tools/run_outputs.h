@@ -1,14 +1,14 @@
 // The output files of `dexmill run`, checked before anything runs: each
 // one's format from its extension, at most one on standard output ("-"),
 // none the same file as an input or as another output, each one's folder
-// there and writable (a long simulation must not end in "cannot write").
+// there and writable (a long simulation must not end in "cannot write");
+// the last three are the input guard's (platform/file_guard.h).
 #ifndef DEXMILL_TOOLS_RUN_OUTPUTS_H
 #define DEXMILL_TOOLS_RUN_OUTPUTS_H
 
-#include <cstdint>
 #include <string>
-#include <vector>
 
+#include "platform/file_guard.h"
 #include "platform/image_file.h"
 #include "tools/run_options.h"
 
@@ -28,13 +28,13 @@ struct OutputFormats {
 bool output_format(const char* option, const std::string& path, bool heightmap, ImageFormat fallback,
                    ImageFormat* format, std::string* err);
 
-// Checks the outputs of `o` against each other and the input files
-// `inputs` (names as given; "-" and empty ones are skipped) and picks their
-// formats. Returns kExitOk, or prints the error and returns kExitUsage (a
+// Picks the formats of the outputs of `o` and checks each with the guard
+// (platform/file_guard.h: against the inputs registered before and each
+// other). Returns kExitOk, or prints the error and returns kExitUsage (a
 // bad extension, two outputs on standard output, an output that is an
 // input or another output) or kExitIo (no such folder, not writable, a
 // directory).
-int check_outputs(const OutputOptions& o, const std::vector<std::string>& inputs, OutputFormats* formats);
+int check_outputs(const OutputOptions& o, FileGuard* guard, OutputFormats* formats);
 
 }  // namespace cli
 }  // namespace dexmill

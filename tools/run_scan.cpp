@@ -53,10 +53,11 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
     GcodeFile file;
     if (!file.open(in.read_path.c_str(), in.shown_name.c_str())) return fail(kExitIo, "%s", file.error());
     file.set_subroutine_path(in.read->subroutine_path);
+    file.set_guard(in.guard);
     const std::unique_ptr<ProgramMemory> mem(new ProgramMemory());
     PathSink sink(path);
     s.run(&file, msgs, mem.get(), path ? &sink : nullptr);
-    if (s.io_error) return fail(kExitIo, "%s", file.error());
+    if (s.io_error) return fail(file.refused() ? kExitUsage : kExitIo, "%s", file.error());
   }
   if (s.bad_tool_line) {
     char m[200];

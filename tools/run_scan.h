@@ -43,6 +43,7 @@ struct ScanInput {
   std::string read_path, shown_name;
   const ReadOptions* read = nullptr;
   const ToolTableFile* table = nullptr;
+  FileGuard* guard = nullptr;  // the subroutine files are registered with it as they are opened
 };
 
 // Runs the scan into *scan, made with job.notes = notes (the path too, when

@@ -10,8 +10,10 @@
 #include "core/tool/spec.h"
 #include "platform/clock.h"
 #include "platform/frame_files.h"
+#include "platform/output_file.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
+#include "tools/guard_inputs.h"
 #include "tools/run_colours.h"
 #include "tools/run_demo.h"
 #include "tools/run_safety.h"
@@ -23,8 +25,34 @@ namespace dexmill {
 namespace cli {
 namespace {
 
-// The demo's defaults, the outputs checked, the program opened, the frame
-// folder made and emptied: before anything long happens.
+// Every file the run reads, writes or removes, through the input guard
+// (platform/file_guard.h) before any is touched: the demo's program (an
+// output it then reads), the inputs, the outputs, the summary on standard
+// output, the frames and the earlier frames their folder holds.
+int guard_files(const RunOptions& o, RunSetup* run) {
+  FileGuard& g = *run->guard;
+  if (!o.job.made_program.empty())
+    if (const int code = guard_status(g, g.check_output("the demo's program", run->read_path, FileGuard::kProgram)))
+      return code;
+  if (const int code = guard_job_inputs(o.job, run->read_path, &g)) return code;
+  if (const int code = check_outputs(o.out, &g, &run->formats)) return code;
+  if (run_prints_summary(o))
+    if (const int code = guard_status(g, g.check_output("the summary", "-"))) return code;
+  const std::string& dir = o.out.frames_dir;
+  if (dir.empty()) return kExitOk;
+  std::string err;
+  if (!make_dirs(dir, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (access(dir.c_str(), W_OK) != 0)
+    return fail(kExitIo, "cannot write frames into '%s': %s", dir.c_str(), std::strerror(errno));
+  if (const int code = guard_status(g, g.check_frames("--frames", dir))) return code;
+  if (!find_old_frames(dir, &run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  for (const std::string& old : run->old_frames)
+    if (const int code = guard_status(g, g.check_removal("--frames", dir, old))) return code;
+  return kExitOk;
+}
+
+// The demo's defaults, every file checked, the demo's program written, the
+// program opened, the frame folder emptied: before anything long happens.
 int prepare(RunOptions* o, RunSetup* run) {
   std::string err;
   run->demo = o->job.file.empty();
@@ -33,22 +61,21 @@ int prepare(RunOptions* o, RunSetup* run) {
     if (const int code = demo_defaults(o)) return code;
     run->read_path = run->shown_name = kDemoProgramPath;
   }
-  if (const int code = check_outputs(o->out, {o->job.file, o->job.read.tools_file, o->job.design, o->job.stock_stl}, &run->formats))
-    return code;
+  if (const int code = guard_files(*o, run)) return code;
+  const std::string& made = o->job.made_program;
+  char e[1300];
+  if (!made.empty() && !write_output(run->read_path.c_str(), made.data(), made.size(), e, sizeof e))
+    return fail(kExitIo, "%s", e);
   if (!run->demo) {
     if (o->job.file == "-") run->shown_name = "<stdin>";
     if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
     if (!run->input.open(o->job.file, &err)) return fail(kExitIo, "%s", err.c_str());
     run->read_path = run->input.read_path();
   }
-  if (o->out.frames_dir.empty()) return kExitOk;
-  uint32_t removed = 0;
-  if (!make_dirs(o->out.frames_dir, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (access(o->out.frames_dir.c_str(), W_OK) != 0)
-    return fail(kExitIo, "cannot write frames into '%s': %s", o->out.frames_dir.c_str(), std::strerror(errno));
-  if (!remove_old_frames(o->out.frames_dir, &removed, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (removed && !o->view.quiet && !run->demo)
-    std::fprintf(stderr, "dexmill: removed %u frames of an earlier run from '%s'\n", removed, o->out.frames_dir.c_str());
+  if (!remove_old_frames(run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (!run->old_frames.empty() && !o->view.quiet && !run->demo)
+    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", run->old_frames.size(),
+                 o->out.frames_dir.c_str());
   return kExitOk;
 }
 
@@ -201,7 +228,7 @@ int first_pass(const RunOptions& o, RunSetup* run) {
   run->scan.reset(new ProgramScan(scan_job));
   run->want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
   const double t0 = clock_now_s();
-  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table};
+  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table, run->guard};
   if (const int code = scan_pass(in, run->scan.get(), notes, run->want_path ? &run->path : nullptr, &msgs, &rep))
     return code;
   rep.timing.emplace_back("scan", clock_now_s() - t0);

@@ -1,8 +1,9 @@
 // The set-up of `dexmill run`: the options into a job for the engine and
 // the engine made, ready to cut (what run_job cuts and draws, and what the
 // tests reach in process, so that no copy of these steps exists):
-//   the demo's defaults, the outputs checked, the program opened, the frame
-//   folder emptied; the tool table; the first pass (tools/run_scan.h: the
+//   the demo's defaults, every file checked by the input guard, the demo's
+//   program written, the program opened, the frame folder emptied; the tool
+//   table; the first pass (tools/run_scan.h: the
 //   report's program part, the path, the first bad block); the stock and
 //   grid (core/sim/stock_plan.h), the design, the materials, the checks the
 //   options and the tools ask for; the simulation over its memory, the
@@ -18,6 +19,7 @@
 #include "core/sim/scan.h"
 #include "core/sim/simulation.h"
 #include "display/backplot.h"
+#include "platform/file_guard.h"
 #include "platform/program_input.h"
 #include "platform/report_json.h"
 #include "platform/tool_table.h"
@@ -34,6 +36,10 @@ struct RunSetup {
   bool demo = false;
   bool refused = false;          // --strict and an input error: nothing is cut (kExitInput)
   std::string read_path, shown_name;
+  // The command's input guard (run_job's caller's), else this set-up's own.
+  FileGuard own_guard;
+  FileGuard* guard = &own_guard;
+  std::vector<std::string> old_frames;  // an earlier run's, in --frames: removed before the first frame
   ProgramInput input;
   OutputFormats formats;
   ToolTableFile table;
