@@ -274,9 +274,14 @@ std::string report_json_text(const RunReport& r) {
   o += "  \"mode\": " + quoted(r.mode) + ",\n";
   o += "  \"tool\": {\"default\": " + quoted(r.default_tool) + ", \"table\": " +
        (r.tool_table.empty() ? std::string("null") : quoted(r.tool_table)) + ", \"used\": [";
-  for (std::size_t k = 0; k < r.tools_used.size(); ++k)
-    o += std::string(k ? ", " : "") + "{\"number\": " + std::to_string(r.tools_used[k].number) +
-         ", \"spec\": " + quoted(r.tools_used[k].spec) + "}";
+  for (std::size_t k = 0; k < r.tools_used.size(); ++k) {
+    const ReportToolUse& u = r.tools_used[k];
+    const bool comment = u.line != 0;
+    o += std::string(k ? ", " : "") + "{\"number\": " + (u.number < 0 ? std::string("null") : std::to_string(u.number)) +
+         ", \"spec\": " + quoted(u.spec) + ", \"source\": " + (u.source.empty() ? std::string("null") : quoted(u.source)) +
+         ", \"line\": " + (comment ? std::to_string(u.line) : std::string("null")) +
+         ", \"form\": " + (comment ? quoted(u.form) : std::string("null")) + "}";
+  }
   o += "]},\n";
   o += "  \"removed_mm3\": " + (r.nx ? volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) : std::string("0.000")) + ",\n";
   o += "  \"estimated_time_s\": " + seconds_of_us(r.estimated_us) + ",\n";

@@ -18,7 +18,12 @@
 //   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
 //   grid            {nx, ny, pitch_mm, lsb_mm, height_bits}
 //   mode            "sweep"|"stamp"
-//   tool            {default, table (file or null), used [{number, spec}]}
+//   tool            {default, table (file or null), used [{number, spec, source,
+//                   line, form}]}: each T loaded (number null: the tool before
+//                   any M6, listed when it cut), where its tool comes from
+//                   ("option" --tool, "table" --tools, "comment" of the program
+//                   at line in form, "default" a guess), line and form null
+//                   unless a comment
 //   removed_mm3     material removed: (sum of dexel heights before - after) x lsb x pitch^2
 //   estimated_time_s  feeds at F, rapids at rapid_mm_per_min, dwells added,
 //                     no acceleration unless --accel; time_model holds the parts
@@ -68,8 +73,11 @@ struct ReportDiag {
 };
 
 struct ReportToolUse {
-  int32_t number;
+  int32_t number;      // -1: the tool in the spindle before any M6
   std::string spec;
+  std::string source;  // "option", "table", "comment", "default" (empty: not known)
+  uint32_t line = 0;   // source "comment": the comment's line, and its form (core/tool/tool_comment.h)
+  std::string form;
 };
 
 // A gouge charged to the line that made it.

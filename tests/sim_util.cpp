@@ -133,6 +133,7 @@ Run& Run::grid(int32_t nx, int32_t ny) {
 Run& Run::tool(const char* spec) {
   o.job.tool = sim_test::tool(spec);
   o.job.tool_text = spec;
+  o.job.tool_given = true;
   return *this;
 }
 Run& Run::tools(const std::string& path) {

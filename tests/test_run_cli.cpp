@@ -31,7 +31,9 @@ TEST(run_pocket_outputs_are_pinned) {
   const Result r = run("pocket.ngc -q --size 160x120 --image %/p.ppm --frames %/pf --frame-format ppm --every 4 --heightmap %/p.pgm "
                        "--stl %/p.stl --report %/p.json");
   CHECK_EQ(r.code, 0);
-  CHECK(r.err.empty());
+  // pocket.ngc names no tool: the default is a guess, and says so.
+  CHECK(r.err == "pocket.ngc:5:1: warning: the tool before any M6 is cut as flat:6, a guess: no --tool, --tools table "
+                 "or tool comment of the program gives it (give one with --tool SPEC or --tools FILE)\n");
   const std::string d = tmp_dir() + "/";
   check_hash(d + "p.ppm", 0x181fe5f1958fec7aULL);
   check_hash(d + "p.pgm", 0x78521702829f757fULL);
@@ -61,7 +63,9 @@ TEST(run_inch_arcs_and_tool_table) {
   r = run("tool_change.ngc --tools tools.tbl -q --size 120x90 --image %/t.ppm --report %/t.json --mode stamp");
   CHECK_EQ(r.code, 0);
   check_hash(tmp_dir() + "/t.ppm", 0x3cf1e6b6a6866353ULL);
-  CHECK(has(slurp(tmp_dir() + "/t.json"), "\"used\": [{\"number\": 1, \"spec\": \"flat:4\"}, {\"number\": 2, \"spec\": \"ball:6\"}]"));
+  CHECK(has(slurp(tmp_dir() + "/t.json"), "\"used\": [{\"number\": 1, \"spec\": \"flat:4\", \"source\": \"table\", "
+                                          "\"line\": null, \"form\": null}, {\"number\": 2, \"spec\": \"ball:6\", "
+                                          "\"source\": \"table\", \"line\": null, \"form\": null}]"));
   CHECK(has(slurp(tmp_dir() + "/t.json"), "\"mode\": \"stamp\""));
 }
 
@@ -229,7 +233,7 @@ TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
   write_file(d + "pd.stl", ascii_stl(pocket_part::design()));
   // tests/run/pocket_design.stl, the README's example, is this mesh.
   CHECK(slurp(std::string(t::tests_dir()) + "/run/pocket_design.stl") == ascii_stl(pocket_part::design()));
-  Result r = run("pocket.ngc -q --design %/pd.stl --report %/pd.json");
+  Result r = run("pocket.ngc -q --tool flat:6 --design %/pd.stl --report %/pd.json");
   CHECK_EQ(r.code, 0);
   // The one gouge, charged to the G81 line while cutting, warned as it is
   // found; the report names the design. The assessment's figures, the

@@ -36,7 +36,7 @@ TEST(sim_design_assessment_names_the_gouge_and_the_leftover) {
   run_cli::write_file(d + "sim-pd.stl", pocket_part::ascii_stl(pocket_part::design()));
   run_cli::write_file(d + "sim-pdb.stl", pocket_part::binary_stl(pocket_part::design()));
   Run r;
-  CHECK(r.design(d + "sim-pd.stl").program(run_file("pocket.ngc")));
+  CHECK(r.design(d + "sim-pd.stl").tool("flat:6").program(run_file("pocket.ngc")));
   CHECK(r.sim().state() == SimState::kDone);
   // The one gouge, charged to the G81 line while cutting: 8 mm at
   // X28.044 Y15.130, the design at Z0, the cut at Z-8.
@@ -74,7 +74,7 @@ TEST(sim_gouges_are_traced_to_their_line) {
   // One line gouges: one gouge, on that line, as deep as the ramp's end
   // below the floor (0.4 mm; the grid's LSB is 0.2 um); the end cap the Mill
   // cuts with the next record (G0 Z5) is charged to line 7 too.
-  auto against_design = [](Run* r) { r->design(run_file("pocket_design.stl")).stock("0,0,-10,33,23,0"); };
+  auto against_design = [](Run* r) { r->design(run_file("pocket_design.stl")).stock("0,0,-10,33,23,0").tool("flat:6"); };
   Run full;
   against_design(&full);
   CHECK(full.program(run_file("gouge_one.ngc")));

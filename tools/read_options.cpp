@@ -67,7 +67,8 @@ const Option<ReadOptions> kReadOptions[] = {
      parse_max_blocks},
     {"--tools", "FILE",
      "a LinuxCNC tool table: T/M6 pick from it, G43 takes the tool length and G41/G42 the radius (D/2) from it "
-     "(without a table run takes --tool's; path and check take 0, with a warning)",
+     "(without a table run takes --tool's, or the program's tool comments'; path and check take 0, with a warning); "
+     "run takes a T the table lacks from the program's comments",
      [](ReadOptions* o, const char* v) -> int { return o->tools_file = v, kExitOk; }},
 };
 

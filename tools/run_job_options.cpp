@@ -77,7 +77,8 @@ const Option<Job> kJob[] = {
      }},
     {"--tool", "SPEC",
      "ball:D flat:D bull:D:R vbit:D:ANGLE, then optionally ,len=L ,stick=S ,shank=D ,holder=DxH[,D1-D2xH...] "
-     ",nocentre (mm, degrees); without --tools every T is this tool (default flat:6)",
+     ",nocentre (mm, degrees); without --tools every T is this tool; with none, each T is the tool the program's "
+     "comments describe (Fusion, pcb2gcode, Estlcam, Vectric, Carbide Create... headers), else flat:6 with a warning",
      tool},
     {"--mode", "sweep|stamp", "exact swept envelopes or the paper's instances of motion (default sweep)",
      [](Job* o, const char* v) -> int {

@@ -7,6 +7,7 @@
 #include "core/tool/spec.h"
 #include "tools/cli.h"
 #include "tools/run_path.h"
+#include "tools/run_tools_report.h"
 
 namespace dexmill {
 namespace cli {
@@ -30,6 +31,12 @@ void RunMessages::error_text(uint32_t line, uint32_t col, const std::string& msg
   ++errors_;
   if (print_) std::fprintf(stderr, "%s:%u:%u: error: %s\n", file_.c_str(), line, col, msg.c_str());
   error_list.push_back(ReportDiag{line, col, msg});
+}
+
+void RunMessages::warning_text(uint32_t line, uint32_t col, const std::string& msg) {
+  ++warnings_;
+  if (print_) std::fprintf(stderr, "%s:%u:%u: warning: %s\n", file_.c_str(), line, col, msg.c_str());
+  if (warning_list.size() < kMaxReportedWarnings) warning_list.push_back(ReportDiag{line, col, msg});
 }
 
 void RunMessages::add(const GcodeDiag& d, bool is_error) {
@@ -69,6 +76,7 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
       std::snprintf(m, sizeof m, "tool T%d is not in the tool table '%s'", static_cast<int>(s.bad_tool), table);
     msgs->error_text(s.bad_tool_line, 1, m);
   }
+  if (in.choice) report_tools(s, *in.choice, in.shown_name, msgs, rep);
   rep->lines = s.lines;
   if (s.inch_moves || s.mm_moves) rep->units = s.inch_moves ? (s.mm_moves ? "mixed" : "inch") : "mm";
   const MotionSummary& sum = s.summary;
@@ -82,11 +90,12 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
   for (const GcodeNotes::Note& n : notes.kept)
     if (rep->messages.size() < 100) rep->messages.push_back(RunReport::Message{n.line, n.kind, n.text});
   rep->warnings_total = msgs->warnings();
-  for (int k = 1; k < s.ntools; ++k) {
-    char spec[kToolSpecTextMax];
-    tool_spec_format(s.tools[k], spec, sizeof spec);
-    rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec});
-  }
+  if (!in.choice)
+    for (int k = 1; k < s.ntools; ++k) {
+      char spec[kToolSpecTextMax];
+      tool_spec_format(s.tools[k], spec, sizeof spec);
+      rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec, "", 0, ""});
+    }
   rep->estimated_us = sum.estimated_time_us();
   rep->feed_us = sum.feed_time_us();
   rep->rapid_us = sum.rapid_time_us();

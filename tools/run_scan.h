@@ -29,7 +29,10 @@ class RunMessages final : public GcodeMessages {
   void warning(const GcodeDiag& d) override { add(d, false); }
   // An error found outside the interpreter (a tool the table lacks).
   void error_text(uint32_t line, uint32_t col, const std::string& msg);
+  // A warning found outside it (a tool guessed), counted with the rest.
+  void warning_text(uint32_t line, uint32_t col, const std::string& msg);
   std::vector<ReportDiag> error_list, warning_list;
+  bool printing() const { return print_; }
 
  private:
   void add(const GcodeDiag& d, bool is_error);
@@ -38,12 +41,14 @@ class RunMessages final : public GcodeMessages {
 };
 
 // What the scan pass reads: the program's path and its name in messages,
-// its subroutine path, and the table (for the message of a T it lacks).
+// its subroutine path, the table (for the message of a T it lacks), and
+// the run's tool choice the scan was given (its tools' sources reported).
 struct ScanInput {
   std::string read_path, shown_name;
   const ReadOptions* read = nullptr;
   const ToolTableFile* table = nullptr;
   FileGuard* guard = nullptr;  // the subroutine files are registered with it as they are opened
+  const ToolChoice* choice = nullptr;
 };
 
 // Runs the scan into *scan, made with job.notes = notes (the path too, when

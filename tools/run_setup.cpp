@@ -90,13 +90,16 @@ int load_tools(const RunOptions& o, RunSetup* run) {
       return fail(kExitInput, "%s", run->table.message().c_str());
   }
   for (const std::string& w : run->table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
-  run->single.reset(new SingleToolLibrary(o.job.tool));
-  run->lib = run->have_table ? static_cast<const ToolLibrary*>(&run->table) : run->single.get();
+  // --tool, then the table, then the program's comments (read by the
+  // first pass), then the default (core/sim/tool_choice.h).
+  run->choice.reset(new ToolChoice(o.job.tool, o.job.tool_given, run->have_table ? &run->table : nullptr,
+                                   run->have_table ? &run->table : nullptr));
+  run->lib = run->choice.get();
   SimJob& j = run->job;
   j.mode = o.job.mode;
   j.tool = o.job.tool;
   j.library = run->lib;
-  j.offsets = run->have_table ? static_cast<const ToolTable*>(&run->table) : run->single.get();
+  j.offsets = run->choice.get();
   j.inch = o.job.read.inch;
   j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
   j.max_blocks = o.job.read.max_blocks;
@@ -226,12 +229,14 @@ int first_pass(const RunOptions& o, RunSetup* run) {
   SimJob scan_job = run->job;
   scan_job.notes = &notes;
   run->scan.reset(new ProgramScan(scan_job));
+  run->scan->set_tool_choice(run->choice.get());
   run->want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
   const double t0 = clock_now_s();
-  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table, run->guard};
+  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table, run->guard, run->choice.get()};
   if (const int code = scan_pass(in, run->scan.get(), notes, run->want_path ? &run->path : nullptr, &msgs, &rep))
     return code;
   rep.timing.emplace_back("scan", clock_now_s() - t0);
+  run->job.tool = run->scan->tools[0];  // a comment's, when it gives the tool before any M6
   run->scan_errors = msgs.errors();
   run->scan_warnings = msgs.warnings();
   if (!msgs.errors()) return kExitOk;
@@ -251,6 +256,14 @@ int run_setup(RunOptions* o, RunSetup* s) {
   if (const int code = prepare(o, s)) return code;
   if (const int code = load_tools(*o, s)) return code;
   if (const int code = first_pass(*o, s)) return code;
+  ToolSource initial = ToolSource::kDefault;
+  (void)s->choice->initial(&initial);
+  if (initial == ToolSource::kComment) {  // the views and messages show the tool the cut starts with
+    char spec[kToolSpecTextMax];
+    tool_spec_format(s->job.tool, spec, sizeof spec);
+    o->job.tool = s->job.tool;
+    o->job.tool_text = spec;
+  }
   if (const int code = plan_stock(*o, *s->scan, s)) return code;
   return start_engine(*o, *s->scan, s);
 }

@@ -44,7 +44,7 @@ struct RunSetup {
   OutputFormats formats;
   ToolTableFile table;
   bool have_table = false;
-  std::unique_ptr<SingleToolLibrary> single;
+  std::unique_ptr<ToolChoice> choice;  // the library and offsets: --tool, --tools, comments, default
   const ToolLibrary* lib = nullptr;
   SimJob job;
   RunReport rep;

@@ -20,21 +20,39 @@ void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem
   if (!job_.warnings) opt.warnings = messages;
   Interp interp(this, opt);
   interp_ = &interp;
-  GcodeRunner runner(in, &interp, messages, true);
+  CommentTap tap(in, choice_ ? &choice_->comments() : nullptr);
+  GcodeRunner runner(choice_ ? static_cast<LineInput*>(&tap) : in, &interp, messages, true);
   while (runner.step() && !bad_tool_line) {
   }
   lines = runner.lines();
   io_error = runner.io_error();
   interp_ = nullptr;
   also_ = nullptr;
+  if (!choice_) return;
+  // The tools as the whole program's comments chose them (a comment after
+  // its M6 binds only later).
+  choice_->comments().finish();
+  tools[0] = choice_->initial();
+  max_radius_nm = tools[0].diameter_nm / 2;
+  for (int k = 1; k < ntools; ++k) {
+    (void)choice_->tool(numbers[k], &tools[k]);
+    max_radius_nm = max_of(max_radius_nm, tools[k].diameter_nm / 2);
+  }
 }
 
 void ProgramScan::emit(const CanonRecord& r) {
   summary.emit(r);
   if (interp_ && (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc))
     (interp_->state().inch ? inch_moves : mm_moves) = true;
+  if (choice_ && interp_) choice_->comments().record(r, interp_->state().inch, interp_->state().selected_tool);
   if (also_) also_->emit(r);
+  const bool moves = r.kind == CanonKind::kArc || (r.kind == CanonKind::kFeed && !(r.start == r.end));
+  if (moves && in_spindle_ >= 0 && !cuts[in_spindle_]) {
+    cuts[in_spindle_] = true;
+    if (in_spindle_ == 0) first_lines[0] = r.line;
+  }
   if (r.kind != CanonKind::kToolChange) return;
+  in_spindle_ = -1;
   Tool t;
   if (!lib_->tool(r.tool, &t)) {
     if (!bad_tool_line) {
@@ -45,13 +63,18 @@ void ProgramScan::emit(const CanonRecord& r) {
   }
   max_radius_nm = max_of(max_radius_nm, t.diameter_nm / 2);
   for (int k = 1; k < ntools; ++k)
-    if (numbers[k] == r.tool) return;
+    if (numbers[k] == r.tool) {
+      in_spindle_ = k;
+      return;
+    }
   if (ntools == kScanToolsMax) {
     ++unlisted;
     return;
   }
   tools[ntools] = t;
   numbers[ntools] = r.tool;
+  first_lines[ntools] = r.line;
+  in_spindle_ = ntools;
   ++ntools;
 }
 

@@ -17,6 +17,7 @@
 #include "core/motion/interp.h"
 #include "core/motion/summary.h"
 #include "core/sim/job.h"
+#include "core/sim/tool_choice.h"
 #include "core/tool/tool.h"
 
 namespace dexmill {
@@ -39,6 +40,10 @@ class ProgramScan final : public CanonSink {
   // has none of its own, the warnings). mem: the program's parameters and
   // o-word flow. Records also go to `also` (a backplot), when not null.
   void run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also = nullptr);
+  // The run's tool choice, when the job's library is it: run() reads the
+  // program's tool comments into it, and lists the tools it chose in the
+  // end (tools[0] its initial tool).
+  void set_tool_choice(ToolChoice* c) { choice_ = c; }
 
   void emit(const CanonRecord& r) override;
 
@@ -49,6 +54,10 @@ class ProgramScan final : public CanonSink {
   Tool tools[kScanToolsMax];
   int32_t numbers[kScanToolsMax];
   int ntools = 0;
+  // Whether each made a feed or arc move, and the line of the M6 that first
+  // loaded it ([0]: of its first such move).
+  bool cuts[kScanToolsMax] = {};
+  uint32_t first_lines[kScanToolsMax] = {};
   uint32_t unlisted = 0;       // loads of tools past kScanToolsMax
   int64_t max_radius_nm = 0;   // of every tool loaded
   uint32_t bad_tool_line = 0;  // the first M6 of a T the library lacks (0: none), and its number
@@ -65,6 +74,8 @@ class ProgramScan final : public CanonSink {
   const ToolLibrary* lib_;
   const Interp* interp_ = nullptr;
   CanonSink* also_ = nullptr;
+  ToolChoice* choice_ = nullptr;
+  int in_spindle_ = 0;  // tools[] index of the tool in the spindle (-1: unlisted)
 };
 
 }  // namespace dexmill
