@@ -1,6 +1,5 @@
 #include "platform/output_file.h"
 
-#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,31 +8,26 @@
 #include <cstdarg>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 
 #include "platform/process.h"
+#include "platform/temp_file.h"
 
 namespace dexmill {
 
 namespace {
 
-// Removes "<target>.tmp-PID" files whose process is gone: what a run killed
-// by SIGKILL (which no handler sees) left of this output.
-void remove_stale_temporaries(const std::string& target) {
-  const size_t slash = target.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
-  const std::string prefix = (slash == std::string::npos ? target : target.substr(slash + 1)) + ".tmp-";
-  DIR* d = opendir(dir.c_str());
-  if (!d) return;
-  while (const dirent* e = readdir(d)) {
-    if (std::strncmp(e->d_name, prefix.c_str(), prefix.size()) != 0) continue;
-    const char* digits = e->d_name + prefix.size();
-    char* end = nullptr;
-    const long pid = std::strtol(digits, &end, 10);
-    if (end == digits || *end || pid <= 0 || pid == static_cast<long>(getpid())) continue;
-    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
-    unlink((dir + "/" + e->d_name).c_str());
-  }
-  closedir(d);
+// Temporaries are DIR/.dexmill-tmp-XXXXXXXX (platform/temp_file.h): 21
+// bytes, whatever the length of the output's own name.
+constexpr const char* kTempPrefix = ".dexmill-tmp-";
+
+// What runs killed outright (SIGKILL, which no handler sees) left in the
+// folder an output goes to: removed once per folder and process, when the
+// first output goes there (a folder of 40 000 frames is read once, not
+// once a frame).
+void remove_stale_temporaries(const std::string& dir) {
+  static std::set<std::string> done;
+  if (done.insert(dir).second) remove_stale_temps(dir, kTempPrefix);
 }
 
 }  // namespace
@@ -71,10 +65,10 @@ void OutputFile::set_error(const char* what, const char* path) {
 }
 
 void OutputFile::abandon() {
-  if (f_ && !stdout_) {
-    std::fclose(f_);
-    if (!tmp_.empty()) std::remove(tmp_.c_str());
-  }
+  if (f_ && !stdout_) std::fclose(f_);
+  if (!tmp_.path.empty()) unlink(tmp_.path.c_str());
+  release_locked_temp(&tmp_);
+  tmp_.path.clear();
   cleanup_unregister(cleanup_slot_);
   cleanup_slot_ = -1;
   f_ = nullptr;
@@ -87,7 +81,6 @@ bool OutputFile::open(const char* path) {
   error_[0] = 0;
   path_ = path;
   target_.clear();
-  tmp_.clear();
   mode_ = -1;
   if (is_stdout_path(path_)) {
     f_ = stdout;
@@ -110,17 +103,20 @@ bool OutputFile::open(const char* path) {
   }
   target_ = real;
   if (exists) mode_ = static_cast<int>(st.st_mode & 07777);
-  remove_stale_temporaries(real);
-  tmp_ = real + ".tmp-" + std::to_string(static_cast<long>(getpid()));
-  cleanup_slot_ = cleanup_register(tmp_.c_str());
-  f_ = std::fopen(tmp_.c_str(), "wb");
-  if (!f_) {
-    cleanup_unregister(cleanup_slot_);
-    cleanup_slot_ = -1;
-    tmp_.clear();
+  const std::string dir = folder_of(real);
+  remove_stale_temporaries(dir);
+  if (!make_locked_temp(dir, kTempPrefix, 0666, &tmp_)) {
     set_error("write", path);
     return false;
   }
+  cleanup_slot_ = cleanup_register(tmp_.path.c_str());
+  f_ = fdopen(tmp_.fd, "wb");
+  if (!f_) {
+    set_error("write", path);
+    abandon();
+    return false;
+  }
+  tmp_.fd = -1;  // f_ has it now
   return true;
 }
 
@@ -148,12 +144,13 @@ bool OutputFile::commit() {
   if (mode_ >= 0 && !failed_ && fchmod(fileno(f_), static_cast<mode_t>(mode_)) != 0) set_error("write", path_.c_str());
   if (std::fclose(f_) != 0 && !failed_) set_error("write", path_.c_str());
   f_ = nullptr;
-  if (tmp_.empty()) return !failed_;  // written in place
-  if (!failed_ && std::rename(tmp_.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
-  if (failed_) std::remove(tmp_.c_str());
+  if (tmp_.path.empty()) return !failed_;  // written in place
+  if (!failed_ && std::rename(tmp_.path.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
+  if (failed_) unlink(tmp_.path.c_str());
+  release_locked_temp(&tmp_);  // the lock, after the rename: the file is never unlocked under its temporary name
+  tmp_.path.clear();
   cleanup_unregister(cleanup_slot_);
   cleanup_slot_ = -1;
-  tmp_.clear();
   return !failed_;
 }
 

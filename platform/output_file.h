@@ -1,7 +1,10 @@
 // Output files, written the way a careful Unix tool writes them:
 // - a regular file (or a new name) is written completely or not at all:
-//   the data goes to a temporary file beside it, renamed over it on commit,
-//   keeping the old file's permission bits;
+//   the data goes to a temporary file beside it (.dexmill-tmp-XXXXXXXX,
+//   held under a lock while it exists: platform/temp_file.h), renamed over
+//   it on commit, keeping the old file's permission bits; the first output
+//   a process writes into a folder removes the temporaries there that no
+//   live process holds (what a SIGKILL left);
 // - a symbolic link is written through: its target is replaced that way,
 //   the link stays a link;
 // - anything else that exists (a device such as /dev/null, a FIFO, a socket)
@@ -13,6 +16,8 @@
 #include <cstddef>
 #include <cstdio>
 #include <string>
+
+#include "platform/temp_file.h"
 
 namespace dexmill {
 
@@ -42,7 +47,7 @@ class OutputFile {
   bool stdout_ = false;      // f_ is stdout: flushed, never closed
   std::string path_;         // as given, for messages
   std::string target_;       // what the rename replaces (a link's target); empty: written in place
-  std::string tmp_;
+  LockedTemp tmp_;          // the temporary (path empty: none), locked while it exists
   int mode_ = -1;            // permission bits of the replaced file; -1: a new file
   int cleanup_slot_ = -1;    // the temporary's entry in the signal handler's list
   char error_[1200] = {0};
