@@ -48,6 +48,10 @@ void install_cleanup_handlers() {
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &sa, nullptr);
+  // A file grown past `ulimit -f` then fails to write with EFBIG, which is
+  // reported (and its temporary removed), instead of SIGXFSZ killing the
+  // process and leaving the temporary.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 int cleanup_register(const char* path) {

@@ -24,7 +24,8 @@ unsigned fix_standard_descriptors();
 // (an I/O error, not an empty program).
 bool standard_input_closed();
 
-// Installs the SIGINT, SIGTERM and SIGHUP handlers.
+// Installs the SIGINT, SIGTERM and SIGHUP handlers, and ignores SIGXFSZ
+// (a write past `ulimit -f` fails with EFBIG instead of killing).
 void install_cleanup_handlers();
 
 // Registers a file to remove if a signal stops the process; returns its

@@ -137,7 +137,8 @@ int cmd_optimize(int argc, char** argv) {
   // The program as every pass reads it: a copy when it cannot be read twice.
   ProgramInput input;
   std::string err;
-  if (!input.open(o.job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+  input.set_copy_limit(o.job.max_input_bytes);
+  if (!input.open(o.job.file, &err)) return fail(input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
   const std::string shown = o.job.file == "-" ? "<stdin>" : o.job.file;
   o.job.shown_name = shown;
   o.job.file = input.read_path();

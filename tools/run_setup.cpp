@@ -38,7 +38,8 @@ int prepare(RunOptions* o, RunSetup* run) {
   if (!run->demo) {
     if (o->job.file == "-") run->shown_name = "<stdin>";
     if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
-    if (!run->input.open(o->job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+    run->input.set_copy_limit(o->job.max_input_bytes);
+    if (!run->input.open(o->job.file, &err)) return fail(run->input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
     run->read_path = run->input.read_path();
   }
   if (o->out.frames_dir.empty()) return kExitOk;
