@@ -60,7 +60,12 @@ bool output_target(const std::string& path, std::string* out) {
 OutputFile::~OutputFile() { abandon(); }
 
 void OutputFile::set_error(const char* what, const char* path) {
-  if (!failed_) std::snprintf(error_, sizeof error_, "cannot %s '%s': %s", what, path, std::strerror(errno));
+  if (failed_) return;  // the first failure is the cause
+  if (is_stdout_path(path)) {
+    std::snprintf(error_, sizeof error_, "cannot %s standard output: %s", what, std::strerror(errno));
+  } else {
+    std::snprintf(error_, sizeof error_, "cannot %s '%s': %s", what, path, std::strerror(errno));
+  }
   failed_ = true;
 }
 
@@ -83,6 +88,11 @@ bool OutputFile::open(const char* path) {
   target_.clear();
   mode_ = -1;
   if (is_stdout_path(path_)) {
+    if (standard_output_closed()) {
+      std::snprintf(error_, sizeof error_, "cannot write standard output: it is closed");
+      failed_ = true;
+      return false;
+    }
     f_ = stdout;
     stdout_ = true;
     return true;
@@ -135,7 +145,7 @@ void OutputFile::printf(const char* fmt, ...) {
 
 bool OutputFile::commit() {
   if (!f_) return false;
-  if (!failed_ && std::fflush(f_) != 0) set_error("write", path_.c_str());
+  if (!failed_ && (std::fflush(f_) != 0 || std::ferror(f_))) set_error("write", path_.c_str());
   if (stdout_) {
     f_ = nullptr;
     stdout_ = false;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "platform/output_file.h"
+#include "platform/process.h"
 #include "platform/program_input.h"
 #include "platform/read_file.h"
 #include "tools/cli.h"
@@ -134,9 +135,11 @@ int cmd_optimize(int argc, char** argv) {
     return fail(kExitUsage, "standard output is '%s' itself, which the shell has emptied already; write to another "
                 "file, or use -o %s", o.job.file.c_str(), o.job.file.c_str());
 
+  std::string err;
+  if (out_path == "-" && !standard_output_usable(&err)) return fail(kExitIo, "cannot write the program: %s", err.c_str());
+
   // The program as every pass reads it: a copy when it cannot be read twice.
   ProgramInput input;
-  std::string err;
   input.set_copy_limit(o.job.max_input_bytes);
   if (!input.open(o.job.file, &err)) return fail(input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
   const std::string shown = o.job.file == "-" ? "<stdin>" : o.job.file;

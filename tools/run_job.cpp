@@ -2,14 +2,19 @@
 // its files and views around it; see run_job.h.
 #include "tools/run_job.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/sim/simulation.h"
 #include "platform/clock.h"
 #include "platform/gcode_file.h"
 #include "platform/image_file.h"
+#include "platform/output_file.h"
+#include "platform/process.h"
 #include "platform/progress.h"
 #include "platform/report_json.h"
 #include "platform/report_summary.h"
@@ -166,9 +171,31 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   return kExitOk;
 }
 
+// With no file or view to write, the run prints its summary on standard output.
+bool prints_summary(const RunOptions& o) {
+  const OutputOptions& out = o.out;
+  return out.print_summary && out.image.empty() && out.error_image.empty() && out.frames_dir.empty() &&
+         out.heightmap.empty() && out.stl.empty() && out.report.empty() && !o.view.window && o.view.fbdev.empty();
+}
+
+// What goes to standard output when it was closed would be lost at the
+// end: refused before the run, the I/O error the write would meet.
+int check_standard_output(const RunOptions& o) {
+  std::string err;
+  if (standard_output_usable(&err)) return kExitOk;
+  const std::pair<const char*, const std::string*> outs[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                            {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
+                                                            {"--report", &o.out.report}};
+  for (const auto& out : outs)
+    if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());
+  if (prints_summary(o)) return fail(kExitIo, "cannot print the summary: %s (write a --report instead)", err.c_str());
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_job(RunOptions o, RunResult* result) {
+  if (const int code = check_standard_output(o)) return code;
   Run run;
   run.t_start = clock_now_s();
   RunSetup& su = run.setup;
@@ -189,9 +216,11 @@ int run_job(RunOptions o, RunResult* result) {
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
   }
-  const bool no_output = o.out.image.empty() && o.out.error_image.empty() && o.out.frames_dir.empty() && o.out.heightmap.empty() &&
-                         o.out.stl.empty() && o.out.report.empty() && !run.views.live();
-  if (no_output && o.out.print_summary) std::fputs(report_summary_text(su.rep).c_str(), stdout);
+  if (prints_summary(o)) {
+    std::fputs(report_summary_text(su.rep).c_str(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+      return fail(kExitIo, "cannot print the summary on standard output: %s", std::strerror(errno));
+  }
   if (su.job.stop_line) return kExitInput;
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
