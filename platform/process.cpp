@@ -21,8 +21,7 @@ volatile sig_atomic_t g_used[kCleanupSlots];
 unsigned g_closed_at_start = 0;
 
 extern "C" void on_stop_signal(int sig) {
-  for (int k = 0; k < kCleanupSlots; ++k)
-    if (g_used[k]) unlink(g_paths[k]);
+  cleanup_remove_all();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -95,6 +94,11 @@ int cleanup_register(const char* path) {
 
 void cleanup_unregister(int slot) {
   if (slot >= 0 && slot < kCleanupSlots) g_used[slot] = 0;
+}
+
+void cleanup_remove_all() {
+  for (int k = 0; k < kCleanupSlots; ++k)
+    if (g_used[k]) unlink(g_paths[k]);
 }
 
 }  // namespace dexmill

@@ -51,6 +51,10 @@ void install_cleanup_handlers();
 constexpr int kCleanupSlots = 32;
 int cleanup_register(const char* path);
 void cleanup_unregister(int slot);
+// Removes every registered file now (what the signal handler does; async-
+// signal-safe): for a process about to end without unwinding, such as on
+// running out of memory (tools/main.cpp).
+void cleanup_remove_all();
 
 }  // namespace dexmill
 

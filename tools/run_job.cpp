@@ -13,6 +13,7 @@
 #include "platform/clock.h"
 #include "platform/gcode_file.h"
 #include "platform/image_file.h"
+#include "platform/memory.h"
 #include "platform/output_file.h"
 #include "platform/process.h"
 #include "platform/progress.h"
@@ -40,14 +41,21 @@ struct Run {
 bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
   // Row 0 of the image is the grid's last row (north up); samples are the
   // top heights in LSB (the report gives the LSB), holes 0.
-  std::vector<uint16_t> img(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny));
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  ZeroedBlock block;
+  if (!block.allocate(n * sizeof(uint16_t))) {
+    std::snprintf(err, errn, "cannot allocate %s for the %dx%d heightmap", size_text(n * sizeof(uint16_t)).c_str(),
+                  static_cast<int>(g.nx), static_cast<int>(g.ny));
+    return false;
+  }
+  uint16_t* img = static_cast<uint16_t*>(block.data());
   for (int32_t j = 0; j < g.ny; ++j)
     for (int32_t i = 0; i < g.nx; ++i) {
       const uint64_t h = g.top[g.index(i, j)];
       img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
           static_cast<uint16_t>(h > 65535 ? 65535 : h);
     }
-  return write_grey16_image(path, format, g.nx, g.ny, img.data(), err, errn);
+  return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
 }
 
 // The report, with the whole run's time (when asked for); false when it

@@ -10,6 +10,7 @@
 #include "core/tool/spec.h"
 #include "platform/clock.h"
 #include "platform/frame_files.h"
+#include "platform/memory.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/run_colours.h"
@@ -171,7 +172,9 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   SimSetup why;
   const size_t bytes = sim_required_bytes(j, &why);
   if (!bytes) return setup_failed(why, o, *run);
-  run->memory.assign((bytes + 7) / 8, 0);
+  if (!run->memory.allocate(bytes))
+    return fail(kExitIo, "cannot allocate %s for the %dx%d grid (and the engine that cuts it)", size_text(bytes).c_str(),
+                static_cast<int>(run->plan.geo.nx), static_cast<int>(run->plan.geo.ny));
   run->sim = sim_create(j, run->memory.data(), bytes, &why);
   if (!run->sim) return setup_failed(why, o, *run);
   if (!run->blank.empty()) {
