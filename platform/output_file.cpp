@@ -10,6 +10,7 @@
 #include <cstring>
 #include <set>
 
+#include "platform/output_set.h"
 #include "platform/process.h"
 #include "platform/temp_file.h"
 
@@ -83,6 +84,7 @@ void OutputFile::abandon() {
 bool OutputFile::open(const char* path) {
   abandon();
   failed_ = false;
+  bytes_ = 0;
   error_[0] = 0;
   path_ = path;
   target_.clear();
@@ -133,28 +135,41 @@ bool OutputFile::open(const char* path) {
 void OutputFile::write(const void* data, std::size_t n) {
   if (!f_ || failed_) return;
   if (n && std::fwrite(data, 1, n, f_) != n) set_error("write", path_.c_str());
+  bytes_ += n;
 }
 
 void OutputFile::printf(const char* fmt, ...) {
   if (!f_ || failed_) return;
   va_list ap;
   va_start(ap, fmt);
-  if (std::vfprintf(f_, fmt, ap) < 0) set_error("write", path_.c_str());
+  const int n = std::vfprintf(f_, fmt, ap);
+  if (n < 0) set_error("write", path_.c_str());
+  else bytes_ += static_cast<uint64_t>(n);
   va_end(ap);
 }
 
 bool OutputFile::commit() {
   if (!f_) return false;
   if (!failed_ && (std::fflush(f_) != 0 || std::ferror(f_))) set_error("write", path_.c_str());
+  OutputSet* set = OutputSet::current();
   if (stdout_) {
     f_ = nullptr;
     stdout_ = false;
+    if (set && !failed_) set->written(path_, bytes_);
     return !failed_;
   }
   if (mode_ >= 0 && !failed_ && fchmod(fileno(f_), static_cast<mode_t>(mode_)) != 0) set_error("write", path_.c_str());
   if (std::fclose(f_) != 0 && !failed_) set_error("write", path_.c_str());
   f_ = nullptr;
-  if (tmp_.path.empty()) return !failed_;  // written in place
+  if (tmp_.path.empty()) {  // written in place
+    if (set && !failed_) set->written(path_, bytes_);
+    return !failed_;
+  }
+  if (set && !failed_) {  // complete: the set renames it (platform/output_set.h)
+    set->adopt(path_, bytes_, target_, &tmp_, cleanup_slot_);
+    cleanup_slot_ = -1;
+    return true;
+  }
   if (!failed_ && std::rename(tmp_.path.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
   if (failed_) unlink(tmp_.path.c_str());
   release_locked_temp(&tmp_);  // the lock, after the rename: the file is never unlocked under its temporary name

@@ -14,6 +14,7 @@
 #define DEXMILL_PLATFORM_OUTPUT_FILE_H
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -33,9 +34,11 @@ class OutputFile {
   // Appends bytes; failures are remembered and reported by commit().
   void write(const void* data, std::size_t n);
   void printf(const char* fmt, ...) __attribute__((format(printf, 2, 3)));
-  // Flushes and closes; renames a temporary onto its target. False on any
-  // failure, in which case a replaced target is untouched and the temporary
-  // removed (a device, FIFO or standard output may have had part of it).
+  // Flushes and closes; renames a temporary onto its target, or, while an
+  // OutputSet is open, hands it to the set, which renames it with the
+  // others (platform/output_set.h). False on any failure, in which case a
+  // replaced target is untouched and the temporary removed (a device, FIFO
+  // or standard output may have had part of it).
   bool commit();
   // Text of the first failure, e.g. "cannot write 'out/x.ppm': No space left on device".
   const char* error() const { return error_; }
@@ -50,6 +53,7 @@ class OutputFile {
   LockedTemp tmp_;          // the temporary (path empty: none), locked while it exists
   int mode_ = -1;            // permission bits of the replaced file; -1: a new file
   int cleanup_slot_ = -1;    // the temporary's entry in the signal handler's list
+  uint64_t bytes_ = 0;       // written so far
   char error_[1200] = {0};
   bool failed_ = false;
 };

@@ -2,6 +2,8 @@
 // its files and views around it; see run_job.h.
 #include "tools/run_job.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +17,7 @@
 #include "platform/image_file.h"
 #include "platform/memory.h"
 #include "platform/output_file.h"
+#include "platform/output_set.h"
 #include "platform/process.h"
 #include "platform/progress.h"
 #include "platform/report_json.h"
@@ -134,6 +137,38 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   return kExitOk;
 }
 
+// The final images, the heightmap and the STL, into the set (their
+// renames wait for the report's: platform/output_set.h).
+int write_files(const RunOptions& o, Run* run) {
+  RunSetup& su = run->setup;
+  RunViews& v = run->views;
+  if (const int code = v.write_images(o, su.plan, su.formats.image, su.formats.error_image)) return code;
+  char e[1300];
+  const double t_files = clock_now_s();
+  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
+    return fail(kExitIo, "%s", e);
+  double stl_s = 0;
+  if (!o.out.stl.empty()) {
+    const double t_stl = clock_now_s();
+    if (!write_stl(o.out.stl.c_str(), su.sim->grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    stl_s = clock_now_s() - t_stl;
+  }
+  v.write_s += clock_now_s() - t_files;
+  su.rep.timing.emplace_back("render", v.render_s);
+  su.rep.timing.emplace_back("write", v.write_s);
+  if (!o.out.stl.empty()) su.rep.timing.emplace_back("stl", stl_s);  // a part of write
+  return kExitOk;
+}
+
+// The report's list of what the run wrote beside it.
+void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, RunReport* rep) {
+  if (!o.out.frames_dir.empty()) rep->outputs.push_back(ReportOutput{"--frames", o.out.frames_dir, -1, v.frames_written()});
+  const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl}};
+  for (const auto& f : files)
+    if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
+}
+
 // The report's results, the final frame and files, the report itself.
 int write_results(const RunOptions& o, Run* run, bool user_quit) {
   RunSetup& su = run->setup;
@@ -158,22 +193,14 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   const CutterPose pose{true, sim.mill().position()};
   if (v.live() && !user_quit && !v.live_view().last_frame(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
-  if (const int code = v.write_images(o, su.plan, su.formats.image, su.formats.error_image)) return code;
-  char e[1300];
-  const double t_files = clock_now_s();
-  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, sim.grid(), e, sizeof e))
-    return fail(kExitIo, "%s", e);
-  double stl_s = 0;
-  if (!o.out.stl.empty()) {
-    const double t_stl = clock_now_s();
-    if (!write_stl(o.out.stl.c_str(), sim.grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
-    stl_s = clock_now_s() - t_stl;
-  }
-  v.write_s += clock_now_s() - t_files;
-  rep.timing.emplace_back("render", v.render_s);
-  rep.timing.emplace_back("write", v.write_s);
-  if (!o.out.stl.empty()) rep.timing.emplace_back("stl", stl_s);  // a part of write
+  // Every file complete before any is renamed, the report last, so that a
+  // report in place names the run each listed file is from.
+  OutputSet set;
+  if (const int code = write_files(o, run)) return code;
+  list_outputs(o, set, v, &rep);
   if (!write_report(o, run)) return kExitIo;
+  std::string err;
+  if (!set.publish(&err)) return fail(kExitIo, "%s", err.c_str());
   if (v.live() && !user_quit && !v.live_view().wait_done(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
   return kExitOk;
@@ -207,6 +234,8 @@ int run_job(RunOptions o, RunResult* result) {
   Run run;
   run.t_start = clock_now_s();
   RunSetup& su = run.setup;
+  su.rep.run_started = clock_utc_text();
+  su.rep.run_pid = static_cast<long>(getpid());
   if (const int code = run_setup(&o, &su)) {
     if (su.refused && !write_report(o, &run)) return kExitIo;  // --strict: the report of a program not cut
     return code;
