@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <set>
+#include <utility>
 
 #include "platform/output_set.h"
 #include "platform/process.h"
@@ -25,10 +26,14 @@ constexpr const char* kTempPrefix = ".dexmill-tmp-";
 // What runs killed outright (SIGKILL, which no handler sees) left in the
 // folder an output goes to: removed once per folder and process, when the
 // first output goes there (a folder of 40 000 frames is read once, not
-// once a frame).
+// once a frame), so before this process has a temporary of its own there:
+// on NFS, where flock is emulated by POSIX locks, which never conflict
+// within a process, it could not tell its own from a dead run's. The
+// folder is known by device and inode ("out" and "./out" are one).
 void remove_stale_temporaries(const std::string& dir) {
-  static std::set<std::string> done;
-  if (done.insert(dir).second) remove_stale_temps(dir, kTempPrefix);
+  static std::set<std::pair<dev_t, ino_t>> done;
+  struct stat st;
+  if (stat(dir.c_str(), &st) == 0 && done.insert({st.st_dev, st.st_ino}).second) remove_stale_temps(dir, kTempPrefix);
 }
 
 }  // namespace
