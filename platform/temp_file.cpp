@@ -68,19 +68,22 @@ bool make_locked_temp(const std::string& dir, const char* prefix, mode_t mode, L
       if (errno == EEXIST) continue;
       return false;
     }
-    const int lock_fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // The lock is on the file's open description, through a descriptor of
+    // its own: closing the writer's (and seeing that close's error) leaves
+    // it held.
+    const int lock_fd = fcntl(fd, F_DUPFD_CLOEXEC, 0);
     if (lock_fd < 0) {
-      const bool taken = errno == ENOENT;
       close_keep_errno(fd);
-      if (taken) continue;
+      const int e = errno;
       unlink(path.c_str());
+      errno = e;
       return false;
     }
     // Blocking: a clean-up holds a lock only to remove the file. A file
     // system without flock (some FUSE ones) fails it: the file is then
     // written unlocked, and no clean-up can lock it to remove it either.
     (void)flock(lock_fd, LOCK_EX);
-    if (!still_named(lock_fd, path)) {
+    if (!still_named(lock_fd, path)) {  // a clean-up took it first: another name
       close(lock_fd);
       close(fd);
       continue;

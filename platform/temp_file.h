@@ -6,9 +6,10 @@
 //
 // - make_locked_temp() creates DIR/PREFIX + 8 random letters and digits
 //   with O_EXCL (short whatever the file it stands for: an output named
-//   with 255 bytes still has a temporary that fits), and takes the lock on
-//   a second, read-only descriptor before it returns. The writer may close
-//   its own descriptor (and see the close's error) while the lock stays.
+//   with 255 bytes still has a temporary that fits), and takes the lock
+//   through a second descriptor of the same open file before it returns.
+//   The writer may close its own descriptor (and see the close's error)
+//   while the lock stays.
 // - remove_stale_temps() removes DIR/PREFIX* files whose lock it can take:
 //   no live owner holds them. What a SIGKILL, a power cut or `ulimit -f`
 //   left. A file being created is safe: its creator checks, once it holds
