@@ -140,7 +140,7 @@ LIB_A    := $(BUILD)/libdexmill.a
 LIB_SO   := $(BUILD)/libdexmill.so
 LIB_IO   := $(BUILD)/libdexmill_io.a
 IO_OBJ   := $(call obj,platform/dexmill_io.cpp platform/image_file.cpp platform/ppm.cpp platform/png.cpp platform/pgm.cpp \
-              platform/read_file.cpp platform/deflate.cpp platform/output_file.cpp platform/process.cpp \
+              platform/read_file.cpp platform/deflate.cpp platform/output_file.cpp platform/output_set.cpp platform/temp_file.cpp platform/process.cpp \
               display/framebuffer.cpp)
 EMBED    := $(BUILD)/embed
 lib: $(LIB_A) $(LIB_SO) $(LIB_IO)

@@ -129,8 +129,11 @@ class GcodeFile final : public LineInput, private ByteSource {
   bool owned_ = false;
   char name_[512] = {0};
   char error_[640] = {0};
-  char buf_[65536];
-  LineReader reader_{buf_, sizeof buf_};
+  // The read buffer on the heap: a GcodeFile is often a local, and the
+  // stack the host binary needs is stated small (README, "Limits").
+  static constexpr std::size_t kBufBytes = 65536;
+  std::unique_ptr<char[]> buf_{new char[kBufBytes]};
+  LineReader reader_{buf_.get(), kBufBytes};
   int64_t total_ = -1;
 };
 

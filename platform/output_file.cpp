@@ -1,6 +1,5 @@
 #include "platform/output_file.h"
 
-#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,31 +8,32 @@
 #include <cstdarg>
 #include <cstdlib>
 #include <cstring>
+#include <set>
+#include <utility>
 
+#include "platform/output_set.h"
 #include "platform/process.h"
+#include "platform/temp_file.h"
 
 namespace dexmill {
 
 namespace {
 
-// Removes "<target>.tmp-PID" files whose process is gone: what a run killed
-// by SIGKILL (which no handler sees) left of this output.
-void remove_stale_temporaries(const std::string& target) {
-  const size_t slash = target.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
-  const std::string prefix = (slash == std::string::npos ? target : target.substr(slash + 1)) + ".tmp-";
-  DIR* d = opendir(dir.c_str());
-  if (!d) return;
-  while (const dirent* e = readdir(d)) {
-    if (std::strncmp(e->d_name, prefix.c_str(), prefix.size()) != 0) continue;
-    const char* digits = e->d_name + prefix.size();
-    char* end = nullptr;
-    const long pid = std::strtol(digits, &end, 10);
-    if (end == digits || *end || pid <= 0 || pid == static_cast<long>(getpid())) continue;
-    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
-    unlink((dir + "/" + e->d_name).c_str());
-  }
-  closedir(d);
+// Temporaries are DIR/.dexmill-tmp-XXXXXXXX (platform/temp_file.h): 21
+// bytes, whatever the length of the output's own name.
+constexpr const char* kTempPrefix = ".dexmill-tmp-";
+
+// What runs killed outright (SIGKILL, which no handler sees) left in the
+// folder an output goes to: removed once per folder and process, when the
+// first output goes there (a folder of 40 000 frames is read once, not
+// once a frame), so before this process has a temporary of its own there:
+// on NFS, where flock is emulated by POSIX locks, which never conflict
+// within a process, it could not tell its own from a dead run's. The
+// folder is known by device and inode ("out" and "./out" are one).
+void remove_stale_temporaries(const std::string& dir) {
+  static std::set<std::pair<dev_t, ino_t>> done;
+  struct stat st;
+  if (stat(dir.c_str(), &st) == 0 && done.insert({st.st_dev, st.st_ino}).second) remove_stale_temps(dir, kTempPrefix);
 }
 
 }  // namespace
@@ -66,15 +66,20 @@ bool output_target(const std::string& path, std::string* out) {
 OutputFile::~OutputFile() { abandon(); }
 
 void OutputFile::set_error(const char* what, const char* path) {
-  if (!failed_) std::snprintf(error_, sizeof error_, "cannot %s '%s': %s", what, path, std::strerror(errno));
+  if (failed_) return;  // the first failure is the cause
+  if (is_stdout_path(path)) {
+    std::snprintf(error_, sizeof error_, "cannot %s standard output: %s", what, std::strerror(errno));
+  } else {
+    std::snprintf(error_, sizeof error_, "cannot %s '%s': %s", what, path, std::strerror(errno));
+  }
   failed_ = true;
 }
 
 void OutputFile::abandon() {
-  if (f_ && !stdout_) {
-    std::fclose(f_);
-    if (!tmp_.empty()) std::remove(tmp_.c_str());
-  }
+  if (f_ && !stdout_) std::fclose(f_);
+  if (!tmp_.path.empty()) unlink(tmp_.path.c_str());
+  release_locked_temp(&tmp_);
+  tmp_.path.clear();
   cleanup_unregister(cleanup_slot_);
   cleanup_slot_ = -1;
   f_ = nullptr;
@@ -84,12 +89,17 @@ void OutputFile::abandon() {
 bool OutputFile::open(const char* path) {
   abandon();
   failed_ = false;
+  bytes_ = 0;
   error_[0] = 0;
   path_ = path;
   target_.clear();
-  tmp_.clear();
   mode_ = -1;
   if (is_stdout_path(path_)) {
+    if (standard_output_closed()) {
+      std::snprintf(error_, sizeof error_, "cannot write standard output: it is closed");
+      failed_ = true;
+      return false;
+    }
     f_ = stdout;
     stdout_ = true;
     return true;
@@ -110,50 +120,67 @@ bool OutputFile::open(const char* path) {
   }
   target_ = real;
   if (exists) mode_ = static_cast<int>(st.st_mode & 07777);
-  remove_stale_temporaries(real);
-  tmp_ = real + ".tmp-" + std::to_string(static_cast<long>(getpid()));
-  cleanup_slot_ = cleanup_register(tmp_.c_str());
-  f_ = std::fopen(tmp_.c_str(), "wb");
-  if (!f_) {
-    cleanup_unregister(cleanup_slot_);
-    cleanup_slot_ = -1;
-    tmp_.clear();
+  const std::string dir = folder_of(real);
+  remove_stale_temporaries(dir);
+  if (!make_locked_temp(dir, kTempPrefix, 0666, &tmp_)) {
     set_error("write", path);
     return false;
   }
+  cleanup_slot_ = cleanup_register(tmp_.path.c_str());
+  f_ = fdopen(tmp_.fd, "wb");
+  if (!f_) {
+    set_error("write", path);
+    abandon();
+    return false;
+  }
+  tmp_.fd = -1;  // f_ has it now
   return true;
 }
 
 void OutputFile::write(const void* data, std::size_t n) {
   if (!f_ || failed_) return;
   if (n && std::fwrite(data, 1, n, f_) != n) set_error("write", path_.c_str());
+  bytes_ += n;
 }
 
 void OutputFile::printf(const char* fmt, ...) {
   if (!f_ || failed_) return;
   va_list ap;
   va_start(ap, fmt);
-  if (std::vfprintf(f_, fmt, ap) < 0) set_error("write", path_.c_str());
+  const int n = std::vfprintf(f_, fmt, ap);
+  if (n < 0) set_error("write", path_.c_str());
+  else bytes_ += static_cast<uint64_t>(n);
   va_end(ap);
 }
 
 bool OutputFile::commit() {
   if (!f_) return false;
-  if (!failed_ && std::fflush(f_) != 0) set_error("write", path_.c_str());
+  if (!failed_ && (std::fflush(f_) != 0 || std::ferror(f_))) set_error("write", path_.c_str());
+  OutputSet* set = OutputSet::current();
   if (stdout_) {
     f_ = nullptr;
     stdout_ = false;
+    if (set && !failed_) set->written(path_, bytes_);
     return !failed_;
   }
   if (mode_ >= 0 && !failed_ && fchmod(fileno(f_), static_cast<mode_t>(mode_)) != 0) set_error("write", path_.c_str());
   if (std::fclose(f_) != 0 && !failed_) set_error("write", path_.c_str());
   f_ = nullptr;
-  if (tmp_.empty()) return !failed_;  // written in place
-  if (!failed_ && std::rename(tmp_.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
-  if (failed_) std::remove(tmp_.c_str());
+  if (tmp_.path.empty()) {  // written in place
+    if (set && !failed_) set->written(path_, bytes_);
+    return !failed_;
+  }
+  if (set && !failed_) {  // complete: the set renames it (platform/output_set.h)
+    set->adopt(path_, bytes_, target_, &tmp_, cleanup_slot_);
+    cleanup_slot_ = -1;
+    return true;
+  }
+  if (!failed_ && std::rename(tmp_.path.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
+  if (failed_) unlink(tmp_.path.c_str());
+  release_locked_temp(&tmp_);  // the lock, after the rename: the file is never unlocked under its temporary name
+  tmp_.path.clear();
   cleanup_unregister(cleanup_slot_);
   cleanup_slot_ = -1;
-  tmp_.clear();
   return !failed_;
 }
 

@@ -4,7 +4,12 @@
 // - A closed standard input, output or error (`dexmill run - <&-`) would be
 //   taken by the next file opened (a temporary spool would become "standard
 //   input"): they are opened on /dev/null instead, and the caller is told
-//   which were closed.
+//   which were closed. Standard output is opened read-only, so that a write
+//   to it fails (EBADF, as on the closed descriptor) rather than vanish:
+//   an output sent to a closed standard output is lost, an I/O error.
+// - Standard output is checked at the end (close_standard_output): a
+//   write, flush or close that failed (/dev/full, a closed pipe) is an I/O
+//   error, whichever code wrote it.
 // - On SIGINT, SIGTERM and SIGHUP the temporary files registered here (an
 //   output being written, the spool of standard input) are removed and the
 //   signal is raised again with its default action, so the exit status says
@@ -13,6 +18,8 @@
 //   output removes (platform/output_file.h).
 #ifndef DEXMILL_PLATFORM_PROCESS_H
 #define DEXMILL_PLATFORM_PROCESS_H
+
+#include <string>
 
 namespace dexmill {
 
@@ -23,8 +30,19 @@ unsigned fix_standard_descriptors();
 // The process started with standard input closed: "-" has nothing to read
 // (an I/O error, not an empty program).
 bool standard_input_closed();
+// The process started with standard output closed: what goes to "-" is
+// lost.
+bool standard_output_closed();
+// False with "standard output is closed" when it is; what a command that
+// will write to standard output checks before its work.
+bool standard_output_usable(std::string* err);
+// Flushes and closes standard output; false with the message ("cannot
+// write standard output: No space left on device", "... it is closed")
+// when anything written to it was lost.
+bool close_standard_output(std::string* err);
 
-// Installs the SIGINT, SIGTERM and SIGHUP handlers.
+// Installs the SIGINT, SIGTERM and SIGHUP handlers, and ignores SIGXFSZ
+// (a write past `ulimit -f` fails with EFBIG instead of killing).
 void install_cleanup_handlers();
 
 // Registers a file to remove if a signal stops the process; returns its
@@ -33,6 +51,10 @@ void install_cleanup_handlers();
 constexpr int kCleanupSlots = 32;
 int cleanup_register(const char* path);
 void cleanup_unregister(int slot);
+// Removes every registered file now (what the signal handler does; async-
+// signal-safe): for a process about to end without unwinding, such as on
+// running out of memory (tools/main.cpp).
+void cleanup_remove_all();
 
 }  // namespace dexmill
 

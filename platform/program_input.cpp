@@ -5,23 +5,73 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <vector>
+#include <memory>
 
+#include "core/gcode/line_reader.h"
 #include "platform/process.h"
+#include "platform/temp_file.h"
 
 namespace dexmill {
 
 namespace {
 
+constexpr const char* kSpoolPrefix = "dexmill-input-";
+constexpr std::size_t kChunk = 65536;
+
 std::string describe(const std::string& path) { return path == "-" ? "standard input" : "'" + path + "'"; }
+
+// The copy as the line reader pulls it: each byte read from `in` goes to
+// `out` before the reader sees it, so the copy holds every byte a reading
+// of it needs to come to the same end (core/gcode/line_reader.h decides
+// on bytes alone).
+class SpoolSource final : public ByteSource {
+ public:
+  SpoolSource(int in, int out, uint64_t limit) : in_(in), out_(out), limit_(limit) {}
+  Fill read_bytes(char* buf, std::size_t n, std::size_t* got) override {
+    *got = 0;
+    ssize_t k;
+    do k = read(in_, buf, n); while (k < 0 && errno == EINTR);
+    if (k < 0) return fail(&read_errno_);
+    if (k == 0) return Fill::kEnd;
+    copied_ += static_cast<uint64_t>(k);
+    if (copied_ > limit_) {
+      over_ = true;
+      return Fill::kError;
+    }
+    for (std::size_t done = 0; done < static_cast<std::size_t>(k);) {
+      // A short write is not an error: the rest is written again, and a
+      // write that fails says why (ENOSPC, EFBIG past `ulimit -f`).
+      const ssize_t w = write(out_, buf + done, static_cast<std::size_t>(k) - done);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) return fail(&write_errno_);
+      done += static_cast<std::size_t>(w);
+    }
+    *got = static_cast<std::size_t>(k);
+    return Fill::kBytes;
+  }
+  bool seek_bytes(uint64_t) override { return false; }
+  bool over() const { return over_; }
+  int read_errno() const { return read_errno_; }
+  int write_errno() const { return write_errno_; }
+
+ private:
+  Fill fail(int* e) {
+    *e = errno ? errno : EIO;
+    return Fill::kError;
+  }
+  int in_, out_;
+  uint64_t limit_, copied_ = 0;
+  bool over_ = false;
+  int read_errno_ = 0, write_errno_ = 0;
+};
 
 }  // namespace
 
 ProgramInput::~ProgramInput() {
-  if (!spool_.empty()) unlink(spool_.c_str());
+  if (!spool_.path.empty()) unlink(spool_.path.c_str());
+  release_locked_temp(&spool_);  // after the unlink: a clean-up never finds it unlocked
   cleanup_unregister(cleanup_slot_);
 }
 
@@ -50,44 +100,57 @@ bool ProgramInput::open(const std::string& path, std::string* err) {
       return false;
     }
   }
-  // One read into a temporary file.
-  const int in = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY);
+  const int in = path == "-" ? 0 : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (in < 0) {
     *err = "cannot open '" + path + "': " + std::strerror(errno);
     return false;
   }
-  const char* tmpdir = std::getenv("TMPDIR");
-  std::string templ = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/dexmill-input-XXXXXX";
-  std::vector<char> name(templ.begin(), templ.end());
-  name.push_back(0);
-  const int out = mkstemp(name.data());
-  if (out < 0) {
-    *err = "cannot keep " + describe(path) + " in '" + templ + "': " + std::strerror(errno);
-    if (in != 0) close(in);
-    return false;
-  }
-  spool_ = read_path_ = name.data();
-  cleanup_slot_ = cleanup_register(spool_.c_str());
-  bool ok = true;
-  char chunk[65536];
-  for (;;) {
-    const ssize_t n = read(in, chunk, sizeof chunk);
-    if (n == 0) break;
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      *err = "cannot read " + describe(path) + ": " + std::strerror(errno);
-      ok = false;
-      break;
-    }
-    if (write(out, chunk, static_cast<size_t>(n)) != n) {
-      *err = "cannot keep " + describe(path) + " in '" + spool_ + "': " + std::strerror(errno);
-      ok = false;
-      break;
-    }
-  }
-  close(out);
+  const bool ok = copy(in, err);
   if (in != 0) close(in);
   return ok;
+}
+
+bool ProgramInput::copy(int in, std::string* err) {
+  const char* tmpdir = std::getenv("TMPDIR");
+  const std::string dir = tmpdir && *tmpdir ? tmpdir : "/tmp";
+  remove_stale_temps(dir, kSpoolPrefix);  // what killed runs left (platform/temp_file.h)
+  if (!make_locked_temp(dir, kSpoolPrefix, 0600, &spool_)) {
+    *err = "cannot keep " + describe(path_) + " in '" + dir + "/" + kSpoolPrefix + "...': " + std::strerror(errno);
+    return false;
+  }
+  read_path_ = spool_.path;
+  cleanup_slot_ = cleanup_register(spool_.path.c_str());
+  SpoolSource src(in, spool_.fd, limit_);
+  std::unique_ptr<char[]> buf(new char[kChunk]);
+  LineReader reader(buf.get(), kChunk);
+  reader.set_source(&src);
+  const char* text;
+  std::size_t len;
+  uint32_t line;
+  LineReader::Read r;
+  do r = reader.next(&text, &len, &line);
+  while (r == LineReader::Read::kLine || r == LineReader::Read::kTooLong);
+  // Not text, or a line with no end: the reading of the copy stops where
+  // this one did, and says why (an input error); what follows is never read.
+  const int close_errno = close(spool_.fd) != 0 ? errno : 0;
+  spool_.fd = -1;
+  if (src.over()) {
+    too_large_ = true;
+    *err = describe(path_) + " is larger than " + std::to_string(limit_ >> 20) +
+           " MiB, the most dexmill copies of a program it cannot read twice (a pipe, FIFO or device, into $TMPDIR); "
+           "--max-input MIB raises it";
+    return false;
+  }
+  if (src.read_errno()) {
+    *err = "cannot read " + describe(path_) + ": " + std::strerror(src.read_errno());
+    return false;
+  }
+  const int werr = src.write_errno() ? src.write_errno() : close_errno;
+  if (werr) {
+    *err = "cannot keep " + describe(path_) + " in '" + spool_.path + "': " + std::strerror(werr);
+    return false;
+  }
+  return true;
 }
 
 bool ProgramInput::unchanged(std::string* err) const {

@@ -6,17 +6,30 @@
 //   be silently wrong);
 // - anything that cannot be read twice (standard input "-", a pipe given by
 //   name such as /dev/stdin or a shell's <(...), a FIFO, a device) is copied
-//   once into a temporary file, which is removed at the end and on SIGINT,
-//   SIGTERM or SIGHUP (platform/process.h).
+//   once into a temporary file, $TMPDIR/dexmill-input-XXXXXXXX, which is
+//   removed at the end and on SIGINT, SIGTERM or SIGHUP (platform/process.h)
+//   and is held under a lock while it is used, so that the next copy's
+//   clean-up removes what a killed run left and nothing else
+//   (platform/temp_file.h). The copy is bounded: it stops where the reading
+//   of it would (input that is not text after its first 64 KiB, a line with
+//   no end within 1 MiB: core/gcode/line_reader.h), and an input longer than
+//   the limit (kDefaultMaxCopyBytes, `--max-input`) is refused.
 #ifndef DEXMILL_PLATFORM_PROGRAM_INPUT_H
 #define DEXMILL_PLATFORM_PROGRAM_INPUT_H
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <ctime>
 #include <string>
 
+#include "platform/temp_file.h"
+
 namespace dexmill {
+
+// The most bytes copied by default (1 GiB, the most `dexmill optimize`
+// holds of a program).
+constexpr uint64_t kDefaultMaxCopyBytes = uint64_t(1) << 30;
 
 class ProgramInput {
  public:
@@ -25,9 +38,14 @@ class ProgramInput {
   ProgramInput& operator=(const ProgramInput&) = delete;
   ~ProgramInput();
 
+  // The most bytes a copy may hold; before open().
+  void set_copy_limit(uint64_t bytes) { limit_ = bytes; }
   // Takes `path` ("-": standard input). False with a message ("cannot read
-  // 'x': ...") on failure: an I/O error.
+  // 'x': ...") on failure: an I/O error, or an input error when
+  // too_large().
   bool open(const std::string& path, std::string* err);
+  // open() failed because the input is longer than the copy limit.
+  bool too_large() const { return too_large_; }
   // What the passes open: the file itself or the copy.
   const std::string& read_path() const { return read_path_; }
   // Before a second pass: false with a message when a regular file was
@@ -35,7 +53,11 @@ class ProgramInput {
   bool unchanged(std::string* err) const;
 
  private:
-  std::string path_, read_path_, spool_;
+  bool copy(int in, std::string* err);
+  std::string path_, read_path_;
+  LockedTemp spool_;
+  uint64_t limit_ = kDefaultMaxCopyBytes;
+  bool too_large_ = false;
   int cleanup_slot_ = -1;
   bool regular_ = false;
   dev_t dev_ = 0;

@@ -15,9 +15,10 @@ ReadFile read_whole_file(const std::string& path, std::size_t max_bytes, std::ve
     *err = "dexmill: error: cannot read '" + path + "': " + std::strerror(errno);
     return ReadFile::kIoError;
   }
-  unsigned char chunk[65536];
+  std::vector<unsigned char> buf(65536);  // not on the stack (README, "Limits")
+  unsigned char* chunk = buf.data();
   std::size_t n;
-  while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) {
+  while ((n = std::fread(chunk, 1, buf.size(), f)) > 0) {
     if (out->size() + n > max_bytes) {
       std::fclose(f);
       *err = path + ": error: larger than " + std::to_string(max_bytes >> 20) + " MB";

@@ -303,7 +303,15 @@ std::string report_json_text(const RunReport& r) {
     std::snprintf(b, sizeof b, "%.3f", r.timing[k].second);
     o += std::string(k ? ", " : "") + quoted(r.timing[k].first + "_s") + ": " + b;
   }
-  o += "}\n}\n";
+  o += "},\n";
+  o += "  \"run\": {\"started\": " + quoted(r.run_started) + ", \"pid\": " + std::to_string(r.run_pid) + ", \"outputs\": [";
+  for (std::size_t k = 0; k < r.outputs.size(); ++k) {
+    const ReportOutput& out = r.outputs[k];
+    o += std::string(k ? ",\n    " : "\n    ") + "{\"option\": " + quoted(out.option) +
+         (out.bytes < 0 ? ", \"folder\": " + quoted(out.path) + ", \"files\": " + std::to_string(out.files)
+                        : ", \"file\": " + quoted(out.path) + ", \"bytes\": " + std::to_string(out.bytes)) + "}";
+  }
+  o += r.outputs.empty() ? "]}\n}\n" : "\n  ]}\n}\n";
   return o;
 }
 

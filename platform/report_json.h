@@ -2,7 +2,7 @@
 // the order below; lengths are millimetres with 4 decimals, volumes mm^3
 // with 3, simulated times seconds with 3, all printed from integers (the
 // same bytes on every machine). Only `timing` (wall-clock seconds per stage)
-// differs between two runs of the same job, and it comes last.
+// and `run` differ between two runs of the same job, and they come last.
 //
 //   dexmill_report  1 (the format's version)
 //   program         file, lines (read), units (what its moves were written in:
@@ -52,6 +52,11 @@
 //                   y_mm, z_mm, depth_mm, volume_mm3, message}]} (the first
 //                   64 kept; total counts all)
 //   timing          {STAGE_s: seconds, ...}
+//   run             {started (UTC), pid, outputs [{option, file, bytes} or
+//                   {option "--frames", folder, files}]}: the run that wrote
+//                   the report and the other files it wrote; the report is
+//                   renamed into place after them, so a report that is
+//                   there names the run every listed file is from
 #ifndef DEXMILL_PLATFORM_REPORT_JSON_H
 #define DEXMILL_PLATFORM_REPORT_JSON_H
 
@@ -78,6 +83,15 @@ struct ReportToolUse {
   std::string source;  // "option", "table", "comment", "default" (empty: not known)
   uint32_t line = 0;   // source "comment": the comment's line, and its form (core/tool/tool_comment.h)
   std::string form;
+};
+
+// An output of the run beside the report: a file and its bytes, or the
+// frame folder and its frames (bytes -1).
+struct ReportOutput {
+  std::string option;  // "--image", "--frames", ...
+  std::string path;    // as given
+  int64_t bytes = -1;
+  uint32_t files = 0;
 };
 
 // A gouge charged to the line that made it.
@@ -160,6 +174,11 @@ struct RunReport {
   std::vector<ReportViolation> material_violations;  // as kept
   uint64_t material_violations_total = 0;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
+  // The run that wrote the report and what else it wrote (platform/output_set.h:
+  // the report is published last).
+  std::string run_started;       // UTC, ISO 8601 to the millisecond
+  long run_pid = 0;
+  std::vector<ReportOutput> outputs;
 };
 
 // One safety event as text: "rapid into material: 0.123 mm3 removed, 0.400

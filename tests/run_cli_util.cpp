@@ -104,6 +104,32 @@ Result run_command(const std::string& args, const char* stdin_file, bool in_tmp,
   return r;
 }
 
+Result run_shell(const std::string& script) {
+  Result r;
+  const char* bin = t::dexmill_binary();
+  if (!bin) return r;
+  char abs[4096];
+  const std::string binary = std::string("'") + (realpath(bin, abs) ? abs : bin) + "'";
+  std::string s;
+  for (size_t k = 0; k < script.size(); ++k) {
+    if (script.compare(k, 5, "{bin}") == 0) {
+      s += binary;
+      k += 4;
+    } else if (script[k] == '%') {
+      s += tmp_dir();
+    } else {
+      s += script[k];
+    }
+  }
+  const std::string err = tmp_dir() + "/stderr.txt", out = tmp_dir() + "/stdout.txt";
+  const std::string cmd = "cd '" + std::string(t::tests_dir()) + "/run' && { " + s + "\n} 2>'" + err + "' >'" + out + "' </dev/null";
+  const int st = std::system(cmd.c_str());
+  r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  r.err = slurp(err);
+  r.out = slurp(out);
+  return r;
+}
+
 bool has(const std::string& s, const char* part) {
   if (s.find(part) != std::string::npos) return true;
   std::printf("  wanted '%s' in: %s\n", part, s.c_str());

@@ -31,6 +31,11 @@ void write_file(const std::string& path, const std::string& bytes);
 // The same for any subcommand: args begin with it ("check --simulate ...").
 Result run_command(const std::string& args, const char* stdin_file = nullptr, bool in_tmp = false,
                    const std::string& prefix = "");
+// Runs a shell script in the tests/run folder, `{bin}` in it standing for
+// the binary to test and % for the temporary folder: its exit status (-1
+// when killed by a signal), standard error and standard output (what the
+// script does not redirect itself).
+Result run_shell(const std::string& script);
 // True when s holds part; else prints both and returns false.
 bool has(const std::string& s, const char* part);
 // The report without its wall-clock timing.

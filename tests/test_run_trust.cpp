@@ -1,7 +1,8 @@
 // Trust (issue 25): the program is read once whatever it is (a pipe by
 // name, a FIFO), a closed standard input is an error, a file changed
 // between the passes is caught, and an interrupted run leaves no debris
-// (a real signal to a real run), nor does a killed one for long.
+// (a real signal to a real run); what a killed one leaves is
+// tests/test_output_temps.cpp's.
 #include <dirent.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -125,30 +126,9 @@ TEST(run_interrupted_leaves_no_debris) {
                             sig + " $pid; wait $pid; exit $?; }";
     const int code = shell(cmd);
     CHECK_EQ(code, std::string(sig) == "INT" ? 130 : 143);
-    CHECK_EQ(count_names(frames, ".tmp-"), 0);
+    CHECK_EQ(count_names(frames, "tmp"), 0);
     CHECK(count_names(frames, "frame-") > 0);  // it was interrupted mid-run
-    CHECK_EQ(count_names(d, ".tmp-"), 0);
+    CHECK_EQ(count_names(d, "tmp"), 0);
     CHECK_EQ(count_names(spool, "dexmill-"), 0);
   }
-}
-
-TEST(run_removes_what_a_killed_run_left) {
-  if (skip()) return;
-  // SIGKILL cannot be caught: the temporary stays until the same output is
-  // written again (by a process that is gone, not a live one).
-  const std::string d = fresh_dir("killed");
-  const pid_t child = fork();
-  if (child == 0) _exit(0);
-  waitpid(child, nullptr, 0);
-  const std::string dead = d + "/r.json.tmp-" + std::to_string(static_cast<long>(child));
-  const std::string alive = d + "/r.json.tmp-" + std::to_string(static_cast<long>(getpid()));
-  for (const std::string& p : {dead, alive}) {
-    std::FILE* f = std::fopen(p.c_str(), "wb");
-    if (f) std::fclose(f);
-  }
-  CHECK_EQ(run("pocket.ngc -q --report " + d + "/r.json").code, 0);
-  struct stat st;
-  CHECK(stat(dead.c_str(), &st) != 0);
-  CHECK_EQ(stat(alive.c_str(), &st), 0);  // this test's process is alive: not another run's debris
-  CHECK(has(slurp(d + "/r.json"), "\"dexmill_report\": 1"));
 }

@@ -5,6 +5,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
+#include <string>
 
 #include "platform/process.h"
 #include "tools/option_help.h"
@@ -60,7 +61,9 @@ std::vector<CommandDoc> command_docs() {
   return docs;
 }
 
-int main(int argc, char** argv) {
+namespace {
+
+int dispatch(int argc, char** argv) {
   // Before any file is opened: a closed standard descriptor must not be
   // taken by one (platform/process.h), and a signal must not leave debris.
   fix_standard_descriptors();
@@ -87,6 +90,18 @@ int main(int argc, char** argv) {
   }
   fail(kExitUsage, "unknown command '%s' (try 'dexmill --help')", sub);
   return kExitUsage;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int code = dispatch(argc, argv);
+  // Whatever wrote to standard output (a listing, the help, the summary),
+  // a failed write, flush or close loses it: an I/O error (unless one was
+  // reported already).
+  std::string err;
+  if (!close_standard_output(&err) && code != kExitIo) code = fail(kExitIo, "%s", err.c_str());
+  return code;
 }
 
 }  // namespace cli

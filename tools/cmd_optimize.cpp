@@ -12,6 +12,7 @@
 
 #include "platform/file_guard.h"
 #include "platform/output_file.h"
+#include "platform/process.h"
 #include "platform/program_input.h"
 #include "platform/read_file.h"
 #include "tools/cli.h"
@@ -128,10 +129,13 @@ int cmd_optimize(int argc, char** argv) {
   if (const int code = guard_status(guard, guard.check_output(out_path == "-" ? "" : "-o", out_path, FileGuard::kProgram)))
     return code;
 
+  std::string err;
+  if (out_path == "-" && !standard_output_usable(&err)) return fail(kExitIo, "cannot write the program: %s", err.c_str());
+
   // The program as every pass reads it: a copy when it cannot be read twice.
   ProgramInput input;
-  std::string err;
-  if (!input.open(o.job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+  input.set_copy_limit(o.job.max_input_bytes);
+  if (!input.open(o.job.file, &err)) return fail(input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
   const std::string shown = o.job.file == "-" ? "<stdin>" : o.job.file;
   o.job.shown_name = shown;
   o.job.file = input.read_path();

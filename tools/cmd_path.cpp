@@ -1,6 +1,7 @@
 // `dexmill path FILE [--chord MM] [reading options]`: the interpreted motion
 // as a polyline: rapid/feed end points of the tool tip in machine
 // coordinates, mm with 5 decimals, arcs split into chords.
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -11,6 +12,7 @@
 #include "core/motion/interp.h"
 #include "platform/file_guard.h"
 #include "platform/gcode_file.h"
+#include "platform/process.h"
 #include "tools/cli.h"
 #include "tools/guard_inputs.h"
 #include "tools/option_help.h"
@@ -134,6 +136,8 @@ int cmd_path(int argc, char** argv) {
     print_help(path_doc(), stderr);
     return kExitUsage;
   }
+  std::string err;
+  if (!standard_output_usable(&err)) return fail(kExitIo, "cannot print the path: %s", err.c_str());
   const int64_t chord_nm = a.chord_nm;
   const ReadOptions& ro = a.read;
   FileGuard guard;
@@ -163,7 +167,8 @@ int cmd_path(int argc, char** argv) {
   print_point(stdout, "# start", interp.position());
   GcodeRunner runner(&in, &interp, &msgs, true);
   runner.run_all();
-  if (std::fflush(stdout) != 0 || std::ferror(stdout)) return fail(kExitIo, "cannot write the path to standard output");
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    return fail(kExitIo, "cannot write the path to standard output: %s", std::strerror(errno));
   if (runner.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   return msgs.errors() ? kExitInput : kExitOk;
 }

@@ -16,6 +16,7 @@
 #include "core/tool/spec.h"
 #include "platform/file_guard.h"
 #include "platform/output_file.h"
+#include "platform/process.h"
 #include "platform/report_json.h"
 #include "tools/cli.h"
 #include "tools/guard_inputs.h"
@@ -165,6 +166,8 @@ int cmd_zig(int argc, char** argv) {
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");
 
   if (!o.job.have_stock) return fail(kExitUsage, "zig needs --stock X0,Y0,Z0,X1,Y1,Z1 (the block the design is cut from)");
+  std::string err;
+  if (z.out == "-" && !standard_output_usable(&err)) return fail(kExitIo, "cannot write the program: %s", err.c_str());
   FileGuard guard;  // the program is never the design, nor another file the options name
   if (const int code = guard_job_inputs(o.job, "", &guard)) return code;
   if (const int code = guard_status(guard, guard.check_output(z.out == "-" ? "" : "-o", z.out))) return code;
@@ -174,12 +177,7 @@ int cmd_zig(int argc, char** argv) {
   const int gcode = zig_generate(o.job, &z.job, &text, &st, &plan);
   if (gcode != kExitOk) return gcode;
   char e[1300];
-  if (z.out == "-") {
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-      return fail(kExitIo, "writing the program to standard output failed");
-  } else if (!write_output(z.out.c_str(), text.data(), text.size(), e, sizeof e)) {
-    return fail(kExitIo, "%s", e);
-  }
+  if (!write_output(z.out.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
   zig_print_stats(plan, st);
   return kExitOk;
 }

@@ -2,14 +2,23 @@
 // its files and views around it; see run_job.h.
 #include "tools/run_job.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/sim/simulation.h"
 #include "platform/clock.h"
 #include "platform/gcode_file.h"
 #include "platform/image_file.h"
+#include "platform/memory.h"
+#include "platform/output_file.h"
+#include "platform/output_set.h"
+#include "platform/process.h"
 #include "platform/progress.h"
 #include "platform/report_json.h"
 #include "platform/report_summary.h"
@@ -35,14 +44,21 @@ struct Run {
 bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
   // Row 0 of the image is the grid's last row (north up); samples are the
   // top heights in LSB (the report gives the LSB), holes 0.
-  std::vector<uint16_t> img(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny));
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  ZeroedBlock block;
+  if (!block.allocate(n * sizeof(uint16_t))) {
+    std::snprintf(err, errn, "cannot allocate %s for the %dx%d heightmap", size_text(n * sizeof(uint16_t)).c_str(),
+                  static_cast<int>(g.nx), static_cast<int>(g.ny));
+    return false;
+  }
+  uint16_t* img = static_cast<uint16_t*>(block.data());
   for (int32_t j = 0; j < g.ny; ++j)
     for (int32_t i = 0; i < g.nx; ++i) {
       const uint64_t h = g.top[g.index(i, j)];
       img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
           static_cast<uint16_t>(h > 65535 ? 65535 : h);
     }
-  return write_grey16_image(path, format, g.nx, g.ny, img.data(), err, errn);
+  return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
 }
 
 // The report, with the whole run's time (when asked for); false when it
@@ -122,6 +138,38 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   return kExitOk;
 }
 
+// The final images, the heightmap and the STL, into the set (their
+// renames wait for the report's: platform/output_set.h).
+int write_files(const RunOptions& o, Run* run) {
+  RunSetup& su = run->setup;
+  RunViews& v = run->views;
+  if (const int code = v.write_images(o, su.plan, su.formats.image, su.formats.error_image)) return code;
+  char e[1300];
+  const double t_files = clock_now_s();
+  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
+    return fail(kExitIo, "%s", e);
+  double stl_s = 0;
+  if (!o.out.stl.empty()) {
+    const double t_stl = clock_now_s();
+    if (!write_stl(o.out.stl.c_str(), su.sim->grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    stl_s = clock_now_s() - t_stl;
+  }
+  v.write_s += clock_now_s() - t_files;
+  su.rep.timing.emplace_back("render", v.render_s);
+  su.rep.timing.emplace_back("write", v.write_s);
+  if (!o.out.stl.empty()) su.rep.timing.emplace_back("stl", stl_s);  // a part of write
+  return kExitOk;
+}
+
+// The report's list of what the run wrote beside it.
+void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, RunReport* rep) {
+  if (!o.out.frames_dir.empty()) rep->outputs.push_back(ReportOutput{"--frames", o.out.frames_dir, -1, v.frames_written()});
+  const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl}};
+  for (const auto& f : files)
+    if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
+}
+
 // The report's results, the final frame and files, the report itself.
 int write_results(const RunOptions& o, Run* run, bool user_quit) {
   RunSetup& su = run->setup;
@@ -146,34 +194,43 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   const CutterPose pose{true, sim.mill().position()};
   if (v.live() && !user_quit && !v.live_view().last_frame(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
-  if (const int code = v.write_images(o, su.plan, su.formats.image, su.formats.error_image)) return code;
-  char e[1300];
-  const double t_files = clock_now_s();
-  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, sim.grid(), e, sizeof e))
-    return fail(kExitIo, "%s", e);
-  double stl_s = 0;
-  if (!o.out.stl.empty()) {
-    const double t_stl = clock_now_s();
-    if (!write_stl(o.out.stl.c_str(), sim.grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
-    stl_s = clock_now_s() - t_stl;
-  }
-  v.write_s += clock_now_s() - t_files;
-  rep.timing.emplace_back("render", v.render_s);
-  rep.timing.emplace_back("write", v.write_s);
-  if (!o.out.stl.empty()) rep.timing.emplace_back("stl", stl_s);  // a part of write
+  // Every file complete before any is renamed, the report last, so that a
+  // report in place names the run each listed file is from.
+  OutputSet set;
+  if (const int code = write_files(o, run)) return code;
+  list_outputs(o, set, v, &rep);
   if (!write_report(o, run)) return kExitIo;
+  std::string err;
+  if (!set.publish(&err)) return fail(kExitIo, "%s", err.c_str());
   if (v.live() && !user_quit && !v.live_view().wait_done(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
+  return kExitOk;
+}
+
+// What goes to standard output when it was closed would be lost at the
+// end: refused before the run, the I/O error the write would meet.
+int check_standard_output(const RunOptions& o) {
+  std::string err;
+  if (standard_output_usable(&err)) return kExitOk;
+  const std::pair<const char*, const std::string*> outs[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                            {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
+                                                            {"--report", &o.out.report}};
+  for (const auto& out : outs)
+    if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());
+  if (run_prints_summary(o)) return fail(kExitIo, "cannot print the summary: %s (write a --report instead)", err.c_str());
   return kExitOk;
 }
 
 }  // namespace
 
 int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
+  if (const int code = check_standard_output(o)) return code;
   Run run;
   run.t_start = clock_now_s();
   RunSetup& su = run.setup;
   su.guard = guard;
+  su.rep.run_started = clock_utc_text();
+  su.rep.run_pid = static_cast<long>(getpid());
   if (const int code = run_setup(&o, &su)) {
     if (su.refused && !write_report(o, &run)) return kExitIo;  // --strict: the report of a program not cut
     return code;
@@ -191,7 +248,11 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
   }
-  if (run_prints_summary(o)) std::fputs(report_summary_text(su.rep).c_str(), stdout);
+  if (run_prints_summary(o)) {
+    std::fputs(report_summary_text(su.rep).c_str(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+      return fail(kExitIo, "cannot print the summary on standard output: %s", std::strerror(errno));
+  }
   if (su.job.stop_line) return kExitInput;
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;

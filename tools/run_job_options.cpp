@@ -1,6 +1,7 @@
 // The options of `dexmill run` that make its job (run_options.h
 // JobOptions): what is cut, the design it is assessed against, the checks
 // and the verdict. Each entry: name, value, help, what it does.
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -51,6 +52,15 @@ int machine_rate(const char* name, const char* what, const char* v, int64_t* nm)
   return kExitOk;
 }
 
+int max_input(Job* o, const char* v) {
+  char* end = nullptr;
+  const unsigned long long mib = std::strtoull(v, &end, 10);
+  if (!*v || *end || v[0] == '-' || mib < 1 || mib > (1ULL << 20))
+    return fail(kExitUsage, "--max-input needs a size in MiB from 1 to 1048576, not '%s'", v);
+  o->max_input_bytes = static_cast<uint64_t>(mib) << 20;
+  return kExitOk;
+}
+
 const Option<Job> kJob[] = {
     {"--demo", "NAME|list",
      "one of the paper's workpieces end to end: its design part, a zig-milling program made from it (dexmill "
@@ -98,6 +108,11 @@ const Option<Job> kJob[] = {
      "time estimate with every move speeding up from rest and slowing to rest at this acceleration (default: "
      "none)",
      [](Job* o, const char* v) -> int { return machine_rate("--accel", "acceleration in mm/s2", v, &o->accel_nm_per_s2); }},
+    {"--max-input", "MIB",
+     "the most of a program that cannot be read twice (standard input, a pipe, a FIFO, a device), which is "
+     "copied to $TMPDIR first; beyond it the run stops with an error (default 1024; a regular file has no "
+     "limit)",
+     max_input},
     {"--strict", nullptr,
      "a program with an input error is not cut at all (by default the cut goes up to the bad block, which the "
      "frames mark in amber, and the run exits 1)",

@@ -26,6 +26,7 @@
 #include "core/tool/tool.h"
 #include "display/camera.h"
 #include "platform/image_file.h"
+#include "platform/program_input.h"
 #include "tools/read_options.h"
 
 namespace dexmill {
@@ -64,6 +65,9 @@ struct JobOptions {
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
   bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
+  // --max-input MIB: the most bytes of a program copied because it cannot
+  // be read twice (standard input, a pipe, a FIFO, a device).
+  uint64_t max_input_bytes = kDefaultMaxCopyBytes;
   std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
   // --demo NAME: one of the paper's workpieces (core/design/builtin.h) cut
   // end to end; the design of `builtin` is used when it is set.

@@ -10,6 +10,7 @@
 #include "core/tool/spec.h"
 #include "platform/clock.h"
 #include "platform/frame_files.h"
+#include "platform/memory.h"
 #include "platform/output_file.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
@@ -69,7 +70,8 @@ int prepare(RunOptions* o, RunSetup* run) {
   if (!run->demo) {
     if (o->job.file == "-") run->shown_name = "<stdin>";
     if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
-    if (!run->input.open(o->job.file, &err)) return fail(kExitIo, "%s", err.c_str());
+    run->input.set_copy_limit(o->job.max_input_bytes);
+    if (!run->input.open(o->job.file, &err)) return fail(run->input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
     run->read_path = run->input.read_path();
   }
   if (!remove_old_frames(run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
@@ -200,7 +202,9 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   SimSetup why;
   const size_t bytes = sim_required_bytes(j, &why);
   if (!bytes) return setup_failed(why, o, *run);
-  run->memory.assign((bytes + 7) / 8, 0);
+  if (!run->memory.allocate(bytes))
+    return fail(kExitIo, "cannot allocate %s for the %dx%d grid (and the engine that cuts it)", size_text(bytes).c_str(),
+                static_cast<int>(run->plan.geo.nx), static_cast<int>(run->plan.geo.ny));
   run->sim = sim_create(j, run->memory.data(), bytes, &why);
   if (!run->sim) return setup_failed(why, o, *run);
   if (!run->blank.empty()) {

@@ -20,6 +20,7 @@
 #include "core/sim/simulation.h"
 #include "display/backplot.h"
 #include "platform/file_guard.h"
+#include "platform/memory.h"
 #include "platform/program_input.h"
 #include "platform/report_json.h"
 #include "platform/tool_table.h"
@@ -57,7 +58,7 @@ struct RunSetup {
   std::vector<TriangleNm> blank;
   RunDesign design;
   RunMaterial material;
-  std::vector<uint64_t> memory;
+  ZeroedBlock memory;            // the engine's (sim_required_bytes)
   Simulation* sim = nullptr;
   RunSetup() = default;
   RunSetup(const RunSetup&) = delete;

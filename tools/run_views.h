@@ -67,6 +67,7 @@ class RunViews final : public SimObserver {
   bool live() const { return is_live_; }
   LiveView& live_view() { return live_; }
   bool has_frames() const { return frames_ != nullptr; }
+  uint32_t frames_written() const { return frames_ ? frames_->written() : 0; }
   LiveStatus status;         // the status line's
   std::string frame_error;
   double render_s = 0, write_s = 0;
