@@ -19,6 +19,15 @@ const char* kStock = " --stock 0,0,-5,40,40,0 --tool flat:6 --pitch 0.2";
 
 std::string write_program(const char* name, const char* text) { return write_tmp(name, text); }
 
+// Line 6 rapids 20 mm through the stock 1 mm deep; line 8 feeds after M5;
+// line 10 plunges 2 mm below the stock's bottom (1 mm into a table at -6).
+// Each test writes it itself: the cases may run in different processes.
+std::string write_bad_program() {
+  return write_program("safety_bad.ngc",
+                       "G21 G90\nG0 X-10 Y10 Z5\nG0 Z-1\nM3 S1000\nG1 X10 F300\nG0 X30\nM5\n"
+                       "G1 Y20 F300\nM3\nG1 X35 Y35 Z-7 F200\nG0 Z5\nM2\n");
+}
+
 // The report's collisions object.
 std::string collisions_of(const std::string& report) {
   const size_t a = report.find("  \"collisions\""), b = report.find("  \"timing\"");
@@ -35,11 +44,7 @@ int count_of(const std::string& s, const std::string& part) {
 
 TEST(safety_each_kind_is_warned_on_its_line_and_reported) {
   if (skip()) return;
-  // Line 6 rapids 20 mm through the stock 1 mm deep; line 8 feeds after M5;
-  // line 10 plunges 2 mm below the stock's bottom (1 mm into a table at -6).
-  const std::string bad = write_program("safety_bad.ngc",
-                                        "G21 G90\nG0 X-10 Y10 Z5\nG0 Z-1\nM3 S1000\nG1 X10 F300\nG0 X30\nM5\n"
-                                        "G1 Y20 F300\nM3\nG1 X35 Y35 Z-7 F200\nG0 Z5\nM2\n");
+  const std::string bad = write_bad_program();
   Result r = run(bad + kStock + " -q --check all --table -6 --report " + tmp_dir() + "/safety_bad.json");
   CHECK_EQ(r.code, 0);
   CHECK(has(r.err, "safety_bad.ngc:6:1: warning: rapid into material: "));
@@ -59,7 +64,7 @@ TEST(safety_each_kind_is_warned_on_its_line_and_reported) {
 
 TEST(safety_stop_and_fail_exit_4) {
   if (skip()) return;
-  const std::string bad = tmp_dir() + "/safety_bad.ngc";
+  const std::string bad = write_bad_program();
   Result r = run(bad + kStock + " -q --stop-at collision --report " + tmp_dir() + "/safety_stop.json");
   CHECK_EQ(r.code, 4);
   CHECK(has(slurp(tmp_dir() + "/safety_stop.json"), "\"stopped\": {\"reason\": \"collision\", \"line\": 6}"));

@@ -122,7 +122,11 @@ TEST(run_interrupted_leaves_no_debris) {
     // Standard input (spooled), frames and an STL being written when the
     // signal comes.
     const std::string cmd = "cd '" + d + "' && { TMPDIR='" + spool + "' '" + bin + "' run - -q --size 64x48 --every 1 --frames '" +
-                            frames + "' --stl '" + d + "/out.stl' < '" + prog + "' 2>/dev/null & pid=$!; sleep 0.6; kill -" +
+                            frames + "' --stl '" + d + "/out.stl' < '" + prog + "' 2>/dev/null & pid=$!; " +
+                            // Signalled once its first frame is out (at most 30 s), not after a
+                            // fixed time a loaded machine may not keep.
+                            "i=0; until ls '" + frames + "' 2>/dev/null | grep -q '^frame-' || [ $i -ge 300 ]; do " +
+                            "sleep 0.1; i=$((i+1)); done; kill -" +
                             sig + " $pid; wait $pid; exit $?; }";
     const int code = shell(cmd);
     CHECK_EQ(code, std::string(sig) == "INT" ? 130 : 143);
