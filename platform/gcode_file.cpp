@@ -9,8 +9,11 @@
 #include "core/gcode/lex.h"
 #include "platform/file_guard.h"
 #include "platform/process.h"
+#include "platform/program_input.h"
 
 namespace dexmill {
+
+GcodeFile::GcodeFile() : tee_limit_(kDefaultMaxCopyBytes) {}
 
 GcodeFile::~GcodeFile() {
   if (tee_) std::fclose(tee_);
@@ -77,8 +80,9 @@ GcodeFile::Fill GcodeFile::read_bytes(char* buf, std::size_t n, std::size_t* got
   } else {
     k = std::fread(buf, 1, n, f_);
     if (cur_ == 0 && tee_ && k) {
-      // Keep what a pipe gave, for loops and calls to read again.
-      if (std::fseek(tee_, 0, SEEK_END) != 0 || std::fwrite(buf, 1, k, tee_) != k) {
+      // Keep what a pipe gave, for loops and calls to read again, up to the
+      // limit (header): past it, reading goes on without a copy.
+      if (teed_ + k > tee_limit_ || std::fseek(tee_, 0, SEEK_END) != 0 || std::fwrite(buf, 1, k, tee_) != k) {
         std::fclose(tee_);
         tee_ = nullptr;  // a later seek back fails with an error naming the line
       } else {

@@ -41,10 +41,13 @@ class FileGuard;
 // The program's LineInput (core/gcode/line_reader.h), so also its
 // GcodeSource: o-word loops and calls seek back in it, and `o<name> call`
 // opens NAME.ngc from the subroutine path. A pipe (standard input) is copied
-// to an anonymous temporary file as it is read, so it can be read again too.
+// to an anonymous temporary file as it is read, so it can be read again too;
+// the copy keeps at most kDefaultMaxCopyBytes (the spool's limit,
+// platform/program_input.h), past which it is dropped and a seek back fails
+// with an error (the disk is never filled by a program read once).
 class GcodeFile final : public LineInput, private ByteSource {
  public:
-  GcodeFile() = default;
+  GcodeFile();
   GcodeFile(const GcodeFile&) = delete;
   GcodeFile& operator=(const GcodeFile&) = delete;
   ~GcodeFile();
@@ -59,6 +62,8 @@ class GcodeFile final : public LineInput, private ByteSource {
   SourcePos line_next() const override { return SourcePos{reader_.next_offset(), reader_.line_number() + 1, cur_}; }
   bool seek(const SourcePos& p) override;
   bool open_subroutine(const char* name, SourcePos* start) override;
+  // The most of a pipe's copy kept (kDefaultMaxCopyBytes unless set).
+  void set_pipe_copy_limit(uint64_t bytes) { tee_limit_ = bytes; }
   // Directories searched for NAME.ngc (LinuxCNC's SUBROUTINE_PATH), in order.
   void set_subroutine_path(std::vector<std::string> dirs) { sub_path_ = std::move(dirs); }
   // The command's guard (platform/file_guard.h): each subroutine file is
@@ -123,6 +128,7 @@ class GcodeFile final : public LineInput, private ByteSource {
   // The program read from a pipe: its copy so far (see open()).
   std::FILE* tee_ = nullptr;
   uint64_t teed_ = 0;
+  uint64_t tee_limit_;  // set in the constructor (gcode_file.cpp): the spool's limit
   uint64_t read_off_ = 0;  // offset in the current file of the next byte read() reads
 
   std::FILE* f_ = nullptr;

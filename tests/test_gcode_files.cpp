@@ -5,6 +5,8 @@
 // hosted reader (platform/gcode_file.h) on line ends, long lines and a long
 // streamed file.
 #include <dirent.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -339,4 +341,52 @@ TEST(gcode_file_endless_line_stops) {
   const std::vector<std::string> e = check_errors("/dev/zero");
   CHECK_EQ(e.size(), 1u);
   if (!e.empty()) CHECK_EQ(e[0], std::string("1:257: line is longer than 256 characters"));
+}
+
+namespace {
+
+// A pipe fed `text` by a child process (it is longer than a pipe's buffer
+// and the reader's), opened by name as `dexmill path -` meets standard input.
+bool open_pipe(GcodeFile* file, const std::string& text, int* read_fd, pid_t* writer) {
+  int fds[2];
+  if (pipe(fds) != 0) return false;
+  *writer = fork();
+  if (*writer == 0) {
+    close(fds[0]);
+    const bool wrote = write(fds[1], text.data(), text.size()) == static_cast<ssize_t>(text.size());
+    _exit(wrote ? 0 : 1);
+  }
+  close(fds[1]);
+  *read_fd = fds[0];
+  return *writer > 0 && file->open(("/dev/fd/" + std::to_string(fds[0])).c_str());
+}
+
+}  // namespace
+
+// A pipe's copy (kept for loops and calls that go back) stops growing at
+// its limit: reading goes on to the end, a seek back past the dropped copy
+// fails (an error, never a silent wrong line) and within the limit works.
+TEST(gcode_file_pipe_copy_is_bounded) {
+  std::string text = "G21 G90\n";
+  for (int i = 0; i < 20000; ++i) text += "G1 X" + std::to_string(i) + " F100\n";  // 300 KB
+  text += "M2\n";
+  for (const uint64_t limit : {uint64_t(1) << 20, uint64_t(200000)}) {
+    GcodeFile file;
+    file.set_pipe_copy_limit(limit);
+    int fd = -1;
+    pid_t writer = -1;
+    CHECK(open_pipe(&file, text, &fd, &writer));
+    const char* line;
+    std::size_t len;
+    uint32_t no;
+    CHECK_EQ(file.next(&line, &len, &no), GcodeFile::Read::kLine);
+    const SourcePos first = file.line_start();
+    int lines = 1;
+    while (file.next(&line, &len, &no) == GcodeFile::Read::kLine) ++lines;
+    CHECK_EQ(lines, 20002);  // read to the end either way
+    CHECK_EQ(file.seek(first), limit > text.size());
+    close(fd);
+    int status = -1;
+    CHECK(waitpid(writer, &status, 0) == writer && status == 0);
+  }
 }
