@@ -162,6 +162,7 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (const int code = material_start(&run->material, o.job.material, box)) return code;
     j.material = run->material.comp.get();
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+    j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
