@@ -59,7 +59,11 @@ TEST(safety_each_kind_is_warned_on_its_line_and_reported) {
 
 TEST(safety_stop_and_fail_exit_4) {
   if (skip()) return;
-  const std::string bad = tmp_dir() + "/safety_bad.ngc";
+  // Its own copy of the program above: the cases run in parallel workers,
+  // and the one that writes safety_bad.ngc may not have run yet.
+  const std::string bad = write_program("safety_stop.ngc",
+                                        "G21 G90\nG0 X-10 Y10 Z5\nG0 Z-1\nM3 S1000\nG1 X10 F300\nG0 X30\nM5\n"
+                                        "G1 Y20 F300\nM3\nG1 X35 Y35 Z-7 F200\nG0 Z5\nM2\n");
   Result r = run(bad + kStock + " -q --stop-at collision --report " + tmp_dir() + "/safety_stop.json");
   CHECK_EQ(r.code, 4);
   CHECK(has(slurp(tmp_dir() + "/safety_stop.json"), "\"stopped\": {\"reason\": \"collision\", \"line\": 6}"));
