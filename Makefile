@@ -30,6 +30,9 @@ ifneq ($(SAN),)
 # vptr checks need RTTI, which core/ and display/ do not have (host code holds
 # core CanonSinks such as Mill and MotionSummary).
 BASEFLAGS += -fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=all -fno-omit-frame-pointer
+# The range arguments checked (core/config.h DEXMILL_CHECKED_ARITH): a product
+# assumed to fit that does not is a UBSan report (tests/test_ranges.cpp).
+BASEFLAGS += -DDEXMILL_CHECKED_ARITH=1
 LDSAN    := -fsanitize=address,undefined
 endif
 # Rules of core/ and display/: integer only, no exceptions, no RTTI.

@@ -11,7 +11,19 @@
 #define DEXMILL_HEIGHT_BITS 16
 #endif
 
+// Checked arithmetic: 1 makes the helpers that rely on a caller's range
+// argument instead of testing (mul_shift_fit, core/math/fixed.h) check it,
+// and reach __builtin_unreachable where it fails, which UBSan reports
+// (-fsanitize=unreachable) with the place. `make SAN=1` turns it on, so that
+// the range tests (tests/test_ranges.cpp) prove those arguments; 0 (the
+// default) compiles the checks away.
+#ifndef DEXMILL_CHECKED_ARITH
+#define DEXMILL_CHECKED_ARITH 0
+#endif
+
 namespace dexmill {
+
+constexpr bool kCheckedArith = DEXMILL_CHECKED_ARITH != 0;
 
 template <int Bits> struct HeightOfBits;
 template <> struct HeightOfBits<8> { using type = uint8_t; };

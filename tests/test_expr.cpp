@@ -163,7 +163,6 @@ TEST(expr_errors_name_their_cause) {
       {"#1.5", GcodeError::kNotInteger, 1},
       {"#<nothing>", GcodeError::kParamUnknownName, 1},
       {"#<abcdefghijklmnopqrstuvwxyzabcdefgh>", GcodeError::kParamNameTooLong, 1},
-      {"[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]", GcodeError::kExprTooDeep, 17},
   };
   for (const Case& c : cases) {
     GValue v;
@@ -173,6 +172,67 @@ TEST(expr_errors_name_their_cause) {
     CHECK_EQ(d.col, c.col);
     if (got != c.code || d.col != c.col) std::printf("  %s: error %d at %d\n", c.text, int(got), d.col);
   }
+}
+
+// Nesting as LinuxCNC reads it: as deep as a line holds (rs274 ran 123
+// brackets, the most its command line holds), so kExprDepthMax levels are
+// read and one more is refused where it opens, with the limit in the message.
+TEST(expr_nesting_to_the_limit_and_one_past) {
+  Eval e;
+  CHECK(param_set(&e.p, 1, GValue{kGValueOne}) == GcodeError::kOk);
+  auto nest = [](const std::string& open, const std::string& inner, const std::string& close, int n) {
+    std::string t;
+    for (int k = 0; k < n; ++k) t += open;
+    t += inner;
+    for (int k = 0; k < n; ++k) t += close;
+    return t;
+  };
+  struct Kind {
+    const char* open;
+    const char* inner;
+    const char* close;
+    int64_t value_e9;  // at kExprDepthMax levels
+  };
+  const Kind kinds[] = {
+      {"[", "1", "]", kGValueOne},      // brackets
+      {"ABS[", "-1", "]", kGValueOne},  // a function's bracket is one level
+      {"#", "1", "", kGValueOne},       // parameter references (#1 = 1)
+  };
+  for (const Kind& k : kinds) {
+    const size_t open_len = std::strlen(k.open);
+    GValue v{0};
+    GcodeDiag d{};
+    const std::string ok_text = nest(k.open, k.inner, k.close, kExprDepthMax);
+    CHECK(e.run(ok_text.c_str(), &v, &d) == GcodeError::kOk);
+    CHECK_EQ(v.e9, k.value_e9);
+    const std::string deep = nest(k.open, k.inner, k.close, kExprDepthMax + 1);
+    d = GcodeDiag{};
+    CHECK(e.run(deep.c_str(), &v, &d) == GcodeError::kExprTooDeep);
+    // Refused at the opening of level kExprDepthMax + 1 (its last byte: a
+    // function's '[' opens its level).
+    CHECK_EQ(size_t(d.col), size_t(kExprDepthMax) * open_len + open_len);
+    char msg[160];
+    gcode_format_message(d, msg, sizeof msg);
+    CHECK(std::strstr(msg, "nested deeper than 256 levels") != nullptr);
+    if (!std::strstr(msg, "nested deeper than 256 levels")) std::printf("  message: %s\n", msg);
+  }
+  // Signs before computed values are levels too: 255 of them and a bracket.
+  GValue v{0};
+  GcodeDiag d{};
+  CHECK(e.run((std::string(kExprDepthMax - 1, '-') + "[1]").c_str(), &v, &d) == GcodeError::kOk);
+  CHECK_EQ(v.e9, -kGValueOne);
+  CHECK(e.run((std::string(kExprDepthMax, '-') + "[1]").c_str(), &v, &d) == GcodeError::kExprTooDeep);
+  CHECK_EQ(int(d.col), kExprDepthMax + 1);
+  // The deepest a line of kGcodeMaxLine bytes holds, read as a block.
+  ParamStore p;
+  params_clear(&p);
+  const std::string line = "X" + nest("[", "1", "]", int(kGcodeMaxLine - 2) / 2);
+  CHECK_EQ(line.size(), kGcodeMaxLine);
+  GcodeBlock b;
+  GcodeLineKind kind;
+  d = GcodeDiag{};
+  CHECK(gcode_read_block(line.c_str(), line.size(), 1, &b, &kind, &d, &p) == GcodeError::kOk);
+  CHECK_EQ(b.val('X').mant, 1);
 }
 
 TEST(block_assignments_after_the_line_and_messages) {

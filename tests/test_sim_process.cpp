@@ -6,7 +6,9 @@
 // makes a stock the engine cuts. The warnings' FILE:LINE form, the report's
 // materials and the summary stay with the CLI's tests (test_run_material.cpp);
 // a violation's message here is the warning's.
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tests/run_cli_util.h"
@@ -75,6 +77,50 @@ TEST(sim_material_feed_spindle_coolant_on_their_lines) {
   CHECK(none.stock("0,0,-20,40,40,0").pitch("0.2").tool("flat:6").text("calm.ngc",
         "G21 G90\nM3 S12000\nG0 X-5 Y10 Z5\nG1 Z-15 F300\nG1 X45 F1000\nG0 Z5\nM2\n"));
   CHECK(none.sim().process() == nullptr);
+}
+
+// One finding per (line, rule, material) however the cut reaches it (issue
+// 35): short moves whose end caps the next line cuts (charged back to the
+// line before, column by column, alternating with the next line's own),
+// and a line an o-word loop runs four times, each through fresh wood. The
+// spindle (900 rpm, under beech's 12000) and the coolant (M8 in wood) are
+// broken on every line that removes wood: lines 5, 6, 7 and 10, two each.
+// Before, this 14-line program counted 17 (all kept: 8 distinct, line 10's
+// three times each).
+TEST(sim_material_one_finding_per_line_rule_material) {
+  Run r;
+  CHECK(r.stock("0,0,-20,40,40,0").pitch("0.2").tool("flat:6").material("wood").text("once.ngc",
+        "G21 G90\n"
+        "M3 S900 M8\n"
+        "G0 X-5 Y10 Z5\n"
+        "G1 Z-2 F300\n"
+        "G1 X10 F500\n"
+        "G1 X20\n"
+        "G1 X30\n"
+        "#1 = 0\n"
+        "o100 repeat [4]\n"
+        "  G1 Y[12 + #1] X35\n"
+        "  #1 = [#1 + 2]\n"
+        "o100 endrepeat\n"
+        "G0 Z5\n"
+        "M2\n"));
+  CHECK(r.sim().state() == SimState::kDone);
+  const ProcessWatch* w = r.sim().process();
+  CHECK(w != nullptr);
+  if (!w) return;
+  std::set<std::tuple<uint32_t, int, int>> distinct;
+  std::set<uint32_t> lines;
+  for (size_t k = 0; k < w->nkept; ++k) {
+    distinct.insert(std::make_tuple(w->kept[k].line, int(w->kept[k].rule), int(w->kept[k].material)));
+    lines.insert(w->kept[k].line);
+  }
+  CHECK_EQ(distinct.size(), w->nkept);  // none kept twice
+  CHECK_EQ(w->total, uint64_t(w->nkept));  // and the count is the findings
+  CHECK_EQ(w->total, uint64_t{8});
+  CHECK(lines == (std::set<uint32_t>{5, 6, 7, 10}));
+  CHECK_EQ(w->tally[0].violations, uint64_t{8});
+  if (w->total != 8 || w->nkept != distinct.size())
+    for (size_t k = 0; k < w->nkept; ++k) std::printf("  kept: line %u rule %d\n", w->kept[k].line, int(w->kept[k].rule));
 }
 
 TEST(sim_material_presets_make_a_stock) {

@@ -162,7 +162,8 @@ int setup_failed(const SimSetup& why, const RunOptions& o, const RunSetup& run) 
       return fail(kExitUsage, "the tool %s spans more than %d dexels at this pitch; use a coarser --pitch or --mode sweep",
                   spec, 2 * kCutterMaxReach + 1);
     case SimError::kToolTooLargeSweep:
-      return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 268 mm)", spec);
+      return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 2^28 nm = 268.435 mm, a "
+                  "diameter of 536.87 mm; --mode stamp takes up to 1000 mm)", spec);
     case SimError::kToolInvalid:
     case SimError::kToolCannotCut: return fail(kExitUsage, "the tool %s cannot cut this grid", o.job.tool_text.c_str());
     case SimError::kFixturesOutside:
@@ -194,6 +195,7 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (const int code = material_start(&run->material, o.job.material, box)) return code;
     j.material = run->material.comp.get();
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+    j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;

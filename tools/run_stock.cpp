@@ -25,8 +25,17 @@ bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t 
       return false;
     }
     case PlanError::kBadGeometry: break;
+    case PlanError::kBadStock: {
+      char b[200];
+      std::snprintf(b, sizeof b, "the stock must lie within 1 km of the origin, with X0<X1, Y0<Y1, Z0<Z1, and be at "
+                    "most %lld m tall (its heights' 2^%d - 1 steps of at most 1 m)",
+                    static_cast<long long>(height_max<height_t>()), DEXMILL_HEIGHT_BITS);
+      *err = b;
+      return false;
+    }
   }
-  *err = "the stock and grid give a geometry the dexel grid cannot hold (pitch, size or position out of range)";
+  *err = "the stock and grid give a geometry the dexel grid cannot hold (pitch 1 nm to 1 m, at most 65535 dexels a "
+         "side, within 1 km of the origin)";
   return false;
 }
 

@@ -17,17 +17,30 @@ const char* process_rule_name(ProcessRule r) {
 
 namespace {
 
-// One violation per (line, rule, material): the kept one, or counted once.
-void violate(ProcessWatch* w, size_t first_of_call, const ProcessState& s, ProcessRule rule, uint8_t material,
-             int64_t value, PointNm at, bool* added) {
-  for (size_t k = first_of_call > 0 ? first_of_call - 1 : 0; k < w->nkept; ++k)
-    if (w->kept[k].line == s.line && w->kept[k].rule == rule && w->kept[k].material == material) return;
-  // Past the list: once a (line, rule, material), by the tally's count.
-  MaterialTally& t = w->tally[material];
-  const uint32_t key = s.line * 4u + static_cast<uint32_t>(rule);
-  if (w->nkept >= kProcessViolationsMax && t.last_counted == key) return;
-  t.last_counted = key;
-  ++t.violations;
+// True the first time (line, rule, material) is met (process.h: exact for
+// the tracked lines, the last kProcessRecentMax past them).
+bool first_finding(ProcessWatch* w, uint32_t line, ProcessRule rule, uint8_t material) {
+  if (line < w->seen_lines) {
+    uint8_t& b = w->seen[static_cast<size_t>(line) * kProcessRules + static_cast<size_t>(rule)];
+    const uint8_t bit = static_cast<uint8_t>(1u << material);
+    if (b & bit) return false;
+    b = static_cast<uint8_t>(b | bit);
+    return true;
+  }
+  const uint64_t key = (static_cast<uint64_t>(line) * kProcessRules + static_cast<uint64_t>(rule)) * 8u + material + 1u;
+  for (uint64_t k : w->recent)
+    if (k == key) return false;
+  w->recent[w->recent_next] = key;
+  w->recent_next = (w->recent_next + 1) % kProcessRecentMax;
+  return true;
+}
+
+// One finding per (line, rule, material): counted and (while there is
+// room) kept the first time only.
+void violate(ProcessWatch* w, const ProcessState& s, ProcessRule rule, uint8_t material, int64_t value, PointNm at,
+             bool* added) {
+  if (!first_finding(w, s.line, rule, material)) return;
+  ++w->tally[material].violations;
   ++w->total;
   *added = true;
   if (w->nkept >= kProcessViolationsMax) return;
@@ -54,7 +67,17 @@ Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockCom
   for (MaterialTally& t : w->tally) t = MaterialTally{};
   w->line_feed_limit = nullptr;
   w->line_feed_limits = 0;
+  w->seen = nullptr;
+  w->seen_lines = 0;
+  for (uint64_t& k : w->recent) k = 0;
+  w->recent_next = 0;
   return Status::kOk;
+}
+
+void process_watch_track_findings(ProcessWatch* w, uint8_t* seen, size_t n) {
+  for (size_t k = 0; k < process_seen_bytes(n); ++k) seen[k] = 0;
+  w->seen = seen;
+  w->seen_lines = seen ? n : 0;
 }
 
 void process_watch_track_lines(ProcessWatch* w, int64_t* limits, size_t n) {
@@ -66,7 +89,6 @@ void process_watch_track_lines(ProcessWatch* w, int64_t* limits, size_t n) {
 template <class H>
 bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect changed, const ProcessState& s,
                           const ProcessOrigin* prev) {
-  const size_t first = w->nkept;
   bool added = false;
   uint32_t mask_now = 0;  // the materials this record removed, for the time tallies
   const StockComposition& c = *w->comp;
@@ -89,10 +111,10 @@ bool process_watch_record(ProcessWatch* w, const DexelGrid<H>& g, GridRect chang
       if (by.feed_move && by.line < w->line_feed_limits)
         w->line_feed_limit[by.line] = min_of(w->line_feed_limit[by.line], p.max_feed_nm_per_min);
       if (by.feed_move && by.feed_nm_per_min > p.max_feed_nm_per_min)
-        violate(w, first, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
+        violate(w, by, ProcessRule::kFeed, mi, by.feed_nm_per_min, at, &added);
       if (by.spindle_on && (by.spindle_rpm < p.spindle_min_rpm || by.spindle_rpm > p.spindle_max_rpm))
-        violate(w, first, by, ProcessRule::kSpindle, mi, by.spindle_rpm, at, &added);
-      if (by.coolant && !p.coolant_allowed) violate(w, first, by, ProcessRule::kCoolant, mi, by.coolant, at, &added);
+        violate(w, by, ProcessRule::kSpindle, mi, by.spindle_rpm, at, &added);
+      if (by.coolant && !p.coolant_allowed) violate(w, by, ProcessRule::kCoolant, mi, by.coolant, at, &added);
     }
   });
   // Cutting time: a record's whole time to each material it removed (an

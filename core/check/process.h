@@ -6,10 +6,21 @@
 // - a spindle speed (S, with M3/M4 on) outside a removed material's range;
 // - coolant (M7/M8) on while removing a material that forbids it (the
 //   paper's wood, which soaks it up).
-// Each is one violation per (line, rule, material), the first
-// kProcessViolationsMax kept, all counted. Per material the watch also
-// tallies the volume removed (sum of lengths, nm x columns: x pitch^2 is
-// the volume) and the cutting time of the records that removed it.
+// A finding is one (line, rule, material): a line that breaks a rule on a
+// material is one finding however many records, loop passes or columns
+// show it (issue 35: a column's removal charged to the line before and the
+// next one alternately counted it again and again, 21 M "violations" for a
+// 41 799-line program). The first kProcessViolationsMax are kept, each
+// once; total and each material's tally count every finding once. Which
+// findings were counted is kept per line in caller memory (3 bytes a line:
+// process_watch_track_findings) for the program's lines; a line past them
+// (a subroutine file longer than the program, a job that gave no count)
+// is told apart from the last kProcessRecentMax findings only, so a line
+// met again after that many others counts again. Lines are the records'
+// (core/motion/canon.h): a subroutine file's line 12 is the program's 12.
+// Per material the watch also tallies the volume removed (sum of lengths,
+// nm x columns: x pitch^2 is the volume) and the cutting time of the
+// records that removed it.
 //
 // Removals are compared against a shadow of the tops (caller memory), as the
 // safety watch does (core/check/safety.h); a deferred end cap cut by the
@@ -33,6 +44,7 @@ namespace dexmill {
 enum class ProcessRule : uint8_t { kFeed = 0, kSpindle = 1, kCoolant = 2 };
 constexpr int kProcessRules = 3;
 constexpr size_t kProcessViolationsMax = 64;
+constexpr size_t kProcessRecentMax = 32;
 
 // "feed", "spindle", "coolant".
 const char* process_rule_name(ProcessRule r);
@@ -59,8 +71,7 @@ struct ProcessState {
 struct MaterialTally {
   uint64_t removed_nm_columns = 0;  // sum over columns of the length removed, nm
   int64_t cut_time_us = 0;
-  uint64_t violations = 0;
-  uint32_t last_counted = 0;        // line * 4 + rule of the last violation counted past the list
+  uint64_t violations = 0;          // findings (line, rule, this material)
 };
 
 struct ProcessWatch {
@@ -68,7 +79,13 @@ struct ProcessWatch {
   uint32_t* shadow = nullptr;  // caller memory, nx * ny: the tops before the record
   ProcessViolation kept[kProcessViolationsMax];
   size_t nkept = 0;
-  uint64_t total = 0;
+  uint64_t total = 0;  // findings, each (line, rule, material) once
+  // The findings counted (process_watch_track_findings): for line l < seen_lines,
+  // byte 3 l + rule, bit m for material m. Past them, the last few.
+  uint8_t* seen = nullptr;
+  size_t seen_lines = 0;
+  uint64_t recent[kProcessRecentMax] = {};  // (line, rule, material) + 1; 0: none
+  size_t recent_next = 0;
   MaterialTally tally[kCompositionMaxMaterials];
   // Optional (process_watch_track_lines), caller memory: per program line
   // (the index), the lowest max feed among the materials that line's feed
@@ -92,6 +109,15 @@ struct ProcessOrigin {
 template <class H>
 Status process_watch_init(ProcessWatch* w, const DexelGrid<H>& g, const StockComposition* comp, uint32_t* shadow,
                           size_t shadow_words);
+
+// Bytes of caller memory that tell apart the findings of lines 0 .. n - 1.
+constexpr size_t process_seen_bytes(size_t lines) { return lines * kProcessRules; }
+static_assert(kCompositionMaxMaterials <= 8, "a byte's bits for a line and rule's materials");
+
+// Tells apart the findings of lines 0 .. n - 1 exactly, in seen[0,
+// process_seen_bytes(n)) (cleared here). After process_watch_init, which
+// stops it.
+void process_watch_track_findings(ProcessWatch* w, uint8_t* seen, size_t n);
 
 // Tracks the lines' feed limits into limits[0, n), each set to kNoFeedLimit
 // here; lines past n are not tracked (the caller sizes it for the program).

@@ -36,6 +36,13 @@
 // steeper than 86 degrees, where the fixed-point coefficients lose their
 // precision) and when Newton has not settled in kBullNewtonSteps,
 // bull_flank_w answers false and the caller searches as before.
+//
+// Ranges (q52: 1.0 = 2^52): alpha, gamma, beta2, kappa2, nu2 <= 1, so |c4|,
+// |c3|, |c1|, |c0| <= 2^53 and |c2| <= 3 2^52; s in [sin_b, 1] <= 2^52;
+// every product is 128-bit and shifted back by 52, so a term is below 2^55
+// and P, P' (sums of four) below 2^57; Newton scales P by 2^up < 2^61 /
+// |P|; 1 - s^2 <= 2^52, shifted by 28 only below 2^34 (< 2^62), else by 8;
+// cos(theta)'s operands shifted to 62 bits; w* = (a + rc s) cos <= R.
 #ifndef DEXMILL_CORE_CUT_BULL_FLANK_H
 #define DEXMILL_CORE_CUT_BULL_FLANK_H
 

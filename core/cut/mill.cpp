@@ -1,4 +1,10 @@
 // The cutting stage: canonical records to stamp or sweep calls.
+//
+// Ranges: a tool's diameter <= 1 m and a grid's pitch <= 1 m, origins within
+// 1 km and 65535 dexels a side (core/tool/tool.h, core/grid/grid.h): the
+// stamp's chord margin D + pitch <= 2^31 nm, the grid's reach rectangle
+// within 2^46.1 nm; mill_words' sides <= 65535 and their product times 8
+// bytes < 2^35.
 #include "core/cut/mill.h"
 
 #include <string.h>

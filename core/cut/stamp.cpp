@@ -1,4 +1,15 @@
 // Instances of motion, paper §2.3.
+//
+// Ranges (core/tool/cutter.h, core/grid/grid.h): a cutter reaches K <= 2047
+// dexels and holds heights below 2^30 LSB; tops are below 2^32; points are
+// clamped to 2^46 nm, so a tip is within 2^46.1 LSB of z0 and an index
+// offset within 2^47 dexels (pitch >= 1 nm). Products: the reach (K + 1)
+// pitch <= 2^41 nm; steps = max(|dx|, |dy|) / pitch <= 2^47; clip_steps'
+// (lo - a) n / d by muldiv (128-bit), |k| < 2^49 since n / |d| <= 2 /
+// pitch; the DDA's d k in 128 bits, its remainder mod 2^64 (exact);
+// stamp_instance's tip + offset in W: past its early return the tip is in
+// (-2^30, 2^32) (above every top or below every bottom otherwise), so tip
+// + cb, tip + ct < 2^31 for 8 and 16-bit heights, 64-bit for 32.
 #include "core/cut/stamp.h"
 
 namespace dexmill {

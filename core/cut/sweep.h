@@ -9,6 +9,28 @@
 // nm square within int64), heights in V = lsb / 256 of the grid. A column's
 // height is rounded to the nearest LSB at the end.
 //
+// Ranges (issue 35; every product of the sweep is bounded from these, and
+// each file states the worst case of its own; tests/test_ranges.cpp runs
+// their corners under UBSan with the checked helpers of core/config.h):
+//   tool (core/tool/tool.h, and here):  R <= 2^28 nm, so R <= 2^30 U, R^2 <=
+//     2^60 U^2, reach2 = (R + 2)^2 < 2^61; rc <= R; a V-bit's slope k =
+//     cot(a/2) < 2^7 (cot_q30 < 2^37) and its profile k r <= 10 m < 2^36 U;
+//     the stick-out <= 10 m, len_v < 2^42 V for lsb >= 1 nm;
+//   grid (core/grid/grid.h): lsb in [1 nm, 2^30 nm] (checked here), so V per U
+//     = 64 / lsb and v_per_u_q32 in [2^8, 2^38]; pitch <= 1 m < 2^30 nm (2^32
+//     U); indices < 2^16; origins within 1 km; tops <= 2^32 - 1 LSB (2^40 V);
+//   points: clamped to 2^46 nm (clamp_point), so a tip height above z0 is
+//     within 2^46 + 2^40 nm, |z_v| < 2^55 V;
+//   pieces (core/cut/sweep_line.cpp): at most 2^27 nm = 2^29 U long
+//     horizontally, and no steeper than 2^24:1 (else a plunge), so a slope
+//     is below 2^24 (m_geo_q30 < 2^54) and 2^24 * 64 / lsb <= 2^30 V per U
+//     (slope_v_q32 < 2^62), and a piece's whole rise is under 2^55 V;
+//   columns: within R + 1 nm of a piece's box, so their offsets from its
+//     ends are below l + R + 4 U < 2^31 U (a wedge's least u: -(4 R + 18)).
+// Heights far outside the grid (beyond 2^43 V, 2^35 LSB, where only a
+// 2^-16 V fixed-point run would overflow) are cut column by column from
+// their exact values, which give the same bits.
+//
 // Error bound (tests/test_sweep.cpp checks it against a dense double-precision
 // oracle): the height written is within 1 LSB of the exact lowest point of the
 // tool over the move for a column displaced by at most 1 nm horizontally (a
@@ -86,8 +108,8 @@ struct SweepTool {
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 
-// Fails with kBadArgument when R exceeds 2^28 nm (268 mm) or lsb is outside
-// [1, 2^30] nm.
+// Fails with kBadArgument when R exceeds 2^28 nm (268.435456 mm: a diameter
+// of 536.87 mm) or lsb is outside [1, 2^30] nm: the sweep's ranges above.
 Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out);
 
 // Height of the tool's lower surface above its tip at r^2 (U^2, r <= R), V.
@@ -112,7 +134,9 @@ inline int64_t sweep_profile_v(const SweepTool& t, int64_t r2) {
       f_u = mul_shift_fit(static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(r2))), t.cot_q30, 30);
       break;
   }
-  // f_u <= 2^37 U (a V-bit's k < 2^7), v_per_u_q32 < 2^39: fits after the shift.
+  // f_u <= 2^36 U (the profile's height, at most the stick-out's 10 m; and k
+  // < 2^7 with r <= 2^30 U), v_per_u_q32 <= 2^38: below 2^42 V after the
+  // shift. Ball and bull: f_u <= R <= 2^30 U.
   return mul_shift_fit(f_u, t.v_per_u_q32, 32);
 }
 

@@ -11,6 +11,21 @@
 // Everything else (helices, G18/G19 planes, bull nose and V-bit, radii over
 // 2^27 nm) is cut as chords of sagitta <= kArcChordSagittaNm, each swept
 // exactly: the tool path is then within 1 um + 7 nm of the arc.
+//
+// Ranges (core/cut/sweep.h; U = nm / 4): an exact arc's radius ra <= 2^27
+// nm = 2^29 U and R <= 2^30 U, so every column visited lies in its piece's
+// ring, |q| <= ro <= ra + R + 11 < 2^31 U (ring_runs visits the whole box
+// only for ro >= 2^31: never here), and |q|^2 < 2^62. Products:
+//   ring_runs: ro^2, qy^2 < 2^62 (|qy| <= ro first), ri^2 likewise;
+//   cross(a, q): |a| <= 2^29 + the start's offset, |q| < 2^31: each
+//     product < 2^60.1, the difference < 2^61.1, times dir;
+//   level_piece: (rho - ra)^2 < 2^62 (rho <= |q|); |q - A|^2, |q - B|^2 <=
+//     (ro + ra + 1)^2 <= (2^31 + 12)^2 < 2^62.1 (2 ra + R <= 2^31);
+//   helix_piece: rho2 < 2^62, ra^2 < 2^58, 2 rho ra < 2^61, 4 t1 t2 = 4 rho
+//     ra sin^2 < 2^62, (rho - ra)^2 <= R^2; kappa, kk, qq by muldiv
+//     (128-bit, saturating), kk < 2^46 (q30, the exactness test), disc
+//     saturated; z0 + dz s / span + P < 2^56 V;
+//   chords: sweep_line's ranges (sweep_line.cpp).
 #include "core/cut/arc_walk.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
@@ -267,7 +282,11 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
       // kk and qq in q30 (the arc qualified with kk < 2^16 for every rho).
       const int64_t kk = muldiv_round(muldiv_round(kappa_u, kQ30, rho), kappa_u, ra);
       const int64_t qq = muldiv_round(r2 - rho2 - ra * ra, kQ30, rho * ra);
-      const int64_t disc = mul_shift(kk, kk, 30) - mul_shift(kk, qq, 30) + kQ30;
+      // kk < 2^16 (q30: 2^46, the arc's qualification), so kk^2 < 2^62 (q30);
+      // kk qq saturates where a column hugs the axis of a helix just wider
+      // than the tool (qq ~ ra / rho): saturated sums (a root past the
+      // clamp below either way).
+      const int64_t disc = sat_add_i64(sat_sub_i64(mul_shift(kk, kk, 30), mul_shift(kk, qq, 30)), kQ30);
       const int64_t root = disc > 0 ? static_cast<int64_t>(isqrt_u128(shl_u128(U128{0, static_cast<uint64_t>(disc)}, 30))) : 0;
       const int64_t c = clamp(root - kk, -kQ30, kQ30);
       const int64_t sn = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(kQ30 * kQ30 - c * c)));

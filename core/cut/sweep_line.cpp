@@ -23,7 +23,32 @@
 // 2^31 U and rho <= 2^30 U; a piece steeper than 2^24:1 is a plunge, so
 // |slope| < 2^24 * 64 V/U / lsb <= 2^30 V/U and |u * slope| < 2^61 V; the
 // ball's K = sqrt(1 + m^2) < 2^25, so rho * K < 2^55 U, and such a length
-// times v_per_u_q32 (<= 2^38) shifted by 32 is below 2^61 V.
+// times v_per_u_q32 (<= 2^38) shifted by 32 is below 2^61 V. Product by
+// product, from core/cut/sweep.h's ranges (S(x) = x slope / 2^32):
+//   setup_piece: dx_u, dy_u <= 2^29 + 4 (pieces of 2^27 nm + 1), l2 < 2^59,
+//     len_q30 < 2^60; dz_u < 2^49, squared in 128 bits; m_geo_q30 < 2^54,
+//     ball_k_q30 < 2^55; the V-bit's k20 < 2^27 (angles >= 1 degree), m20 <
+//     k20 inside the cone, so k20^2 - m20^2 < 2^54, and c1 < 2^57.
+//   w*: the ball's rho sin < 2^30, the rim rho, the bull's |w*| <= R
+//     (bull_flank.h), the V-bit's |v| c1 < 2^58 tested against R before
+//     it is squared; so w^2 + v2 <= 2 R^2 < 2^61 wherever a w is squared.
+//   columns (flank_cost_v, side, the general direction): |u|, |u - w| <
+//     2^31 (u in [-(4 R + 18), l + R + 1]), S < 2^61 V, a height za + S +
+//     P < 2^55 + 2^61 + 2^42 < 2^62; ball_flank_v 2^61 V (above).
+//   row set-up: a column's offset from the piece's origin (dx0_u, dy_row_u)
+//     < 2^31 U (columns within R + 1 nm of the piece's box), times e (q30)
+//     < 2^61, u and v accumulators (two such) < 2^62; u_min_q30 >= -(4 R +
+//     18) 2^30 > -2^62.1, u_max_q30 < 2^61, the walk's row bounds (u e_y -
+//     r e_x) > -2^62.4, NarrowRows' alpha - lo < 2^62.9; a step p_u e <=
+//     2^62 (pitch <= 1 m: p_u <= 2^32).
+//   along x: x_step <= p_u <= 2^32, x_dh_q16 saturated (mul_shift); the q16
+//     run only on pieces whose tip stays within 2^42 V of z0 and whose
+//     column step is below 2^60 (q16), so that |h_q16| < 2^59 and four
+//     steps 2^62 (x_run_fits), else column by column from exact heights.
+//   plunge: dx, dy < 2^30.1 U (R + 1 nm and a plunge's 2^-24 drift), r^2
+//     < 2^61.2.
+//   ball_floor_of, shaft_top_lsb, bull_row_floor_of: saturating products
+//     (mul_shift), S(l) < 2^59, rc v_per_u < 2^36, sums below 2^62.
 #include "core/cut/bull_flank.h"
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
@@ -71,8 +96,12 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
       return mul_shift(rho, lp.ball_sin_q30, 30);
     case ToolKind::kVBit: {
       if (!lp.vbit_inside) return rim;
+      // |v| <= 2^31 U, |c1| < 2^57 (m / sqrt(k^2 - m^2) with the root's
+      // argument at least 1 in q20): w up to 2^58, far past the rim on a
+      // ramp along the cone's slope; such a w is the rim's (w^2 > R^2), and
+      // the test first keeps w^2 below 2^60 (issue 35: it overflowed).
       const int64_t w = mul_shift(v < 0 ? -v : v, lp.vbit_c1_q30, 30);
-      return w * w + v2 <= t.r2_u ? w : rim;
+      return (w < 0 ? -w : w) <= t.r_u && w * w + v2 <= t.r2_u ? w : rim;
     }
     case ToolKind::kBullNose: {
       // From the torus's contact (core/cut/bull_flank.h); the search of the
@@ -396,6 +425,7 @@ template <class H>
 bool min_run(H* p, H* const end, int64_t h, int64_t dh) {
   uint32_t diff = 0;
   // Four columns a step: the loop's own bookkeeping is a third of a column.
+  // (|dh| <= 2^60: the caller's range, core/cut/sweep.h.)
   for (const int64_t dh4 = 4 * dh; end - p >= 4; p += 4, h += dh4)
     diff |= min_at(p, h) | min_at(p + 1, h + dh) | min_at(p + 2, h + 2 * dh) | min_at(p + 3, h + 3 * dh);
   for (; p != end; ++p, h += dh) diff |= min_at(p, h);
@@ -451,6 +481,19 @@ unsigned min_level_pair(H* __restrict p, H* __restrict q, int64_t n, H c) {
     dq = static_cast<H>(dq | min_level_at(q + k, c));
   }
   return (dp != 0 ? 1u : 0u) | (dq != 0 ? 2u : 0u);
+}
+
+// The flank of an x-parallel row column by column from exact heights,
+// for pieces whose q16 run could overflow (sweep_piece, x_run_fits):
+// |flank_v| < 2^55 + 2^61, S(u) < 2^61, their sum a height the tool reaches
+// (< 2^56), clamped to +-lim_v (2^43 V): a height past either bound cuts as
+// any other past it (above every top, below every bottom), so the bits are
+// the exact height's. Out of line: the rows' usual loop compiles as without it.
+template <class F>
+__attribute__((noinline)) void flank_exact(F& cut_rows, int64_t f_lo, int64_t f_hi, int64_t u0, int64_t step,
+                                           int64_t flank_v, int64_t slope_v_q32, int64_t lim_v) {
+  for (int64_t i = f_lo, u = u0; i <= f_hi; ++i, u += step)
+    cut_rows(i, clamp(flank_v + mul_shift_fit(u, slope_v_q32, 32), -lim_v, lim_v), u);
 }
 
 // Which columns behind the start (lowest point: the tool standing at a) a
@@ -684,7 +727,20 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
   // every row, and a flank's heights step by x_dh_q16 a column.
   const int64_t x_step = along_x ? p_u * lp.ex_q30 / kQ30 : 0;
   const int64_t x_u_lo = along_x ? (dx0_u + (x_lo - i_first) * p_u) * lp.ex_q30 / kQ30 : 0;
-  const int64_t x_dh_q16 = along_x ? mul_shift_fit(x_step, lp.slope_v_q32, 16) : 0;
+  // |x_step| <= p_u <= 2^32 and |slope| < 2^62: saturated (a metre's pitch
+  // on a steep ramp), and then not used (below).
+  const int64_t x_dh_q16 = along_x ? mul_shift(x_step, lp.slope_v_q32, 16) : 0;
+  // The flank's q16 DDA (the x-parallel rows below) wants |h| < 2^43 V, so
+  // that |h_q16| < 2^59, and a step |dh_q16| < 2^60, four of them 2^62.
+  // A flank height is that of a point of the tool over the piece, within
+  // [min(za, zb), max(za, zb) + P(R^2)] to 2^8 V, P(R^2) < 2^42 V (the
+  // stick-out's 10 m): so |za|, |zb| < 2^42 V keeps it, and a run of two
+  // columns or more then steps by less than 2^44 V; a larger step (a metre's
+  // pitch) means runs of one column. Otherwise (a tip 2^34 LSB off the
+  // grid's z0, on LSBs of a few nm) the flank is cut column by column.
+  constexpr int64_t kRunMaxV = static_cast<int64_t>(1) << 43;
+  const bool x_run_fits = za_v > -(kRunMaxV >> 1) && za_v < (kRunMaxV >> 1) && zb_v > -(kRunMaxV >> 1) &&
+                          zb_v < (kRunMaxV >> 1) && x_dh_q16 > -(kRunMaxV << 17) && x_dh_q16 < (kRunMaxV << 17);
   // Along x with the move on a row or half way between two (a raster pass
   // whose stepover the pitch divides), rows j and mirror_sum - j sit at
   // cross offsets v and -v, where every height is the same: set each such
@@ -883,7 +939,9 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
         const int64_t stop_u = collinear && t.wedge_stops ? ws_prev : INT64_MIN;
         if (low_side)
           for (int64_t i = f_lo - 1; i >= lo && (step < 0 || u_lo + (i - lo) * step >= stop_u); --i) side(i);
-        if (flank_reaches && f_lo <= f_hi) {
+        if (flank_reaches && f_lo <= f_hi && !x_run_fits) {
+          flank_exact(cut_rows, f_lo, f_hi, u_lo + (f_lo - lo) * step, step, flank_v, lp.slope_v_q32, kRunMaxV);
+        } else if (flank_reaches && f_lo <= f_hi) {
           // Linear heights: a q16 DDA (drift below 2^-16 V a column).
           const int64_t u0 = u_lo + (f_lo - lo) * step;
           int64_t h_q16 = (flank_v + mul_shift_fit(u0, lp.slope_v_q32, 32)) * 65536;
@@ -1007,9 +1065,11 @@ PieceEnd sweep_piece(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, 
             } else {
               // Inside its cone the V-bit's w* needs no chord (best_w_rho's
               // own test; where it fails, best_w takes the rim).
+              // (|ws| <= R first: the square of a w far past the rim overflows.)
               int64_t ws = 0;
               if (vbit_cone) ws = mul_shift(v < 0 ? -static_cast<int64_t>(v) : v, lp.vbit_c1_q30, 30);
-              w = static_cast<I>(vbit_cone && ws * ws + v2 <= t.r2_u ? ws : best_w(t, lp, v, v2));
+              const bool in_cone = vbit_cone && (ws < 0 ? -ws : ws) <= t.r_u && ws * ws + v2 <= t.r2_u;
+              w = static_cast<I>(in_cone ? ws : best_w(t, lp, v, v2));
             }
             side = u < w ? -1 : (u - len > w ? 1 : 0);
           }

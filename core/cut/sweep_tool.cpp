@@ -4,6 +4,12 @@
 
 namespace dexmill {
 
+// Ranges (core/cut/sweep.h): R <= 2^28 nm, so r_u <= 2^30 and r2_u, rc2_u
+// <= 2^60; the bull's q52 ratios <= 2^52 (their products shifted back);
+// inv_r_q62 <= 2^62; a V-bit's cot_q30 < 2^37 (angles >= 1 degree,
+// core/tool/tool.h); len_v < 2^42 (10 m over 1 nm LSBs, times 256);
+// v_per_u_q32 in [2^8, 2^38], u_per_v_q30 < 2^54; the bowl's q < 2^32 by
+// construction and r2 >> pre < 2^32. Every quotient by muldiv (128-bit).
 Status sweep_tool_prepare(const ToolProfile& p, int64_t lsb_nm, SweepTool* out) {
   constexpr int64_t kMaxRadiusNm = static_cast<int64_t>(1) << 28;
   constexpr int64_t kMaxLsbNm = static_cast<int64_t>(1) << 30;

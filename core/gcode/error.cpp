@@ -41,7 +41,7 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kParamNameTooLong: return "parameter name {w} is empty or longer than 31 characters";
     case GcodeError::kTooManyNamedParams: return "{w}: more than 200 named parameters (dexmill's fixed limit)";
     case GcodeError::kTooManyAssignments: return "{w}: more than 32 parameter assignments on one line";
-    case GcodeError::kExprTooDeep: return "{w}: expression nested deeper than 16 (dexmill's fixed limit)";
+    case GcodeError::kExprTooDeep: return "{w}: expression nested deeper than 256 levels (brackets, '#' and signs; more than a line holds)";
     case GcodeError::kFeedZero: return "{w}: feed move with zero feed rate (set F first; G93 and G94 set F to 0)";
     case GcodeError::kInverseTimeNoF: return "{w}: F word missing in inverse time mode (G93 needs F on every feed move)";
     case GcodeError::kArcNoCentre: return "{w}: R, I, J and K words all missing for arc";

@@ -73,9 +73,13 @@ struct GridGeometry {
   int64_t z0_nm, lsb_nm;
 };
 
-// Bounds of the geometry: 2 <= nx, ny <= 65535, pitch and LSB in
-// [1 nm, 1 m], origins within +-1 km (so that products with dexel indices
-// stay far from int64 overflow).
+// Bounds of the geometry (the grid's ranges, issue 35): 2 <= nx, ny <=
+// 65535, pitch and LSB in [1 nm, 1 m], origins within +-1 km. So an index
+// times the pitch is below 2^46 nm and every dexel axis within 1 km + 65.5
+// km < 2^46.1 nm of the origin; a height is at most 2^m - 1 LSB (2^32 - 1
+// for 32-bit heights), its z within 1 km + 2^32 m. The cut's proofs start
+// from these (core/cut/sweep.h, core/cut/stamp.cpp); core/sim/stock_plan.h
+// narrows them for a run's stock.
 Status grid_check_geometry(const GridGeometry& geo);
 
 // Points `g` at caller memory for top and bottom (`cells` entries each) and

@@ -16,6 +16,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "core/config.h"
+
 namespace dexmill {
 
 constexpr int64_t kNmPerUm = 1000;
@@ -186,12 +188,18 @@ inline int64_t mul_shift(int64_t a, int64_t b, int s) {
 // mul_shift for inner loops whose caller has proved that floor(a * b / 2^s)
 // fits int64 (the product itself may not): the same bits without the
 // saturation tests. The portable path is mul_shift's.
+// With DEXMILL_CHECKED_ARITH (core/config.h) a result that does not fit
+// is reported (UBSan: an unreachable point reached) instead of wrapping.
 inline int64_t mul_shift_fit(int64_t a, int64_t b, int s) {
 #ifdef __SIZEOF_INT128__
-  return static_cast<int64_t>((static_cast<__int128>(a) * b) >> s);
+  const __int128 q = (static_cast<__int128>(a) * b) >> s;
+  if (kCheckedArith && q != static_cast<int64_t>(q)) __builtin_unreachable();
+  return static_cast<int64_t>(q);
 #else
   if (detail::fits_i32(a) && detail::fits_i32(b)) return detail::mul_shift_i32(a, b, s);
-  return mul_shift_portable(a, b, s);
+  const int64_t q = mul_shift_portable(a, b, s);  // saturated: the extremes mean it did not fit
+  if (kCheckedArith && (q == INT64_MAX || q == INT64_MIN)) __builtin_unreachable();
+  return q;
 #endif
 }
 

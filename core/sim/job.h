@@ -95,6 +95,10 @@ struct SimJob {
   AssessOptions assess{};               // its tolerances and the columns assessed
   const StockComposition* material = nullptr;  // the process rules of the stock's materials (null: off)
   size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
+  // The process rules' findings of lines 0..n-1 told apart exactly (3 bytes
+  // a line; core/check/process.h): the program's line count + 1. 0: only
+  // the last few are (a line met again later counts again).
+  size_t process_lines = 0;
   bool provenance = false;              // which tool last cut each column
   bool provenance_lines = false;        // and which line (needs provenance)
   int32_t provenance_slots = 7;         // classes for the tools (display/tool_colours.h kToolColourSlots)

@@ -274,6 +274,7 @@ class SimulationT final : public CanonSink {
   ProcessWatch process_;
   uint32_t* process_shadow_;
   int64_t* line_feed_limits_;
+  uint8_t* process_seen_;
   ToolProvenance<H> prov_;
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;

@@ -43,6 +43,7 @@ struct SimulationT<H>::Memory {
   uint32_t* fixture_bottom = nullptr;
   uint32_t* process_shadow = nullptr;
   int64_t* line_feed = nullptr;
+  uint8_t* process_seen = nullptr;  // the findings counted per line (core/check/process.h)
   uint8_t* seen = nullptr;
   size_t seen_bytes = 0;
   uint8_t* prov_cls = nullptr;
@@ -152,6 +153,7 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
   if (job.material) {
     mem.process_shadow = c.take<uint32_t>(cells);
     mem.line_feed = c.take<int64_t>(job.line_feed_lines);
+    mem.process_seen = c.take<uint8_t>(process_seen_bytes(job.process_lines));
   }
   if (job.design) {
     mem.seen_bytes = gouge_watch_seen_bytes(g.nx, g.ny);
@@ -225,6 +227,7 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       gouge_seen_(m.seen),
       process_shadow_(m.process_shadow),
       line_feed_limits_(m.line_feed),
+      process_seen_(m.process_seen),
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
       prov_lines_(m.prov_lines) {
@@ -272,6 +275,7 @@ void SimulationT<H>::start() {
   if (job_.material) {
     (void)process_watch_init(&process_, grid_, job_.material, process_shadow_, cells);
     if (job_.line_feed_lines) process_watch_track_lines(&process_, line_feed_limits_, job_.line_feed_lines);
+    if (job_.process_lines) process_watch_track_findings(&process_, process_seen_, job_.process_lines);
   }
   if (safety_on_) {
     (void)safety_watch_init(&safety_, grid_, safety_shadow_, cells, safety_tiles_, safety_tile_words_);

@@ -39,6 +39,11 @@ int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm) {
 
 PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
                     int64_t* want_nx, int64_t* want_ny) {
+  const int64_t corners[6] = {stock.lo.x_nm, stock.lo.y_nm, stock.lo.z_nm, stock.hi.x_nm, stock.hi.y_nm, stock.hi.z_nm};
+  for (const int64_t c : corners)
+    if (c < -kStockCoordMaxNm || c > kStockCoordMaxNm) return PlanError::kBadStock;
+  if (stock.lo.x_nm >= stock.hi.x_nm || stock.lo.y_nm >= stock.hi.y_nm || stock.lo.z_nm >= stock.hi.z_nm)
+    return PlanError::kBadStock;
   const int64_t sx = stock.hi.x_nm - stock.lo.x_nm, sy = stock.hi.y_nm - stock.lo.y_nm;
   int64_t pitch = pitch_nm;
   if (grid_nx > 0) {
@@ -67,6 +72,7 @@ PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int
   const int64_t height = stock.hi.z_nm - stock.lo.z_nm;
   p.geo.lsb_nm = lsb_for_range(height, DEXMILL_HEIGHT_BITS);
   p.top_lsb = div_round(height, p.geo.lsb_nm);
+  if (p.top_lsb > height_max<height_t>()) return PlanError::kBadStock;  // taller than 2^m - 1 LSBs of 1 m
   p.stock = StockBox{stock.lo, PointNm{stock.lo.x_nm + (ux - 1) * pitch, stock.lo.y_nm + (uy - 1) * pitch,
                                        stock.lo.z_nm + p.top_lsb * p.geo.lsb_nm}};
   if (!ok(grid_check_geometry(p.geo))) return PlanError::kBadGeometry;

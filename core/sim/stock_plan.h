@@ -26,6 +26,15 @@
 // side walls (core/grid/grid.h).
 // Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
 // the stock height in m bits (core/grid/grid.h lsb_for_range).
+//
+// Ranges (issue 35; what the cut's proofs start from, core/cut/sweep.h): a
+// stock box within +-kStockCoordMaxNm (1 km: the embedding API's limit;
+// `dexmill run` takes +-10 m, the interpreter's) with lo < hi on every
+// axis; its height at most 2^m - 1 LSBs of at most 1 m (65 km for 16-bit
+// heights, 255 m for 8); a pitch from 1 nm to 1 m; at most 65535 dexels a
+// side and kMaxGridCells in all; the grid's geometry within
+// grid_check_geometry's bounds (core/grid/grid.h). Outside, plan_grid
+// refuses with the error below that names it.
 #ifndef DEXMILL_CORE_SIM_STOCK_PLAN_H
 #define DEXMILL_CORE_SIM_STOCK_PLAN_H
 
@@ -54,6 +63,8 @@ struct GridPlan {
 
 // Most dexels a run may use (2 x 2 bytes each for 16-bit heights).
 constexpr int64_t kMaxGridCells = 64LL << 20;
+// The farthest a stock box's corner may be from the origin, nm.
+constexpr int64_t kStockCoordMaxNm = 1000LL * 1000 * 1000000;
 
 // The default grid's bounds and its pitch per tool (see above).
 constexpr int64_t kDefaultMaxAcross = 1024, kDefaultMinAcross = 256, kDefaultDexelsPerTool = 32;
@@ -65,6 +76,7 @@ enum class PlanError : uint8_t {
   kGridTooSmall,   // a most-dexels-each-way below 4 x 4
   kTooManyDexels,  // beyond 65535 a side or kMaxGridCells (want_nx, want_ny say how many)
   kBadGeometry,    // pitch, size or position out of the grid's range
+  kBadStock,       // a box corner beyond kStockCoordMaxNm, lo >= hi, or taller than the heights hold
 };
 
 // Plans the grid for a stock: by grid_nx/ny when given (> 0), else by

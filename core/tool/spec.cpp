@@ -68,7 +68,8 @@ const char* tool_spec_message(ToolSpecError e) {
     case ToolSpecError::kBadHolder:
       return "a holder is up to 4 pieces DxH (a cylinder) or D1-D2xH (a cone), mm";
     case ToolSpecError::kOutOfRange:
-      return "tool out of range (diameter 0.001..1000 mm, corner radius <= D/2, angle below 180 degrees)";
+      return "tool out of range (diameter 0.001..1000 mm, corner radius 0.000001..D/2, angle 1..179.999 degrees, "
+             "stick-out and flutes up to 10 m and at least the cutting shape's height)";
   }
   return "unknown tool spec error";
 }
@@ -182,7 +183,7 @@ ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
   if (t.kind == ToolKind::kVBit) {
     int64_t mdeg = 0;
     if (!parse_field(s + start[2], len[2], 1000, &mdeg)) return ToolSpecError::kBadNumber;
-    if (mdeg >= 180000) return ToolSpecError::kOutOfRange;
+    if (mdeg < kVBitAngleMinMdeg || mdeg > kVBitAngleMaxMdeg) return ToolSpecError::kOutOfRange;
     t.tip_angle_mdeg = static_cast<int32_t>(mdeg);
   }
   if (comma < n) {
@@ -196,8 +197,8 @@ ToolSpecError tool_spec_parse(const char* s, size_t n, Tool* out) {
 
 ToolSpecError tool_spec_complete(Tool* t) {
   // Range checks before the length rule, which evaluates the profile.
-  if (t->diameter_nm < kNmPerUm || t->diameter_nm > 1000 * kNmPerMm || t->flute_length_nm > 10000 * kNmPerMm ||
-      t->stick_out_nm > 10000 * kNmPerMm)
+  if (t->diameter_nm < kToolDiameterMinNm || t->diameter_nm > kToolDiameterMaxNm ||
+      t->flute_length_nm > kToolLengthMaxNm || t->stick_out_nm > kToolLengthMaxNm)
     return ToolSpecError::kOutOfRange;
   if (t->kind == ToolKind::kBullNose && t->corner_radius_nm > t->diameter_nm / 2) return ToolSpecError::kOutOfRange;
   t->length_nm = tool_default_length_nm(*t);

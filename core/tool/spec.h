@@ -34,7 +34,7 @@ enum class ToolSpecError : uint8_t {
   kBadNumber = 2,      // a field is not a decimal number
   kFieldCount = 3,     // too few or too many ':' fields for the shape
   kBadOption = 4,      // something after ',' that is not an option above
-  kOutOfRange = 5,     // fails tool_check (e.g. R > D/2, angle >= 180, stick-out under the flutes)
+  kOutOfRange = 5,     // outside the ranges of core/tool/tool.h (tool_check): e.g. R > D/2, angle under 1 degree
   kBadHolder = 6,      // a holder piece that is not DxH or D1-D2xH, or too many
 };
 

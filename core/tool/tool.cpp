@@ -8,7 +8,7 @@ namespace dexmill {
 
 Status tool_check(const Tool& t) {
   constexpr int64_t kMetre = 1000 * kNmPerMm;
-  if (t.diameter_nm < kNmPerUm || t.diameter_nm > kMetre) return Status::kBadArgument;
+  if (t.diameter_nm < kToolDiameterMinNm || t.diameter_nm > kToolDiameterMaxNm) return Status::kBadArgument;
   const int64_t r = t.diameter_nm / 2;
   switch (t.kind) {
     case ToolKind::kFlat:
@@ -18,12 +18,12 @@ Status tool_check(const Tool& t) {
       if (t.corner_radius_nm <= 0 || t.corner_radius_nm > r) return Status::kBadArgument;
       break;
     case ToolKind::kVBit:
-      if (t.tip_angle_mdeg <= 0 || t.tip_angle_mdeg >= 180000) return Status::kBadArgument;
+      if (t.tip_angle_mdeg < kVBitAngleMinMdeg || t.tip_angle_mdeg > kVBitAngleMaxMdeg) return Status::kBadArgument;
       break;
     default:
       return Status::kBadArgument;
   }
-  if (t.length_nm > 10 * kMetre || t.flute_length_nm < 0 || t.flute_length_nm > t.length_nm) return Status::kBadArgument;
+  if (t.length_nm > kToolLengthMaxNm || t.flute_length_nm < 0 || t.flute_length_nm > t.length_nm) return Status::kBadArgument;
   if (t.shank_diameter_nm < 0 || t.shank_diameter_nm > kMetre || t.holder_segments < 0 ||
       t.holder_segments > kHolderSegmentsMax)
     return Status::kBadArgument;

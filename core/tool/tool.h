@@ -37,7 +37,7 @@ struct Tool {
   ToolKind kind = ToolKind::kFlat;
   int64_t diameter_nm = 0;        // cutting diameter, 2R
   int64_t corner_radius_nm = 0;   // kBullNose only: 0 < rc <= R
-  int32_t tip_angle_mdeg = 0;     // kVBit only: included angle, (0, 180) degrees
+  int32_t tip_angle_mdeg = 0;     // kVBit only: included angle, kVBitAngleMinMdeg..kVBitAngleMaxMdeg
   int64_t flute_length_nm = 0;    // cutting length above the tip (0: as long as the tool)
   int64_t length_nm = 0;          // stick-out: tip to the top of the shaft (the holder's face)
   // What the safety checks need (core/check/body.h); the cut ignores them.
@@ -48,10 +48,26 @@ struct Tool {
   HolderSegment holder[kHolderSegmentsMax] = {};
 };
 
-// Limits: 1 um <= diameter <= 1 m, length >= the profile's full height and
-// <= 10 m, corner radius and tip angle in the ranges above; shank and holder
-// diameters <= 1 m, holder heights > 0 and <= 10 m together, at most
-// kHolderSegmentsMax segments.
+// The tools' ranges (issue 35), which every stage after this one proves its
+// arithmetic against (core/cut/sweep.h, core/tool/cutter.h):
+//   diameter D:        kToolDiameterMinNm (1 um) .. kToolDiameterMaxNm (1 m)
+//   corner radius rc:  1 nm .. D / 2 (bull nose)
+//   tip angle:         1 .. 179.999 degrees (V-bit): its slope cot(a/2) is
+//                      at most cot(0.5 deg) = 114.6 < 2^7, what the sweep's
+//                      products assume; finer cones are no real bits
+//   length (stick-out) and flute length: the profile's full height (R for a
+//                      ball, rc, R cot(a/2)) .. kToolLengthMaxNm (10 m), so a
+//                      1-degree V-bit is at most 174.5 mm across
+//   shank and holder diameters <= 1 m, holder heights > 0 and <= 10 m
+//   together, at most kHolderSegmentsMax segments.
+// The cutting modes narrow the diameter further: the sweep to radii of
+// 2^28 nm (core/cut/sweep.h), the stamp to 4095 dexels across
+// (core/tool/cutter.h).
+constexpr int64_t kToolDiameterMinNm = 1000;
+constexpr int64_t kToolDiameterMaxNm = 1000000000;
+constexpr int64_t kToolLengthMaxNm = 10000000000;
+constexpr int32_t kVBitAngleMinMdeg = 1000;
+constexpr int32_t kVBitAngleMaxMdeg = 179999;
 Status tool_check(const Tool& t);
 
 // Precomputed profile of a checked tool: height above the tip of the tool's

@@ -121,11 +121,13 @@ typedef struct dm_triangle {
   int64_t v_nm[3][3]; /* three vertices x, y, z, machine coordinates */
 } dm_triangle;
 
-/* A tool: its spec text, or (spec NULL) the fields. */
+/* A tool: its spec text, or (spec NULL) the fields; DM_E_TOOL outside the
+ * ranges of core/tool/tool.h (1 um to 1 m across, a V-bit's angle 1000 to
+ * 179999 millidegrees, stick-out up to 10 m). */
 typedef struct dm_tool {
   const char* spec;           /* "ball:6", "bull:10:1.5,len=25,holder=20x10", ... (read by dm_required_bytes and dm_create only) */
   int32_t shape;              /* DM_TOOL_* */
-  int32_t tip_angle_mdeg;     /* V-bit: the included angle */
+  int32_t tip_angle_mdeg;     /* V-bit: the included angle, 1000..179999 */
   int64_t diameter_nm;
   int64_t corner_radius_nm;   /* bull nose */
   int64_t flute_length_nm;    /* 0: cuts along its whole length */
