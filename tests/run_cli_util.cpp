@@ -1,6 +1,7 @@
 // Helpers of the `dexmill run` tests; see run_cli_util.h.
 #include "tests/run_cli_util.h"
 
+#include <dirent.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -166,6 +167,31 @@ std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_row
   if (bytes.size() < at + n || skip_bottom_rows > h) return {};
   const size_t kept = static_cast<size_t>(w) * (h - skip_bottom_rows) * 3;
   return std::vector<unsigned char>(bytes.begin() + static_cast<long>(at), bytes.begin() + static_cast<long>(at + kept));
+}
+
+namespace {
+
+// The names in folder dir that `match` takes; -1 without the folder.
+template <class Match>
+int count_entries(const std::string& dir, Match match) {
+  DIR* d = opendir(dir.c_str());
+  if (!d) return -1;
+  int n = 0;
+  while (const dirent* e = readdir(d))
+    if (match(std::string(e->d_name))) ++n;
+  closedir(d);
+  return n;
+}
+
+}  // namespace
+
+int count_names(const std::string& dir, const char* part) {
+  const int n = count_entries(dir, [part](const std::string& name) { return name.find(part) != std::string::npos; });
+  return n < 0 ? 0 : n;
+}
+
+int count_prefixed(const std::string& dir, const char* prefix) {
+  return count_entries(dir, [prefix](const std::string& name) { return name.rfind(prefix, 0) == 0; });
 }
 
 }  // namespace run_cli

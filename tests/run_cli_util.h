@@ -36,6 +36,10 @@ Result run_command(const std::string& args, const char* stdin_file = nullptr, bo
 // when killed by a signal), standard error and standard output (what the
 // script does not redirect itself).
 Result run_shell(const std::string& script);
+// How many names in folder dir hold `part` (0 without the folder), and how
+// many begin with `prefix` (-1 without the folder).
+int count_names(const std::string& dir, const char* part);
+int count_prefixed(const std::string& dir, const char* prefix);
 // True when s holds part; else prints both and returns false.
 bool has(const std::string& s, const char* part);
 // The report without its wall-clock timing.

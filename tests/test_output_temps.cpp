@@ -3,7 +3,6 @@
 // temporary being NAME.tmp-PID), and a clean-up that removes only what no
 // live process holds (it used to judge by the PID alone, and deleted a live
 // run's temporary when that run was in another PID namespace).
-#include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -27,16 +26,6 @@ std::string fresh_dir(const char* name) {
   const std::string d = tmp_dir() + "/temps-" + name;
   std::system(("rm -rf '" + d + "' && mkdir -p '" + d + "'").c_str());
   return d;
-}
-
-int count_names(const std::string& dir, const char* part) {
-  int n = 0;
-  DIR* d = opendir(dir.c_str());
-  if (!d) return 0;
-  while (const dirent* e = readdir(d))
-    if (std::string(e->d_name).find(part) != std::string::npos) ++n;
-  closedir(d);
-  return n;
 }
 
 bool exists(const std::string& path) {

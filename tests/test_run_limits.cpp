@@ -35,16 +35,6 @@ bool skip_under_asan() {
 #endif
 }
 
-int spools(const std::string& dir) {
-  int n = 0;
-  DIR* d = opendir(dir.c_str());
-  if (!d) return -1;
-  while (const dirent* e = readdir(d))
-    if (std::string(e->d_name).rfind("dexmill-input-", 0) == 0) ++n;
-  closedir(d);
-  return n;
-}
-
 const char* const kBigGrid = " -q --stock 0,0,-10,100,100,0 --grid 8192x8192";
 
 }  // namespace
@@ -68,7 +58,7 @@ TEST(run_out_of_memory_is_exit_3_with_the_size) {
                 " --image /dev/null)");
   CHECK_EQ(r.code, 3);
   CHECK(has(r.err, "dexmill: error: out of memory: cannot allocate "));
-  CHECK_EQ(spools(spool), 0);
+  CHECK_EQ(count_prefixed(spool, "dexmill-input-"), 0);
 }
 
 TEST(run_works_in_the_stated_stack) {

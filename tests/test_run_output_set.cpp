@@ -3,7 +3,6 @@
 // one pass at the end. A signal in the writing phase used to leave the new
 // image beside the old heightmap, STL and report; now it leaves the old set
 // whole. The report names the run and lists the files with their sizes.
-#include <dirent.h>
 #include <sys/stat.h>
 
 #include <cstdlib>
@@ -20,16 +19,6 @@ std::string fresh_dir(const std::string& name) {
   const std::string d = tmp_dir() + "/set-" + name;
   std::system(("rm -rf '" + d + "' && mkdir -p '" + d + "'").c_str());
   return d;
-}
-
-int count_names(const std::string& dir, const char* part) {
-  int n = 0;
-  DIR* d = opendir(dir.c_str());
-  if (!d) return -1;
-  while (const dirent* e = readdir(d))
-    if (std::string(e->d_name).find(part) != std::string::npos) ++n;
-  closedir(d);
-  return n;
 }
 
 long long file_size(const std::string& path) {

@@ -25,16 +25,6 @@ std::string fresh_dir(const char* name) {
   return d;
 }
 
-int spools(const std::string& dir) {
-  int n = 0;
-  DIR* d = opendir(dir.c_str());
-  if (!d) return -1;
-  while (const dirent* e = readdir(d))
-    if (std::string(e->d_name).rfind("dexmill-input-", 0) == 0) ++n;
-  closedir(d);
-  return n;
-}
-
 // `dexmill run ARGS` with TMPDIR=dir, its files at most about 10 MB
 // (ulimit -f counts 512-byte blocks in sh), fed by `feed |` when given.
 Result spooled_run(const std::string& dir, const std::string& feed, const std::string& args) {
@@ -59,7 +49,7 @@ TEST(run_copy_of_endless_or_binary_input_stops_early) {
   r = spooled_run(d, "head -c 30000000 /dev/zero | tr '\\000' '\\001'", "- -q");
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "<stdin>:1:1: error: not a text file"));
-  CHECK_EQ(spools(d), 0);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 0);
 }
 
 TEST(run_copy_beyond_max_input_is_refused) {
@@ -69,12 +59,12 @@ TEST(run_copy_beyond_max_input_is_refused) {
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "dexmill: error: standard input is larger than 1 MiB"));
   CHECK(has(r.err, "--max-input MIB raises it"));
-  CHECK_EQ(spools(d), 0);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 0);
   // Within the limit it runs (60 000 lines, about 0.9 MB).
   r = spooled_run(d, "yes 'G1 X1 Y1 F100' | head -n 60000", "- -q --max-input 1 --grid 32x32");
   CHECK_EQ(r.code, 0);
   CHECK_EQ(run("- --max-input 0").code, 2);
-  CHECK_EQ(spools(d), 0);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 0);
 }
 
 TEST(run_copy_write_error_says_why) {
@@ -86,7 +76,7 @@ TEST(run_copy_write_error_says_why) {
   CHECK_EQ(r.code, 3);
   CHECK(has(r.err, ("dexmill: error: cannot keep standard input in '" + d + "/dexmill-input-").c_str()));
   CHECK(has(r.err, "': File too large"));
-  CHECK_EQ(spools(d), 0);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 0);
 }
 
 TEST(run_copy_removes_what_a_killed_run_left) {
@@ -94,14 +84,14 @@ TEST(run_copy_removes_what_a_killed_run_left) {
   const std::string d = fresh_dir("killed");
   // A run killed while it copies leaves its copy (SIGKILL has no handler) ...
   Result r = run_shell("{ echo 'G0 X1'; sleep 2; } | TMPDIR='" + d + "' {bin} run - -q & pid=$!; sleep 0.5; kill -KILL $pid");
-  CHECK_EQ(spools(d), 1);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 1);
   // ... which the next copy removes, but not a live run's (held: its lock).
   const std::string live = d + "/dexmill-input-Live1234";
   const int fd = open(live.c_str(), O_RDWR | O_CREAT, 0600);
   CHECK(fd >= 0 && flock(fd, LOCK_EX) == 0);
   r = run_shell("echo 'G0 X1' | TMPDIR='" + d + "' {bin} run - -q");
   CHECK_EQ(r.code, 0);
-  CHECK_EQ(spools(d), 1);
+  CHECK_EQ(count_prefixed(d, "dexmill-input-"), 1);
   CHECK_EQ(access(live.c_str(), F_OK), 0);
   if (fd >= 0) close(fd);
   unlink(live.c_str());

@@ -33,17 +33,6 @@ int shell(const std::string& cmd) {
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-// Names in `dir` holding `part`.
-int count_names(const std::string& dir, const char* part) {
-  int n = 0;
-  DIR* d = opendir(dir.c_str());
-  if (!d) return 0;
-  while (const dirent* e = readdir(d))
-    if (std::string(e->d_name).find(part) != std::string::npos) ++n;
-  closedir(d);
-  return n;
-}
-
 std::string fresh_dir(const char* name) {
   const std::string d = tmp_dir() + "/trust-" + name;
   std::system(("rm -rf '" + d + "' && mkdir -p '" + d + "'").c_str());

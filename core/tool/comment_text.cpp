@@ -90,6 +90,17 @@ int text_word_count(const char* s, size_t n) {
   return words;
 }
 
+int32_t text_read_digits(const char* s, size_t n, size_t* pos, int* digits) {
+  int32_t num = 0;
+  *digits = 0;
+  while (*pos < n && text_is_digit(s[*pos]) && *digits < 6) {
+    num = num * 10 + (s[*pos] - '0');
+    ++*pos;
+    ++*digits;
+  }
+  return num;
+}
+
 bool text_read_amount(const char* s, size_t n, size_t* pos, int64_t* e9) {
   const size_t p = *pos;
   if (p > 0 && (text_is_letter(s[p - 1]) || text_is_digit(s[p - 1]) || s[p - 1] == '.')) return false;

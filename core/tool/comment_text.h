@@ -27,6 +27,9 @@ inline bool text_has_prefix(const char* s, size_t n, const char* w) { return tex
 size_t text_skip_spaces(const char* s, size_t n, size_t at);
 // Runs of bytes that are not white space.
 int text_word_count(const char* s, size_t n);
+// Up to six digits at s[*pos] (a tool number) as their value, *pos moved
+// past them; *digits how many there were (0: none, value 0).
+int32_t text_read_digits(const char* s, size_t n, size_t* pos, int* digits);
 
 // An unsigned amount at s[*pos]: a decimal (12, 12.5, .5, 12.) or an inch
 // fraction (1/4, a whole part before it: 1 1/4, 1-1/4), as 1e-9 units,

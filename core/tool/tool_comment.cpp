@@ -20,16 +20,11 @@ int32_t leading_t(const char* s, size_t n, size_t* after) {
   size_t p = text_skip_spaces(s, n, 0);
   if (p >= n || (s[p] != 'T' && s[p] != 't')) return -1;
   ++p;
-  int64_t num = 0;
   int digits = 0;
-  while (p < n && text_is_digit(s[p]) && digits < 6) {
-    num = num * 10 + (s[p] - '0');
-    ++p;
-    ++digits;
-  }
+  const int32_t num = text_read_digits(s, n, &p, &digits);
   if (digits == 0 || (p < n && (text_is_letter(s[p]) || text_is_digit(s[p]) || s[p] == '.'))) return -1;
   *after = p;
-  return static_cast<int32_t>(num);
+  return num;
 }
 
 // The shape of a mill from its corner radius: flat, bull nose, or ball

@@ -203,13 +203,8 @@ int32_t leading_number(const char* s, size_t n, size_t* rest) {
     if (p < n && s[p] == '#') ++p;
     tool_word = true;
   }
-  int64_t num = 0;
   int digits = 0;
-  while (p < n && text_is_digit(s[p]) && digits < 6) {
-    num = num * 10 + (s[p] - '0');
-    ++p;
-    ++digits;
-  }
+  const int32_t num = text_read_digits(s, n, &p, &digits);
   if (digits == 0 || (p < n && (text_is_letter(s[p]) || text_is_digit(s[p]) || s[p] == '.' || s[p] == '/'))) {
     *rest = start;
     return -1;
@@ -218,14 +213,14 @@ int32_t leading_number(const char* s, size_t n, size_t* rest) {
   const bool bare = p - digits == start;  // "1 = End Mill"
   if (q < n && (s[q] == '=' || s[q] == ':')) {
     *rest = q + 1;
-    return static_cast<int32_t>(num);
+    return num;
   }
   if (bare || tool_word) {
     *rest = start;
     return -1;
   }
   *rest = q;
-  return static_cast<int32_t>(num);
+  return num;
 }
 
 // After a "Tool:" (or "Tool =") label: where the name starts; n if none.
