@@ -263,8 +263,8 @@ FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
 # The readers and run's backplot path are host code (std, exceptions),
 # linked into every target.
 FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/tool_table.cpp platform/stl_read.cpp platform/pgm.cpp \
-                   platform/read_file.cpp platform/output_file.cpp platform/process.cpp platform/material_file.cpp \
-                   tools/run_path.cpp)
+                   platform/read_file.cpp platform/output_file.cpp platform/temp_file.cpp platform/output_set.cpp \
+                   platform/process.cpp platform/material_file.cpp tools/run_path.cpp)
 # Per target: the longest input (the pipeline's seeds are whole programs,
 # binary STL seeds a hundred triangles), the dictionary, further options (a
 # reader must not be made to allocate hundreds of MB by a few KB of input).
