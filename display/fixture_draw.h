@@ -1,4 +1,4 @@
-// Fixtures (issue 20: clamps, vices, the boxes the tool must never enter)
+// Fixtures (clamps, vices, the boxes the tool must never enter)
 // drawn as shaded solids: each an axis-aligned box in machine coordinates,
 // six faces, each face flat in the shade of its normal under the frame's
 // light, depth-tested against everything else like the stock and the

@@ -1,4 +1,4 @@
-// The material colour mode (`--color material`, paper §2.7, issue 19):
+// The material colour mode (`--color material`, paper §2.7):
 // every dexel takes the colour of the material just under its top
 // (core/material/material.h), so a cut through a two-layer block shows the
 // lower layer where it went through and the upper one elsewhere.

@@ -148,7 +148,7 @@ void renderer_set_camera(Renderer<H>* r, const Camera& c);
 template <class H>
 void renderer_set_tool(Renderer<H>* r, const ToolProfile* p);
 
-// Fixtures (issue 20: clamps, vices), drawn in opt.fixture as shaded boxes
+// Fixtures (clamps, vices), drawn in opt.fixture as shaded boxes
 // in every frame, depth-tested against the stock, the table and the tool:
 // boxes[0, n) in machine coordinates (display/fixture_draw.h; null or
 // n = 0: none), caller memory that this call and every full frame read and

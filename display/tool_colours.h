@@ -1,4 +1,4 @@
-// The tool colour mode (`--color tool`, issue 19): every dexel in the colour
+// The tool colour mode (`--color tool`): every dexel in the colour
 // of the tool that last lowered its top, as AXIS and CAMotics colour a
 // simulation by tool, and the dexels no tool lowered in a neutral grey of
 // their own, so stock left standing stands out. The classes are the

@@ -1,4 +1,4 @@
-// The input guard (issue 35): a command never writes or removes a file it
+// The input guard: a command never writes or removes a file it
 // reads, nor writes one file as two outputs. A command makes one FileGuard
 // and, before it writes or removes anything, registers every file it reads
 // and checks every file it will write or remove; each call compares the

@@ -160,7 +160,7 @@ class GcodeStderrMessages final : public GcodeMessages {
   std::FILE* out_;
 };
 
-// A program's message comments (issue 21: DEBUG, PRINT, MSG, with their
+// A program's message comments (DEBUG, PRINT, MSG, with their
 // parameters substituted), printed as `FILE:LINE: debug|print|message: TEXT`
 // on stderr when `print`, and kept for the report.
 class GcodeNotes final : public GcodeMessageSink {

@@ -1,4 +1,4 @@
-// Material files (issue 19, `--material FILE`): what the stock is made of,
+// Material files (`--material FILE`): what the stock is made of,
 // as text, into a StockComposition (core/material/material.h). One statement
 // a line; '#' starts a comment; words are separated by blanks; lengths in
 // millimetres, machine coordinates; names up to 16 characters.

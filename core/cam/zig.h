@@ -1,6 +1,6 @@
 // Zig milling from a design part (paper §3: "the design part is scanned for
 // height in x-parallel stripes; at the edge the cutter is lifted and returns
-// to the other edge without cutting"; issue 23): tool positions along
+// to the other edge without cutting"): tool positions along
 // stripes of the design's dexel rows, each the lowest at which the tool
 // touches but does not cut into the design.
 //

@@ -1,4 +1,4 @@
-// The parts of a tool that must never touch material (issue 20): the shank
+// The parts of a tool that must never touch material: the shank
 // above the flutes and the holder above the stick-out, as rings of a lower
 // surface over the radial distance r, and where along a move they come
 // lowest over a column. What the safety checks (core/check/safety.h) compare

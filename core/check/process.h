@@ -1,4 +1,4 @@
-// The process rules of an inhomogeneous stock (paper §2.6, issue 19): for
+// The process rules of an inhomogeneous stock (paper §2.6): for
 // every record, the materials the cut actually removed (each lowered dexel
 // column's lost z range through the composition, core/material/column.h)
 // against the limits each material brings:
@@ -8,7 +8,7 @@
 //   paper's wood, which soaks it up).
 // A finding is one (line, rule, material): a line that breaks a rule on a
 // material is one finding however many records, loop passes or columns
-// show it (issue 35: a column's removal charged to the line before and the
+// show it (a column's removal charged to the line before and the
 // next one alternately counted it again and again, 21 M "violations" for a
 // 41 799-line program). The first kProcessViolationsMax are kept, each
 // once; total and each material's tally count every finding once. Which

@@ -1,4 +1,4 @@
-// Safety checks a preview exists for (issue 20), traced to the program
+// Safety checks a preview exists for, traced to the program
 // line that trips them:
 // - a rapid (G0) that removes material, and the volume rapids removed;
 // - material removed while the spindle is stopped (no M3/M4, or after M5):

@@ -118,7 +118,7 @@ void Mill<H>::cut_line(PointNm a, PointNm b) {
 template <class H>
 void Mill<H>::emit(const CanonRecord& r) {
   // A record that cuts or ends the chain starts from the grid as it was
-  // before any flush (issue 25: what flush shows does not change the cut).
+  // before any flush (what flush shows does not change the cut).
   if (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc ||
       r.kind == CanonKind::kToolChange || r.kind == CanonKind::kEnd)
     unshow();

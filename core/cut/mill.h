@@ -56,7 +56,7 @@ class Mill : public CanonSink {
   // needed (core/cut/sweep.h, SweepChain); flush cuts that cap whole.
   //
   // What is finally cut does not depend on when or how often flush is
-  // called (issue 25). The chain cuts only the wedge of the cap that the
+  // called. The chain cuts only the wedge of the cap that the
   // next move needs, with heights in that move's frame, and leaves out the
   // columns where the moves' bands are lower in exact arithmetic; in
   // integers the whole cap and the bands there round apart by an LSB at a

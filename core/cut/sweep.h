@@ -9,7 +9,7 @@
 // nm square within int64), heights in V = lsb / 256 of the grid. A column's
 // height is rounded to the nearest LSB at the end.
 //
-// Ranges (issue 35; every product of the sweep is bounded from these, and
+// Ranges (every product of the sweep is bounded from these, and
 // each file states the worst case of its own; tests/test_ranges.cpp runs
 // their corners under UBSan with the checked helpers of core/config.h):
 //   tool (core/tool/tool.h, and here):  R <= 2^28 nm, so R <= 2^30 U, R^2 <=

@@ -314,7 +314,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
 // and lower, so the last full turn alone cuts everything the whole helix
 // cuts; an ascending helix's first turn, a level one's any turn. The one
 // turn that does, into *one; false when the arc has at most one turn
-// (issue 24: a 10 000-turn helix cost 10 000 turns).
+// (cutting every turn, a 10 000-turn helix cost 10 000 turns).
 bool dominant_turn(const CanonRecord& arc, bool* start_cap, CanonRecord* one) {
   if (arc.arc.plane != Plane::kXY || (arc.arc.turns >= -1 && arc.arc.turns <= 1)) return false;
   const int dir = arc.arc.turns < 0 ? -1 : 1;

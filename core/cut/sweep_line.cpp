@@ -99,7 +99,8 @@ inline int64_t best_w_rho(const SweepTool& t, const SweepLine& lp, int64_t v, in
       // |v| <= 2^31 U, |c1| < 2^57 (m / sqrt(k^2 - m^2) with the root's
       // argument at least 1 in q20): w up to 2^58, far past the rim on a
       // ramp along the cone's slope; such a w is the rim's (w^2 > R^2), and
-      // the test first keeps w^2 below 2^60 (issue 35: it overflowed).
+      // the test first keeps w^2 below 2^60 (unchecked, it overflowed for a
+      // 30-degree V-bit 254 mm across).
       const int64_t w = mul_shift(v < 0 ? -v : v, lp.vbit_c1_q30, 30);
       return (w < 0 ? -w : w) <= t.r_u && w * w + v2 <= t.r2_u ? w : rim;
     }

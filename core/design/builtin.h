@@ -1,4 +1,4 @@
-// The paper's four workpieces as built-in design parts (issue 23; paper §3
+// The paper's four workpieces as built-in design parts (paper §3
 // "Results"): the instrument panel, the smiley milled from the two-layer
 // compound (figure 12), the free-form surface in marble (figures 14-15) and
 // a tsuba in bronze (figure 16). Each is an analytic height field drawn in

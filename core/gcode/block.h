@@ -118,7 +118,7 @@ enum class GcodeLineKind : uint8_t {
 // unspecified. `line` is stored in b->line and d->line.
 [[nodiscard]] GcodeError gcode_read_block(const char* text, size_t len, uint32_t line, GcodeBlock* b,
                                           GcodeLineKind* kind, GcodeDiag* d);
-// The same with parameters (issue 21): values may be computed from them,
+// The same with parameters: values may be computed from them,
 // and the line's assignments (#n = value, #<name> = value) are made after
 // the whole line was read (values on the line see the old ones), only when
 // the line has no error.

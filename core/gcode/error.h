@@ -40,7 +40,7 @@ enum class GcodeError : uint16_t {
   kNotText = 19,
   kUtf16Text = 20,
   kMisplacedOword = 21,
-  // parameters and expressions (issue 21)
+  // parameters and expressions
   kExprDivideByZero = 22,
   kExprDomain = 23,
   kExprOutOfRange = 24,
@@ -235,7 +235,7 @@ class GcodeDiagSink {
   ~GcodeDiagSink() = default;
 };
 
-// Where a program's message comments go (DEBUG, PRINT, MSG; issue 21):
+// Where a program's message comments go (DEBUG, PRINT, MSG):
 // kind 1 DEBUG, 2 PRINT, 3 MSG (core/gcode/block.h GcodeMessage), the text
 // as LinuxCNC would show it.
 class GcodeMessageSink {

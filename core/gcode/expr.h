@@ -1,4 +1,4 @@
-// RS274/NGC values computed as LinuxCNC 2.9 reads them (issue 21): a real
+// RS274/NGC values computed as LinuxCNC 2.9 reads them: a real
 // value is a number, a parameter (#5, ##1, #<name>), a [bracketed
 // expression] or a unary function (ABS ACOS ASIN ATAN[y]/[x] COS EXISTS
 // EXP FIX FUP LN ROUND SIN SQRT TAN, degrees as LinuxCNC), optionally

@@ -1,4 +1,4 @@
-// The numbers of RS274/NGC expressions and parameters (issue 21), in fixed
+// The numbers of RS274/NGC expressions and parameters, in fixed
 // point: a value is e9 / 10^9 exactly, so that every number a program
 // writes with up to 9 decimals is held exactly (G-code numbers are decimal;
 // LinuxCNC holds them in doubles). |value| <= kGValueMax (10^9: a km in mm,

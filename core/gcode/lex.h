@@ -37,7 +37,7 @@ class GcodeScanner {
 
   // Skips white space and comments; true if only those remain.
   [[nodiscard]] bool at_end();
-  // With parameters (issue 21): a word's value may be computed (#1, [1+2],
+  // With parameters: a word's value may be computed (#1, [1+2],
   // SIN[30]) from them, '#' at a word's start is an assignment (w->letter
   // '#', the position left at it for the block reader), and message
   // comments (DEBUG, PRINT, MSG) are noted. Null: those are refused as not

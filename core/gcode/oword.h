@@ -1,4 +1,4 @@
-// O-word lines (issue 21: LinuxCNC 2.9's control flow, read as its read_o
+// O-word lines (LinuxCNC 2.9's control flow, read as its read_o
 // reads them). A line whose first word (after blanks, a block-delete '/'
 // and an N word) is O holds one control statement and nothing else but
 // comments:

@@ -1,4 +1,4 @@
-// RS274/NGC parameters (issue 21, as LinuxCNC 2.9 holds them): numbered
+// RS274/NGC parameters (as LinuxCNC 2.9 holds them): numbered
 // #1..#5602 and named #<name> (names lower case, blanks dropped; a name
 // beginning with '_' is global, others belong to the call level that set
 // them). Fixed capacities, no heap: kParamsNamedMax names of at most

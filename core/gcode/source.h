@@ -1,4 +1,4 @@
-// A program the interpreter can re-read (issue 21: o-word loops and calls
+// A program the interpreter can re-read (o-word loops and calls
 // jump back by position, as LinuxCNC's interpreter does with ftell/fseek;
 // no line is kept in memory). The host's is a file (platform/gcode_source.h),
 // a panel's a pointer into flash (MemorySource below).

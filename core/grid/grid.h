@@ -73,7 +73,7 @@ struct GridGeometry {
   int64_t z0_nm, lsb_nm;
 };
 
-// Bounds of the geometry (the grid's ranges, issue 35): 2 <= nx, ny <=
+// Bounds of the geometry (the grid's ranges): 2 <= nx, ny <=
 // 65535, pitch and LSB in [1 nm, 1 m], origins within +-1 km. So an index
 // times the pitch is below 2^46 nm and every dexel axis within 1 km + 65.5
 // km < 2^46.1 nm of the origin; a height is at most 2^m - 1 LSB (2^32 - 1

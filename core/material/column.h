@@ -1,5 +1,5 @@
 // The composition along a vertical segment: what the process rules of
-// issue 19 (paper §2.6) need from a cut, which lowers a dexel column at
+// (paper §2.6) need from a cut, which lowers a dexel column at
 // (x, y) from one height to another. Exact: the composition is piecewise
 // constant along z, changing only at layer and insert z bounds, so the
 // segment is split at those and each piece is looked up once (at most

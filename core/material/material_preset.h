@@ -1,4 +1,4 @@
-// The built-in materials (issue 19: `--material NAME` without a file): each
+// The built-in materials (`--material NAME` without a file): each
 // a StockComposition placed on a given stock box. Process values are typical
 // ones for a small 3-axis mill with carbide cutters (material_preset.cpp
 // says where each number comes from); a material file overrides them.

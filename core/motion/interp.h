@@ -68,7 +68,7 @@ struct InterpOptions {
   bool inch = false;                  // units before any G20/G21
   const ToolTable* tools = nullptr;   // for G43 H; null: lengths are 0
   GcodeDiagSink* warnings = nullptr;  // null: warnings are dropped
-  // Parameters and expressions (issue 21): caller memory (about 57 KB,
+  // Parameters and expressions: caller memory (about 57 KB,
   // core/gcode/params.h), cleared at reset. Null: a program that uses them
   // is refused as not supported (a panel without the memory).
   ParamStore* params = nullptr;
@@ -77,7 +77,7 @@ struct InterpOptions {
   // in force (before the first F, after G93/G94 cleared it); 0: none, such a
   // move is an error as in LinuxCNC. One warning, at the first such move.
   int64_t default_feed_nm_per_min = 0;
-  // O-word control flow (issue 21): caller memory (oword_store.h, about
+  // O-word control flow: caller memory (oword_store.h, about
   // 11 KB; needs `params` too), cleared at reset. Null: o-words are refused
   // as not supported.
   OwordStore* control = nullptr;

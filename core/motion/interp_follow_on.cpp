@@ -1,4 +1,4 @@
-// Telling a root error from its follow-ons (issue 22: `dexmill check` once
+// Telling a root error from its follow-ons (`dexmill check` once
 // gave 942 errors for one cause in a real file).
 //
 // LinuxCNC stops at the first error, so it has no rule for what comes after;

@@ -1,4 +1,4 @@
-// O-word control flow (issue 21), as LinuxCNC 2.9's interp_o_word.cc runs it
+// O-word control flow, as LinuxCNC 2.9's interp_o_word.cc runs it
 // (convert_control_functions, control_back_to, execute_call/return):
 // statements are checked completely before any state changes, so a bad one
 // changes nothing; LinuxCNC's quirks are kept where a program could tell

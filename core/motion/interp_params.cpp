@@ -1,4 +1,4 @@
-// The interpreter's own parameters (issue 21), read as LinuxCNC 2.9 gives
+// The interpreter's own parameters, read as LinuxCNC 2.9 gives
 // them: lengths in the program's current units, positions in the current
 // coordinate system. Numbered: #5061-#5069 the last probe's end (a G38.x
 // move is simulated to its end point: the contact point cannot be known)

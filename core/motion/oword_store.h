@@ -1,4 +1,4 @@
-// The memory of o-word control flow (issue 21): LinuxCNC 2.9's offset table,
+// The memory of o-word control flow: LinuxCNC 2.9's offset table,
 // call stack and skipping state, in fixed capacities (caller memory, like
 // ParamStore; InterpOptions::control). About 11 KB.
 //

@@ -27,7 +27,7 @@
 // Heights: 0 is the stock bottom, the LSB the finest 1-2-5 step that holds
 // the stock height in m bits (core/grid/grid.h lsb_for_range).
 //
-// Ranges (issue 35; what the cut's proofs start from, core/cut/sweep.h): a
+// Ranges (what the cut's proofs start from, core/cut/sweep.h): a
 // stock box within +-kStockCoordMaxNm (1 km: the embedding API's limit;
 // `dexmill run` takes +-10 m, the interpreter's) with lo < hi on every
 // axis; its height at most 2^m - 1 LSBs of at most 1 m (65 km for 16-bit

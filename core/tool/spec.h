@@ -1,4 +1,4 @@
-// Tool specifications as text, the `--tool` syntax of ../shared/CLI.md:
+// Tool specifications as text, the `--tool` syntax (tools/README.md):
 //
 //   ball:D   flat:D   bull:D:R   vbit:D:ANGLE      then any of, after commas:
 //     len=L         flute length: above it the shank must not touch material

@@ -23,7 +23,7 @@ enum class ToolKind : uint8_t {
   kVBit = 3,      // cone with included tip angle a: height(r) = r / tan(a/2)
 };
 
-// One piece of a tool holder (issue 20): a cylinder (equal diameters) or a
+// One piece of a tool holder: a cylinder (equal diameters) or a
 // cone, stacked above the stick-out. Only its lower surface can meet the
 // stock from below, so a cone narrowing upwards acts as its bottom disc.
 struct HolderSegment {
@@ -48,7 +48,7 @@ struct Tool {
   HolderSegment holder[kHolderSegmentsMax] = {};
 };
 
-// The tools' ranges (issue 35), which every stage after this one proves its
+// The tools' ranges, which every stage after this one proves its
 // arithmetic against (core/cut/sweep.h, core/tool/cutter.h):
 //   diameter D:        kToolDiameterMinNm (1 um) .. kToolDiameterMaxNm (1 m)
 //   corner radius rc:  1 nm .. D / 2 (bull nose)
