@@ -10,29 +10,14 @@
 
 #include "platform/frame_files.h"
 #include "platform/output_file.h"
+#include "platform/path_name.h"
 
 namespace dexmill {
 
-namespace {
-
-std::string dir_of(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
-
-std::string base_of(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
-}  // namespace
-
 bool FileGuard::add_place(Entry* e, const std::string& path) {
   struct stat st;
-  if (stat(dir_of(path).c_str(), &st) != 0) return false;
-  e->places.push_back(Place{st.st_dev, st.st_ino, base_of(path)});
+  if (stat(folder_of(path).c_str(), &st) != 0) return false;
+  e->places.push_back(Place{st.st_dev, st.st_ino, name_of(path)});
   return true;
 }
 
@@ -151,7 +136,7 @@ FileGuard::Verdict FileGuard::check_output(const std::string& option, const std:
   }
   // A regular file is replaced by a rename in its folder
   // (platform/output_file.h): the folder must be there and writable.
-  const std::string dir = dir_of(target);
+  const std::string dir = folder_of(target);
   struct stat dst;
   const bool found = stat(dir.c_str(), &dst) == 0;
   if (!found || !S_ISDIR(dst.st_mode)) {

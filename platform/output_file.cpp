@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "platform/output_set.h"
+#include "platform/path_name.h"
 #include "platform/process.h"
 #include "platform/temp_file.h"
 

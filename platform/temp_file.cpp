@@ -54,12 +54,6 @@ bool still_named(int fd, const std::string& path) {
 
 }  // namespace
 
-std::string folder_of(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
-}
-
 bool make_locked_temp(const std::string& dir, const char* prefix, mode_t mode, LockedTemp* t) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string path = dir + "/" + prefix + random_letters();

@@ -41,9 +41,6 @@ void release_locked_temp(LockedTemp* t);
 // debris is left as it was.
 int remove_stale_temps(const std::string& dir, const char* prefix);
 
-// The folder of `path` ("." for a bare name, "/" for a file in the root).
-std::string folder_of(const std::string& path);
-
 }  // namespace dexmill
 
 #endif

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "platform/output_file.h"
+#include "platform/path_name.h"
 #include "tools/cli.h"
 #include "tools/guard_inputs.h"
 #include "tools/option_values.h"
@@ -15,11 +16,6 @@ namespace dexmill {
 namespace cli {
 
 namespace {
-
-std::string base_of(const std::string& path) {
-  const size_t slash = path.rfind('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 // An existing device, FIFO or socket (after links): written through, so
 // its name needs no extension.
@@ -40,7 +36,7 @@ bool output_format(const char* option, const std::string& path, bool heightmap, 
     *format = ImageFormat::kPpm;
   } else if (heightmap && has_extension(path, ".pgm")) {
     *format = ImageFormat::kPgm;
-  } else if (is_stdout_path(path) || (base_of(path).find('.') == std::string::npos && is_special(path))) {
+  } else if (is_stdout_path(path) || (name_of(path).find('.') == std::string::npos && is_special(path))) {
     *format = fallback;
   } else {
     *err = std::string(option) + " '" + path + "': the name must end in " + (heightmap ? ".pgm" : ".ppm") +
