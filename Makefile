@@ -9,6 +9,8 @@
 #   make install      PREFIX=/usr/local DESTDIR=...: the binary, the libraries, their
 #                     headers and pkg-config file, the man page, the Python wrapper;
 #                     make uninstall removes exactly those
+#   make V=1          show every command (by default a compile prints nothing
+#                     unless it fails, a link or archive one line)
 #   make GLFW=1       build/glfw/dexmill, with the live window of `dexmill run --window`
 #                     (libglfw3-dev: tools/scripts/install-deps.sh window); its own
 #                     build folder, so switching does not rebuild the rest
@@ -23,6 +25,17 @@ CXX      ?= g++
 SAN      ?=
 OPT      ?= -O2
 BUILD    ?= build$(if $(SAN),/san)$(if $(GLFW),/glfw)
+
+# V=1 prints each command; otherwise compiles are silent and links say
+# what they made, so `make run` shows a handful of lines.
+V        ?=
+ifeq ($(V),1)
+Q        :=
+say      :=
+else
+Q        := @
+say       = @printf '  %-5s %s\n' $(1) $(2);
+endif
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wvla -Wundef
 BASEFLAGS := -std=c++17 $(OPT) -g $(WARN) -I. -MMD -MP
@@ -79,22 +92,24 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(PICFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-headers check-poison check-layers check-function-length check-c-api check-lib \
+.PHONY: all run test test-unit check-readme check-headers check-poison check-layers check-function-length check-c-api check-lib \
         test-embed test-python test-install lib install uninstall clean
 all: $(BIN)
 
 $(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
 $(BUILD)/obj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
-	$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS) $(PICFLAGS),$(HOSTFLAGS)) -c $< -o $@
+	$(Q)$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS) $(PICFLAGS),$(HOSTFLAGS)) -c $< -o $@
 # The io header includes dexmill.h as an embedder's program does.
 $(BUILD)/obj/platform/dexmill_io.o: HOSTFLAGS += -Idisplay/api
 
 $(BIN): $(MAIN_OBJ) $(HOST_OBJ) $(INT_OBJ)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
 $(TEST_BIN): $(TEST_OBJ) $(HOST_OBJ) $(INT_OBJ)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+	$(call say,LINK,$@)
+	$(Q)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
 # Every core/display header compiles alone under the integer-only rules.
 $(BUILD)/hdr/%.ok: %.h $(FLAGS_STAMP)
@@ -117,13 +132,18 @@ check-layers:
 check-function-length:
 	@tests/check_function_length.sh --self-test && tests/check_function_length.sh
 
+# Every README block marked ```sh runnable runs as written (in a scratch
+# copy of the tree, with this build); the self-test shows a failing one fails.
+check-readme: $(BIN)
+	@tests/readme_blocks.sh --self-test $(BUILD) && tests/readme_blocks.sh $(BUILD)
+
 # The cases run in TEST_JOBS worker processes (tests/runner.cpp --jobs).
 TEST_JOBS ?= 2
 test-unit: $(TEST_BIN) $(BIN)
-	DEXMILL=$(abspath $(BIN)) $(TEST_BIN) --jobs $(TEST_JOBS)
+	$(Q)DEXMILL=$(abspath $(BIN)) $(TEST_BIN) --jobs $(TEST_JOBS)
 
 test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit test-embed \
-      test-python test-install
+      test-python test-install check-readme
 
 run: $(BIN)
 	$(BIN) run
@@ -149,18 +169,22 @@ EMBED    := $(BUILD)/embed
 lib: $(LIB_A) $(LIB_SO) $(LIB_IO)
 $(LIB_A): $(INT_OBJ)
 	@rm -f $@
-	ar rcs $@ $^
+	$(call say,AR,$@)
+	$(Q)ar rcs $@ $^
 $(LIB_SO): $(INT_OBJ)
-	$(CXX) -shared $(LDFLAGS) $^ -o $@
+	$(call say,LINK,$@)
+	$(Q)$(CXX) -shared $(LDFLAGS) $^ -o $@
 $(LIB_IO): $(IO_OBJ)
 	@rm -f $@
-	ar rcs $@ $^
+	$(call say,AR,$@)
+	$(Q)ar rcs $@ $^
 # The example embedder (tools/examples/embed.c), a C program on the libraries.
 # Under SAN the C++ compiler links it: clang's UBSan puts the handlers the
 # C++ objects call (-fsanitize=function) in a runtime only clang++ links.
 $(EMBED): tools/examples/embed.c display/api/dexmill.h platform/dexmill_io.h $(LIB_A) $(LIB_IO) $(FLAGS_STAMP)
-	$(API_CC) $(C99FLAGS) -O2 -Idisplay/api -Iplatform -c $< -o $@.o
-	$(if $(SAN),$(CXX),$(API_CC)) $@.o $(LIB_IO) $(LIB_A) -lstdc++ $(LDSAN) -o $@
+	$(call say,LINK,$@)
+	$(Q)$(API_CC) $(C99FLAGS) -O2 -Idisplay/api -Iplatform -c $< -o $@.o
+	$(Q)$(if $(SAN),$(CXX),$(API_CC)) $@.o $(LIB_IO) $(LIB_A) -lstdc++ $(LDSAN) -o $@
 
 # The C API header compiles as C99 (and as C++: check-headers).
 check-c-api:
@@ -177,7 +201,7 @@ check-lib: $(LIB_SO)
 	  echo "ok: $< exports $$(nm -D --defined-only $< | grep -c ' dm_') dm_ functions and nothing else"
 # embed.c's frames are `dexmill run`'s, byte for byte.
 test-embed: $(EMBED) $(BIN)
-	tests/embed_check.sh $(abspath $(BIN)) $(abspath $(EMBED))
+	$(Q)tests/embed_check.sh $(abspath $(BIN)) $(abspath $(EMBED))
 # The Python wrapper over the shared library (not under the sanitizers: the
 # interpreter would have to load their runtime first).
 test-python: $(LIB_SO) $(BIN)
@@ -196,7 +220,8 @@ PREFIX   ?= /usr/local
 DESTDIR  ?=
 PYDIR    := share/dexmill/python
 INSTALLED := bin/dexmill lib/libdexmill.a lib/libdexmill.so lib/libdexmill_io.a include/dexmill.h \
-             include/dexmill_io.h lib/pkgconfig/dexmill.pc share/man/man1/dexmill.1 $(PYDIR)/dexmill.py
+             include/dexmill_io.h lib/pkgconfig/dexmill.pc share/man/man1/dexmill.1 $(PYDIR)/dexmill.py \
+             share/doc/dexmill/LICENSE
 # The man page: tools/man/dexmill.1 with the option lists `dexmill
 # --man-options` prints (roff) at its marker line; without that option the
 # marker line is left out.
@@ -207,7 +232,7 @@ $(BUILD)/dexmill.1: tools/man/dexmill.1 $(BIN)
 	else sed -e '/$(MAN_MARKER)/d' $< > $@; fi; rm -f $@.options
 install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include \
-	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/$(PYDIR)
+	  $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/$(PYDIR) $(DESTDIR)$(PREFIX)/share/doc/dexmill
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/dexmill
 	install -m 644 $(LIB_A) $(LIB_IO) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
@@ -216,9 +241,10 @@ install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/dexmill.pc
 	install -m 644 $(BUILD)/dexmill.1 $(DESTDIR)$(PREFIX)/share/man/man1/dexmill.1
 	install -m 644 tools/python/dexmill.py $(DESTDIR)$(PREFIX)/$(PYDIR)/dexmill.py
+	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/doc/dexmill/LICENSE
 uninstall:
 	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(INSTALLED))
-	-rmdir $(DESTDIR)$(PREFIX)/$(PYDIR) $(DESTDIR)$(PREFIX)/share/dexmill 2>/dev/null
+	-rmdir $(DESTDIR)$(PREFIX)/$(PYDIR) $(DESTDIR)$(PREFIX)/share/dexmill $(DESTDIR)$(PREFIX)/share/doc/dexmill 2>/dev/null
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 

@@ -18,7 +18,7 @@ fail() { echo "install_check: $*"; exit 1; }
 $MAKE_CMD --no-print-directory -s install DESTDIR="$dest" PREFIX=$prefix > "$tmp/install.log" 2>&1 ||
   { cat "$tmp/install.log"; fail "make install failed"; }
 for f in bin/dexmill lib/libdexmill.a lib/libdexmill.so lib/libdexmill_io.a include/dexmill.h include/dexmill_io.h \
-         lib/pkgconfig/dexmill.pc share/man/man1/dexmill.1 share/dexmill/python/dexmill.py; do
+         lib/pkgconfig/dexmill.pc share/man/man1/dexmill.1 share/dexmill/python/dexmill.py share/doc/dexmill/LICENSE; do
   [ -s "$root/$f" ] || fail "$prefix/$f was not installed"
 done
 "$root/bin/dexmill" --version > /dev/null || fail "the installed dexmill does not run"
@@ -45,4 +45,4 @@ $MAKE_CMD --no-print-directory -s uninstall DESTDIR="$dest" PREFIX=$prefix > "$t
   { cat "$tmp/uninstall.log"; fail "make uninstall failed"; }
 left=$(find "$dest" ! -type d)
 [ -z "$left" ] || fail "make uninstall left: $left"
-echo "ok: make install (9 files), an embedder built with pkg-config from them, make uninstall (none left)"
+echo "ok: make install (10 files), an embedder built with pkg-config from them, make uninstall (none left)"

@@ -137,6 +137,12 @@ bool has(const std::string& s, const char* part) {
   return false;
 }
 
+bool lacks(const std::string& s, const char* part) {
+  if (s.find(part) == std::string::npos) return true;
+  std::printf("  did not want '%s' in: %s\n", part, s.c_str());
+  return false;
+}
+
 std::string report_body(const std::string& path) {
   std::string s = slurp(path);
   const size_t t = s.find("  \"timing\"");

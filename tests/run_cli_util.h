@@ -42,6 +42,8 @@ int count_names(const std::string& dir, const char* part);
 int count_prefixed(const std::string& dir, const char* prefix);
 // True when s holds part; else prints both and returns false.
 bool has(const std::string& s, const char* part);
+// True when part is not in s; prints s when it is (has() prints when it is not).
+bool lacks(const std::string& s, const char* part);
 // The report without its wall-clock timing.
 std::string report_body(const std::string& path);
 // True (with a note) when the binary to test is unknown.

@@ -47,13 +47,13 @@ TEST(demo_panel_end_to_end) {
   for (const char* f : {"panel.ngc", "final.png", "error.png", "report.json", "frames/frame-000001.png"}) CHECK(exists(dir + f));
   CHECK(has(r.err, "dexmill zig: grid 82 x 42 at 0.5000 mm, 42 stripes"));
   // No process warning: the feeds and speed fit aluminium.
-  CHECK(!has(r.err, "warning"));
+  CHECK(lacks(r.err, "warning"));
   const std::string rep = slurp(dir + "report.json");
   const std::string a = assessment_of(rep);
   CHECK(has(a, "\"kind\": \"builtin\""));
   CHECK(has(a, "\"max_gouge\": null"));
   CHECK(has(a, "\"gouges_total\": 0"));
-  CHECK(!has(a, "\"max_leftover\": null"));  // the lettering and ticks are finer than the ball
+  CHECK(lacks(a, "\"max_leftover\": null"));  // the lettering and ticks are finer than the ball
   CHECK(has(rep, "\"name\": \"aluminium\""));
   // The program is what `dexmill zig panel` writes.
   const Result z = run_command("zig panel");
