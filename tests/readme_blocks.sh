@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # readme_blocks.sh - every command a README marks runnable runs as written.
 #
-# A fenced block whose info string is `sh runnable` (```sh runnable) is a
-# command a user is told to type. Each README's runnable blocks run in order,
-# with bash -e, from the root of a scratch copy of the repository (the files
-# git tracks, or every file but build/ and out/ outside a checkout), so that
-# they see what a clean clone holds and write nowhere in this tree. The
-# copy's build/ is this tree's build folder (the binary `make test` built),
-# and build/ is on PATH, so `dexmill` stands for the installed binary.
+# A fenced block whose info string is `sh runnable` (```sh runnable, maybe
+# indented in a list) is a command a user is told to type. Each README's
+# runnable blocks run in order, with bash -e, from the root of a scratch
+# copy of the repository (the files git tracks, or every file but build/
+# and out/ outside a checkout), so that they see what a clean clone holds
+# and write nowhere in this tree. The copy's build/ is this tree's build
+# folder (the binary `make test` built), and build/ is on PATH, so
+# `dexmill` stands for the installed binary.
 # Blocks are written from the repository's root, in any README.
 #
 # Usage: tests/readme_blocks.sh BUILD_DIR [README...]  (default: every README.md)
@@ -22,9 +23,9 @@ TIMEOUT_S=120
 # writing block K's text to $2/block-K.sh.
 extract() {
   awk -v out="$2" '
-    /^```/ {
+    /^[ \t]*```/ {
       if (inside) { inside = 0; close(file); next }
-      if ($0 ~ /^```sh[ \t]+runnable[ \t]*$/) {
+      if ($0 ~ /^[ \t]*```sh[ \t]+runnable[ \t]*$/) {
         inside = 1; n++; file = out "/block-" n ".sh"; printf "" > file
         print FNR "\t" file
         next
@@ -38,7 +39,7 @@ extract() {
 # Runs the runnable blocks of README $1 in a fresh copy; prints failures.
 run_readme() {
   local readme=$1 build=$2 copy blocks status=0 line file n=0
-  grep -q '^```sh[[:space:]]\+runnable[[:space:]]*$' "$readme" || return 0
+  grep -q '^[[:space:]]*```sh[[:space:]]\+runnable[[:space:]]*$' "$readme" || return 0
   copy=$(mktemp -d) || return 1
   if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
     git ls-files -z | tar -cf - --null -T - 2>/dev/null | tar -xf - -C "$copy"
