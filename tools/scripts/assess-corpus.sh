@@ -10,10 +10,11 @@
 #   tools/scripts/assess-corpus.sh [DEXMILL]
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
-corpus="$root/../shared/corpus"
+# CORPUS: a folder of real programs (CI keeps one beside the clone).
+corpus="${CORPUS:-$root/../shared/corpus}"
 dexmill=${1:-$root/build/dexmill}
 if [ ! -d "$corpus" ]; then
-  echo "assess-corpus: ../shared/corpus is absent; skipping"
+  echo "assess-corpus: no corpus at $corpus (set CORPUS=DIR); skipping"
   exit 0
 fi
 [ -x "$dexmill" ] || { echo "assess-corpus: $dexmill not built (run make)" >&2; exit 2; }
