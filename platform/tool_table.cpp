@@ -8,16 +8,11 @@
 
 #include "core/math/decimal.h"
 #include "core/tool/spec.h"
+#include "core/tool/tool_comment.h"
 #include "platform/read_file.h"
 
 namespace dexmill {
 namespace {
-
-std::string lower(const char* s, std::size_t n) {
-  std::string out(s, n);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // A --tool spec among the comment's words, if any.
 // A shape in a comment: the first word that is a tool spec. A word that
@@ -177,12 +172,14 @@ bool ToolTableFile::parse_line(const char* s, std::size_t n, uint32_t line, bool
       return false;
     }
   } else {
-    const std::string c = lower(comment, comment_n);
+    // No spec: the remark's kind words, read as a program's tool comments
+    // are (core/tool/tool_comment.h); a row that names none is a flat end
+    // mill, one whose shape cannot be completed is one with a warning.
     t = Tool();
     t.diameter_nm = diameter_nm;
-    t.kind = c.find("ball") != std::string::npos ? ToolKind::kBall : ToolKind::kFlat;
-    if (t.kind == ToolKind::kFlat && (c.find("bull") != std::string::npos || c.find("vbit") != std::string::npos ||
-                                      c.find("v-bit") != std::string::npos || c.find("engrav") != std::string::npos)) {
+    if (tool_remark_shape(comment, comment_n, &t.kind, &t.tip_angle_mdeg) == RemarkShape::kUnusable) {
+      t.kind = ToolKind::kFlat;
+      t.tip_angle_mdeg = 0;
       char w[700];
       std::snprintf(w, sizeof w,
                     "%s:%u:%zu: warning: T%d is simulated as a flat end mill; put its shape in the comment, e.g. "

@@ -1,4 +1,5 @@
 // LinuxCNC tool tables: fields, units, shapes from comments, errors.
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -79,6 +80,40 @@ TEST(tool_table_inch_and_warnings) {
   CHECK_EQ(z, 38100000);
   CHECK_EQ(t.warnings().size(), 1u);
   CHECK(t.warnings()[0].find("tt.tbl:1:1: warning: T7 is simulated as a flat end mill") == 0);
+}
+
+// A remark without a spec is read with the program comments' kind words
+// (core/tool/tool_comment.h tool_remark_shape): the shapes it names are
+// cut, a shape it cannot complete or a tool dexmill does not cut is a flat
+// end mill with a warning, and a plain remark is a flat end mill, silently.
+TEST(tool_table_remark_kinds) {
+  struct Case {
+    const char* row;
+    ToolKind kind;
+    int32_t tip_mdeg;
+    bool warned;
+  } cases[] = {
+      {"T1 P1 D6 ;flat end mill\n", ToolKind::kFlat, 0, false},
+      {"T1 P1 D3 ;3 mm drill\n", ToolKind::kVBit, 118000, false},
+      {"T1 P1 D3 ;spot drill 90deg\n", ToolKind::kVBit, 90000, false},
+      {"T1 P1 D6 ;vbit 60deg\n", ToolKind::kVBit, 60000, false},
+      {"T1 P1 D6 ;Ball nose\n", ToolKind::kBall, 0, false},
+      {"T1 P1 D6 ;roughing\n", ToolKind::kFlat, 0, false},
+      {"T1 P1 D6\n", ToolKind::kFlat, 0, false},
+      {"T1 P1 D6 ;vbit\n", ToolKind::kFlat, 0, true},
+      {"T1 P1 D6 ;bull nose\n", ToolKind::kFlat, 0, true},
+      {"T1 P1 D6 ;M6 tap\n", ToolKind::kFlat, 0, true},
+      {"T1 P1 D6 ;probe\n", ToolKind::kFlat, 0, true},
+  };
+  for (const Case& c : cases) {
+    ToolTableFile t;
+    CHECK_EQ(parse(&t, c.row, false), ToolTableFile::Load::kOk);
+    Tool tool;
+    CHECK(t.tool(1, &tool));
+    const bool right = tool.kind == c.kind && tool.tip_angle_mdeg == c.tip_mdeg && t.warnings().empty() != c.warned;
+    if (!right) std::printf("  %s -> kind %d tip %d, %zu warnings\n", c.row, static_cast<int>(tool.kind), tool.tip_angle_mdeg, t.warnings().size());
+    CHECK(right);
+  }
 }
 
 TEST(tool_table_errors) {

@@ -369,4 +369,14 @@ bool tool_comment_tool(const ToolComment& c, bool inch, Tool* out) {
   return true;
 }
 
+RemarkShape tool_remark_shape(const char* s, size_t n, ToolKind* kind, int32_t* tip_angle_mdeg) {
+  const NamedKind k = named_kind(s, n);
+  if (k == NamedKind::kNone) return RemarkShape::kNone;
+  ToolComment c;
+  if (!named_shape_of(k, s, n, &c)) return RemarkShape::kUnusable;
+  *kind = c.kind;
+  *tip_angle_mdeg = c.tip_angle_mdeg;
+  return RemarkShape::kNamed;
+}
+
 }  // namespace dexmill

@@ -99,6 +99,19 @@ bool tool_comment_read(const char* s, size_t n, ToolCommentState* state, ToolCom
 // false when it is out of range (core/tool/spec.h tool_spec_complete).
 bool tool_comment_tool(const ToolComment& c, bool inch, Tool* out);
 
+// What a tool table row's remark (";ball nose", ";3 mm drill", ";vbit
+// 60deg") says of its shape, the diameter being the row's D.
+enum class RemarkShape : uint8_t {
+  kNone = 0,   // no kind word: the row is cut as a flat end mill, as a table means
+  kNamed,      // a shape dexmill cuts: *kind and *tip_angle_mdeg set
+  kUnusable,   // a kind it cannot complete (a bull nose without its radius, a
+               // V-bit without its angle) or does not cut (a tap, a probe)
+};
+
+// The same kind words as the program comments' named tools (tool_comment.h
+// above), read from s[0, n).
+RemarkShape tool_remark_shape(const char* s, size_t n, ToolKind* kind, int32_t* tip_angle_mdeg);
+
 }  // namespace dexmill
 
 #endif
