@@ -5,10 +5,12 @@
 // first T. Every program here is written by the test.
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/motion/interp.h"
 #include "core/sim/chunk_input.h"
 #include "core/sim/tool_units.h"
+#include "display/api/dexmill.h"
 #include "tests/gcode_test_util.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
@@ -216,3 +218,50 @@ TEST(units_tool_table_follows_units_set_before_the_first_t) {
   CHECK(table_inch("G0 X1\nM2\n", true));
 }
 
+namespace {
+
+// Runs a program through the embedding API (display/api/dexmill.h): its
+// progress at the end.
+dm_progress api_run(const std::string& program) {
+  dm_job j;
+  dm_progress p{};
+  CHECK_EQ(dm_job_init(&j, DEXMILL_API_VERSION), DM_OK);
+  j.stock.lo_nm[2] = -5000000;
+  j.stock.hi_nm[0] = 100000000;
+  j.stock.hi_nm[1] = 70000000;
+  j.pitch_nm = 500000;
+  j.tool.spec = "flat:3";
+  size_t n = 0;
+  CHECK_EQ(dm_required_bytes(&j, &n), DM_OK);
+  std::vector<uint64_t> mem(n / 8 + 1);
+  dm_sim* sim = nullptr;
+  CHECK_EQ(dm_create(&j, mem.data(), n, &sim), DM_OK);
+  if (!sim) return p;
+  int32_t state = DM_READY;
+  bool fed = false;
+  for (int guard = 0; guard < 100000 && (state == DM_READY || state == DM_NEED_INPUT); ++guard) {
+    CHECK_EQ(dm_step(sim, nullptr, &state), DM_OK);
+    if (state != DM_NEED_INPUT) continue;
+    if (!fed) CHECK_EQ(dm_feed(sim, program.data(), program.size()), DM_OK);
+    else CHECK_EQ(dm_end_input(sim), DM_OK);
+    fed = true;
+  }
+  CHECK_EQ(state, DM_DONE);
+  CHECK_EQ(dm_get_progress(sim, &p), DM_OK);
+  dm_destroy(sim);
+  return p;
+}
+
+}  // namespace
+
+TEST(units_verdict_in_the_c_api) {
+  const dm_progress inch = api_run(kInchBody);
+  CHECK_EQ(inch.units_verdict, static_cast<uint32_t>(DM_UNITS_VERDICT_LOOK_INCH));
+  CHECK_EQ(inch.warnings, 2u);
+  const dm_progress mm = api_run(kMmBody);
+  CHECK_EQ(mm.units_verdict, static_cast<uint32_t>(DM_UNITS_VERDICT_DEFAULT));
+  CHECK_EQ(mm.warnings, 1u);
+  const dm_progress set = api_run(std::string("G21\n") + kMmBody);
+  CHECK_EQ(set.units_verdict, static_cast<uint32_t>(DM_UNITS_VERDICT_SET));
+  CHECK_EQ(set.warnings, 0u);
+}
