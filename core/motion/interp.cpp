@@ -318,7 +318,8 @@ void BlockRunner::note_units(const PointNm& start) {
   const bool moves = (plan.motion != Plan::kNone && !still) || plan.comp.motion;
   if (!moves || I.units_set_ || I.unset_move_line_) return;
   uint16_t col = b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.g[kGNonModal] >= 0 ? b.g_col[kGNonModal] : 0;
-  for (char c : {'X', 'Y', 'Z'})
+  const char axes[3] = {'X', 'Y', 'Z'};
+  for (char c : axes)
     if (!col && b.has_word(c)) col = b.col_of(c);
   I.unset_move_line_ = b.line;
   I.unset_move_col_ = col ? col : b.first_col;
