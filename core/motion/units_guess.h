@@ -5,7 +5,7 @@
 // the numbers as written are too small for millimetres.
 //
 // The rule, chosen on the real programs of the project's corpus (17 inch
-// programs with their G20 taken out, all flagged; 33 mm programs with their
+// programs with their G20 taken out, all flagged; 34 mm programs with their
 // G21 taken out, none flagged; the figures are in units_guess.cpp):
 //   the program made feed moves at a feed it wrote (not --default-feed),
 //   every move lies within 20 units across in X and in Y,
