@@ -273,7 +273,8 @@ std::string report_json_text(const RunReport& r) {
     o += "  \"grid\": null,\n";
   o += "  \"mode\": " + quoted(r.mode) + ",\n";
   o += "  \"tool\": {\"default\": " + quoted(r.default_tool) + ", \"table\": " +
-       (r.tool_table.empty() ? std::string("null") : quoted(r.tool_table)) + ", \"used\": [";
+       (r.tool_table.empty() ? std::string("null") : quoted(r.tool_table)) + ", \"table_units\": " +
+       (r.tool_table_units.empty() ? std::string("null") : quoted(r.tool_table_units)) + ", \"used\": [";
   for (std::size_t k = 0; k < r.tools_used.size(); ++k) {
     const ReportToolUse& u = r.tools_used[k];
     const bool comment = u.line != 0;

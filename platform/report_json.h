@@ -149,6 +149,7 @@ struct RunReport {
   int height_bits = 16;
   std::string mode;
   std::string default_tool, tool_table;
+  std::string tool_table_units;  // "mm" or "inch" (tools/run_tool_table.h); empty: no table file
   std::vector<ReportToolUse> tools_used;
   uint64_t removed_lsb_dexels = 0;  // sum over dexels of height removed, LSB
   int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;

@@ -7,9 +7,10 @@
 // One tool a line; words T (number, required), P (pocket), D (diameter,
 // required), X Y Z A B C U V W (offsets; Z is the length that G43 applies),
 // I J Q (lathe fields, ignored); ';' starts the comment; blank lines and
-// lines holding only a comment are skipped. Lengths are in the machine's
-// units: mm, or inch with `--units inch` (LinuxCNC's tool table follows the
-// machine, not the program's G20/G21).
+// lines holding only a comment are skipped. Lengths are in mm, or in inch
+// when load/parse are told so (the units the caller chose by
+// core/sim/tool_units.h's rule: the program's, not the machine's as in
+// LinuxCNC).
 //
 // LinuxCNC's table has no shape field, so the shape comes from the comment:
 //   1. a word of the comment that is a --tool spec (`ball:6`, `bull:10:1.5`,

@@ -126,9 +126,11 @@ TEST(gcode_golden_paths) {
       std::printf("  %s.path is missing\n", base.c_str());
       continue;
     }
-    // A family's tool table: comp_lines.ngc runs with comp.tbl when there is one.
+    // A family's tool table: comp_lines.ngc runs with comp.tbl when there is
+    // one. The tables are in mm, the programs in mm or inch: --tool-units
+    // says so (core/sim/tool_units.h would take an inch program's units).
     const std::string table = dir + "/" + name.substr(0, name.find('_')) + ".tbl";
-    const std::string tools = read_file(table).empty() ? "" : " --tools '" + table + "'";
+    const std::string tools = read_file(table).empty() ? "" : " --tools '" + table + "' --tool-units mm";
     const std::string cmd = std::string("'") + bin + "' path '" + base + ".ngc'" + tools + " 2>&1";
     std::string got;
     if (std::FILE* p = popen(cmd.c_str(), "r")) {

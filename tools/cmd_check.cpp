@@ -154,7 +154,7 @@ int cmd_check(int argc, char** argv) {
   GcodeStderrMessages msgs(in.name());
   GcodeNotes notes(in.name());
   ReadSetup setup;
-  if (const int code = setup.load_tools(ro)) return code;
+  if (const int code = setup.load_tools(ro, a.file)) return code;
   InterpOptions opt;
   setup.apply(ro, &opt, &in);
   opt.warnings = &msgs;

@@ -156,7 +156,7 @@ int cmd_optimize(int argc, char** argv) {
   }
   ToolTableFile table;
   if (!o.job.read.tools_file.empty()) {
-    const int t = load_tool_table(o.job.read.tools_file, o.job.read.inch, &table);
+    const int t = load_read_tool_table(o.job.read, input.read_path(), &table);
     if (t != kExitOk) return t;
   }
   OptimizeInput in;

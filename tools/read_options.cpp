@@ -17,6 +17,14 @@ int parse_units(ReadOptions* o, const char* v) {
   if (!std::strcmp(v, "mm")) o->inch = false;
   else if (!std::strcmp(v, "inch")) o->inch = true;
   else return fail(kExitUsage, "--units must be mm or inch, not '%s'", v);
+  o->units_given = true;
+  return kExitOk;
+}
+
+int parse_tool_units(ReadOptions* o, const char* v) {
+  if (!std::strcmp(v, "mm")) o->tool_units = ReadOptions::ToolUnits::kMm;
+  else if (!std::strcmp(v, "inch")) o->tool_units = ReadOptions::ToolUnits::kInch;
+  else return fail(kExitUsage, "--tool-units must be mm or inch, not '%s'", v);
   return kExitOk;
 }
 
@@ -51,8 +59,13 @@ int parse_max_blocks(ReadOptions* o, const char* v) {
 }
 
 const Option<ReadOptions> kReadOptions[] = {
-    {"--units", "mm|inch", "units of programs that never say G20/G21, and of the tool table (default mm)",
+    {"--units", "mm|inch",
+     "units of programs that set none (G20/G21) before they move (default mm; without the option such a program "
+     "is warned of, and warned loudly when its numbers look like inches)",
      parse_units},
+    {"--tool-units", "mm|inch",
+     "units of the --tools table (default: the program's when it sets G20/G21 before its first T, else --units)",
+     parse_tool_units},
     {"--default-feed", "MM/MIN",
      "the controller's feed for moves made with no F in force (warned once; default: none, such a move is an "
      "error)",
@@ -76,9 +89,9 @@ const Option<ReadOptions> kReadOptions[] = {
 
 OptionList<ReadOptions> read_option_list() { return option_list(kReadOptions); }
 
-int ReadSetup::load_tools(const ReadOptions& o) {
+int ReadSetup::load_tools(const ReadOptions& o, const std::string& program) {
   if (o.tools_file.empty()) return kExitOk;
-  if (const int code = load_tool_table(o.tools_file, o.inch, &table)) return code;
+  if (const int code = load_read_tool_table(o, program, &table)) return code;
   for (const std::string& w : table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
   have_table = true;
   return kExitOk;
@@ -86,6 +99,7 @@ int ReadSetup::load_tools(const ReadOptions& o) {
 
 void ReadSetup::apply(const ReadOptions& o, InterpOptions* opt, GcodeFile* file) {
   opt->inch = o.inch;
+  opt->units_given = o.units_given;
   opt->default_feed_nm_per_min = o.default_feed_nm_per_min;
   opt->max_blocks = o.max_blocks;
   memory->attach(opt);

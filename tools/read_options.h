@@ -22,6 +22,10 @@ namespace cli {
 
 struct ReadOptions {
   bool inch = false;                      // --units inch: units before any G20/G21
+  bool units_given = false;               // --units was given: no warning for a program that sets none
+  // --tool-units: the tool table's units (kProgram: the rule of
+  // core/sim/tool_units.h, the program's when it sets them before its first T)
+  enum class ToolUnits : uint8_t { kProgram, kMm, kInch } tool_units = ToolUnits::kProgram;
   int64_t default_feed_nm_per_min = 0;    // --default-feed (0: none)
   std::vector<std::string> subroutine_path;  // --subroutine-path DIR[:DIR...]
   uint64_t max_blocks = kDefaultMaxBlocks;   // --max-blocks N (0: no limit)
@@ -38,8 +42,9 @@ struct ReadSetup {
   std::unique_ptr<GcodeMemory> memory = gcode_memory();
   ToolTableFile table;
   bool have_table = false;
-  // Loads --tools (its warnings printed); an exit code, 0 when fine.
-  int load_tools(const ReadOptions& o);
+  // Loads --tools (its warnings printed) in the units of a reading of
+  // `program` (tools/run_tool_table.h); an exit code, 0 when fine.
+  int load_tools(const ReadOptions& o, const std::string& program);
   void apply(const ReadOptions& o, InterpOptions* opt, GcodeFile* file);
 };
 

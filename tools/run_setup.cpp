@@ -85,7 +85,9 @@ int prepare(RunOptions* o, RunSetup* run) {
 int load_tools(const RunOptions& o, RunSetup* run) {
   run->have_table = !o.job.read.tools_file.empty() || run->demo;
   if (!o.job.read.tools_file.empty()) {
-    if (const int code = load_tool_table(o.job.read.tools_file, o.job.read.inch, &run->table)) return code;
+    bool inch = false;
+    if (const int code = load_read_tool_table(o.job.read, run->read_path, &run->table, &inch)) return code;
+    run->rep.tool_table_units = inch ? "inch" : "mm";
   } else if (run->demo) {
     const char* t = demo_tool_table();
     if (run->table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
@@ -103,6 +105,7 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   j.library = run->lib;
   j.offsets = run->choice.get();
   j.inch = o.job.read.inch;
+  j.units_given = o.job.read.units_given;
   j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
   j.max_blocks = o.job.read.max_blocks;
   j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;

@@ -202,6 +202,12 @@ const char* gcode_error_template(GcodeError e) {
              "the H, a Centroid control takes it)";
     case GcodeError::kWarnM99Main:
       return "M99 in the main program: the machine starts the program again, endlessly; the preview runs it once";
+    case GcodeError::kWarnUnitsNotSet:
+      return "no G20/G21 before the first move: the program is read in {w}, the default (--units mm or --units "
+             "inch says which)";
+    case GcodeError::kWarnUnitsLookInch:
+      return "the program never sets its units and its numbers look like inches, not mm: its moves span at most "
+             "{a} across and its feeds reach {b} a minute; if it is in inches, give --units inch";
     case GcodeError::kWarnCompNoTable:
       return "{w}: no tool table (--tools), so the tool radius is 0: the path is not compensated";
     case GcodeError::kWarnManualRetract:

@@ -146,6 +146,8 @@ enum class GcodeError : uint16_t {
   kWarnM99Main = 158,
   kWarnG49H = 159,
   kWarnContextRest = 160,
+  kWarnUnitsNotSet = 161,
+  kWarnUnitsLookInch = 162,
   // -- o-word control flow (200..229; errors, though after the warnings:
   // the ranges above were full)
   kOwordBadLabel = 200,

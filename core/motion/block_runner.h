@@ -262,6 +262,9 @@ struct BlockRunner {
   uint16_t motion_col() const { return b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.first_col; }
   // A warning the program gets once (WarnOnce), quoting `word` and a length.
   void warn_once(uint16_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm = 0);
+  // Whether the block sets the units, names the first T, or makes the first
+  // move before any G20/G21 (interp.cpp; at commit, the tool at `start`).
+  void note_units(const PointNm& start);
 
   GcodeError run();
   GcodeError run_modes();

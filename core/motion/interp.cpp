@@ -176,6 +176,7 @@ void BlockRunner::commit() {
   if (b.g[kGCoordSystem] < 0 && plan.motion == Plan::kNone && frame_moved(cur, nx)) Interp::reframe_tool(&nx, cur);
   const PointNm start = tool_at(cur);
   I.state_ = nx;
+  note_units(start);
   CanonRecord r{};
   r.line = b.line;
   r.start = r.end = start;
@@ -297,6 +298,34 @@ void BlockRunner::commit() {
   }
 }
 
+// The units the block's moves and T are read in: a move before any
+// G20/G21 is warned of once (InterpOptions::units_given), at the column
+// of its motion code or first axis word.
+void BlockRunner::note_units(const PointNm& start) {
+  Interp& I = in;
+  if (b.g[kGUnits] >= 0) I.units_set_ = true;
+  // The feed in force is one the program wrote (not --default-feed's): an
+  // F word; G93/G94/G95 clear it.
+  if (b.has_word('F')) I.feed_written_ = true;
+  else if (b.g[kGFeedMode] >= 0) I.feed_written_ = false;
+  if (b.has_word('T') && !I.tool_named_) {
+    I.tool_named_ = true;
+    I.units_at_tool_ = I.units_set_;
+    I.inch_at_tool_ = nx.inch;
+  }
+  // A G0 or G1 that goes nowhere (a post's `G53 G0` with no axis word) reads no length.
+  const bool still = plan.motion == Plan::kStraight && plan.target == start;
+  const bool moves = (plan.motion != Plan::kNone && !still) || plan.comp.motion;
+  if (!moves || I.units_set_ || I.unset_move_line_) return;
+  uint16_t col = b.g[kGMotion] >= 0 ? b.g_col[kGMotion] : b.g[kGNonModal] >= 0 ? b.g_col[kGNonModal] : 0;
+  const char axes[3] = {'X', 'Y', 'Z'};
+  for (char c : axes)
+    if (!col && b.has_word(c)) col = b.col_of(c);
+  I.unset_move_line_ = b.line;
+  I.unset_move_col_ = col ? col : b.first_col;
+  if (!I.options_.units_given) I.warn(GcodeError::kWarnUnitsNotSet, b.line, I.unset_move_col_, nx.inch ? "inch" : "mm");
+}
+
 void BlockRunner::warn_once(uint16_t bit, GcodeError e, uint16_t col, const char* word, int64_t a_nm) {
   if (in.warned_once_ & bit) return;
   in.warned_once_ = static_cast<uint16_t>(in.warned_once_ | bit);
@@ -329,6 +358,11 @@ void Interp::reset() {
   }
   if (options_.control) oword_store_clear(options_.control);
   warned_once_ = 0;
+  units_set_ = false;
+  unset_move_line_ = 0;
+  unset_move_col_ = 0;
+  units_ev_ = UnitsEvidence{};
+  tool_named_ = units_at_tool_ = inch_at_tool_ = feed_written_ = false;
   comp_q_.clear();
   comp_scratch_.clear();
   for (ModalContext& c : contexts_) c.valid = false;
@@ -407,6 +441,8 @@ void Interp::emit_now(CanonRecord* r) {
     r->end = machine_of(state_, r->end);
     r->arc.centre = machine_of(state_, r->arc.centre);
   }
+  if (!units_set_ && !options_.inch && !options_.units_given)
+    units_evidence_add(&units_ev_, *r, feed_written_ || state_.inverse_time);
   ++records_;
   const bool straight = r->kind == CanonKind::kTraverse || r->kind == CanonKind::kFeed;
   if (r->kind == CanonKind::kArc || (straight && !(r->start == r->end))) ++moves_;
@@ -564,6 +600,9 @@ GcodeError Interp::end_of_input(uint32_t last_line, GcodeDiag* diag) {
   // ends without M2, or ends in error).
   const CompEmit out{[](void* ctx, CanonRecord* r) { static_cast<Interp*>(ctx)->emit_now(r); }, this};
   comp_q_.dequeue(&out, state_.pos);
+  if (units_verdict() == UnitsVerdict::kLookInch)
+    warn(GcodeError::kWarnUnitsLookInch, unset_move_line_, unset_move_col_, "", units_ev_.extent_nm(),
+         units_ev_.feed_max_nm_per_min);
   GcodeDiag unclosed{};
   if (!state_.ended && oword_unclosed(&unclosed) != GcodeError::kOk) {
     any_failed_ = true;
@@ -580,6 +619,13 @@ GcodeError Interp::end_of_input(uint32_t last_line, GcodeDiag* diag) {
          last_line ? last_line : 1, 1, "");
   if (!any_failed_ && moves_ == 0) warn(GcodeError::kWarnNoMotion, 1, 1, "");
   return GcodeError::kOk;
+}
+
+UnitsVerdict Interp::units_verdict() const {
+  if (!unset_move_line_) return UnitsVerdict::kSet;
+  if (options_.units_given) return UnitsVerdict::kGiven;
+  if (!units_set_ && !options_.inch && units_look_like_inch(units_ev_)) return UnitsVerdict::kLookInch;
+  return UnitsVerdict::kDefault;
 }
 
 uint32_t interp_run_source(Interp* in, MemorySource* src, GcodeDiag* first) {

@@ -41,6 +41,7 @@
 #include "core/motion/modal_context.h"
 #include "core/motion/nurbs.h"
 #include "core/motion/rotation.h"
+#include "core/motion/units_guess.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -66,6 +67,11 @@ class ToolTable {
 
 struct InterpOptions {
   bool inch = false;                  // units before any G20/G21
+  // The caller chose `inch` (a --units option): a program that sets no
+  // units before its first move is not warned of. Otherwise it is, once at
+  // that move, and again at the end when it never sets them, the default
+  // is mm and its numbers look like inches (core/motion/units_guess.h).
+  bool units_given = false;
   const ToolTable* tools = nullptr;   // for G43 H; null: lengths are 0
   GcodeDiagSink* warnings = nullptr;  // null: warnings are dropped
   // Parameters and expressions: caller memory (about 57 KB,
@@ -177,6 +183,16 @@ class Interp {
   PointNm position() const { return state_.pos; }
   // Records emitted so far (moves and others).
   uint64_t records_emitted() const { return records_; }
+  // Whether a G20/G21 has run; what can be said of the units so far (the
+  // end of the input gives the verdict on the whole program).
+  bool units_set() const { return units_set_; }
+  UnitsVerdict units_verdict() const;
+  const UnitsEvidence& units_evidence() const { return units_ev_; }
+  // After the first T word: whether a G20/G21 ran before it (or in its
+  // block), and the units then in force.
+  bool tool_named() const { return tool_named_; }
+  bool units_set_at_tool() const { return units_at_tool_; }
+  bool inch_at_tool() const { return inch_at_tool_; }
 
  private:
   // Emits a record, or holds it behind the moves cutter compensation holds.
@@ -210,6 +226,14 @@ class Interp {
   bool warned_after_end_ = false;
   bool sub_after_end_ = false;  // in a subroutine defined after the end (for calls made before it)
   uint16_t warned_once_ = 0;   // WarnOnce bits: warnings given once a program
+  // Units (units_guess.h): set by the program; its first move made before
+  // they were (0: none), and what its moves until then look like.
+  bool units_set_ = false;
+  uint32_t unset_move_line_ = 0;
+  uint16_t unset_move_col_ = 0;
+  UnitsEvidence units_ev_;
+  bool tool_named_ = false, units_at_tool_ = false, inch_at_tool_ = false;
+  bool feed_written_ = false;  // the F in force is the program's (not InterpOptions::default_feed's)
   // Records cutter compensation holds (LinuxCNC's interp_queue), and a
   // scratch copy a block is checked against before it commits.
   CompQueue comp_q_;

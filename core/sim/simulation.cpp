@@ -20,6 +20,7 @@ void sim_checks_for_tools(SimChecks* c, const Tool* tools, int ntools) {
 InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, ProgramMemory* mem) {
   InterpOptions o;
   o.inch = job.inch;
+  o.units_given = job.units_given;
   o.tools = job.offsets ? job.offsets : fallback;
   o.warnings = job.warnings;
   o.messages = job.notes;

@@ -231,6 +231,12 @@ enum {  /* dm_progress.stop_reason */
   DM_STOPPED_TOOL = 4,        /* a T the library lacks, or one too large for the memory sized */
   DM_STOPPED_BY_CALLER = 5
 };
+enum {  /* dm_progress.units_verdict (core/motion/units_guess.h) */
+  DM_UNITS_VERDICT_SET = 0,       /* the program set them (G20/G21) before its first move, or made none */
+                                  /* (1: units a caller marked as chosen; this API has no such mark) */
+  DM_UNITS_VERDICT_DEFAULT = 2,   /* it did not: read in dm_job.units (a warning at that move) */
+  DM_UNITS_VERDICT_LOOK_INCH = 3  /* it never did, dm_job.units is mm, and its numbers look like inches (warned) */
+};
 typedef struct dm_progress {
   int32_t state;              /* the last step's DM_READY ... */
   int32_t stop_reason;        /* DM_STOPPED_* */
@@ -246,7 +252,7 @@ typedef struct dm_progress {
   uint32_t lines_read;
   uint32_t errors;            /* input errors (dm_input_error) */
   uint32_t warnings;
-  uint32_t reserved;
+  uint32_t units_verdict;     /* DM_UNITS_VERDICT_*: the program's units (final once it is read to its end) */
   uint64_t removed_lsb_dexels; /* material removed, exactly: times lsb_nm * pitch_nm^2 is nm^3 */
   uint64_t removed_um3;        /* the same in cubic micrometres, rounded */
   uint64_t dexel_updates;      /* the cut's work so far */

@@ -17,6 +17,11 @@ static_assert(DM_FIND_PLUNGE - DM_FIND_RAPID == static_cast<int>(SafetyKind::kPl
                   DM_FIND_COOLANT - DM_FIND_FEED == static_cast<int>(ProcessRule::kCoolant),
               "the safety kinds and process rules follow DM_FIND_RAPID and DM_FIND_FEED in their order");
 
+static_assert(DM_UNITS_VERDICT_SET == static_cast<int>(UnitsVerdict::kSet) &&
+                  DM_UNITS_VERDICT_DEFAULT == static_cast<int>(UnitsVerdict::kDefault) &&
+                  DM_UNITS_VERDICT_LOOK_INCH == static_cast<int>(UnitsVerdict::kLookInch),
+              "DM_UNITS_VERDICT_* are the interpreter's UnitsVerdict numbers");
+
 namespace {
 
 void box_out(const StockBox& b, dm_box* out) {
@@ -62,6 +67,7 @@ dm_status dm_get_progress(const dm_sim* sim, dm_progress* out) {
   out->lines_read = s.lines_read();
   out->errors = s.errors();
   out->warnings = s.warnings();
+  out->units_verdict = static_cast<uint32_t>(s.interp().units_verdict());
   out->removed_lsb_dexels = s.removed_lsb();
   out->removed_um3 = volume_um3(out->removed_lsb_dexels, g.lsb_nm, g.pitch_nm);
   out->dexel_updates = s.mill().stats().dexel_updates;

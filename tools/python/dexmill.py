@@ -83,7 +83,7 @@ class _Progress(ctypes.Structure):
                 ("failed_tool", ctypes.c_int32), ("feed_nm_per_min", ctypes.c_int64),
                 ("machine_time_us", ctypes.c_int64), ("moves", ctypes.c_uint64), ("records", ctypes.c_uint64),
                 ("lines_read", ctypes.c_uint32), ("errors", ctypes.c_uint32), ("warnings", ctypes.c_uint32),
-                ("reserved", ctypes.c_uint32), ("removed_lsb_dexels", ctypes.c_uint64),
+                ("units_verdict", ctypes.c_uint32), ("removed_lsb_dexels", ctypes.c_uint64),
                 ("removed_um3", ctypes.c_uint64), ("dexel_updates", ctypes.c_uint64)]
 
 

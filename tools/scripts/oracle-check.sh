@@ -48,7 +48,7 @@ scale_table() {
 # the tool table TOOLS, in mm) with TRACE.
 check() {
   local name=$1 prog=$2 trace=$3 tools=${4:-}
-  "$dexmill" path "$prog" ${tools:+--tools "$tools"} > "$tmp/path" 2> "$tmp/err"
+  "$dexmill" path "$prog" ${tools:+--tools "$tools" --tool-units mm} > "$tmp/path" 2> "$tmp/err"
   local rc=$? first
   first=$(grep -m1 ': error: ' "$tmp/err" | sed 's/^.*: error: //')
   if [ $rc -ne 0 ] && grep -q 'not supported' <<<"$first"; then
