@@ -46,6 +46,8 @@ StockBox demo_stock_box() {
 
 int run_demo(RunOptions o, FileGuard* guard) {
   if (o.job.demo == "list") {
+    std::printf("%-9s the built-in demo (run with no FILE on a terminal): a 100 x 70 x 20 mm block of %s, "
+                "three tools, writes out/\n", kBuiltinDemoName, demo_material());
     for (int32_t k = 0; k < builtin_design_count(); ++k) {
       const BuiltinDesign& b = builtin_design_at(k);
       std::printf("%-9s %3d x %-3d dexels of %s mm, %d-dexel ball, %-10s %s\n", b.name, b.nx, b.ny,

@@ -12,6 +12,7 @@
 #include "platform/frame_files.h"
 #include "platform/memory.h"
 #include "platform/output_file.h"
+#include "platform/process.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/guard_inputs.h"
@@ -52,6 +53,13 @@ int guard_files(const RunOptions& o, RunSetup* run) {
   return kExitOk;
 }
 
+// No FILE, and standard input (no terminal: choose_program read it) holds
+// nothing: an empty program was surely not meant (a script, a CI job).
+int no_program(const char* why) {
+  return fail(kExitUsage, "no program: no FILE was given and standard input (not a terminal) %s; give a FILE, - to "
+              "read standard input, or --demo %s for the built-in demo", why, kBuiltinDemoName);
+}
+
 // The demo's defaults, every file checked, the demo's program written, the
 // program opened, the frame folder emptied: before anything long happens.
 int prepare(RunOptions* o, RunSetup* run) {
@@ -71,7 +79,9 @@ int prepare(RunOptions* o, RunSetup* run) {
     if (o->job.file == "-") run->shown_name = "<stdin>";
     if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
     run->input.set_copy_limit(o->job.max_input_bytes);
+    if (o->job.stdin_implied && standard_input_closed()) return no_program("is closed");
     if (!run->input.open(o->job.file, &err)) return fail(run->input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
+    if (o->job.stdin_implied && run->input.bytes() == 0) return no_program("is empty");
     run->read_path = run->input.read_path();
   }
   if (!remove_old_frames(run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
