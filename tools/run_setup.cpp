@@ -13,6 +13,7 @@
 #include "platform/memory.h"
 #include "platform/output_file.h"
 #include "platform/process.h"
+#include "platform/window.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/guard_inputs.h"
@@ -61,9 +62,13 @@ int no_program(const char* why) {
 }
 
 // The demo's defaults, every file checked, the demo's program written, the
-// program opened, the frame folder emptied: before anything long happens.
+// program opened: before anything long happens.
 int prepare(RunOptions* o, RunSetup* run) {
   std::string err;
+  // A build without GLFW can never open the window: said before anything
+  // is read, made or written (a display that is missing shows when the
+  // window opens, still before any file is touched: remove_earlier_frames).
+  if (o->view.window && !Window::available()) return fail(kExitUsage, "--window: %s", Window().error());
   run->demo = o->job.file.empty();
   run->read_path = run->shown_name = o->job.file;
   if (run->demo) {
@@ -84,10 +89,6 @@ int prepare(RunOptions* o, RunSetup* run) {
     if (o->job.stdin_implied && run->input.bytes() == 0) return no_program("is empty");
     run->read_path = run->input.read_path();
   }
-  if (!remove_old_frames(run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (!run->old_frames.empty() && !o->view.quiet && !run->demo)
-    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", run->old_frames.size(),
-                 o->out.frames_dir.c_str());
   return kExitOk;
 }
 
@@ -267,6 +268,16 @@ int first_pass(const RunOptions& o, RunSetup* run) {
 }
 
 }  // namespace
+
+int remove_earlier_frames(const RunOptions& o, RunSetup* s) {
+  std::string err;
+  if (!remove_old_frames(s->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (!s->old_frames.empty() && !o.view.quiet && !s->demo)
+    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", s->old_frames.size(),
+                 o.out.frames_dir.c_str());
+  s->old_frames.clear();
+  return kExitOk;
+}
 
 int run_setup(RunOptions* o, RunSetup* s) {
   if (const int code = prepare(o, s)) return code;
