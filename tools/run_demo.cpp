@@ -57,7 +57,7 @@ int run_demo(RunOptions o, FileGuard* guard) {
   }
   const BuiltinDesign* b = builtin_design_find(o.job.demo.c_str());
   if (!b) return fail(kExitUsage, "no built-in part '%s' (dexmill run --demo list)", o.job.demo.c_str());
-  builtin_setup(*b, o.job.tool_given, &o.job);
+  if (const int code = builtin_setup(*b, o.job.tool_given, &o.job)) return code;
   o.job.tool_given = true;  // the part's own tool (or --tool's), no guess: the program's comment names it too
   const std::string dir = "out/" + o.job.demo;
   std::string err;
