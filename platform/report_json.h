@@ -5,7 +5,8 @@
 // and `run` differ between two runs of the same job, and they come last.
 //
 //   dexmill_report  1 (the format's version)
-//   program         file, lines (read), units (what its moves were written in:
+//   program         file, lines (blocks run: a loop's or subroutine's lines each
+//                   time they run; the summary says "blocks run"), units (what its moves were written in:
 //                   mm|inch|mixed; a program with no move: the units it started in),
 //                   moves {rapid, feed, arc, dwell, tool_change}
 //   status          "ok", or "error" when the program has an input error
