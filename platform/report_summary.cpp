@@ -63,7 +63,16 @@ std::string report_summary_text(const RunReport& r) {
     std::snprintf(b, sizeof b, "stopped  at the first %s, line %u\n", r.stopped_reason.c_str(), r.stopped_line);
     o += b;
   }
-  std::snprintf(b, sizeof b, "warnings %" PRIu64 "%s\n", r.warnings_total, r.warnings_total ? " (on standard error)" : "");
+  // Every warning counted (as warnings_total and `dexmill check` count
+  // them: a gate on the count must not pass because repeats were folded),
+  // and how many distinct ones that is when the report kept them all.
+  uint64_t kept = 0;
+  for (const ReportDiag& w : r.warnings) kept += w.count;
+  const std::string distinct = kept == r.warnings_total && r.warnings.size() < kept
+                                   ? std::to_string(r.warnings.size()) + " distinct, "
+                                   : std::string();
+  std::snprintf(b, sizeof b, "warnings %" PRIu64 "%s\n", r.warnings_total,
+                r.warnings_total ? (" (" + distinct + "on standard error)").c_str() : "");
   o += b;
   o += "Add --image out.png for a picture, --report out.json for all of it (dexmill run --help).\n";
   return o;
