@@ -146,7 +146,7 @@ test: check-headers check-poison check-layers check-function-length check-c-api 
       test-python test-install check-readme
 
 run: $(BIN)
-	$(BIN) run
+	$(BIN) run --demo pocket
 
 clean:
 	rm -rf build

@@ -175,8 +175,15 @@ std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_erro
   return k < 0 ? 0 : (static_cast<std::size_t>(k) < n ? static_cast<std::size_t>(k) : n - 1);
 }
 
+std::string gcode_warning_message(const GcodeDiag& d) {
+  char msg[400];
+  gcode_format_message(d, msg, sizeof msg);
+  return std::string(msg) + (d.follow_on ? " (may follow from an earlier error)" : "");
+}
+
 void GcodeStderrMessages::error(const GcodeDiag& d) {
   ++errors_;
+  fold_.flush();  // the warnings before it, before it
   char line[600];
   gcode_format_diag(file_, d, true, line, sizeof line);
   std::fprintf(out_, "%s\n", line);
@@ -184,9 +191,7 @@ void GcodeStderrMessages::error(const GcodeDiag& d) {
 
 void GcodeStderrMessages::warning(const GcodeDiag& d) {
   ++warnings_;
-  char line[600];
-  gcode_format_diag(file_, d, false, line, sizeof line);
-  std::fprintf(out_, "%s\n", line);
+  fold_.add(file_, d.line, d.col, gcode_warning_message(d));
 }
 
 void GcodeNotes::message(uint32_t line, int kind, const char* text) {

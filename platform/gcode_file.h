@@ -33,6 +33,7 @@
 #include "core/gcode/source.h"
 #include "core/motion/interp.h"
 #include "core/sim/gcode_runner.h"
+#include "platform/warning_fold.h"
 
 namespace dexmill {
 
@@ -147,17 +148,26 @@ class GcodeFile final : public LineInput, private ByteSource {
 // a follow-on error says so after its message.
 std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n);
 
-// Prints diagnostics to a stdio stream (stderr by default).
+// The text of a warning after `FILE:LINE:COL: warning: `.
+std::string gcode_warning_message(const GcodeDiag& d);
+
+// Prints diagnostics to a stdio stream (stderr by default): errors as they
+// come, warnings folded (platform/warning_fold.h: a repeated one once, with
+// its count and last line) until an error or finish().
 class GcodeStderrMessages final : public GcodeMessages {
  public:
-  explicit GcodeStderrMessages(const char* file_name, std::FILE* out = stderr) : file_(file_name), out_(out) {}
+  explicit GcodeStderrMessages(const char* file_name, std::FILE* out = stderr)
+      : file_(file_name), out_(out), fold_(out) {}
   void error(const GcodeDiag& d) override;
   void warning(const GcodeDiag& d) override;
   void set_file(const char* name) override { file_ = name; }
+  // Prints the warnings held: before what the caller prints at the end.
+  void finish() { fold_.flush(); }
 
  private:
   const char* file_;
   std::FILE* out_;
+  WarningFold fold_;
 };
 
 // A program's message comments (DEBUG, PRINT, MSG, with their

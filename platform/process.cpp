@@ -43,6 +43,7 @@ unsigned fix_standard_descriptors() {
 }
 
 bool standard_input_closed() { return (g_closed_at_start & 1u) != 0; }
+bool standard_input_is_terminal() { return !standard_input_closed() && isatty(0) == 1; }
 bool standard_output_closed() { return (g_closed_at_start & 2u) != 0; }
 
 bool standard_output_usable(std::string* err) {

@@ -30,6 +30,9 @@ unsigned fix_standard_descriptors();
 // The process started with standard input closed: "-" has nothing to read
 // (an I/O error, not an empty program).
 bool standard_input_closed();
+// Standard input is a terminal (a person at it, not a file or a pipe):
+// what `dexmill run` with no FILE runs the built-in demo for.
+bool standard_input_is_terminal();
 // The process started with standard output closed: what goes to "-" is
 // lost.
 bool standard_output_closed();

@@ -53,6 +53,7 @@ class SpoolSource final : public ByteSource {
   }
   bool seek_bytes(uint64_t) override { return false; }
   bool over() const { return over_; }
+  uint64_t copied() const { return copied_; }
   int read_errno() const { return read_errno_; }
   int write_errno() const { return write_errno_; }
 
@@ -92,6 +93,7 @@ bool ProgramInput::open(const std::string& path, std::string* err) {
       dev_ = st.st_dev;
       ino_ = st.st_ino;
       size_ = st.st_size;
+      bytes_ = static_cast<uint64_t>(st.st_size);
       mtime_ = st.st_mtim;
       return true;
     }
@@ -132,6 +134,7 @@ bool ProgramInput::copy(int in, std::string* err) {
   while (r == LineReader::Read::kLine || r == LineReader::Read::kTooLong);
   // Not text, or a line with no end: the reading of the copy stops where
   // this one did, and says why (an input error); what follows is never read.
+  bytes_ = src.copied();
   const int close_errno = close(spool_.fd) != 0 ? errno : 0;
   spool_.fd = -1;
   if (src.over()) {

@@ -46,6 +46,8 @@ class ProgramInput {
   bool open(const std::string& path, std::string* err);
   // open() failed because the input is longer than the copy limit.
   bool too_large() const { return too_large_; }
+  // The bytes there are to read: the file's size, or the copy's.
+  uint64_t bytes() const { return bytes_; }
   // What the passes open: the file itself or the copy.
   const std::string& read_path() const { return read_path_; }
   // Before a second pass: false with a message when a regular file was
@@ -58,6 +60,7 @@ class ProgramInput {
   LockedTemp spool_;
   uint64_t limit_ = kDefaultMaxCopyBytes;
   bool too_large_ = false;
+  uint64_t bytes_ = 0;
   int cleanup_slot_ = -1;
   bool regular_ = false;
   dev_t dev_ = 0;

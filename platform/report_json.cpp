@@ -68,7 +68,9 @@ void diags(std::string* o, const char* key, const std::vector<ReportDiag>& v) {
   *o += "  " + quoted(key) + ": [";
   for (std::size_t k = 0; k < v.size(); ++k) {
     *o += k ? ",\n    " : "\n    ";
-    *o += "{\"line\": " + u64(v[k].line) + ", \"column\": " + u64(v[k].column) + ", \"message\": " + quoted(v[k].message) + "}";
+    *o += "{\"line\": " + u64(v[k].line) + ", \"column\": " + u64(v[k].column) + ", \"message\": " + quoted(v[k].message);
+    if (v[k].count > 1) *o += ", \"count\": " + u64(v[k].count) + ", \"last_line\": " + u64(v[k].last_line);
+    *o += "}";
   }
   *o += v.empty() ? "],\n" : "\n  ],\n";
 }

@@ -5,14 +5,18 @@
 // and `run` differ between two runs of the same job, and they come last.
 //
 //   dexmill_report  1 (the format's version)
-//   program         file, lines (read), units (what its moves were written in:
+//   program         file, lines (blocks run: a loop's or subroutine's lines each
+//                   time they run; the summary says "blocks run"), units (what its moves were written in:
 //                   mm|inch|mixed; a program with no move: the units it started in),
 //                   moves {rapid, feed, arc, dwell, tool_change}
 //   status          "ok", or "error" when the program has an input error
 //   stopped         null, or {reason, line}: "gouge" where --stop-at stopped the
 //                   cut, "error" at the bad block a partial run stopped before
 //   errors          [{line, column, message}]          input errors
-//   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept)
+//   warnings        [{line, column, message}], warnings_total (all, also those past 100 kept);
+//                   a warning that came more than once is one entry (the first
+//                   100 distinct are kept) with "count" and "last_line" after
+//                   its message; warnings_total counts every one
 //   messages        [{line, kind, text}]: the program's DEBUG, PRINT and MSG comments
 //                   (kind "debug"|"print"|"message"; the first 100)
 //   stock           {min_mm [x,y,z], max_mm [x,y,z], source "option"|"program"|"demo"}
@@ -75,6 +79,10 @@ namespace dexmill {
 struct ReportDiag {
   uint32_t line = 0, column = 0;
   std::string message;
+  // A warning that came more than once (platform/warning_fold.h): how
+  // often, and the line it last came on; line and column are the first's.
+  uint64_t count = 1;
+  uint32_t last_line = 0;
 };
 
 struct ReportToolUse {

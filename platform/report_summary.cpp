@@ -21,7 +21,9 @@ std::string range(int64_t lo_nm, int64_t hi_nm) { return nm_to_mm_text(lo_nm, 3)
 std::string report_summary_text(const RunReport& r) {
   char b[512];
   std::string o;
-  std::snprintf(b, sizeof b, "%s: %u lines, %s; %" PRIu64 " rapids, %" PRIu64 " feeds, %" PRIu64 " arcs, %" PRIu64
+  // Blocks run, not the file's lines: a loop's or a subroutine's lines count
+  // each time they run (a 780-line file can run 63704 blocks).
+  std::snprintf(b, sizeof b, "%s: %u blocks run, %s; %" PRIu64 " rapids, %" PRIu64 " feeds, %" PRIu64 " arcs, %" PRIu64
                 " tool changes\n", r.file.c_str(), r.lines, r.units, r.rapid, r.feed, r.arc, r.tool_change);
   o += b;
   if (r.have_stock) {
@@ -33,8 +35,15 @@ std::string report_summary_text(const RunReport& r) {
     o += b;
     o += "removed  " + volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + " mm^3\n";
   }
-  o += "time     " + hms(r.estimated_us) + " estimated (feeds at F, rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) +
-       " mm/min)\n";
+  // What the estimate is: a lower bound without acceleration (no machine
+  // reaches F at once), an upper one with --accel (every move from rest
+  // to rest, no blending).
+  o += "time     " + hms(r.estimated_us) + " at programmed feeds, rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) +
+       " mm/min, " +
+       (r.accel_nm_per_s2 ? "every move from rest to rest at --accel " +
+                                nm_to_mm_text(r.accel_nm_per_s2, r.accel_nm_per_s2 % 1000000 ? 3 : 0) +
+                                " mm/s^2 (an upper bound: no blending)\n"
+                          : std::string("no acceleration (a lower bound; --accel MM/S2 for a machine's)\n"));
   if (r.have_assessment) {
     const ReportAssessment& a = r.assessment;
     std::snprintf(b, sizeof b, "design   %" PRIu64 " gouge(s)\n", static_cast<uint64_t>(a.gouges_total));
@@ -54,7 +63,16 @@ std::string report_summary_text(const RunReport& r) {
     std::snprintf(b, sizeof b, "stopped  at the first %s, line %u\n", r.stopped_reason.c_str(), r.stopped_line);
     o += b;
   }
-  std::snprintf(b, sizeof b, "warnings %" PRIu64 "%s\n", r.warnings_total, r.warnings_total ? " (on standard error)" : "");
+  // Every warning counted (as warnings_total and `dexmill check` count
+  // them: a gate on the count must not pass because repeats were folded),
+  // and how many distinct ones that is when the report kept them all.
+  uint64_t kept = 0;
+  for (const ReportDiag& w : r.warnings) kept += w.count;
+  const std::string distinct = kept == r.warnings_total && r.warnings.size() < kept
+                                   ? std::to_string(r.warnings.size()) + " distinct, "
+                                   : std::string();
+  std::snprintf(b, sizeof b, "warnings %" PRIu64 "%s\n", r.warnings_total,
+                r.warnings_total ? (" (" + distinct + "on standard error)").c_str() : "");
   o += b;
   o += "Add --image out.png for a picture, --report out.json for all of it (dexmill run --help).\n";
   return o;

@@ -262,12 +262,12 @@ TEST(guard_demo_program_is_never_an_input_or_another_output) {
   const std::string table = put(d + "/out/demo.ngc", kTable);
   const std::string in_demo = "cd '" + d + "' &&";
   const uint64_t before = file_hash(table);
-  Result r = run_command("run -q --tools out/demo.ngc", nullptr, false, in_demo);
+  Result r = run_command("run --demo pocket -q --tools out/demo.ngc", nullptr, false, in_demo);
   CHECK_EQ(r.code, 2);
   CHECK(has(r.err, "the demo's program"));
   CHECK(has(r.err, "the input --tools"));
   CHECK_EQ(file_hash(table), before);
-  r = run_command("run -q --report out/demo.ngc", nullptr, false, in_demo);
+  r = run_command("run --demo pocket -q --report out/demo.ngc", nullptr, false, in_demo);
   CHECK_EQ(r.code, 2);
   CHECK(has(r.err, "--report"));
   CHECK_EQ(file_hash(table), before);

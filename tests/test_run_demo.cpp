@@ -74,7 +74,7 @@ TEST(demo_usage_errors) {
     const char* args;
     const char* message;
   } cases[] = {
-      {"--demo teapot", "--demo must be list or one of panel, smiley, freeform, tsuba, not 'teapot'"},
+      {"--demo teapot", "--demo must be list or one of pocket, panel, smiley, freeform, tsuba, not 'teapot'"},
       {"pocket.ngc --demo panel", "--demo cuts its own program from its own design"},
       {"--demo panel --design x.stl", "--demo cuts its own program from its own design"},
       {"pocket.ngc --design teapot", "--design needs an .stl mesh, a .pgm height image or a built-in part's name"},

@@ -206,11 +206,22 @@ TEST(run_without_outputs_prints_a_summary) {
   CHECK(has(r.out, "mm^3"));
   CHECK(has(r.out, "time     "));
   CHECK(has(r.out, "Add --image out.png"));
+  // Blocks run, and what the time estimate is (a lower bound without
+  // acceleration, an upper one with --accel).
+  CHECK(has(r.out, "pocket.ngc: 23 blocks run, mm;"));
+  CHECK(has(r.out, " at programmed feeds, rapids at 5000 mm/min, no acceleration (a lower bound; --accel MM/S2"));
+  const Result accel = run("pocket.ngc --accel 500.5");
+  CHECK(has(accel.out, " at programmed feeds, rapids at 5000 mm/min, every move from rest to rest at --accel 500.500 "
+                       "mm/s^2 (an upper bound: no blending)"));
+  CHECK_EQ(accel.out.find("no acceleration"), std::string::npos);
   // With an output, standard output stays quiet.
   CHECK(run("pocket.ngc -q --report /dev/null").out.empty());
   // Units: what the moves were written in.
   CHECK(has(run("arcs_inch.ngc").out, ", inch;"));
   const std::string d = sub("units");
+  // A loop runs its lines again: 7 lines, 47 blocks (the while line 11 times).
+  write_text(d + "/loop.ngc", "G21 G90\n#1=0\no100 while [#1 LT 10]\nG0 X#1\n#1=[#1+1]\no100 endwhile\nM2\n");
+  CHECK(has(run(d + "/loop.ngc").out, "loop.ngc: 47 blocks run, mm; 10 rapids"));
   write_text(d + "/mixed.ngc", "G21 G0 X0 Y0 Z1\nG1 Z-1 F100\nG20 G1 X1\nM2\n");
   write_text(d + "/late.ngc", "G21 G0 X0 Y0 Z1\nG1 Z-1 F100\nG20\nM2\n");
   CHECK(has(run(d + "/mixed.ngc").out, ", mixed;"));

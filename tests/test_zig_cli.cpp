@@ -179,3 +179,33 @@ TEST(zig_usage_errors) {
     if (!has(r.err, c.message)) std::printf("%s -> %s\n", args.c_str(), r.err.c_str());
   }
 }
+
+// A built-in part takes --stock as its block (it ignored it, the output
+// byte-identical): the part stays where it is, the stripes span the block
+// given, and the program cut from that block does not gouge the part.
+TEST(zig_builtin_part_honours_stock) {
+  if (skip()) return;
+  const Result own = run_command("zig smiley");
+  CHECK_EQ(own.code, 0);
+  // Its own block given is the same program (no false change)...
+  Result r = run_command("zig smiley --stock 0,0,-16,63.5,63.5,0");
+  CHECK_EQ(r.code, 0);
+  CHECK(r.out == own.out);
+  // ...a larger one another, made for it.
+  r = run_command("zig smiley --stock -5,-5,-16,70,70,0 -o %/smiley-wide.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "dexmill zig: grid 153 x 153 at 0.5000 mm"));
+  const std::string prog = slurp(tmp_dir() + "/smiley-wide.ngc");
+  CHECK(prog != own.out);
+  CHECK(has(prog, "(simulate with: dexmill run PROGRAM --stock -5.000,-5.000,-16.000,70.000,70.000,0.000 --pitch 0.5000"));
+  r = run("%/smiley-wide.ngc -q --stock -5,-5,-16,70,70,0 --pitch 0.5 --tool ball:6,len=16 --design smiley --report "
+          "%/smiley-wide.json");
+  CHECK_EQ(r.code, 0);
+  const std::string rep = slurp(tmp_dir() + "/smiley-wide.json");
+  CHECK(has(rep, "\"bounds_mm\": {\"min\": [-5.5000, -5.5000, "));
+  CHECK(has(assessment_of(rep), "\"max_gouge\": null"));
+  // A blank is no block to start the zig path from: refused, not ignored.
+  r = run_command("zig smiley --stock %/blank.stl");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "the built-in part smiley takes --stock as a box"));
+}

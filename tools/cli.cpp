@@ -32,7 +32,7 @@ const Command kCommands[] = {
 void usage(FILE* f) {
   std::fprintf(f,
                "usage: dexmill COMMAND [ARGS]\n\n"
-               "  dexmill run [FILE|-] [options]     simulate a program; with no FILE, the built-in demo\n"
+               "  dexmill run [FILE|-] [options]     simulate a program; no FILE: stdin, or the demo on a terminal\n"
                "  dexmill path FILE [--chord MM]     print the interpreted motion as a polyline\n"
                "  dexmill check FILE                 read and interpret a program, report errors only\n"
                "  dexmill bench [NAME...]            run benchmarks, one result line each\n"

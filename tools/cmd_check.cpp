@@ -2,7 +2,9 @@
 // every error it can (a bad block is skipped, the state stays as before it),
 // and the warnings. Errors that may only follow from an earlier one
 // (GcodeDiag::follow_on) are counted in one line at the end, not shown one by
-// one, unless --follow-ons. Exit 0 when clean, 1 with errors.
+// one, unless --follow-ons; repeated warnings are folded
+// (platform/warning_fold.h). A program with no error ends in one line,
+// "FILE: ok, N blocks, W warnings". Exit 0 when clean, 1 with errors.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -61,7 +63,8 @@ const CommandText kCheckText = {
     "(FILE:LINE:COL: error: MESSAGE) and warning on stderr. A block with an\n"
     "error is skipped and changes nothing; errors that may only follow from\n"
     "an earlier one (a G1 after the bad line that set F) are counted, not\n"
-    "shown. Exit 0 clean, 1 with errors.\n\n"
+    "shown; a repeated warning is one line with its count and last line. No\n"
+    "error: one line, FILE: ok, N blocks, W warnings. Exit 0 clean, 1 with errors.\n\n"
     "With --simulate it cuts the program as `run` does with the safety checks (all\n"
     "unless --check names some) and, with --design, the gouge watch; writes no image.\n"
     "The findings are warnings; exit 4 when there is one, 0 when clean, 1 with input\n"
@@ -162,18 +165,21 @@ int cmd_check(int argc, char** argv) {
   Interp interp(nullptr, opt);
   GcodeRunner runner(&in, &interp, &msgs, false);
   runner.show_follow_ons(follow_ons);
-  while (runner.step()) {
-    if (max_errors && msgs.errors() >= static_cast<uint32_t>(max_errors)) {
-      std::fprintf(stderr, "%s: too many errors, stopped after %ld\n", in.name(), max_errors);
-      break;
-    }
-  }
+  bool stopped = false;
+  while (!stopped && runner.step()) stopped = max_errors && msgs.errors() >= static_cast<uint32_t>(max_errors);
+  msgs.finish();  // the warnings held (platform/warning_fold.h), before the lines that end the listing
+  if (stopped) std::fprintf(stderr, "%s: too many errors, stopped after %ld\n", in.name(), max_errors);
   if (runner.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   if (runner.follow_ons() && !follow_ons)
     std::fprintf(stderr,
                  "%s: %u more error(s) not shown: each may only follow from one above (--follow-ons shows them)\n",
                  in.name(), static_cast<unsigned>(runner.follow_ons()));
-  return msgs.errors() ? kExitInput : kExitOk;
+  if (msgs.errors()) return kExitInput;
+  // One line for a program with no error, so that silence never has to be
+  // read as success; the warnings counted as they came (not as folded).
+  std::fprintf(stderr, "%s: ok, %u blocks, %u warning%s\n", in.name(), static_cast<unsigned>(runner.lines()),
+               static_cast<unsigned>(msgs.warnings()), msgs.warnings() == 1 ? "" : "s");
+  return kExitOk;
 }
 
 }  // namespace cli

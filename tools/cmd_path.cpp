@@ -167,6 +167,7 @@ int cmd_path(int argc, char** argv) {
   print_point(stdout, "# start", interp.position());
   GcodeRunner runner(&in, &interp, &msgs, true);
   runner.run_all();
+  msgs.finish();
   if (std::fflush(stdout) != 0 || std::ferror(stdout))
     return fail(kExitIo, "cannot write the path to standard output: %s", std::strerror(errno));
   if (runner.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());

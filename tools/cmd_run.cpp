@@ -1,5 +1,6 @@
 // `dexmill run [FILE|-] [options]`: the options (tools/run_option_table.h),
-// then the job (tools/run_job.h). With no FILE it runs the built-in demo.
+// then the job (tools/run_job.h). With no FILE it reads standard input, or
+// on a terminal runs the built-in demo (tools/run_options.h choose_program).
 #include "platform/file_guard.h"
 #include "tools/cli.h"
 #include "tools/option_help.h"

@@ -112,8 +112,8 @@ const CommandText kZigText = {
     "--tool (default here ball:3); straight moves between positions never dip into\n"
     "the design. DESIGN: an STL (mm, machine coordinates; --design-offset X,Y,Z), a\n"
     "PGM height image over the stock's XY (--design-z ZLOW,ZHIGH), or a built-in part\n"
-    "(panel, smiley, freeform, tsuba: its block, pitch and ball unless given; see run\n"
-    "--demo).\n",
+    "(panel, smiley, freeform, tsuba: its block, pitch and ball unless given, the part\n"
+    "staying at its place in a --stock box given; see run --demo).\n",
     "Prints the grid, positions, moves and time taken on standard error. Exit 0 ok,\n"
     "1 a design that cannot be read, 2 usage, 3 I/O.\n",
 };
@@ -159,8 +159,9 @@ int cmd_zig(int argc, char** argv) {
     if (const int code = apply_option(run_option_table(), "--design", z.design.c_str(), &o)) return code;
   }
   if (const int code = finish_run_options(&o)) return code;
-  if (builtin) builtin_setup(*builtin, o.job.tool_given, &o.job);
-  else if (!o.job.tool_given) (void)tool_spec_parse("ball:3", 6, &o.job.tool);
+  if (builtin) {
+    if (const int code = builtin_setup(*builtin, o.job.tool_given, &o.job)) return code;
+  } else if (!o.job.tool_given) (void)tool_spec_parse("ball:3", 6, &o.job.tool);
   if (!z.feeds_given) zig_fit_to_material(o.job, &z.job.prog);
   if (run_draws(o) || !o.out.report.empty() || !o.job.file.empty())
     return fail(kExitUsage, "zig writes a program only (simulate it with dexmill run)");

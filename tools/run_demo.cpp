@@ -46,6 +46,8 @@ StockBox demo_stock_box() {
 
 int run_demo(RunOptions o, FileGuard* guard) {
   if (o.job.demo == "list") {
+    std::printf("%-9s the built-in demo (run with no FILE on a terminal): a 100 x 70 x 20 mm block of %s, "
+                "three tools, writes out/\n", kBuiltinDemoName, demo_material());
     for (int32_t k = 0; k < builtin_design_count(); ++k) {
       const BuiltinDesign& b = builtin_design_at(k);
       std::printf("%-9s %3d x %-3d dexels of %s mm, %d-dexel ball, %-10s %s\n", b.name, b.nx, b.ny,
@@ -55,7 +57,7 @@ int run_demo(RunOptions o, FileGuard* guard) {
   }
   const BuiltinDesign* b = builtin_design_find(o.job.demo.c_str());
   if (!b) return fail(kExitUsage, "no built-in part '%s' (dexmill run --demo list)", o.job.demo.c_str());
-  builtin_setup(*b, o.job.tool_given, &o.job);
+  if (const int code = builtin_setup(*b, o.job.tool_given, &o.job)) return code;
   o.job.tool_given = true;  // the part's own tool (or --tool's), no guess: the program's comment names it too
   const std::string dir = "out/" + o.job.demo;
   std::string err;

@@ -22,6 +22,9 @@ int run_demo(RunOptions o, FileGuard* guard);
 // frames in out/frames, its material drawn in its colours). kExitOk or an
 // exit code (printed).
 constexpr const char* kDemoProgramPath = "out/demo.ngc";
+// Its name for `--demo` (what `make run` asks for: its standard input may
+// be no terminal), and its line in `--demo list`.
+constexpr const char* kBuiltinDemoName = "pocket";
 int demo_defaults(RunOptions* o);
 // The block it is written for.
 StockBox demo_stock_box();

@@ -236,6 +236,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     return code;
   }
   if (const int code = open_views(o, &run)) return code;
+  if (const int code = remove_earlier_frames(o, &su)) return code;
   bool user_quit = false;
   if (const int code = cut_pass(o, &run, &user_quit)) return code;
   if (const int code = write_results(o, &run, user_quit)) return code;

@@ -11,6 +11,7 @@
 #include "display/fixture_draw.h"
 #include "tools/cli.h"
 #include "tools/option_values.h"
+#include "tools/run_demo.h"
 #include "tools/run_option_table.h"
 
 namespace dexmill {
@@ -20,9 +21,9 @@ namespace {
 using Job = JobOptions;
 
 int demo(Job* o, const char* v) {
-  if (std::strcmp(v, "list") && !builtin_design_find(v)) {
-    std::string names;
-    for (int32_t k = 0; k < builtin_design_count(); ++k) names += std::string(k ? ", " : "") + builtin_design_at(k).name;
+  if (std::strcmp(v, "list") && std::strcmp(v, kBuiltinDemoName) && !builtin_design_find(v)) {
+    std::string names = kBuiltinDemoName;
+    for (int32_t k = 0; k < builtin_design_count(); ++k) names += std::string(", ") + builtin_design_at(k).name;
     return fail(kExitUsage, "--demo must be list or one of %s, not '%s'", names.c_str(), v);
   }
   o->demo = v;
@@ -63,9 +64,10 @@ int max_input(Job* o, const char* v) {
 
 const Option<Job> kJob[] = {
     {"--demo", "NAME|list",
-     "one of the paper's workpieces end to end: its design part, a zig-milling program made from it (dexmill "
-     "zig), cut from its material, drawn, assessed; writes out/NAME/ (program, final.png, error.png, frames/, "
-     "report.json); list: the workpieces",
+     "pocket: the built-in demo (what run with no FILE runs on a terminal; writes out/); else one of the "
+     "paper's workpieces end to end: its design part, a zig-milling program made from it (dexmill zig), cut "
+     "from its material, drawn, assessed; writes out/NAME/ (program, final.png, error.png, frames/, "
+     "report.json); list: the demos",
      demo},
     {"--stock", "X0,Y0,Z0,X1,Y1,Z1|FILE.stl",
      "the stock box, mm, machine coordinates (default: from the program), or a pre-machined blank: an STL "

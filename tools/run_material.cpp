@@ -6,6 +6,7 @@
 
 #include "core/material/material_preset.h"
 #include "platform/material_file.h"
+#include "platform/warning_fold.h"
 #include "tools/cli.h"
 
 namespace dexmill {
@@ -61,9 +62,9 @@ std::string process_violation_text(const ProcessViolation& v, const StockComposi
 }
 
 void material_print(const RunMaterial& m, const ProcessWatch& w, const std::string& file) {
-  for (size_t k = 0; k < w.nkept; ++k) {
-    const ProcessViolation& v = w.kept[k];
-    std::fprintf(stderr, "%s:%u:1: warning: %s\n", file.c_str(), v.line, process_violation_text(v, *m.comp).c_str());
+  {
+    WarningFold fold;  // one spindle speed out of range is one line, not one per line cut
+    for (size_t k = 0; k < w.nkept; ++k) fold.add(file, w.kept[k].line, 1, process_violation_text(w.kept[k], *m.comp));
   }
   if (w.total > w.nkept)
     std::fprintf(stderr, "%s: warning: %llu more process rule violations not listed\n", file.c_str(),

@@ -30,7 +30,8 @@ struct RunMaterial {
 int material_start(RunMaterial* m, const std::string& what, const BoxNm& stock);
 
 // Prints every kept violation of the watch as FILE:LINE:1: warning: ...,
-// and how many were not kept.
+// the same message on several lines once with its count and last line
+// (platform/warning_fold.h), and how many were not kept.
 void material_print(const RunMaterial& m, const ProcessWatch& w, const std::string& file);
 
 // Into the report.

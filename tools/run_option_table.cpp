@@ -1,6 +1,7 @@
 // `dexmill run`'s option table and its help; see run_option_table.h.
 #include "tools/run_option_table.h"
 
+#include "platform/process.h"
 #include "tools/cli.h"
 #include "tools/option_parse.h"
 #include "tools/option_values.h"
@@ -13,8 +14,9 @@ const CommandText kRunText = {
     "run",
     "usage: dexmill run [FILE|-] [options]\n\n"
     "Simulates milling a G-code program into a block of stock and writes what you ask\n"
-    "for. With no FILE it runs the built-in demo (writes out/demo.ngc, out/final.ppm\n"
-    "and out/frames/).\n",
+    "for. With no FILE it reads standard input when that is a file or a pipe\n"
+    "(`dexmill run < prog.nc`), and runs the built-in demo on a terminal (writes\n"
+    "out/demo.ngc, out/final.ppm and out/frames/; anywhere: --demo pocket).\n",
     "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, p shows\n"
     "the toolpath, r resets the view, q quits. Exit status: 0 ok, 1 input errors (the cut\n"
     "goes up to the first), 2 usage, 3 I/O, 4 a check asked for failed (--stop-at,\n"
@@ -51,7 +53,9 @@ int run_operand(RunOptions* o, const char* arg, int index) { return take_file(&o
 
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   const int code = parse_options(run_option_table(), argc, argv, o, help);
-  return code != kExitOk || *help ? code : finish_run_options(o);
+  if (code != kExitOk || *help) return code;
+  if (const int chosen = choose_program(o, standard_input_is_terminal())) return chosen;
+  return finish_run_options(o);
 }
 
 CommandDoc run_doc() { return command_doc(run_option_table()); }

@@ -3,6 +3,7 @@
 
 #include "core/tool/spec.h"
 #include "tools/cli.h"
+#include "tools/run_demo.h"
 
 namespace dexmill {
 namespace cli {
@@ -63,6 +64,20 @@ int settle_colours(const JobOptions& j, ViewOptions* v) {
 }
 
 }  // namespace
+
+int choose_program(RunOptions* o, bool stdin_terminal) {
+  JobOptions& j = o->job;
+  if (j.demo == kBuiltinDemoName) {
+    if (!j.file.empty())
+      return fail(kExitUsage, "--demo %s runs the built-in demo's own program: give no FILE", kBuiltinDemoName);
+    j.demo.clear();
+    return kExitOk;
+  }
+  if (!j.file.empty() || !j.demo.empty() || stdin_terminal) return kExitOk;
+  j.file = "-";
+  j.stdin_implied = true;
+  return kExitOk;
+}
 
 int finish_run_options(RunOptions* o) {
   JobOptions& j = o->job;

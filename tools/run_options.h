@@ -45,6 +45,9 @@ struct SafetyChoice {
 struct JobOptions {
   JobOptions();                  // the default tool parsed from tool_text
   std::string file;              // the program; "-" is standard input; empty: the built-in demo
+  // No FILE was given and standard input is not a terminal: `file` is "-"
+  // for the user (choose_program), and nothing there is a usage error.
+  bool stdin_implied = false;
   // `dexmill optimize`: the program's name in messages when `file` is a
   // copy of it (a spooled standard input); empty: from `file`.
   std::string shown_name;
@@ -139,6 +142,14 @@ struct RunOptions {
   OutputOptions out;
   ViewOptions view;
 };
+
+// What `run` with no FILE cuts, before finish_run_options: `--demo pocket`,
+// or no FILE with standard input a terminal (`stdin_terminal`), is the
+// built-in demo (`file` left empty, `demo` cleared); no FILE with standard
+// input a file or a pipe reads it ("-", stdin_implied), so that `dexmill
+// run < prog.nc` cuts prog.nc. Returns kExitOk, or prints the usage error
+// (a FILE with --demo pocket) and returns kExitUsage.
+int choose_program(RunOptions* o, bool stdin_terminal);
 
 // The checks of the options against each other, once all are in, and what
 // follows from them: --stop-at any, the checks a verdict on collisions runs

@@ -13,8 +13,6 @@ namespace dexmill {
 namespace cli {
 namespace {
 
-constexpr size_t kMaxReportedWarnings = 100;
-
 // The backplot's pieces, as the scan reads them.
 class PathSink final : public CanonSink {
  public:
@@ -29,28 +27,36 @@ class PathSink final : public CanonSink {
 
 void RunMessages::error_text(uint32_t line, uint32_t col, const std::string& msg) {
   ++errors_;
-  if (print_) std::fprintf(stderr, "%s:%u:%u: error: %s\n", file_.c_str(), line, col, msg.c_str());
+  if (print_) {
+    fold_.flush();  // the warnings before it, before it
+    std::fprintf(stderr, "%s:%u:%u: error: %s\n", file_.c_str(), line, col, msg.c_str());
+  }
   error_list.push_back(ReportDiag{line, col, msg});
 }
 
 void RunMessages::warning_text(uint32_t line, uint32_t col, const std::string& msg) {
   ++warnings_;
-  if (print_) std::fprintf(stderr, "%s:%u:%u: warning: %s\n", file_.c_str(), line, col, msg.c_str());
-  if (warning_list.size() < kMaxReportedWarnings) warning_list.push_back(ReportDiag{line, col, msg});
+  if (print_) fold_.add(file_, line, col, msg);
+  (void)kept_.add(file_, line, col, msg);  // past the first 100 distinct, only counted
 }
 
-void RunMessages::add(const GcodeDiag& d, bool is_error) {
+void RunMessages::error(const GcodeDiag& d) {
+  ++errors_;
   char msg[400];
   gcode_format_message(d, msg, sizeof msg);
-  if (is_error) ++errors_;
-  else ++warnings_;
   if (print_) {
+    fold_.flush();
     char line[700];
-    gcode_format_diag(file_.c_str(), d, is_error, line, sizeof line);
+    gcode_format_diag(file_.c_str(), d, true, line, sizeof line);
     std::fprintf(stderr, "%s\n", line);
   }
-  if (is_error) error_list.push_back(ReportDiag{d.line, d.col, msg});
-  else if (warning_list.size() < kMaxReportedWarnings) warning_list.push_back(ReportDiag{d.line, d.col, msg});
+  error_list.push_back(ReportDiag{d.line, d.col, msg});
+}
+
+std::vector<ReportDiag> RunMessages::warning_list() const {
+  std::vector<ReportDiag> v;
+  for (const FoldedWarning& w : kept_.entries()) v.push_back(ReportDiag{w.line, w.column, w.message, w.count, w.last_line});
+  return v;
 }
 
 int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, std::vector<PathSegment>* path,
@@ -86,7 +92,8 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
   rep->dwell = sum.count(CanonKind::kDwell);
   rep->tool_change = sum.count(CanonKind::kToolChange);
   rep->errors = msgs->error_list;
-  rep->warnings = msgs->warning_list;
+  msgs->finish();
+  rep->warnings = msgs->warning_list();
   for (const GcodeNotes::Note& n : notes.kept)
     if (rep->messages.size() < 100) rep->messages.push_back(RunReport::Message{n.line, n.kind, n.text});
   rep->warnings_total = msgs->warnings();

@@ -13,6 +13,7 @@
 #include "core/sim/scan.h"
 #include "display/backplot.h"
 #include "platform/gcode_file.h"
+#include "platform/warning_fold.h"
 #include "platform/report_json.h"
 #include "platform/tool_table.h"
 #include "tools/read_options.h"
@@ -20,24 +21,32 @@
 namespace dexmill {
 namespace cli {
 
-// Prints diagnostics (when asked) and keeps them for the report.
+// Prints diagnostics (when asked) and keeps them for the report. Warnings
+// are folded (platform/warning_fold.h): on stderr until an error comes
+// between, in the report over the whole program (its first 100 distinct
+// ones, each with its count and last line); warnings() counts every one.
 class RunMessages final : public GcodeMessages {
  public:
   RunMessages(const std::string& file, bool print) : file_(file), print_(print) {}
   void set_file(const char* name) override { file_ = name; }
-  void error(const GcodeDiag& d) override { add(d, true); }
-  void warning(const GcodeDiag& d) override { add(d, false); }
+  void error(const GcodeDiag& d) override;
+  void warning(const GcodeDiag& d) override { warning_text(d.line, d.col, gcode_warning_message(d)); }
   // An error found outside the interpreter (a tool the table lacks).
   void error_text(uint32_t line, uint32_t col, const std::string& msg);
   // A warning found outside it (a tool guessed), counted with the rest.
   void warning_text(uint32_t line, uint32_t col, const std::string& msg);
-  std::vector<ReportDiag> error_list, warning_list;
+  // Prints the warnings held.
+  void finish() { fold_.flush(); }
+  std::vector<ReportDiag> error_list;
+  // The report's warnings, folded.
+  std::vector<ReportDiag> warning_list() const;
   bool printing() const { return print_; }
 
  private:
-  void add(const GcodeDiag& d, bool is_error);
   std::string file_;
   bool print_;
+  WarningFold fold_;
+  WarningList kept_{100};
 };
 
 // What the scan pass reads: the program's path and its name in messages,

@@ -12,6 +12,8 @@
 #include "platform/frame_files.h"
 #include "platform/memory.h"
 #include "platform/output_file.h"
+#include "platform/process.h"
+#include "platform/window.h"
 #include "tools/cli.h"
 #include "tools/demo_program.h"
 #include "tools/guard_inputs.h"
@@ -52,10 +54,21 @@ int guard_files(const RunOptions& o, RunSetup* run) {
   return kExitOk;
 }
 
+// No FILE, and standard input (no terminal: choose_program read it) holds
+// nothing: an empty program was surely not meant (a script, a CI job).
+int no_program(const char* why) {
+  return fail(kExitUsage, "no program: no FILE was given and standard input (not a terminal) %s; give a FILE, - to "
+              "read standard input, or --demo %s for the built-in demo", why, kBuiltinDemoName);
+}
+
 // The demo's defaults, every file checked, the demo's program written, the
-// program opened, the frame folder emptied: before anything long happens.
+// program opened: before anything long happens.
 int prepare(RunOptions* o, RunSetup* run) {
   std::string err;
+  // A build without GLFW can never open the window: said before anything
+  // is read, made or written (a display that is missing shows when the
+  // window opens, still before any file is touched: remove_earlier_frames).
+  if (o->view.window && !Window::available()) return fail(kExitUsage, "--window: %s", Window().error());
   run->demo = o->job.file.empty();
   run->read_path = run->shown_name = o->job.file;
   if (run->demo) {
@@ -71,13 +84,11 @@ int prepare(RunOptions* o, RunSetup* run) {
     if (o->job.file == "-") run->shown_name = "<stdin>";
     if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
     run->input.set_copy_limit(o->job.max_input_bytes);
+    if (o->job.stdin_implied && standard_input_closed()) return no_program("is closed");
     if (!run->input.open(o->job.file, &err)) return fail(run->input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
+    if (o->job.stdin_implied && run->input.bytes() == 0) return no_program("is empty");
     run->read_path = run->input.read_path();
   }
-  if (!remove_old_frames(run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
-  if (!run->old_frames.empty() && !o->view.quiet && !run->demo)
-    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", run->old_frames.size(),
-                 o->out.frames_dir.c_str());
   return kExitOk;
 }
 
@@ -260,6 +271,16 @@ int first_pass(const RunOptions& o, RunSetup* run) {
 }
 
 }  // namespace
+
+int remove_earlier_frames(const RunOptions& o, RunSetup* s) {
+  std::string err;
+  if (!remove_old_frames(s->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (!s->old_frames.empty() && !o.view.quiet && !s->demo)
+    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", s->old_frames.size(),
+                 o.out.frames_dir.c_str());
+  s->old_frames.clear();
+  return kExitOk;
+}
 
 int run_setup(RunOptions* o, RunSetup* s) {
   if (const int code = prepare(o, s)) return code;

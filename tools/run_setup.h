@@ -2,7 +2,7 @@
 // the engine made, ready to cut (what run_job cuts and draws, and what the
 // tests reach in process, so that no copy of these steps exists):
 //   the demo's defaults, every file checked by the input guard, the demo's
-//   program written, the program opened, the frame folder emptied; the tool
+//   program written, the program opened; the tool
 //   table; the first pass (tools/run_scan.h: the
 //   report's program part, the path, the first bad block); the stock and
 //   grid (core/sim/stock_plan.h), the design, the materials, the checks the
@@ -40,7 +40,7 @@ struct RunSetup {
   // The command's input guard (run_job's caller's), else this set-up's own.
   FileGuard own_guard;
   FileGuard* guard = &own_guard;
-  std::vector<std::string> old_frames;  // an earlier run's, in --frames: removed before the first frame
+  std::vector<std::string> old_frames;  // an earlier run's, in --frames: remove_earlier_frames
   ProgramInput input;
   OutputFormats formats;
   ToolTableFile table;
@@ -71,6 +71,12 @@ struct RunSetup {
 // --strict refuses a program with an error (the report is still the
 // caller's to write).
 int run_setup(RunOptions* o, RunSetup* s);
+
+// Removes the frames of an earlier run the set-up found in --frames, once
+// everything that can fail before the cut has been tried (the set-up, the
+// window or framebuffer opened, the views made): a failed start leaves
+// them as they were. kExitOk, or kExitIo with the message printed.
+int remove_earlier_frames(const RunOptions& o, RunSetup* s);
 
 }  // namespace cli
 }  // namespace dexmill

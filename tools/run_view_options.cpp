@@ -22,7 +22,8 @@ const Option<Out> kOutputs[] = {
     {"--error-image", "FILE.png|FILE.ppm", "the final frame in the error view too (needs --design)",
      [](Out* o, const char* v) -> int { return o->error_image = v, kExitOk; }},
     {"--frames", "DIR",
-     "a frame every --every moves: DIR/frame-000001.png ... (earlier frame-* files in DIR are removed first)",
+     "a frame every --every moves: DIR/frame-000001.png ... (earlier frame-* files in DIR are removed when the cut "
+     "starts; a run that fails before it leaves them)",
      [](Out* o, const char* v) -> int { return o->frames_dir = v, kExitOk; }},
     {"--every", "N", "the moves between frames (default: about 100 frames over the program)",
      [](Out* o, const char* v) -> int {

@@ -13,16 +13,21 @@
 namespace dexmill {
 namespace cli {
 
-void builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o) {
+int builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o) {
+  if (!o->stock_stl.empty())
+    return fail(kExitUsage, "the built-in part %s takes --stock as a box X0,Y0,Z0,X1,Y1,Z1, not an STL blank ('%s')",
+                b.name, o->stock_stl.c_str());
   o->builtin = &b;
   o->design = std::string("(built-in part ") + b.name + ")";
   o->design_pgm = false;
-  o->have_stock = true;
-  // The block's top at Z0, as CAM programs set it (the machine starts at
-  // 0, 0, 0: on the top, not inside the block).
-  const int64_t s[6] = {0, 0, -b.stock_height_nm, (b.nx - 1) * b.pitch_nm, (b.ny - 1) * b.pitch_nm, 0};
-  for (int k = 0; k < 6; ++k) o->stock_nm[k] = s[k];
-  o->stock_stl.clear();
+  if (!o->have_stock) {
+    // The block's top at Z0, as CAM programs set it (the machine starts at
+    // 0, 0, 0: on the top, not inside the block). A --stock given is the
+    // block instead, the part where it always is (load_design).
+    o->have_stock = true;
+    const int64_t s[6] = {0, 0, -b.stock_height_nm, (b.nx - 1) * b.pitch_nm, (b.ny - 1) * b.pitch_nm, 0};
+    for (int k = 0; k < 6; ++k) o->stock_nm[k] = s[k];
+  }
   if (!o->pitch_nm && !o->grid_nx) o->pitch_nm = b.pitch_nm;
   if (!tool_given) {  // the paper's ball
     o->tool = Tool{};
@@ -35,6 +40,7 @@ void builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o) {
     o->tool_text = spec;
   }
   if (o->material.empty()) o->material = b.material;
+  return kExitOk;
 }
 
 void zig_fit_to_material(const JobOptions& o, ZigProgramOptions* p) {

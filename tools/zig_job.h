@@ -22,10 +22,13 @@ struct ZigJob {
   bool have_safe = false;                // else the stock's top + 5 mm
 };
 
-// Sets o up for built-in part b: its block as the stock, its pitch (unless
-// o gives --pitch or --grid), its ball (unless tool_given), its material
-// (unless o gives one), and b as the design.
-void builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o);
+// Sets o up for built-in part b: its block as the stock (unless o gives a
+// --stock box: the part stays at its place, X and Y from 0, its top at Z0),
+// its pitch (unless o gives --pitch or --grid), its ball (unless
+// tool_given), its material (unless o gives one), and b as the design.
+// kExitOk, or kExitUsage (printed) for a --stock STL blank, which the zig
+// path cannot start from.
+int builtin_setup(const BuiltinDesign& b, bool tool_given, JobOptions* o);
 
 // Feeds and spindle speed within every limit of o's material preset (paper
 // §2.6: the process rules then pass): the lowest max feed (at most the
