@@ -123,11 +123,14 @@ bool OutputFile::open(const char* path) {
   if (exists) mode_ = static_cast<int>(st.st_mode & 07777);
   const std::string dir = folder_of(real);
   remove_stale_temporaries(dir);
-  if (!make_locked_temp(dir, kTempPrefix, 0666, &tmp_)) {
-    set_error("write", path);
-    return false;
+  {
+    const StopSignalsHeld held;  // no signal between the temporary's creation and its registration
+    if (!make_locked_temp(dir, kTempPrefix, 0666, &tmp_)) {
+      set_error("write", path);
+      return false;
+    }
+    cleanup_slot_ = cleanup_register(tmp_.path.c_str());
   }
-  cleanup_slot_ = cleanup_register(tmp_.path.c_str());
   f_ = fdopen(tmp_.fd, "wb");
   if (!f_) {
     set_error("write", path);
@@ -176,6 +179,7 @@ bool OutputFile::commit() {
     cleanup_slot_ = -1;
     return true;
   }
+  const StopSignalsHeld held;  // renamed and unregistered together
   if (!failed_ && std::rename(tmp_.path.c_str(), target_.c_str()) != 0) set_error("write", path_.c_str());
   if (failed_) unlink(tmp_.path.c_str());
   release_locked_temp(&tmp_);  // the lock, after the rename: the file is never unlocked under its temporary name

@@ -1,13 +1,11 @@
 // Outputs published together; see output_set.h.
 #include "platform/output_set.h"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <initializer_list>
 
 #include "platform/process.h"
 
@@ -51,10 +49,9 @@ void OutputSet::drop(Rename* r, bool remove) {
 }
 
 bool OutputSet::publish(std::string* err) {
-  sigset_t stops, was;
-  sigemptyset(&stops);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, sig);
-  sigprocmask(SIG_BLOCK, &stops, &was);
+  // A signal that comes during the renames is acted on when they are done:
+  // nothing is then left to remove.
+  const StopSignalsHeld held;
   bool ok = true;
   for (Rename& r : renames_) {
     if (ok && std::rename(r.tmp.path.c_str(), r.target.c_str()) != 0) {
@@ -64,9 +61,6 @@ bool OutputSet::publish(std::string* err) {
     drop(&r, !ok);
   }
   renames_.clear();
-  // A signal that came during the pass is acted on now (platform/process.h:
-  // nothing is left to remove).
-  sigprocmask(SIG_SETMASK, &was, nullptr);
   return ok;
 }
 

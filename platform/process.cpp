@@ -1,6 +1,7 @@
 #include "platform/process.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -81,6 +82,16 @@ void install_cleanup_handlers() {
   // process and leaving the temporary.
   std::signal(SIGXFSZ, SIG_IGN);
 }
+
+StopSignalsHeld::StopSignalsHeld() {
+  static_assert(sizeof(sigset_t) <= sizeof(was_), "sigset_t fits");
+  sigset_t stops;
+  sigemptyset(&stops);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, sig);
+  sigprocmask(SIG_BLOCK, &stops, reinterpret_cast<sigset_t*>(was_));
+}
+
+StopSignalsHeld::~StopSignalsHeld() { sigprocmask(SIG_SETMASK, reinterpret_cast<sigset_t*>(was_), nullptr); }
 
 int cleanup_register(const char* path) {
   if (std::strlen(path) >= static_cast<size_t>(kPathBytes)) return -1;

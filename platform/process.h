@@ -51,6 +51,21 @@ void install_cleanup_handlers();
 // Registers a file to remove if a signal stops the process; returns its
 // slot, or -1 when all kCleanupSlots are taken (the file is then left, as
 // without the handler). cleanup_unregister(-1) does nothing.
+// SIGINT, SIGTERM and SIGHUP held off for a scope, then acted on: what
+// creates a temporary and registers it (or renames one and unregisters
+// it) runs under one, so that no signal falls between the two and leaves
+// a file the clean-up does not know of.
+class StopSignalsHeld {
+ public:
+  StopSignalsHeld();
+  ~StopSignalsHeld();
+  StopSignalsHeld(const StopSignalsHeld&) = delete;
+  StopSignalsHeld& operator=(const StopSignalsHeld&) = delete;
+
+ private:
+  unsigned char was_[128];  // the caller's signal mask (a sigset_t)
+};
+
 constexpr int kCleanupSlots = 32;
 int cleanup_register(const char* path);
 void cleanup_unregister(int slot);

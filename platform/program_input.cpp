@@ -116,12 +116,15 @@ bool ProgramInput::copy(int in, std::string* err) {
   const char* tmpdir = std::getenv("TMPDIR");
   const std::string dir = tmpdir && *tmpdir ? tmpdir : "/tmp";
   remove_stale_temps(dir, kSpoolPrefix);  // what killed runs left (platform/temp_file.h)
-  if (!make_locked_temp(dir, kSpoolPrefix, 0600, &spool_)) {
-    *err = "cannot keep " + describe(path_) + " in '" + dir + "/" + kSpoolPrefix + "...': " + std::strerror(errno);
-    return false;
+  {
+    const StopSignalsHeld held;  // no signal between the spool's creation and its registration
+    if (!make_locked_temp(dir, kSpoolPrefix, 0600, &spool_)) {
+      *err = "cannot keep " + describe(path_) + " in '" + dir + "/" + kSpoolPrefix + "...': " + std::strerror(errno);
+      return false;
+    }
+    cleanup_slot_ = cleanup_register(spool_.path.c_str());
   }
   read_path_ = spool_.path;
-  cleanup_slot_ = cleanup_register(spool_.path.c_str());
   SpoolSource src(in, spool_.fd, limit_);
   std::unique_ptr<char[]> buf(new char[kChunk]);
   LineReader reader(buf.get(), kChunk);

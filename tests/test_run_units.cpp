@@ -2,6 +2,7 @@
 // (core/motion/units_guess.h, core/sim/tool_units.h): the warnings at the
 // first move, counted in the summary and listed in the report, and
 // --tool-units. The programs are written here.
+#include <algorithm>
 #include <string>
 
 #include "tests/run_cli_util.h"
@@ -89,7 +90,9 @@ TEST(run_units_set_or_given_warn_nothing) {
   }
   const Result c = run_command("check " + tmp_dir() + "/u_g20.ngc");
   CHECK_EQ(c.code, 0);
-  CHECK_EQ(c.err, std::string());
+  CHECK(has(c.err, "u_g20.ngc: ok, 9 blocks, 0 warnings"));  // check's one line, and nothing else
+  CHECK(c.err.find(": warning") == std::string::npos);
+  CHECK_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1);
 }
 
 TEST(run_units_tool_table_in_the_programs_units) {
