@@ -115,7 +115,7 @@ const Option<View> kView[] = {
     {"--frame-status", nullptr,
      "the live views' status line (line, X Y Z, feed, tool, time) in a strip under every --frames picture",
      [](View* o, const char*) -> int { return o->frame_status = true, kExitOk; }},
-    {"--hide-tool", nullptr, "the final --image without the cutter (frames and live views keep it)",
+    {"--hide-tool", nullptr, "the final --image and --error-image without the cutter (frames and live views keep it)",
      [](View* o, const char*) -> int { return o->hide_tool = true, kExitOk; }},
     {"--quiet", nullptr, "no progress bar", [](View* o, const char*) -> int { return o->quiet = true, kExitOk; }, "-q"},
 };
