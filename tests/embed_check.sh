@@ -2,8 +2,8 @@
 # embed_check.sh - the example embedder (tools/examples/embed.c: the C API,
 # 4 KB pieces, a few moves a step, incremental redraws) writes the PPM that
 # `dexmill run --image` writes for the same program, stock, tool, grid and
-# size, byte for byte (the CLI's axis triad and scale bar left out: the
-# API's views draw none). `make test` runs it.
+# size, byte for byte (the CLI's axis triad and scale bar left out: embed.c
+# leaves the API's decorations off). `make test` runs it.
 #
 # Usage: tests/embed_check.sh DEXMILL EMBED   (from the repository root)
 # Exit: 0 every case identical, 1 otherwise.
