@@ -45,6 +45,18 @@ void draw_marks(StockView* v, RenderResult* res) {
   }
 }
 
+// The box the initial camera frames: the stock and the fixtures beside it.
+BoxNm framed_box(const StockView& v) { return fixtures_box(renderer_stock_box(v.r), v.fixtures, v.nfixtures); }
+
+// Where the decorations go in this view; empty when they are off or would
+// cover the framed box (the part is never hidden: a thumbnail too small to
+// hold both shows the part alone).
+ScreenRect decorations_place(const StockView& v, const View& view, const ScreenRect& area) {
+  if (!v.decorations) return ScreenRect{0, 0, 0, 0};
+  const ScreenRect deco = decorations_rect(v.fb, view, renderer_stock_box(v.r), area);
+  return box_outline_meets(view, framed_box(v), deco) ? ScreenRect{0, 0, 0, 0} : deco;
+}
+
 bool legend_has_captions(const ViewLegend* l) { return l && !l->named && (l->low_caption[0] || l->high_caption[0]); }
 
 void draw_legend(StockView* v, RenderResult* res) {
@@ -175,8 +187,9 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   if (path) draw_path(v, &res);
   draw_marks(v, &res);
   if (v->legend) draw_legend(v, &res);
-  if (v->decorations)
-    add_rect(&res, decorations_draw(v->fb, v->r.view, renderer_stock_box(v->r), stock_view_picture_area(*v)));
+  const ScreenRect area = stock_view_picture_area(*v);
+  if (!decorations_place(*v, v->r.view, area).empty())
+    add_rect(&res, decorations_draw(v->fb, v->r.view, renderer_stock_box(v->r), area));
   return res;
 }
 
@@ -202,7 +215,7 @@ void stock_view_set_camera(StockView* v, const Camera& c) {
 Camera stock_view_initial_camera(const StockView& v) {
   // The stock and the fixtures beside it (a clamp cut off at the frame's
   // edge hides what the check found there).
-  const BoxNm box = fixtures_box(renderer_stock_box(v.r), v.fixtures, v.nfixtures);
+  const BoxNm box = framed_box(v);
   const CameraChoice& ch = v.choice;
   Camera c = camera_preset(ch.angles ? ViewPreset::kIso : ch.preset);
   if (ch.angles) {
@@ -213,13 +226,14 @@ Camera stock_view_initial_camera(const StockView& v) {
   camera_fit_inside(&c, box, v.fb.width, v.fb.height, area);
   if (!v.decorations) return c;
   // Decorations in a corner the stock reaches (a top view of a wide stock):
-  // the stock framed above them instead.
+  // the stock framed above them instead, when that leaves it at least 60 %
+  // of the height (else the decorations give way: decorations_place).
   View view;
   view_build(c, v.r.scene, v.fb.width, v.fb.height, &view);
   const ScreenRect deco = decorations_rect(v.fb, view, renderer_stock_box(v.r), area);
-  if (!box_outline_meets(view, box, deco)) return c;
+  if (!box_outline_meets(view, box, deco) || (deco.y0 - area.y0) * 5 < (area.y1 - area.y0) * 3) return c;
   ScreenRect above = area;
-  above.y1 = max_of(area.y0 + 1, deco.y0);
+  above.y1 = deco.y0;
   camera_fit_inside(&c, box, v.fb.width, v.fb.height, above);
   return c;
 }

@@ -112,7 +112,8 @@ void stock_view_set_colours(StockView* v, const SurfaceColours* c);
 // again.
 void stock_view_set_legend(StockView* v, const ViewLegend* l);
 // The axis triad and the scale bar in the picture's bottom-left corner (off
-// after init); the camera is fitted again, clear of them, and the next
+// after init), drawn in every view where they do not cover the stock and
+// its fixtures; the camera is fitted again, clear of them, and the next
 // frame is drawn whole.
 void stock_view_set_decorations(StockView* v, bool on);
 // The part of the frame the picture has to itself: all of it, less the
@@ -149,8 +150,9 @@ inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
 void stock_view_set_camera(StockView* v, const Camera& c);
 // The chosen camera fitted to the stock and the fixtures, inside the
 // picture's area (stock_view_picture_area) with a margin and, with
-// decorations on, above them when they would cover it: the tool may be cut
-// off at the frame's edge, the stock never is.
+// decorations on, above them when they would cover it and that leaves the
+// stock 60 % of the height (else they are not drawn while they would cover
+// it): the tool may be cut off at the frame's edge, the stock never is.
 Camera stock_view_initial_camera(const StockView& v);
 // Another choice, taken as the camera now.
 void stock_view_choose_camera(StockView* v, const CameraChoice& cam);

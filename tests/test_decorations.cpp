@@ -373,3 +373,53 @@ TEST(legend_captions_say_which_end_is_a_gouge) {
   CHECK_GT(last_ink, 4 * s + left_w + font_text_width(10, s));
   CHECK_LT(last_ink, 640);
 }
+
+TEST(legend_captions_shorten_on_narrow_frames) {
+  // 160 wide: "gouge" without its bracket, then "material left", apart;
+  // 60 wide: no room for both, no captions (rather than overlapping ones).
+  const char* caps[2] = {"gouge (cut below the design)", "material left"};
+  const Rgb colour[3] = {{200, 30, 30}, {250, 250, 250}, {30, 160, 60}};
+  const char* labels[2] = {"-0.05", "+0.05"};
+  for (int32_t w : {160, 60}) {
+    std::vector<uint32_t> px(static_cast<size_t>(w) * 120, 0), want(px.size(), 0);
+    const FrameView fb{px.data(), w, 120, w * 4, PixelFormat::kXrgb8888};
+    const FrameView ft{want.data(), w, 120, w * 4, PixelFormat::kXrgb8888};
+    legend_draw(fb, colour, 3, labels, "MM", caps[0], caps[1]);
+    const int32_t y = legend_rect(fb, true).y0 + 2;  // scale 1
+    frame_fill(ft, ScreenRect{0, 0, w, 120}, pixel_pack(ft.format, Rgb{24, 28, 36}));
+    if (w == 160) {
+      font_draw(ft, 4, y, "gouge", 5, pixel_pack(ft.format, Rgb{230, 232, 236}), 1);
+      // Ending where "gouge material left" would (wider than the swatches' 3 x 36).
+      const int32_t right = 4 + font_text_width(5 + 13 + 1, 1);
+      font_draw(ft, right - font_text_width(13, 1) + 1, y, caps[1], 13, pixel_pack(ft.format, Rgb{230, 232, 236}), 1);
+    }
+    int differ = 0;
+    for (int32_t yy = y; yy < y + kFontCellH; ++yy)
+      for (int32_t x = 0; x < w; ++x) differ += frame_pixel(fb, x, yy) != frame_pixel(ft, x, yy);
+    CHECK_EQ(differ, 0);
+  }
+}
+
+TEST(decorations_give_way_on_a_thumbnail) {
+  // A top view of a wide block in 64 x 48 pixels: framing above the
+  // decorations would leave the stock a sliver, so they are left out and
+  // the stock fills the picture; at 640 x 480 they are drawn below it.
+  for (int32_t w : {64, 640}) {
+    const int32_t h = w * 3 / 4;
+    ViewCase with, without;
+    CameraChoice cam;
+    cam.preset = ViewPreset::kTop;
+    CHECK(with.init(200, 140, 20 * mm, w, h, cam));
+    CHECK(without.init(200, 140, 20 * mm, w, h, cam));
+    stock_view_set_legend(with.view.get(), nullptr);
+    stock_view_set_legend(without.view.get(), nullptr);
+    stock_view_set_decorations(without.view.get(), false);
+    stock_view_draw(with.view.get(), &with.grid.g, CutterPose{});
+    stock_view_draw(without.view.get(), &without.grid.g, CutterPose{});
+    const bool same = frame_hash(with.frame.fb) == frame_hash(without.frame.fb);
+    CHECK_EQ(same, w == 64);
+    const ScreenRect r = box_outline_bounds(with.view->r.view, renderer_stock_box(with.view->r));
+    CHECK_GE(static_cast<double>(r.x1 - r.x0) / w, w == 64 ? 0.88 : 0.6);
+    CHECK_LE(r.y1, h);
+  }
+}
