@@ -26,13 +26,29 @@ ScreenRect legend_rect(const FrameView& fb, bool captions) {
 
 namespace {
 
+// The length of s up to its first " (", if it has one: the words before a
+// bracketed explanation.
+size_t before_bracket(const char* s, size_t n) {
+  for (size_t k = 0; k + 1 < n; ++k)
+    if (s[k] == ' ' && s[k + 1] == '(') return k;
+  return n;
+}
+
 // The captions' row: low from the left end, high ending at the right end
-// (or at the frame's edge, whichever is nearer).
+// (or at the frame's edge, whichever is nearer). Too wide for the row, at
+// scale 1 then with their bracketed explanations left out; still too wide,
+// none.
 void draw_captions(const FrameView& fb, int32_t x0, int32_t x1, int32_t y, const char* low, const char* high,
                    uint32_t ink, int32_t s) {
-  const size_t nl = low ? text_length(low) : 0, nh = high ? text_length(high) : 0;
+  size_t nl = low ? text_length(low) : 0, nh = high ? text_length(high) : 0;
+  const int32_t room = fb.width - 2 * x0;
   int32_t cs = s;
-  if (cs > 1 && font_text_width(nl + nh + 1, cs) > fb.width - 2 * x0) cs = 1;
+  if (cs > 1 && font_text_width(nl + nh + 1, cs) > room) cs = 1;
+  if (font_text_width(nl + nh + 1, cs) > room) {
+    nl = nl ? before_bracket(low, nl) : 0;
+    nh = nh ? before_bracket(high, nh) : 0;
+  }
+  if (font_text_width(nl + nh + 1, cs) > room) return;
   const int32_t right = min_of(max_of(x1, x0 + font_text_width(nl + nh + 1, cs)), fb.width - x0);
   const int32_t dy = (kFontCellH * s - kFontCellH * cs) / 2;
   if (nl) font_draw(fb, x0, y + dy, low, nl, ink, cs);

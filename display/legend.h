@@ -27,7 +27,8 @@ ScreenRect legend_rect(const FrameView& fb, bool captions = false);
 // what the ends mean: low_caption from the left end, high_caption up to the
 // right end (the error view: "gouge (cut below the design)" over the reds,
 // "material left" over the greens); on a frame too narrow for both on one
-// row at the legend's scale they are drawn at scale 1.
+// row at the legend's scale they are drawn at scale 1, then without their
+// bracketed explanations ("gouge"), then not at all.
 void legend_draw(const FrameView& fb, const Rgb* colour, int32_t n, const char* const* labels, const char* title,
                  const char* low_caption = nullptr, const char* high_caption = nullptr);
 
