@@ -100,12 +100,22 @@ bool view_preset_from_name(const char* name, ViewPreset* out) {
 }
 
 void camera_fit(Camera* c, const BoxNm& box, int32_t width, int32_t height) {
+  camera_fit_inside(c, box, width, height, ScreenRect{0, 0, width, height});
+}
+
+void camera_fit_inside(Camera* c, const BoxNm& box, int32_t width, int32_t height, const ScreenRect& inside) {
   c->elevation_bam = clamp_elevation(c->elevation_bam);
   c->target = box_centre(box);
   const Basis b = basis_of(c->azimuth_bam, c->elevation_bam);
   const int64_t half[3] = {(box.hi.x_nm - box.lo.x_nm) / 2, (box.hi.y_nm - box.lo.y_nm) / 2,
                            (box.hi.z_nm - box.lo.z_nm) / 2};
   const int64_t w = max_of<int64_t>(width, 1), h = max_of<int64_t>(height, 1);
+  const ScreenRect in = rect_intersect(inside, ScreenRect{0, 0, static_cast<int32_t>(w), static_cast<int32_t>(h)});
+  const bool whole = in.x0 == 0 && in.y0 == 0 && in.x1 == w && in.y1 == h;
+  const int64_t iw = max_of<int64_t>(in.x1 - in.x0, 1), ih = max_of<int64_t>(in.y1 - in.y0, 1);
+  // Inside's centre from the frame's, in half pixels (x right, y down).
+  const int64_t off2[2] = {in.empty() ? 0 : in.x0 + in.x1 - w, in.empty() ? 0 : in.y0 + in.y1 - h};
+  int64_t nm_per_px_num = 0, nm_per_px_den = 1;  // the scale at the target, for the shift
   if (c->projection == Projection::kOrthographic) {
     // Half-extents of the box's projection along screen right and up.
     int64_t hr = 0, hu = 0;
@@ -113,18 +123,36 @@ void camera_fit(Camera* c, const BoxNm& box, int32_t width, int32_t height) {
       hr += muldiv_round(half[k], abs_u64(b.r[k]), kOneQ30);
       hu += muldiv_round(half[k], abs_u64(b.u[k]), kOneQ30);
     }
-    const int64_t need = max_of(2 * hu, muldiv_round(2 * hr, h, w));
+    const int64_t need = max_of(muldiv_round(2 * hu, h, ih), muldiv_round(2 * hr, h, iw));
     c->view_height_nm = max_of<int64_t>(1, muldiv_round(need, 105, 100));
-    return;
+    nm_per_px_num = c->view_height_nm;
+    nm_per_px_den = h;
+  } else {
+    if (c->fov_bam == 0 || c->fov_bam >= kBamHalfTurn) c->fov_bam = kBamDeg40;
+    const SinCosQ30 v = sincos_bam(c->fov_bam / 2);
+    // The narrower of the vertical and horizontal half-angles (of inside:
+    // its half-sides seen from the eye, the focal length (h / 2) cos / sin).
+    uint32_t half_angle = c->fov_bam / 2;
+    if (whole) {
+      if (w < h) half_angle = atan2_bam(static_cast<int64_t>(v.sin_q30) * w, static_cast<int64_t>(v.cos_q30) * h);
+    } else {
+      half_angle = atan2_bam(static_cast<int64_t>(v.sin_q30) * min_of(iw, ih), static_cast<int64_t>(v.cos_q30) * h);
+    }
+    const SinCosQ30 s = sincos_bam(half_angle);
+    const int64_t radius = length3(half[0], half[1], half[2]);
+    c->distance_nm = max_of<int64_t>(1, muldiv_round(radius, static_cast<int64_t>(105) * kOneQ30, 100 * static_cast<int64_t>(max_of<int32_t>(s.sin_q30, 1))));
+    // nm per pixel at the target: distance / focal = distance sin / ((h / 2) cos).
+    nm_per_px_num = muldiv_round(c->distance_nm, 2 * static_cast<int64_t>(v.sin_q30), max_of<int32_t>(v.cos_q30, 1));
+    nm_per_px_den = h;
   }
-  if (c->fov_bam == 0 || c->fov_bam >= kBamHalfTurn) c->fov_bam = kBamDeg40;
-  const SinCosQ30 v = sincos_bam(c->fov_bam / 2);
-  // The narrower of the vertical and horizontal half-angles.
-  uint32_t half_angle = c->fov_bam / 2;
-  if (w < h) half_angle = atan2_bam(static_cast<int64_t>(v.sin_q30) * w, static_cast<int64_t>(v.cos_q30) * h);
-  const SinCosQ30 s = sincos_bam(half_angle);
-  const int64_t radius = length3(half[0], half[1], half[2]);
-  c->distance_nm = max_of<int64_t>(1, muldiv_round(radius, static_cast<int64_t>(105) * kOneQ30, 100 * static_cast<int64_t>(max_of<int32_t>(s.sin_q30, 1))));
+  if (off2[0] == 0 && off2[1] == 0) return;
+  // T = C - a r - b u puts C at inside's centre: a = offset x, b = -offset y
+  // (screen y points down), in nm at the target.
+  const int64_t a = muldiv_round(off2[0], nm_per_px_num, 2 * nm_per_px_den);
+  const int64_t bu = -muldiv_round(off2[1], nm_per_px_num, 2 * nm_per_px_den);
+  c->target.x_nm -= muldiv_round(a, b.r[0], kOneQ30) + muldiv_round(bu, b.u[0], kOneQ30);
+  c->target.y_nm -= muldiv_round(a, b.r[1], kOneQ30) + muldiv_round(bu, b.u[1], kOneQ30);
+  c->target.z_nm -= muldiv_round(a, b.r[2], kOneQ30) + muldiv_round(bu, b.u[2], kOneQ30);
 }
 
 void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32_t height, View* v) {

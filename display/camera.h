@@ -15,6 +15,7 @@
 
 #include "core/point.h"
 #include "display/clip.h"
+#include "display/framebuffer.h"
 
 namespace dexmill {
 
@@ -42,6 +43,13 @@ bool view_preset_from_name(const char* name, ViewPreset* out);
 // distance (perspective, with a 40 deg field of view when none is set) so the
 // whole box fits the frame with a 5 % margin. Keeps the direction.
 void camera_fit(Camera* c, const BoxNm& box, int32_t width, int32_t height);
+// The same, fitting the box into `inside` (a part of the frame, e.g. above
+// a legend): the zoom from inside's size, the target moved so the box's
+// centre lands on inside's centre. The whole frame gives camera_fit's
+// camera exactly. Orthographic: the box's projection lies inside with the
+// margin (tests/test_camera.cpp); perspective: its bounding sphere, up to
+// the sphere's off-axis widening.
+void camera_fit_inside(Camera* c, const BoxNm& box, int32_t width, int32_t height, const ScreenRect& inside);
 
 // out_k = (m[k][0]*in_0 + m[k][1]*in_1 + m[k][2]*in_2 + c[k]) >> 32 (c holds
 // half a unit, so this rounds to nearest). Orthographic screen positions of

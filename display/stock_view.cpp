@@ -2,6 +2,8 @@
 #include "display/stock_view.h"
 
 #include "core/math/fixed.h"
+#include "display/box_outline.h"
+#include "display/decorations.h"
 #include "display/marker.h"
 
 namespace dexmill {
@@ -43,13 +45,28 @@ void draw_marks(StockView* v, RenderResult* res) {
   }
 }
 
+// The box the initial camera frames: the stock and the fixtures beside it.
+BoxNm framed_box(const StockView& v) { return fixtures_box(renderer_stock_box(v.r), v.fixtures, v.nfixtures); }
+
+// Where the decorations go in this view; empty when they are off or would
+// cover the framed box (the part is never hidden: a thumbnail too small to
+// hold both shows the part alone).
+ScreenRect decorations_place(const StockView& v, const View& view, const ScreenRect& area) {
+  if (!v.decorations) return ScreenRect{0, 0, 0, 0};
+  const ScreenRect deco = decorations_rect(v.fb, view, renderer_stock_box(v.r), area);
+  return box_outline_meets(view, framed_box(v), deco) ? ScreenRect{0, 0, 0, 0} : deco;
+}
+
+bool legend_has_captions(const ViewLegend* l) { return l && !l->named && (l->low_caption[0] || l->high_caption[0]); }
+
 void draw_legend(StockView* v, RenderResult* res) {
   const ViewLegend& l = *v->legend;
   const char* labels[kLegendMaxSwatches];
   for (int32_t k = 0; k < l.n && k < kLegendMaxSwatches; ++k) labels[k] = l.labels[k];
   if (l.named) legend_draw_named(v->fb, l.colour, l.n, labels);
-  else legend_draw(v->fb, l.colour, l.n, labels, l.title);
-  add_rect(res, legend_rect(v->fb));
+  else legend_draw(v->fb, l.colour, l.n, labels, l.title, l.low_caption[0] ? l.low_caption : nullptr,
+                   l.high_caption[0] ? l.high_caption : nullptr);
+  add_rect(res, legend_rect(v->fb, legend_has_captions(&l)));
 }
 
 }  // namespace
@@ -97,7 +114,24 @@ void stock_view_set_colours(StockView* v, const SurfaceColours* c) {
   renderer_set_colours(&v->r, c);
 }
 
-void stock_view_set_legend(StockView* v, const ViewLegend* l) { v->legend = l; }
+void stock_view_set_legend(StockView* v, const ViewLegend* l) {
+  v->legend = l;
+  const bool rows = legend_has_captions(l);
+  if ((l != nullptr) == v->legend_fitted && rows == v->legend_rows) return;
+  stock_view_set_camera(v, stock_view_initial_camera(*v));  // framed above it
+}
+
+void stock_view_set_decorations(StockView* v, bool on) {
+  if (on == v->decorations) return;
+  v->decorations = on;
+  stock_view_set_camera(v, stock_view_initial_camera(*v));  // framed clear of them
+}
+
+ScreenRect stock_view_picture_area(const StockView& v) {
+  ScreenRect a{0, 0, v.fb.width, v.fb.height};
+  if (v.legend) a.y1 = legend_rect(v.fb, legend_has_captions(v.legend)).y0;
+  return a;
+}
 
 void stock_view_set_marks(StockView* v, const ViewMarks* lists, int32_t n) {
   v->marks = n > 0 ? lists : nullptr;
@@ -153,6 +187,9 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   if (path) draw_path(v, &res);
   draw_marks(v, &res);
   if (v->legend) draw_legend(v, &res);
+  const ScreenRect area = stock_view_picture_area(*v);
+  if (!decorations_place(*v, v->r.view, area).empty())
+    add_rect(&res, decorations_draw(v->fb, v->r.view, renderer_stock_box(v->r), area));
   return res;
 }
 
@@ -169,19 +206,35 @@ void stock_view_share_frame(StockView* v, const StockView& other) {
   renderer_set_camera(&v->r, stock_view_camera(other));
 }
 
-void stock_view_set_camera(StockView* v, const Camera& c) { renderer_set_camera(&v->r, c); }
+void stock_view_set_camera(StockView* v, const Camera& c) {
+  renderer_set_camera(&v->r, c);
+  v->legend_fitted = v->legend != nullptr;
+  v->legend_rows = legend_has_captions(v->legend);
+}
 
 Camera stock_view_initial_camera(const StockView& v) {
   // The stock and the fixtures beside it (a clamp cut off at the frame's
   // edge hides what the check found there).
-  const BoxNm box = fixtures_box(renderer_stock_box(v.r), v.fixtures, v.nfixtures);
+  const BoxNm box = framed_box(v);
   const CameraChoice& ch = v.choice;
   Camera c = camera_preset(ch.angles ? ViewPreset::kIso : ch.preset);
   if (ch.angles) {
     c.azimuth_bam = ch.azimuth_bam;
     c.elevation_bam = ch.elevation_bam;
   }
-  camera_fit(&c, box, v.fb.width, v.fb.height);
+  const ScreenRect area = stock_view_picture_area(v);
+  camera_fit_inside(&c, box, v.fb.width, v.fb.height, area);
+  if (!v.decorations) return c;
+  // Decorations in a corner the stock reaches (a top view of a wide stock):
+  // the stock framed above them instead, when that leaves it at least 60 %
+  // of the height (else the decorations give way: decorations_place).
+  View view;
+  view_build(c, v.r.scene, v.fb.width, v.fb.height, &view);
+  const ScreenRect deco = decorations_rect(v.fb, view, renderer_stock_box(v.r), area);
+  if (!box_outline_meets(view, box, deco) || (deco.y0 - area.y0) * 5 < (area.y1 - area.y0) * 3) return c;
+  ScreenRect above = area;
+  above.y1 = deco.y0;
+  camera_fit_inside(&c, box, v.fb.width, v.fb.height, above);
   return c;
 }
 

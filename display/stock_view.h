@@ -53,6 +53,10 @@ struct ViewLegend {
   char labels[kLegendMaxSwatches][kViewLabelBytes];
   char title[kViewLabelBytes];
   bool named = false;
+  // Limits only: what the ends mean, in a row above (display/legend.h;
+  // empty: none).
+  char low_caption[kViewLabelBytes] = {};
+  char high_caption[kViewLabelBytes] = {};
 };
 
 // Points marked in one colour over every frame (display/marker.h).
@@ -72,6 +76,9 @@ struct StockView {
   GridRect pending = GridRect::none();  // grid changes not drawn yet
   const SurfaceColours* colours = nullptr;
   const ViewLegend* legend = nullptr;
+  bool legend_rows = false;  // the camera was fitted above a legend with captions...
+  bool legend_fitted = false;  // ... or above one without
+  bool decorations = false;  // the axis triad and the scale bar (display/decorations.h)
   const ViewMarks* marks = nullptr;
   int32_t nmarks = 0;
   const BoxNm* fixtures = nullptr;
@@ -100,8 +107,18 @@ Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const Frame
 void stock_view_set_tool(StockView* v, const Tool& t);
 // A colour mode (null: the workpiece colour), kept across resizes.
 void stock_view_set_colours(StockView* v, const SurfaceColours* c);
-// Drawn over every frame (null: none).
+// Drawn over every frame (null: none). The initial camera frames the stock
+// above it: a legend that comes, goes or gains captions fits the camera
+// again.
 void stock_view_set_legend(StockView* v, const ViewLegend* l);
+// The axis triad and the scale bar in the picture's bottom-left corner (off
+// after init), drawn in every view where they do not cover the stock and
+// its fixtures; the camera is fitted again, clear of them, and the next
+// frame is drawn whole.
+void stock_view_set_decorations(StockView* v, bool on);
+// The part of the frame the picture has to itself: all of it, less the
+// legend's strip.
+ScreenRect stock_view_picture_area(const StockView& v);
 // lists[0, n) of marks drawn over every frame, in order.
 void stock_view_set_marks(StockView* v, const ViewMarks* lists, int32_t n);
 // Boxes drawn in every frame (at most kFixturesMax); the camera is framed
@@ -131,7 +148,11 @@ DepthView stock_view_depth(const StockView& v);
 void stock_view_share_frame(StockView* v, const StockView& other);
 inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
 void stock_view_set_camera(StockView* v, const Camera& c);
-// The chosen camera fitted to the stock and the fixtures.
+// The chosen camera fitted to the stock and the fixtures, inside the
+// picture's area (stock_view_picture_area) with a margin and, with
+// decorations on, above them when they would cover it and that leaves the
+// stock 60 % of the height (else they are not drawn while they would cover
+// it): the tool may be cut off at the frame's edge, the stock never is.
 Camera stock_view_initial_camera(const StockView& v);
 // Another choice, taken as the camera now.
 void stock_view_choose_camera(StockView* v, const CameraChoice& cam);

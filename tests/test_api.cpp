@@ -496,3 +496,30 @@ TEST(api_views_redraw_incrementally_without_heap) {
     a.sim = nullptr;
   }
 }
+
+// dm_view_set_decorations: the triad and scale bar in the bottom-left
+// corner only (an iso view of this stock leaves the corner free, so the
+// framing stays), and gone again when turned off.
+TEST(api_view_decorations_in_their_corner) {
+  Api a(pocket_job());
+  Frame plain(a.sim, 320, 240, DM_XRGB8888, 0), deco(a.sim, 320, 240, DM_XRGB8888, 0);
+  CHECK_EQ(dm_view_set_decorations(nullptr, 1), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_set_decorations(deco.view, 1), DM_OK);
+  CHECK_EQ(a.run(pocket_text(), 4096), DM_DONE);
+  dm_rect r[DM_RECTS_MAX];
+  int32_t n = 0;
+  CHECK_EQ(dm_render(plain.view, r, DM_RECTS_MAX, &n), DM_OK);
+  CHECK_EQ(dm_render(deco.view, r, DM_RECTS_MAX, &n), DM_OK);
+  int differ = 0, outside = 0;
+  for (int32_t y = 0; y < 240; ++y)
+    for (int32_t x = 0; x < 320; ++x) {
+      const bool d = std::memcmp(&plain.pixels[(y * 320 + x) * 4], &deco.pixels[(y * 320 + x) * 4], 4) != 0;
+      differ += d;
+      outside += d && !(x < 160 && y >= 170);
+    }
+  CHECK_GT(differ, 300);
+  CHECK_EQ(outside, 0);
+  CHECK_EQ(dm_view_set_decorations(deco.view, 0), DM_OK);
+  CHECK_EQ(dm_render(deco.view, r, DM_RECTS_MAX, &n), DM_OK);
+  CHECK(deco.pixels == plain.pixels);
+}

@@ -16,7 +16,8 @@ namespace {
 
 using namespace run_cli;
 
-// The legend's strip at the frames' 240 rows (scale 1): left out of counts.
+// The legend's strip at the frames' 240 rows (scale 1): left out of counts
+// (and the axis triad's red X: the runs say --no-decorations).
 constexpr int kLegendRows = 24;
 
 using Pixels = std::vector<unsigned char>;
@@ -45,7 +46,7 @@ TEST(tool_colour_mode_gives_each_tool_its_colour) {
   if (skip()) return;
   const std::string prog = write_tmp("two_tools.ngc", kTwoTools);
   const std::string table = write_tmp("two_tools.tbl", "T1 P1 D6 ;flat:6\nT2 P2 D6 ;ball:6\n");
-  const std::string base = prog + " --tools " + table + " --stock 0,0,-10,40,40,0 --pitch 0.25 --view top --size 320x240 -q ";
+  const std::string base = prog + " --tools " + table + " --stock 0,0,-10,40,40,0 --pitch 0.25 --view top --size 320x240 -q --no-decorations ";
   Result r = run(base + "--color tool --image " + tmp_dir() + "/tool.ppm");
   CHECK_EQ(r.code, 0);
   const Pixels tool = frame(tmp_dir() + "/tool.ppm");
@@ -68,7 +69,7 @@ TEST(thin_colour_mode_marks_thin_floors_only) {
     const std::string prog = write_tmp(name, (std::string("G21 G90\nM3 S12000\nG0 X20 Y20 Z5\nG1 Z") + depth +
                                               " F300\nG0 Z5\nG0 X-40 Y-40\nM2\n").c_str());
     const std::string img = tmp_dir() + "/" + name + ".ppm";
-    CHECK_EQ(run(prog + " --stock 0,0,-6,40,40,0 --pitch 0.25 --tool flat:12 --view top --size 320x240 -q " + opts +
+    CHECK_EQ(run(prog + " --stock 0,0,-6,40,40,0 --pitch 0.25 --tool flat:12 --view top --size 320x240 -q --no-decorations " + opts +
                  " --image " + img).code, 0);
     return frame(img);
   };
@@ -91,7 +92,7 @@ TEST(thin_colour_mode_marks_thin_floors_only) {
 TEST(slope_colour_mode_puts_a_45_degree_groove_in_the_steep_band) {
   if (skip()) return;
   const std::string prog = write_tmp("groove.ngc", "G21 G90\nM3 S12000\nG0 X-8 Y20 Z5\nG1 Z-4 F300\nG1 X48 F1000\nG0 Z5\nG0 X-40 Y-40\nM2\n");
-  const std::string base = prog + " --stock 0,0,-10,40,40,0 --pitch 0.2 --tool vbit:12:90 --view top --size 320x240 -q ";
+  const std::string base = prog + " --stock 0,0,-10,40,40,0 --pitch 0.2 --tool vbit:12:90 --view top --size 320x240 -q --no-decorations ";
   CHECK_EQ(run(base + "--color slope --image " + tmp_dir() + "/slope.ppm").code, 0);
   CHECK_EQ(run(base + "--image " + tmp_dir() + "/slope_plain.ppm").code, 0);
   const Pixels slope = frame(tmp_dir() + "/slope.ppm"), plain = frame(tmp_dir() + "/slope_plain.ppm");

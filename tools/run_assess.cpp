@@ -195,6 +195,8 @@ void error_view_init(const DexelGrid<height_t>& g, RunDesign* d) {
   const int64_t limits[6] = {-kBandStep3 * t, -kBandStep2 * t, -t, t, kBandStep2 * t, kBandStep3 * t};
   for (int k = 0; k < 6; ++k) l.labels[k] = signed_mm(limits[k]);
   l.title = "MM";
+  l.low_caption = "gouge (cut below the design)";
+  l.high_caption = "material left";
 }
 
 }  // namespace cli

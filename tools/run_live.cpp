@@ -49,19 +49,29 @@ constexpr int64_t kElevationLimitBam = 0x3fffffff;  // just under 90 degrees
 constexpr int32_t kBamPerPixel = 5965232;  // 0.5 degree: a drag across 720 pixels turns once
 
 int32_t band_scale(int32_t width) { return width >= 960 ? 2 : 1; }  // the status line fits up to 80 cells
-int32_t band_height(int32_t scale) { return kFontCellH * scale + 4; }
 
 }  // namespace
+
+int32_t status_band_height(int32_t width) { return kFontCellH * band_scale(width) + 4; }
+
+ScreenRect status_band_draw(const FrameView& all, int32_t band_h, const std::string& text) {
+  const int32_t scale = band_scale(all.width);
+  const ScreenRect band{0, all.height - band_h, all.width, all.height};
+  frame_fill(all, band, pixel_pack(all.format, Rgb{24, 28, 36}));
+  font_draw(all, 2 * scale, band.y0 + 2, text.data(), text.size(), pixel_pack(all.format, Rgb{230, 232, 236}), scale);
+  return band;
+}
 
 std::string status_text(const LiveStatus& s, int64_t speed_milli, bool paused, bool done) {
   char b[256];
   const int64_t sec = s.sim_us / 1000000;
   const std::string x = nm_to_mm_text(s.pos.x_nm, 3), y = nm_to_mm_text(s.pos.y_nm, 3), z = nm_to_mm_text(s.pos.z_nm, 3);
-  std::snprintf(b, sizeof b, "line %u X%s Y%s Z%s F%lld T%d %s %lld:%02lld:%02lld x%s%s", static_cast<unsigned>(s.line),
+  const std::string speed =
+      speed_milli > 0 ? " x" + nm_to_mm_text(speed_milli * 1000, 3 - (speed_milli >= 10000 ? 3 : 0)) : std::string();
+  std::snprintf(b, sizeof b, "line %u X%s Y%s Z%s F%lld T%d %s %lld:%02lld:%02lld%s%s", static_cast<unsigned>(s.line),
                 x.c_str(), y.c_str(), z.c_str(), static_cast<long long>(div_round(s.feed_nm_per_min, kNmPerMm)),
                 static_cast<int>(s.tool), s.tool_spec.c_str(), static_cast<long long>(sec / 3600),
-                static_cast<long long>(sec / 60 % 60), static_cast<long long>(sec % 60),
-                nm_to_mm_text(speed_milli * 1000, 3 - (speed_milli >= 10000 ? 3 : 0)).c_str(),
+                static_cast<long long>(sec / 60 % 60), static_cast<long long>(sec % 60), speed.c_str(),
                 done ? " DONE" : (paused ? " PAUSED" : ""));
   return b;
 }
@@ -83,8 +93,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
       return kExitUsage;
     }
     std::unique_ptr<WindowScreen> ws(new WindowScreen());
-    scale_ = band_scale(o.view.width);
-    if (!ws->window.open(o.view.width, o.view.height + band_height(scale_), "dexmill")) {
+    if (!ws->window.open(o.view.width, o.view.height + status_band_height(o.view.width), "dexmill")) {
       *err = ws->window.error();
       return kExitIo;
     }
@@ -99,8 +108,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
   }
   interactive_ = screen_->interactive();
   FrameView all = screen_->screen().frame();
-  scale_ = band_scale(all.width);
-  band_h_ = band_height(scale_);
+  band_h_ = status_band_height(all.width);
   if (all.height <= band_h_ + 16) {
     *err = "the screen is too small for the picture and its status line";
     return kExitIo;
@@ -115,8 +123,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
 
 void LiveView::layout(const DexelGrid<height_t>& g) {
   FrameView all = screen_->screen().frame();
-  scale_ = band_scale(all.width);
-  band_h_ = band_height(scale_);
+  band_h_ = status_band_height(all.width);
   FrameView pic = all;
   pic.height = max_of<int32_t>(1, all.height - band_h_);
   std::string err;
@@ -129,11 +136,7 @@ void LiveView::layout(const DexelGrid<height_t>& g) {
 bool LiveView::frame(DexelGrid<height_t>* g, const CutterPose& pose, const LiveStatus& st, bool done, bool) {
   if (before_draw_) before_draw_();
   RenderResult res = out_.draw(g, pose);
-  FrameView all = screen_->screen().frame();
-  const ScreenRect band{0, all.height - band_h_, all.width, all.height};
-  frame_fill(all, band, pixel_pack(all.format, Rgb{24, 28, 36}));
-  const std::string text = status_text(st, speed_milli_, paused_, done);
-  font_draw(all, 2 * scale_, band.y0 + 2, text.data(), text.size(), pixel_pack(all.format, Rgb{230, 232, 236}), scale_);
+  const ScreenRect band = status_band_draw(screen_->screen().frame(), band_h_, status_text(st, speed_milli_, paused_, done));
   ScreenRect rects[kMaxDirtyRects + 1];
   int n = 0;
   for (int k = 0; k < res.nrects; ++k) rects[n++] = res.rects[k];

@@ -35,8 +35,16 @@ struct LiveStatus {
 };
 
 // The status line's text, e.g.
-// "N123 X12.345 Y-3.000 Z1.000 F1200 T2 BALL:6 0:01:23 x4 PAUSED".
+// "line 123 X12.345 Y-3.000 Z1.000 F1200 T2 ball:6 0:01:23 x4.000 PAUSED";
+// speed_milli 0 leaves the speed out (saved frames have no pace).
 std::string status_text(const LiveStatus& s, int64_t speed_milli, bool paused, bool done);
+
+// The strip the status line takes under a picture `width` pixels wide
+// (the font doubled from 960 pixels, where 80 cells fit).
+int32_t status_band_height(int32_t width);
+// Draws the strip with `text` at the bottom band_h rows of `all`; the
+// rectangle it covers.
+ScreenRect status_band_draw(const FrameView& all, int32_t band_h, const std::string& text);
 
 class LiveScreen;
 
@@ -88,7 +96,7 @@ class LiveView {
   int64_t last_sim_us_ = 0;
   bool failed_ = false;
   std::string error_;
-  int32_t band_h_ = 0, scale_ = 1;
+  int32_t band_h_ = 0;
 };
 
 }  // namespace cli

@@ -125,6 +125,9 @@ struct ViewOptions {
   // cut translucent over the design (shows undercut), in --image.
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
   bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)
+  bool decorations = true;       // the axis triad and scale bar in images and frames; --no-decorations
+  bool frame_status = false;     // --frame-status: the live views' status line under every saved frame
+  bool hide_tool = false;        // --hide-tool: the final image without the cutter
   // Live outputs (--window, --fbdev).
   bool window = false;
   std::string fbdev;

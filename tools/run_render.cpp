@@ -77,6 +77,8 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
       copy_label(legend_->labels[k], l.labels[k]);
     }
     copy_label(legend_->title, l.title);
+    copy_label(legend_->low_caption, l.low_caption);
+    copy_label(legend_->high_caption, l.high_caption);
   }
   stock_view_set_legend(v_.get(), legend_ ? view_legend_.get() : nullptr);
   return stock_view_draw(v_.get(), g, pose);

@@ -52,8 +52,11 @@ class RenderOutput {
     std::string labels[kLegendMaxSwatches];
     std::string title;
     bool named = false;
+    std::string low_caption, high_caption;  // limits only: what the ends mean (display/legend.h)
   };
   void set_legend(const Legend* l) { legend_ = l; }
+  // The axis triad and the scale bar over every frame (display/decorations.h).
+  void set_decorations(bool on) { stock_view_set_decorations(v_.get(), on); }
   // Points marked over every frame in `colour` (the gouges found so far in
   // red, the block a partial run stopped at in amber); kept by the caller.
   void add_marks(const std::vector<PointNm>* m, Rgb colour) { marks_.push_back(Marks{m, colour}); }

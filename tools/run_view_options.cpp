@@ -110,6 +110,14 @@ const Option<View> kView[] = {
     {"--path-overlay", nullptr,
      "the toolpath over the frames: rapids dashed yellow, feeds blue, pale where still to come (live: the p key)",
      [](View* o, const char*) -> int { return o->path_overlay = true, kExitOk; }},
+    {"--no-decorations", nullptr,
+     "no axis triad and scale bar in the images, frames and live views (they are drawn by default)",
+     [](View* o, const char*) -> int { return o->decorations = false, kExitOk; }},
+    {"--frame-status", nullptr,
+     "the live views' status line (line, X Y Z, feed, tool, time) in a strip under every --frames picture",
+     [](View* o, const char*) -> int { return o->frame_status = true, kExitOk; }},
+    {"--hide-tool", nullptr, "the final --image and --error-image without the cutter (frames and live views keep it)",
+     [](View* o, const char*) -> int { return o->hide_tool = true, kExitOk; }},
     {"--quiet", nullptr, "no progress bar", [](View* o, const char*) -> int { return o->quiet = true, kExitOk; }, "-q"},
 };
 

@@ -77,9 +77,14 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     outputs_.push_back(live_.output());
   }
   if (!o.out.frames_dir.empty()) {
-    frames_.reset(new FrameFiles(o.out.frames_dir, o.out.frame_format, o.view.width, o.view.height));
+    // With --frame-status the live views' status strip goes under the
+    // picture, which keeps --size (as in the window).
+    status_band_h_ = o.view.frame_status ? status_band_height(o.view.width) : 0;
+    frames_.reset(new FrameFiles(o.out.frames_dir, o.out.frame_format, o.view.width, o.view.height + status_band_h_));
+    FrameView picture = frames_->frame();
+    picture.height = o.view.height;
     frames_out_.reset(new RenderOutput());
-    if (!frames_out_->init(grid, frames_->frame(), cam_, &err)) return fail(kExitUsage, "%s", err.c_str());
+    if (!frames_out_->init(grid, picture, cam_, &err)) return fail(kExitUsage, "%s", err.c_str());
     every_ = o.out.every ? static_cast<uint64_t>(o.out.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
     outputs_.push_back(frames_out_.get());
   }
@@ -95,7 +100,11 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     if (!still(o, &error_pixels_, &error_out_)) return kExitUsage;
     outputs_.push_back(error_out_.get());
   }
-  for (RenderOutput* out : outputs_) out->set_tool(o.job.tool);
+  for (RenderOutput* out : outputs_) {
+    out->set_tool(o.job.tool);
+    out->set_decorations(o.view.decorations);
+  }
+  hide_tool_ = o.view.hide_tool;
   set_colours(o, in);
   // The gouges found so far, marked in every frame and live view; the
   // safety findings so far in magenta; the fixtures in every frame.
@@ -158,6 +167,7 @@ bool RunViews::write_frame() {
   sim_->sync();
   const double t0 = clock_now_s();
   const RenderResult res = frames_out_->draw(&sim_->grid(), CutterPose{true, sim_->mill().position()});
+  if (status_band_h_ > 0) status_band_draw(frames_->frame(), status_band_h_, status_text(status, 0, false, false));
   const double t1 = clock_now_s();
   if (!frames_->present(res.rects, res.nrects)) frame_error = frames_->error();
   render_s += t1 - t0;
@@ -183,12 +193,14 @@ void RunViews::after_cut(const std::vector<PointNm>& error_at, const std::vector
 
 int RunViews::write_images(const RunOptions& o, const GridPlan& plan, const ImageFormat& image, const ImageFormat& error) {
   char e[1300];
-  const CutterPose pose{true, sim_->mill().position()};
+  // --hide-tool: the final stills without the cutter (a live view's
+  // next frame shows it again).
+  const CutterPose pose{!hide_tool_, sim_->mill().position()};
   DexelGrid<height_t>* grid = &sim_->grid();
   if (!o.out.image.empty()) {
     const double t0 = clock_now_s();
     RenderOutput* live_out = is_live_ ? live_.output() : nullptr;
-    if (image_src_ != live_out) image_src_->draw(grid, pose);
+    if (image_src_ != live_out || hide_tool_) image_src_->draw(grid, pose);
     const FrameView* shown = &image_src_->view();
     OverlayImage overlay;
     std::string err;

@@ -61,7 +61,8 @@ class RunViews final : public SimObserver {
   // After the cut: the marks of what the end found, the bad block's place
   // (amber) and the finding a stop was at (red).
   void after_cut(const std::vector<PointNm>& error_at, const std::vector<PointNm>& stop_at);
-  // The final image and error image, with --overlay. kExitOk or an exit code (printed).
+  // The final image and error image, with --overlay (--hide-tool: without
+  // the cutter). kExitOk or an exit code (printed).
   int write_images(const RunOptions& o, const GridPlan& plan, const ImageFormat& image, const ImageFormat& error);
 
   bool live() const { return is_live_; }
@@ -85,6 +86,8 @@ class RunViews final : public SimObserver {
   std::unique_ptr<RenderOutput> frames_out_, image_out_, error_out_;
   std::vector<uint32_t> image_pixels_, error_pixels_;
   uint64_t every_ = 0;
+  int32_t status_band_h_ = 0;  // --frame-status: the strip under each frame's picture
+  bool hide_tool_ = false;
   LiveView live_;
   bool is_live_ = false;
   RenderOutput* image_src_ = nullptr;

@@ -370,6 +370,10 @@ DM_API dm_status dm_view_create(dm_sim* sim, const dm_frame* frame, const dm_cam
  * cover every pixel that changed. */
 DM_API dm_status dm_render(dm_view* view, dm_rect* rects, int32_t max_rects, int32_t* nrects);
 DM_API dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera);
+/* on non-zero: an axis triad and a 1-2-5 mm scale bar in the bottom-left
+ * corner, as `dexmill run` draws them (off after dm_view_create; a panel
+ * may keep them off). The camera is framed again, clear of them. */
+DM_API dm_status dm_view_set_decorations(dm_view* view, int32_t on);
 /* NULL is ignored. */
 DM_API void dm_view_destroy(dm_view* view);
 

@@ -122,6 +122,13 @@ dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera) {
   return DM_OK;
 }
 
+dm_status dm_view_set_decorations(dm_view* view, int32_t on) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  stock_view_set_decorations(&view->v, on != 0);
+  return DM_OK;
+}
+
 void dm_view_destroy(dm_view* view) {
   if (!view || view->tag != kViewTag) return;
   if (live(view->sim))

@@ -173,6 +173,7 @@ def _load():
         "dm_view_create": (st, [sim, P(_Frame), P(_Camera), ctypes.c_void_p, ctypes.c_size_t, P(view)]),
         "dm_render": (st, [view, P(_Rect), ctypes.c_int32, P(ctypes.c_int32)]),
         "dm_view_set_camera": (st, [view, P(_Camera)]),
+        "dm_view_set_decorations": (st, [view, ctypes.c_int32]),
         "dm_view_destroy": (None, [view]),
         "dm_mm_to_nm": (st, [ctypes.c_char_p, ctypes.c_size_t, P(ctypes.c_int64)]),
     }
@@ -438,6 +439,10 @@ class View:
     def set_camera(self, view="iso", azimuth_deg=None, elevation_deg=None):
         cam = _camera(view, azimuth_deg, elevation_deg)
         _check(_lib.dm_view_set_camera(self._view, ctypes.byref(cam)))
+
+    def set_decorations(self, on=True):
+        """The axis triad and scale bar, as `dexmill run` draws them (off at first)."""
+        _check(_lib.dm_view_set_decorations(self._view, 1 if on else 0))
 
     @property
     def pixels(self):
