@@ -114,20 +114,27 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
   }
 }
 
+// A light's direction d (RenderOptions) in machine coordinates.
+UnitQ14 light_direction(const RenderOptions& o, const View& v, const int32_t d[3]) {
+  int64_t l[3];
+  for (int k = 0; k < 3; ++k) {
+    l[k] = o.light_follows_camera ? (static_cast<int64_t>(d[0]) * v.right_q30[k] + static_cast<int64_t>(d[1]) * v.up_q30[k] +
+                                     static_cast<int64_t>(d[2]) * v.eye_q30[k])
+                                  : static_cast<int64_t>(d[k]);
+  }
+  return normal_unit_q14(l[0], l[1], l[2]);
+}
+
 template <class H>
 void prepare_view(Renderer<H>* r) {
   view_build(r->cam, r->scene, r->fb.width, r->fb.height, &r->view);
   const View& v = r->view;
-  // The light, in machine coordinates.
-  int64_t l[3];
-  for (int k = 0; k < 3; ++k) {
-    l[k] = r->opt.light_follows_camera ? (static_cast<int64_t>(r->opt.light[0]) * v.right_q30[k] +
-                                          static_cast<int64_t>(r->opt.light[1]) * v.up_q30[k] +
-                                          static_cast<int64_t>(r->opt.light[2]) * v.eye_q30[k])
-                                       : static_cast<int64_t>(r->opt.light[k]);
-  }
   r->light = Lighting{};
-  r->light.light = normal_unit_q14(l[0], l[1], l[2]);
+  r->light.light = light_direction(r->opt, v, r->opt.light);
+  r->light.fill_light = light_direction(r->opt, v, r->opt.fill_light);
+  r->light.ambient_q14 = clamp<int32_t>(r->opt.ambient_q14, 0, 1 << 16);
+  r->light.diffuse_q14 = clamp<int32_t>(r->opt.key_q14, 0, 1 << 16);
+  r->light.fill_q14 = clamp<int32_t>(r->opt.fill_q14, 0, 1 << 16);
   if (!r->opt.specular) r->light.specular_q14 = 0;
   lighting_finish(&r->light, normal_unit_q14(v.eye_q30[0], v.eye_q30[1], v.eye_q30[2]));
   const int32_t base = shade_base_index(r->light);

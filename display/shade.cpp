@@ -19,18 +19,18 @@ int32_t dot_q14(const UnitQ14& a, const UnitQ14& b) {
 void lighting_finish(Lighting* l, const UnitQ14& eye) {
   l->half = normal_unit_q14(static_cast<int64_t>(l->light.x) + eye.x, static_cast<int64_t>(l->light.y) + eye.y,
                             static_cast<int64_t>(l->light.z) + eye.z);
-  const int64_t total = static_cast<int64_t>(l->ambient_q14) + l->diffuse_q14 + l->specular_q14;
+  const int64_t total = static_cast<int64_t>(l->ambient_q14) + l->diffuse_q14 + l->fill_q14 + l->specular_q14;
   l->index_scale_q30 = div_round(static_cast<int64_t>(255) << 30, max_of<int64_t>(total, 1));
 }
 
 namespace {
 
-// Index from the two cosines (q14, already clamped at 0): brightness in q28,
-// then index = b * 255 / total = b * scale >> 44.
-inline int32_t index_of(const Lighting& l, int32_t diff, int32_t spec) {
+// Index from the three cosines (q14, already clamped at 0): brightness in
+// q28, then index = b * 255 / total = b * scale >> 44.
+inline int32_t index_of(const Lighting& l, int32_t diff, int32_t fill, int32_t spec) {
   for (int k = 0; k < 5; ++k) spec = (spec * spec + (kOneQ14 >> 1)) >> 14;  // ^32
   const int64_t b = static_cast<int64_t>(l.ambient_q14) * kOneQ14 + static_cast<int64_t>(l.diffuse_q14) * diff +
-                    static_cast<int64_t>(l.specular_q14) * spec;
+                    static_cast<int64_t>(l.fill_q14) * fill + static_cast<int64_t>(l.specular_q14) * spec;
   const int64_t idx = (b * l.index_scale_q30 + (static_cast<int64_t>(1) << 43)) >> 44;
   return static_cast<int32_t>(idx > 255 ? 255 : idx);
 }
@@ -42,7 +42,8 @@ inline int32_t cos_q14(int64_t dot, ScaledRecip r) {
 }  // namespace
 
 int32_t shade_of_normal(const Lighting& l, const UnitQ14& n) {
-  return index_of(l, max_of<int32_t>(0, dot_q14(n, l.light)), max_of<int32_t>(0, dot_q14(n, l.half)));
+  return index_of(l, max_of<int32_t>(0, dot_q14(n, l.light)), max_of<int32_t>(0, dot_q14(n, l.fill_light)),
+                  max_of<int32_t>(0, dot_q14(n, l.half)));
 }
 
 int32_t shade_of_vector(const Lighting& l, int64_t nx, int64_t ny, int64_t nz) {
@@ -55,12 +56,14 @@ int32_t shade_of_vector(const Lighting& l, int64_t nx, int64_t ny, int64_t nz) {
   const uint32_t s = static_cast<uint32_t>(x * x) + static_cast<uint32_t>(y * y) + static_cast<uint32_t>(z * z);
   ScaledRecip r = rsqrt_fast_u32(s);
   const int64_t dl = static_cast<int64_t>(x) * l.light.x + static_cast<int64_t>(y) * l.light.y + static_cast<int64_t>(z) * l.light.z;
+  const int64_t df = static_cast<int64_t>(x) * l.fill_light.x + static_cast<int64_t>(y) * l.fill_light.y +
+                     static_cast<int64_t>(z) * l.fill_light.z;
   const int64_t dh = static_cast<int64_t>(x) * l.half.x + static_cast<int64_t>(y) * l.half.y + static_cast<int64_t>(z) * l.half.z;
-  return index_of(l, cos_q14(dl, r), cos_q14(dh, r));
+  return index_of(l, cos_q14(dl, r), cos_q14(df, r), cos_q14(dh, r));
 }
 
 int32_t shade_base_index(const Lighting& l) {
-  const int64_t total = static_cast<int64_t>(l.ambient_q14) + l.diffuse_q14 + l.specular_q14;
+  const int64_t total = static_cast<int64_t>(l.ambient_q14) + l.diffuse_q14 + l.fill_q14 + l.specular_q14;
   return static_cast<int32_t>(div_round((static_cast<int64_t>(l.ambient_q14) + l.diffuse_q14) * 255, max_of<int64_t>(total, 1)));
 }
 

@@ -10,14 +10,18 @@
 // towards the hole it borders (when that part vanishes, as on a fin one
 // dexel thick, the top normal stands in).
 //
-// Light (one directional light, by default following the camera): the
-// brightness of a unit normal n is
-//   b = ambient + diffuse * max(0, n.L) + specular * max(0, n.H)^32
-// (Blinn-Phong, H the half vector between L and the view direction, taken
-// constant over the frame as OpenGL's infinite viewer does). b maps linearly
-// to a shade index 0..255, and a material's ramp turns the index into a pixel
-// value: black to the material's colour at b = ambient + diffuse, then on
-// towards white, so a highlight over-exposes the colour. Vertices carry the
+// Light (a key and a fill light, directional, by default following the
+// camera): the brightness of a unit normal n is
+//   b = ambient + diffuse * max(0, n.L) + fill * max(0, n.F) + specular * max(0, n.H)^32
+// (Blinn-Phong on the key, H the half vector between L and the view
+// direction, taken constant over the frame as OpenGL's infinite viewer
+// does). The fill comes from the side the key leaves dark, so that no face
+// the camera sees falls to the ambient alone: with the defaults every
+// visible face is at least a third of its colour's brightness
+// (tests/test_render_light.cpp). b maps linearly to a shade index 0..255,
+// and a material's ramp turns the index into a pixel value: black to the
+// material's colour at b = ambient + diffuse, then on towards white, so a
+// highlight (or key and fill together) over-exposes the colour. Vertices carry the
 // index and triangles interpolate it (Gouraud): one interpolant and a table
 // look-up per pixel. The index is within 1 of the double-precision oracle
 // (tests/test_shade.cpp).
@@ -34,12 +38,14 @@
 namespace dexmill {
 
 struct Lighting {
-  UnitQ14 light;  // towards the light
-  UnitQ14 half;   // normalised light + view direction
-  int32_t ambient_q14 = 3000;
-  int32_t diffuse_q14 = 13384;  // ambient + diffuse = 1
-  int32_t specular_q14 = 5000;
-  int64_t index_scale_q30 = 0;  // 255 / (ambient + diffuse + specular), set by lighting_finish
+  UnitQ14 light;  // towards the key light
+  UnitQ14 fill_light{0, 0, 0};  // towards the fill light
+  UnitQ14 half;   // normalised key light + view direction
+  int32_t ambient_q14 = 5571;   // 0.34
+  int32_t diffuse_q14 = 10813;  // the key's; ambient + diffuse = 1
+  int32_t fill_q14 = 4915;      // 0.3; 0 turns the fill off
+  int32_t specular_q14 = 4000;
+  int64_t index_scale_q30 = 0;  // 255 / (ambient + diffuse + fill + specular), set by lighting_finish
 };
 
 // Sets `half` and `index_scale_q30` from light, view direction and the
