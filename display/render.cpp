@@ -333,14 +333,15 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   const GridRect d{max_of<int32_t>(g->dirty.i0, 0), max_of<int32_t>(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx),
                    min_of(g->dirty.j1, g->ny)};
   if (!d.empty()) {
-    // Shades reach two dexels past a change (gradient, then blur), and a
-    // cell draws from its four corners.
-    const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
-                     min_of<int32_t>(d.j1 + 2, g->ny)};
+    // Shades reach kShadeReach dexels past a change (gradient, then blur),
+    // and a cell draws from its four corners.
+    constexpr int32_t R = kShadeReach;
+    const GridRect s{max_of<int32_t>(d.i0 - R, 0), max_of<int32_t>(d.j0 - R, 0), min_of<int32_t>(d.i1 + R, g->nx),
+                     min_of<int32_t>(d.j1 + R, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
     // A class that looks at neighbours (surface_colours.h) recomputes them
     // itself, up to kClassReach away: inside the cells redrawn below.
-    static_assert(kClassReach <= 2, "the cells redrawn reach two dexels past a change");
+    static_assert(kClassReach <= kShadeReach, "the cells redrawn reach kShadeReach dexels past a change");
     classify(r, d);
     const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
                          min_of<int32_t>(s.j1, g->ny - 1)};

@@ -110,6 +110,64 @@ void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, 
   *gy = sy;
 }
 
+namespace {
+
+// Octagonal length of (x, y): the larger plus half the smaller, within 12 %
+// of the Euclidean length: enough to weigh a slope and to scale a direction.
+inline int64_t oct_len(int64_t x, int64_t y) {
+  const int64_t ax = static_cast<int64_t>(abs_u64(x)), ay = static_cast<int64_t>(abs_u64(y));
+  return ax > ay ? ax + ay / 2 : ay + ax / 2;
+}
+
+// The wide blur of steep slopes (shade.h): [1 8 28 56 70 56 28 8 1] each way.
+constexpr int32_t kWideWeight[2 * kSteepRadius + 1] = {1, 8, 28, 56, 70, 56, 28, 8, 1};
+
+}  // namespace
+
+template <class H>
+void wide_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy) {
+  int64_t sx = 0, sy = 0;
+  for (int32_t b = -kSteepRadius; b <= kSteepRadius; ++b) {
+    for (int32_t a = -kSteepRadius; a <= kSteepRadius; ++a) {
+      const int32_t ii = clamp<int32_t>(i + a, 0, g.nx - 1), jj = clamp<int32_t>(j + b, 0, g.ny - 1);
+      const GradientLsb n = grid_gradient(g, ii, jj);
+      const int64_t w = static_cast<int64_t>(kWideWeight[a + kSteepRadius]) * kWideWeight[b + kSteepRadius];
+      sx += w * n.dx;
+      sy += w * n.dy;
+    }
+  }
+  *gx = sx;
+  *gy = sy;
+}
+
+namespace {
+
+// Turns a dexel's blurred gradient (gx, gy) towards the wide blur's
+// direction on a steep slope (shade.h).
+template <class H>
+void steep_blend(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t dz16, int64_t* gx, int64_t* gy) {
+  const int64_t n = oct_len(*gx, *gy);
+  if (n <= dz16) return;  // 45 degrees or less: the paper's normal
+  int64_t wx, wy;
+  wide_gradient(g, i, j, &wx, &wy);
+  const int64_t m = oct_len(wx, wy);
+  if (m == 0) return;
+  // The weight of the wide direction in q8: 0 at a slope of 1, 256 from 3
+  // (72 degrees) up, so that the normal turns smoothly from one to the other.
+  const int64_t w = n >= 3 * dz16 ? 256 : (n - dz16) * 256 / (2 * dz16);
+  const int64_t sx = muldiv_round(wx, n, m), sy = muldiv_round(wy, n, m);  // the wide direction, the local length
+  *gx = div_round(*gx * (256 - w) + sx * w, 256);
+  *gy = div_round(*gy * (256 - w) + sy * w, 256);
+}
+
+}  // namespace
+
+template <class H>
+void shade_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy) {
+  blurred_gradient(g, i, j, gx, gy);
+  steep_blend(g, i, j, 16 * div_round(2 * g.pitch_nm, g.lsb_nm), gx, gy);
+}
+
 template <class H>
 void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache* cache) {
   r.i0 = max_of<int32_t>(r.i0, 0);
@@ -150,6 +208,7 @@ void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache
       } else {
         blurred_gradient(g, i, j, &gx, &gy);
       }
+      steep_blend(g, i, j, dz16, &gx, &gy);
       const size_t k = g.index(i, j);
       const uint8_t top = static_cast<uint8_t>(shade_of_vector(l, -gx, -gy, dz16));
       cache->top[k] = top;
@@ -160,7 +219,9 @@ void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache
 
 #define DEXMILL_SHADE_INSTANTIATE(H)                                                           \
   template void shade_grid<H>(const DexelGrid<H>&, const Lighting&, GridRect, ShadeCache*); \
-  template void blurred_gradient<H>(const DexelGrid<H>&, int32_t, int32_t, int64_t*, int64_t*);
+  template void blurred_gradient<H>(const DexelGrid<H>&, int32_t, int32_t, int64_t*, int64_t*); \
+  template void wide_gradient<H>(const DexelGrid<H>&, int32_t, int32_t, int64_t*, int64_t*);   \
+  template void shade_gradient<H>(const DexelGrid<H>&, int32_t, int32_t, int64_t*, int64_t*);
 DEXMILL_SHADE_INSTANTIATE(uint8_t)
 DEXMILL_SHADE_INSTANTIATE(uint16_t)
 DEXMILL_SHADE_INSTANTIATE(uint32_t)

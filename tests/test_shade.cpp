@@ -78,8 +78,8 @@ TEST(shade_ramp_runs_black_colour_white) {
 template <class H>
 static void check_shade_grid() {
   // A random relief with holes: the interior fast path of shade_grid must
-  // give what blurred_gradient (the blur of grid_gradient, eq. 1) and
-  // shade_of_vector give, dexel by dexel; side-face shades wherever a hole
+  // give what shade_gradient (the blur of grid_gradient, eq. 1, turned on
+  // steep slopes) and shade_of_vector give, dexel by dexel; side-face shades wherever a hole
   // is within one dexel.
   Rng rng;
   const int32_t nx = 23, ny = 17;
@@ -99,7 +99,7 @@ static void check_shade_grid() {
       for (int32_t i = 0; i < nx; ++i) {
         if (g.is_hole(i, j)) continue;
         int64_t gx, gy;
-        blurred_gradient(g, i, j, &gx, &gy);
+        shade_gradient(g, i, j, &gx, &gy);
         const size_t k = g.index(i, j);
         CHECK_EQ(int(st[k]), shade_of_vector(l, -gx, -gy, dz16));
         bool near_hole = false;
