@@ -72,7 +72,7 @@ struct RenderOptions {
   // turned right and down on the screen).
   bool light_follows_camera = true;
   int32_t light[3] = {-5, 9, 13};
-  int32_t fill_light[3] = {4, -8, 6};
+  int32_t fill_light[3] = {4, -8, 4};
   // Their strengths (display/shade.h Lighting, q14: 16384 = 1): ambient +
   // key = 1 shows a face square to the key in its own colour. The defaults
   // keep every face the camera sees at a third of its colour or more.
