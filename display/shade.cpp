@@ -121,6 +121,34 @@ inline int64_t oct_len(int64_t x, int64_t y) {
 
 // The wide blur of steep slopes (shade.h): [1 8 28 56 70 56 28 8 1] each way.
 constexpr int32_t kWideWeight[2 * kSteepRadius + 1] = {1, 8, 28, 56, 70, 56, 28, 8, 1};
+static_assert(kShadeReach == kSteepRadius + 1, "central differences reach one dexel past the blur");
+// The blur of central differences along one axis, written as taps on the
+// tops: kWideDiff[c] (t[+c] - t[-c]) for c = 1 .. kShadeReach, the weights
+// w[c - 1] - w[c + 1].
+constexpr int32_t kWideDiff[kShadeReach + 1] = {0, 42, 48, 27, 8, 1};
+
+// wide_gradient away from the grid's edge (every tap at most kShadeReach
+// from p, rows `stride` apart), with the same sums.
+template <class H>
+void wide_gradient_interior(const H* p, ptrdiff_t stride, int64_t* gx, int64_t* gy) {
+  int64_t sx = 0, sy = 0;
+  for (int32_t b = -kSteepRadius; b <= kSteepRadius; ++b) {
+    const H* row = p + b * stride;
+    int64_t dx = 0;
+    for (int32_t c = 1; c <= kShadeReach; ++c) dx += kWideDiff[c] * (static_cast<int64_t>(row[c]) - row[-c]);
+    sx += kWideWeight[b + kSteepRadius] * dx;
+  }
+  for (int32_t c = 1; c <= kShadeReach; ++c) {
+    const H* up = p + c * stride;
+    const H* down = p - c * stride;
+    int64_t d = 0;
+    for (int32_t a = -kSteepRadius; a <= kSteepRadius; ++a)
+      d += kWideWeight[a + kSteepRadius] * (static_cast<int64_t>(up[a]) - down[a]);
+    sy += kWideDiff[c] * d;
+  }
+  *gx = sx;
+  *gy = sy;
+}
 
 }  // namespace
 
@@ -149,13 +177,27 @@ void steep_blend(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t dz16, int6
   const int64_t n = oct_len(*gx, *gy);
   if (n <= dz16) return;  // 45 degrees or less: the paper's normal
   int64_t wx, wy;
-  wide_gradient(g, i, j, &wx, &wy);
+  // Only where the wide window lies inside the grid: within kShadeReach of
+  // its edge lie the stock's straight outer walls (the hole border of
+  // grid_block_stock), which make no staircase, and the 81 clamped taps
+  // there cost more than the rest of a frame's shading.
+  constexpr int32_t R = kShadeReach;
+  if (i < R || i > g.nx - 1 - R || j < R || j > g.ny - 1 - R) return;
+  wide_gradient_interior(g.top + g.index(i, j), static_cast<ptrdiff_t>(g.nx), &wx, &wy);
+  // The wide vector cut to about 20 bits first, so that scaling it to the
+  // local length stays within 64 bits (n < 2^38 for 32-bit heights).
+  const uint64_t big = abs_u64(wx) | abs_u64(wy);
+  const int bits = big ? 64 - __builtin_clzll(big) : 0;
+  if (bits > 20) {
+    wx >>= bits - 20;
+    wy >>= bits - 20;
+  }
   const int64_t m = oct_len(wx, wy);
   if (m == 0) return;
   // The weight of the wide direction in q8: 0 at a slope of 1, 256 from 3
   // (72 degrees) up, so that the normal turns smoothly from one to the other.
   const int64_t w = n >= 3 * dz16 ? 256 : (n - dz16) * 256 / (2 * dz16);
-  const int64_t sx = muldiv_round(wx, n, m), sy = muldiv_round(wy, n, m);  // the wide direction, the local length
+  const int64_t sx = div_round(wx * n, m), sy = div_round(wy * n, m);  // the wide direction, the local length
   *gx = div_round(*gx * (256 - w) + sx * w, 256);
   *gy = div_round(*gy * (256 - w) + sy * w, 256);
 }

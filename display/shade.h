@@ -15,7 +15,8 @@
 // The wide direction weighs 0 up to a slope of 45 degrees (gentle surfaces,
 // reliefs and scallops shade as the paper's) and all from 72 degrees, in a
 // linear blend between; the slope is the octagonal length of the 3x3
-// gradient (max + min / 2) against eq. 1's constant. The price is the reach:
+// gradient (max + min / 2) against eq. 1's constant. Within kShadeReach of
+// the grid's edge (the stock's straight outer walls) the 3x3 stands alone. The price is the reach:
 // a change of one top moves the shades up to kShadeReach dexels away, and an
 // incremental redraw repaints that far.
 // A top vertex uses the blurred normal (-gx, -gy, 16 dz); a side-face vertex
@@ -117,7 +118,8 @@ void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache
 template <class H>
 void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
 
-// The same over the 9x9 wide blur (steep slopes' direction).
+// The same over the 9x9 wide blur (steep slopes' direction), with clamped
+// neighbours; shade_grid uses it kShadeReach or more from the grid's edge.
 template <class H>
 void wide_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
 // The gradient a dexel is shaded with (the reference shade_grid must
