@@ -114,20 +114,27 @@ void draw_rect(Renderer<H>* r, const DexelGrid<H>& g, const ScreenRect& rect, bo
   }
 }
 
+// A light's direction d (RenderOptions) in machine coordinates.
+UnitQ14 light_direction(const RenderOptions& o, const View& v, const int32_t d[3]) {
+  int64_t l[3];
+  for (int k = 0; k < 3; ++k) {
+    l[k] = o.light_follows_camera ? (static_cast<int64_t>(d[0]) * v.right_q30[k] + static_cast<int64_t>(d[1]) * v.up_q30[k] +
+                                     static_cast<int64_t>(d[2]) * v.eye_q30[k])
+                                  : static_cast<int64_t>(d[k]);
+  }
+  return normal_unit_q14(l[0], l[1], l[2]);
+}
+
 template <class H>
 void prepare_view(Renderer<H>* r) {
   view_build(r->cam, r->scene, r->fb.width, r->fb.height, &r->view);
   const View& v = r->view;
-  // The light, in machine coordinates.
-  int64_t l[3];
-  for (int k = 0; k < 3; ++k) {
-    l[k] = r->opt.light_follows_camera ? (static_cast<int64_t>(r->opt.light[0]) * v.right_q30[k] +
-                                          static_cast<int64_t>(r->opt.light[1]) * v.up_q30[k] +
-                                          static_cast<int64_t>(r->opt.light[2]) * v.eye_q30[k])
-                                       : static_cast<int64_t>(r->opt.light[k]);
-  }
   r->light = Lighting{};
-  r->light.light = normal_unit_q14(l[0], l[1], l[2]);
+  r->light.light = light_direction(r->opt, v, r->opt.light);
+  r->light.fill_light = light_direction(r->opt, v, r->opt.fill_light);
+  r->light.ambient_q14 = clamp<int32_t>(r->opt.ambient_q14, 0, 1 << 16);
+  r->light.diffuse_q14 = clamp<int32_t>(r->opt.key_q14, 0, 1 << 16);
+  r->light.fill_q14 = clamp<int32_t>(r->opt.fill_q14, 0, 1 << 16);
   if (!r->opt.specular) r->light.specular_q14 = 0;
   lighting_finish(&r->light, normal_unit_q14(v.eye_q30[0], v.eye_q30[1], v.eye_q30[2]));
   const int32_t base = shade_base_index(r->light);
@@ -326,14 +333,15 @@ RenderResult render_update(Renderer<H>* r, DexelGrid<H>* g, const CutterPose& cu
   const GridRect d{max_of<int32_t>(g->dirty.i0, 0), max_of<int32_t>(g->dirty.j0, 0), min_of(g->dirty.i1, g->nx),
                    min_of(g->dirty.j1, g->ny)};
   if (!d.empty()) {
-    // Shades reach two dexels past a change (gradient, then blur), and a
-    // cell draws from its four corners.
-    const GridRect s{max_of<int32_t>(d.i0 - 2, 0), max_of<int32_t>(d.j0 - 2, 0), min_of<int32_t>(d.i1 + 2, g->nx),
-                     min_of<int32_t>(d.j1 + 2, g->ny)};
+    // Shades reach kShadeReach dexels past a change (gradient, then blur),
+    // and a cell draws from its four corners.
+    constexpr int32_t R = kShadeReach;
+    const GridRect s{max_of<int32_t>(d.i0 - R, 0), max_of<int32_t>(d.j0 - R, 0), min_of<int32_t>(d.i1 + R, g->nx),
+                     min_of<int32_t>(d.j1 + R, g->ny)};
     shade_grid(*g, r->light, s, &r->shades);
     // A class that looks at neighbours (surface_colours.h) recomputes them
     // itself, up to kClassReach away: inside the cells redrawn below.
-    static_assert(kClassReach <= 2, "the cells redrawn reach two dexels past a change");
+    static_assert(kClassReach <= kShadeReach, "the cells redrawn reach kShadeReach dexels past a change");
     classify(r, d);
     const GridRect cells{max_of<int32_t>(s.i0 - 1, 0), max_of<int32_t>(s.j0 - 1, 0), min_of<int32_t>(s.i1, g->nx - 1),
                          min_of<int32_t>(s.j1, g->ny - 1)};

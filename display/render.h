@@ -65,11 +65,21 @@ struct RenderOptions {
   // grey, the red cutter, the magenta safety marks and the amber partial-run
   // mark.
   Rgb fixture{64, 104, 176};
-  // The light: with light_follows_camera, a direction in the camera's frame
-  // (right, up, towards the eye), else in machine coordinates; any length.
+  // The key and fill lights (display/shade.h): with light_follows_camera,
+  // directions in the camera's frame (right, up, towards the eye), else in
+  // machine coordinates; any length. The key from the upper left, the fill
+  // from the lower right, which lights what the key leaves dark (faces
+  // turned right and down on the screen).
   bool light_follows_camera = true;
   int32_t light[3] = {-5, 9, 13};
-  bool specular = true;
+  int32_t fill_light[3] = {4, -8, 4};
+  // Their strengths (display/shade.h Lighting, q14: 16384 = 1): ambient +
+  // key = 1 shows a face square to the key in its own colour. The defaults
+  // keep every face the camera sees at a third of its colour or more.
+  int32_t ambient_q14 = Lighting{}.ambient_q14;
+  int32_t key_q14 = Lighting{}.diffuse_q14;
+  int32_t fill_q14 = Lighting{}.fill_q14;  // 0: the key light alone
+  bool specular = true;  // the key's highlight (Lighting::specular_q14)
 };
 
 // Where the tool tip is, if the tool is to be drawn.

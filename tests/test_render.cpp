@@ -502,19 +502,19 @@ TEST(golden_frames) {
     Golden g;
     uint64_t got;
   } rows[] = {
-      {{"golden-block-iso", 0x6335668a4df27959ull}, golden_frame<uint16_t>("golden-block-iso", 0, ViewPreset::kIso, O, -1, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-iso", 0x4cf1a5b89b47f84cull}, golden_frame<uint16_t>("golden-pocket-iso", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-top", 0x5797b8fb30a6f3d4ull}, golden_frame<uint16_t>("golden-pocket-top", 1, ViewPreset::kTop, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-front", 0xdc360e0008ee2c54ull}, golden_frame<uint16_t>("golden-pocket-front", 1, ViewPreset::kFront, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-right", 0xdd1b61011bc20926ull}, golden_frame<uint16_t>("golden-pocket-right", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-tool-ball", 0x099a07888a54194dull}, golden_frame<uint16_t>("golden-tool-ball", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-flat", 0xc7569abd4c6209f7ull}, golden_frame<uint16_t>("golden-tool-flat", 1, ViewPreset::kRight, O, 1, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-bull", 0x7271183850b2b28cull}, golden_frame<uint16_t>("golden-tool-bull", 1, ViewPreset::kRight, O, 2, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-vbit", 0x0018380aac76ed17ull}, golden_frame<uint16_t>("golden-tool-vbit", 1, ViewPreset::kRight, O, 3, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-pocket-565", 0xf879bb10cb432ff2ull}, golden_frame<uint16_t>("golden-pocket-565", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ16, 480, 272)},
-      {{"golden-pocket-persp", 0x866b3e5f33562b6cull}, golden_frame<uint16_t>("golden-pocket-persp", 1, ViewPreset::kIso, Pp, 0, P::kXrgb8888, Z::kZ16, 320, 240)},
-      {{"golden-pocket-u8", 0xde3bfae823c11c68ull}, golden_frame<uint8_t>("golden-pocket-u8", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-u32", 0xccb1d7f5bac2168cull}, golden_frame<uint32_t>("golden-pocket-u32", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ32, 320, 240)},
+      {{"golden-block-iso", 0x1b7f22ee343ae5f3ull}, golden_frame<uint16_t>("golden-block-iso", 0, ViewPreset::kIso, O, -1, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-pocket-iso", 0x3135aacea1303cb8ull}, golden_frame<uint16_t>("golden-pocket-iso", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-pocket-top", 0x970dd14505f2c9b0ull}, golden_frame<uint16_t>("golden-pocket-top", 1, ViewPreset::kTop, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-pocket-front", 0xc3a6e71ee981dd49ull}, golden_frame<uint16_t>("golden-pocket-front", 1, ViewPreset::kFront, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-pocket-right", 0xbc7947770861784dull}, golden_frame<uint16_t>("golden-pocket-right", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-tool-ball", 0xd3a8ff4b1c01719full}, golden_frame<uint16_t>("golden-tool-ball", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 200, 150)},
+      {{"golden-tool-flat", 0x1600aa416595f1b5ull}, golden_frame<uint16_t>("golden-tool-flat", 1, ViewPreset::kRight, O, 1, P::kXrgb8888, Z::kZ32, 200, 150)},
+      {{"golden-tool-bull", 0xbd41e6d0e676c2c2ull}, golden_frame<uint16_t>("golden-tool-bull", 1, ViewPreset::kRight, O, 2, P::kXrgb8888, Z::kZ32, 200, 150)},
+      {{"golden-tool-vbit", 0x3a5bb81f976cf20bull}, golden_frame<uint16_t>("golden-tool-vbit", 1, ViewPreset::kRight, O, 3, P::kXrgb8888, Z::kZ32, 200, 150)},
+      {{"golden-pocket-565", 0x4e58ae1678e905ecull}, golden_frame<uint16_t>("golden-pocket-565", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ16, 480, 272)},
+      {{"golden-pocket-persp", 0xfe520c0df6a21daaull}, golden_frame<uint16_t>("golden-pocket-persp", 1, ViewPreset::kIso, Pp, 0, P::kXrgb8888, Z::kZ16, 320, 240)},
+      {{"golden-pocket-u8", 0x52ac679b8ccfb6dcull}, golden_frame<uint8_t>("golden-pocket-u8", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
+      {{"golden-pocket-u32", 0x399926b822c9147dull}, golden_frame<uint32_t>("golden-pocket-u32", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ32, 320, 240)},
   };
   for (const Row& r : rows) {
     if (r.got != r.g.hash) std::printf("%s: frame hash 0x%016llx, golden 0x%016llx\n", r.g.name, (unsigned long long)r.got, (unsigned long long)r.g.hash);

@@ -19,6 +19,7 @@ using t::Rng;
 Lighting light(Rng* rng) {
   Lighting l;
   l.light = normal_unit_q14(rng->range(-1000, 1000), rng->range(-1000, 1000), rng->range(-1000, 1000));
+  l.fill_light = normal_unit_q14(rng->range(-1000, 1000), rng->range(-1000, 1000), rng->range(-1000, 1000));
   const UnitQ14 eye = normal_unit_q14(rng->range(-1000, 1000), rng->range(-1000, 1000), rng->range(1, 1000));
   lighting_finish(&l, eye);
   return l;
@@ -28,10 +29,13 @@ Lighting light(Rng* rng) {
 double oracle(const Lighting& l, double x, double y, double z) {
   const double n = std::sqrt(x * x + y * y + z * z);
   const double L[3] = {l.light.x / 16384.0, l.light.y / 16384.0, l.light.z / 16384.0};
+  const double F[3] = {l.fill_light.x / 16384.0, l.fill_light.y / 16384.0, l.fill_light.z / 16384.0};
   const double H[3] = {l.half.x / 16384.0, l.half.y / 16384.0, l.half.z / 16384.0};
   const double dl = std::fmax(0, (x * L[0] + y * L[1] + z * L[2]) / n), dh = std::fmax(0, (x * H[0] + y * H[1] + z * H[2]) / n);
-  const double b = l.ambient_q14 / 16384.0 + l.diffuse_q14 / 16384.0 * dl + l.specular_q14 / 16384.0 * std::pow(dh, 32);
-  return b * 255 / ((l.ambient_q14 + l.diffuse_q14 + l.specular_q14) / 16384.0);
+  const double df = std::fmax(0, (x * F[0] + y * F[1] + z * F[2]) / n);
+  const double b = l.ambient_q14 / 16384.0 + l.diffuse_q14 / 16384.0 * dl + l.fill_q14 / 16384.0 * df +
+                   l.specular_q14 / 16384.0 * std::pow(dh, 32);
+  return b * 255 / ((l.ambient_q14 + l.diffuse_q14 + l.fill_q14 + l.specular_q14) / 16384.0);
 }
 
 }  // namespace
@@ -74,8 +78,8 @@ TEST(shade_ramp_runs_black_colour_white) {
 template <class H>
 static void check_shade_grid() {
   // A random relief with holes: the interior fast path of shade_grid must
-  // give what blurred_gradient (the blur of grid_gradient, eq. 1) and
-  // shade_of_vector give, dexel by dexel; side-face shades wherever a hole
+  // give what shade_gradient (the blur of grid_gradient, eq. 1, turned on
+  // steep slopes) and shade_of_vector give, dexel by dexel; side-face shades wherever a hole
   // is within one dexel.
   Rng rng;
   const int32_t nx = 23, ny = 17;
@@ -95,7 +99,7 @@ static void check_shade_grid() {
       for (int32_t i = 0; i < nx; ++i) {
         if (g.is_hole(i, j)) continue;
         int64_t gx, gy;
-        blurred_gradient(g, i, j, &gx, &gy);
+        shade_gradient(g, i, j, &gx, &gy);
         const size_t k = g.index(i, j);
         CHECK_EQ(int(st[k]), shade_of_vector(l, -gx, -gy, dz16));
         bool near_hole = false;

@@ -151,8 +151,9 @@ TEST(split_walls_leave_no_crack) {
 TEST(uncut_tops_are_tinted_apart) {
   // With the stock's top given, the tops the cut never lowered take the
   // tint, the pocket's floor (black too, 6 mm down) does not: seen from
-  // above, the uncut rim is lighter than the floor; without the tint both
-  // are the same black.
+  // above, the uncut rim is lighter with the tint than without, the floor
+  // the same. (Compared pixel for pixel: the rim's normals tilt towards the
+  // walls either side, which the light shows even on black.)
   static Scene s;
   s.draw(true, 0);
   s.tg.g.dirty = GridRect::none();
@@ -161,14 +162,14 @@ TEST(uncut_tops_are_tinted_apart) {
   render_full(&s.r, &s.tg.g, CutterPose{});
   const Rgb rim0 = pixel_unpack(PixelFormat::kXrgb8888, s.at(100, 15));
   const Rgb floor0 = pixel_unpack(PixelFormat::kXrgb8888, s.at(100, 75));
-  CHECK_LE(std::abs(int(rim0.r) - int(floor0.r)), 8);
   static Scene u;
   u.draw(true, uint32_t(s.tg.g.top[s.tg.g.index(2, 2)]));
   renderer_set_camera(&u.r, top);
   render_full(&u.r, &u.tg.g, CutterPose{});
   const Rgb rim = pixel_unpack(PixelFormat::kXrgb8888, u.at(100, 15));
   const Rgb floor = pixel_unpack(PixelFormat::kXrgb8888, u.at(100, 75));
-  CHECK_GT(int(rim.r), int(floor.r) + 30);
+  CHECK_GT(int(rim.r), int(rim0.r) + 30);
+  CHECK_LE(std::abs(int(floor.r) - int(floor0.r)), 2);
   CHECK(material_uncut_tint(0x000000) == 0x4B4B4Bu);
   t::dump_frame(u.f.fb, "texture-uncut-top");
 }
