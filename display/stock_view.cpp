@@ -5,6 +5,7 @@
 #include "display/box_outline.h"
 #include "display/decorations.h"
 #include "display/marker.h"
+#include "display/supersample.h"
 
 namespace dexmill {
 
@@ -29,10 +30,11 @@ void draw_path(StockView* v, RenderResult* res) {
   const BackplotColours colours;
   const DepthView depth = stock_view_depth(*v);
   for (int k = 0; k < res->nrects; ++k)
-    backplot_draw(v->fb, depth, v->r.view, v->path, v->path_n, done, res->rects[k], colours);
+    backplot_draw(v->r.fb, depth, v->r.view, v->path, v->path_n, done, res->rects[k], colours);
   v->path_drawn_done = done;
 }
 
+// Over the picture at its own size (view_1x): screen-space markers.
 void draw_marks(StockView* v, RenderResult* res) {
   const int32_t radius = v->fb.height >= 400 ? 8 : 4;
   for (int32_t m = 0; m < v->nmarks; ++m) {
@@ -40,7 +42,7 @@ void draw_marks(StockView* v, RenderResult* res) {
     const uint32_t value = pixel_pack(v->fb.format, list.colour);
     ScreenRect all{0, 0, 0, 0};
     for (uint32_t k = 0; k < list.n; ++k)
-      all = rect_union(all, marker_draw(v->fb, v->r.view, list.points[k], radius, value));
+      all = rect_union(all, marker_draw(v->fb, v->view_1x, list.points[k], radius, value));
     if (!all.empty()) add_rect(res, all);
   }
 }
@@ -69,10 +71,29 @@ void draw_legend(StockView* v, RenderResult* res) {
   add_rect(res, legend_rect(v->fb, legend_has_captions(&l)));
 }
 
+// The rectangles the renderer and the path repainted in the supersampled
+// frame, averaged into the picture; the result's rectangles become the
+// picture's. The renderer's rectangles lie on its 4-pixel tile grid, so
+// each covers whole 2x2 blocks and the picture is the same whether it was
+// drawn whole or in parts.
+void resolve(StockView* v, RenderResult* res) {
+  for (int k = 0; k < res->nrects; ++k) {
+    res->rects[k] = supersample_half_rect(res->rects[k]);
+    downsample_2x2(v->big, v->fb, res->rects[k]);
+  }
+}
+
 }  // namespace
 
-size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height) {
-  return renderer_scratch_bytes(g, width, height, kViewOptions.zformat);
+size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height, bool supersampled) {
+  const int32_t k = supersampled ? 2 : 1;
+  return renderer_scratch_bytes(g, k * width, k * height, kViewOptions.zformat);
+}
+
+void stock_view_set_supersample(StockView* v, void* pixels) { v->big_pixels = pixels; }
+
+size_t stock_view_supersample_bytes(int32_t width, int32_t height, PixelFormat f) {
+  return 4 * static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(pixel_bytes(f));
 }
 
 Status stock_view_init(StockView* v, const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam,
@@ -92,9 +113,18 @@ Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const Frame
   Renderer<height_t>* r = &v->r;
   const bool had_camera = r->fb.pixels != nullptr;
   const Camera keep = r->cam;
-  const Status s = renderer_init(r, g, fb, kViewOptions, scratch, scratch_bytes);
+  FrameView scene = fb;
+  if (v->big_pixels) {
+    scene.pixels = v->big_pixels;
+    scene.width = 2 * fb.width;
+    scene.height = 2 * fb.height;
+    scene.stride_bytes = scene.width * pixel_bytes(fb.format);
+  }
+  const Status s = ok(frame_check(fb)) ? renderer_init(r, g, scene, kViewOptions, scratch, scratch_bytes)
+                                       : Status::kBadArgument;
   if (!ok(s)) return s;
   v->fb = fb;
+  v->big = scene;
   // Keep direction and zoom; refit only the target to the new aspect.
   if (had_camera) renderer_set_camera(r, keep);
   if (v->have_tool) renderer_set_tool(r, &v->profile);
@@ -177,7 +207,7 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   if (path) {
     const uint32_t done = min_of(v->path_done, v->path_n);
     if (done > v->path_drawn_done)
-      renderer_invalidate(&v->r, backplot_bounds(v->fb, v->r.view, v->path, v->path_drawn_done, done));
+      renderer_invalidate(&v->r, backplot_bounds(v->r.fb, v->r.view, v->path, v->path_drawn_done, done));
   }
   const GridRect saved = g->dirty;
   g->dirty = v->pending;
@@ -185,11 +215,19 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   RenderResult res = render_update(&v->r, g, pose);
   g->dirty = saved;
   if (path) draw_path(v, &res);
+  // The view at the frame's size, for what is drawn over the picture (the
+  // renderer's own is built for its frame when it draws).
+  if (v->big_pixels) {
+    resolve(v, &res);
+    view_build(v->r.cam, v->r.scene, v->fb.width, v->fb.height, &v->view_1x);
+  } else {
+    v->view_1x = v->r.view;
+  }
   draw_marks(v, &res);
   if (v->legend) draw_legend(v, &res);
   const ScreenRect area = stock_view_picture_area(*v);
-  if (!decorations_place(*v, v->r.view, area).empty())
-    add_rect(&res, decorations_draw(v->fb, v->r.view, renderer_stock_box(v->r), area));
+  if (!decorations_place(*v, v->view_1x, area).empty())
+    add_rect(&res, decorations_draw(v->fb, v->view_1x, renderer_stock_box(v->r), area));
   return res;
 }
 

@@ -79,6 +79,13 @@ struct StockView {
   bool legend_rows = false;  // the camera was fitted above a legend with captions...
   bool legend_fitted = false;  // ... or above one without
   bool decorations = false;  // the axis triad and the scale bar (display/decorations.h)
+  // 2x2 supersampling (display/supersample.h): the renderer draws into `big`
+  // (caller memory, twice fb's size each way; null pixels: off) and each
+  // draw resolves what it repainted into fb. `view_1x` is the camera's view
+  // at fb's size, for what is drawn over the resolved picture.
+  void* big_pixels = nullptr;
+  FrameView big;
+  View view_1x;
   const ViewMarks* marks = nullptr;
   int32_t nmarks = 0;
   const BoxNm* fixtures = nullptr;
@@ -91,8 +98,20 @@ struct StockView {
   uint32_t path_drawn_done = 0;  // path_done when the path was last drawn
 };
 
-// Scratch bytes for drawing grid g into a width x height frame.
-size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height);
+// Scratch bytes for drawing grid g into a width x height frame; supersampled,
+// the renderer's scratch at twice the size each way (4x the depth buffer).
+size_t stock_view_scratch_bytes(const DexelGrid<height_t>& g, int32_t width, int32_t height,
+                                bool supersampled = false);
+
+// Edge anti-aliasing, set before stock_view_init or stock_view_resize (off
+// after a zeroed StockView): `pixels` (null: off) holds a frame of twice the
+// frame's width and height in its format, 4 x width x height x pixel size
+// bytes (stock_view_supersample_bytes), caller memory; the scratch must then
+// be the supersampled size. The scene, the path and the depth are drawn at
+// that size and averaged 2x2 into the frame; the marks, the legend and the
+// decorations are drawn over the frame at its own size, crisp.
+void stock_view_set_supersample(StockView* v, void* pixels);
+size_t stock_view_supersample_bytes(int32_t width, int32_t height, PixelFormat f);
 
 // (Re)starts drawing g into fb with the chosen camera; scratch (8-byte
 // aligned) of at least stock_view_scratch_bytes. The renderer's status
@@ -142,7 +161,11 @@ inline void stock_view_note(StockView* v, const GridRect& r) { v->pending.includ
 // colour, fixture or path change) into the frame; the rectangles say where.
 RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterPose& pose);
 
+// The depth of the scene as drawn: at twice the frame's size when
+// supersampled (stock_view_scene_frame has the matching colours).
 DepthView stock_view_depth(const StockView& v);
+// The frame the renderer draws into: the frame, or the supersampled one.
+inline const FrameView& stock_view_scene_frame(const StockView& v) { return v.r.fb; }
 // Draws with the scene frame and camera of `other` (a grid of the same
 // geometry): the two frames can be overlaid (display/overlay.h).
 void stock_view_share_frame(StockView* v, const StockView& other);

@@ -3,7 +3,8 @@
 # 4 KB pieces, a few moves a step, incremental redraws) writes the PPM that
 # `dexmill run --image` writes for the same program, stock, tool, grid and
 # size, byte for byte (the CLI's axis triad and scale bar left out: embed.c
-# leaves the API's decorations off). `make test` runs it.
+# leaves the API's decorations off; and aliased, as the API's views are:
+# --no-antialias). `make test` runs it.
 #
 # Usage: tests/embed_check.sh DEXMILL EMBED   (from the repository root)
 # Exit: 0 every case identical, 1 otherwise.
@@ -15,7 +16,7 @@ bad=0; n=0
 # program, stock, tool, grid, size
 while read -r prog stock tool grid size; do
   n=$((n + 1))
-  "$BIN" run "$prog" -q --no-decorations --stock "$stock" --tool "$tool" --grid "$grid" --size "$size" --image "$tmp/cli$n.ppm" ||
+  "$BIN" run "$prog" -q --no-decorations --no-antialias --stock "$stock" --tool "$tool" --grid "$grid" --size "$size" --image "$tmp/cli$n.ppm" ||
     { echo "embed_check: dexmill run $prog failed"; bad=1; continue; }
   "$EMBED" "$prog" "$tmp/embed$n.ppm" "$stock" "$tool" "$grid" "$size" > "$tmp/embed$n.out" ||
     { echo "embed_check: embed $prog failed"; bad=1; continue; }

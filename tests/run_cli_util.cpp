@@ -175,6 +175,15 @@ std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_row
   return std::vector<unsigned char>(bytes.begin() + static_cast<long>(at), bytes.begin() + static_cast<long>(at + kept));
 }
 
+Image read_ppm(const std::string& path) {
+  Image im;
+  const std::string bytes = slurp(path);
+  if (std::sscanf(bytes.c_str(), "P6 %d %d", &im.w, &im.h) != 2) return im;
+  im.rgb = ppm_rgb(bytes);
+  if (im.rgb.size() != static_cast<size_t>(im.w) * im.h * 3) im = Image();  // not read: no pixels to index
+  return im;
+}
+
 namespace {
 
 // The names in folder dir that `match` takes; -1 without the folder.

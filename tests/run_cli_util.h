@@ -56,6 +56,14 @@ void check_hash(const std::string& path, uint64_t want);
 // without its last `skip_bottom_rows` rows (a legend); empty if not one.
 std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_rows = 0);
 
+// A PPM file's pixels with its size (w = h = 0, no pixels: not one).
+struct Image {
+  int w = 0, h = 0;
+  std::vector<unsigned char> rgb;
+  const unsigned char* at(int x, int y) const { return &rgb[(static_cast<size_t>(y) * w + x) * 3]; }
+};
+Image read_ppm(const std::string& path);
+
 }  // namespace run_cli
 
 #endif

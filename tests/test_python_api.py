@@ -98,8 +98,10 @@ class Views(unittest.TestCase):
                 return
             with tempfile.TemporaryDirectory() as d:
                 out = os.path.join(d, "f.ppm")
-                # A view draws no axis triad or scale bar until asked (below).
-                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--no-decorations", "--stock",
+                # A view draws no axis triad or scale bar until asked (below),
+                # and aliased (the CLI's stills are anti-aliased by default).
+                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--no-decorations",
+                                "--no-antialias", "--stock",
                                 "0,0,-10,33,23,0", "--tool", "ball:6", "--grid", "165x115", "--size", "160x120",
                                 "--image", out], check=True)
                 with open(out, "rb") as f:
@@ -107,7 +109,8 @@ class Views(unittest.TestCase):
             self.assertEqual(ppm, b"P6\n160 120\n255\n" + rgb)
 
     def test_decorated_frame_is_the_clis(self):
-        # With the triad and scale bar on, the frame `dexmill run` draws by default.
+        # With the triad and scale bar on, the frame `dexmill run` draws by
+        # default (aliased: --no-antialias).
         with dexmill.Simulation(STOCK, tool="ball:6", grid=(165, 115)) as sim:
             view = sim.view(160, 120)
             view.set_decorations(True)
@@ -119,7 +122,7 @@ class Views(unittest.TestCase):
                 return
             with tempfile.TemporaryDirectory() as d:
                 out = os.path.join(d, "f.ppm")
-                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--stock",
+                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--no-antialias", "--stock",
                                 "0,0,-10,33,23,0", "--tool", "ball:6", "--grid", "165x115", "--size", "160x120",
                                 "--image", out], check=True)
                 with open(out, "rb") as f:

@@ -19,7 +19,12 @@ std::string cannot_draw(const FrameView& fb, Status s) {
 }  // namespace
 
 void* RenderOutput::scratch_for(const DexelGrid<height_t>& g, const FrameView& fb, size_t* bytes) {
-  scratch_.assign((stock_view_scratch_bytes(g, fb.width, fb.height) + 7) / 8, 0);
+  // Supersampled only where twice the size is a frame the renderer takes.
+  const bool big = antialias_ && fb.width <= kFrameMaxSide / 2 && fb.height <= kFrameMaxSide / 2;
+  if (big) big_.assign((stock_view_supersample_bytes(fb.width, fb.height, fb.format) + 7) / 8, 0);
+  else big_.clear();
+  stock_view_set_supersample(v_.get(), big ? big_.data() : nullptr);
+  scratch_.assign((stock_view_scratch_bytes(g, fb.width, fb.height, big) + 7) / 8, 0);
   *bytes = scratch_.size() * 8;
   return scratch_.data();
 }

@@ -35,6 +35,10 @@ class RenderOutput {
   RenderOutput();
   ~RenderOutput();
 
+  // Edge anti-aliasing (display/supersample.h) from the next init or
+  // resize on: the scene drawn into a frame of twice fb's size each way,
+  // held here, then averaged into fb (4x the colour and depth memory).
+  void set_antialias(bool on) { antialias_ = on; }
   // (Re)starts drawing `g` into `fb` with the chosen camera. False with a
   // message if the renderer rejects the view.
   bool init(const DexelGrid<height_t>& g, const FrameView& fb, const CameraChoice& cam, std::string* err);
@@ -88,6 +92,8 @@ class RenderOutput {
  private:
   std::unique_ptr<StockView> v_;
   std::vector<uint64_t> scratch_;
+  bool antialias_ = false;
+  std::vector<uint64_t> big_;  // the supersampled frame (antialias_)
   const Legend* legend_ = nullptr;
   std::unique_ptr<ViewLegend> view_legend_;  // legend_ as the view draws it
   struct Marks {

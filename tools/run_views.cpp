@@ -11,6 +11,19 @@
 namespace dexmill {
 namespace cli {
 
+namespace {
+
+// Whether a still (--image, or --error-image: no --overlay) is drawn
+// anti-aliased: unless asked not to, or under an --overlay (which blends
+// two frames by their depth at the frame's own size) or the --path-overlay
+// (its one-pixel lines would come out at half strength: display/backplot.h
+// draws them at the supersampled size).
+bool still_antialiased(const RunOptions& o, bool overlaid) {
+  return o.view.antialias && !overlaid && !o.view.path_overlay;
+}
+
+}  // namespace
+
 bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) {
   // A still frame of its own at --size.
   pixels->assign(static_cast<size_t>(o.view.width) * static_cast<size_t>(o.view.height), 0);
@@ -21,6 +34,7 @@ bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::un
   fb.stride_bytes = o.view.width * 4;
   fb.format = PixelFormat::kXrgb8888;
   out->reset(new RenderOutput());
+  (*out)->set_antialias(still_antialiased(o, out == &image_out_ && o.view.overlay != ViewOptions::Overlay::kNone));
   std::string err;
   if ((*out)->init(sim_->grid(), fb, cam_, &err)) return true;
   fail(kExitUsage, "%s", err.c_str());
@@ -88,10 +102,12 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     every_ = o.out.every ? static_cast<uint64_t>(o.out.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
     outputs_.push_back(frames_out_.get());
   }
-  // The final image is the frame of the live view or of the sequence when
-  // there is one (the same pixels), else a frame of its own.
+  // The final image is the frame of the live view when there is one (the
+  // same pixels), else a frame of its own: anti-aliased, or the sequence's
+  // last (aliased) frame with --no-antialias or --overlay.
   image_src_ = is_live_ ? live_.output() : frames_out_.get();
-  if (!o.out.image.empty() && !image_src_) {
+  const bool own_still = still_antialiased(o, o.view.overlay != ViewOptions::Overlay::kNone) && !is_live_;
+  if (!o.out.image.empty() && (!image_src_ || own_still)) {
     if (!still(o, &image_pixels_, &image_out_)) return kExitUsage;
     outputs_.push_back(image_out_.get());
     image_src_ = image_out_.get();
