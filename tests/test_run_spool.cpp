@@ -83,7 +83,7 @@ TEST(run_copy_removes_what_a_killed_run_left) {
   if (skip()) return;
   const std::string d = fresh_dir("killed");
   // A run killed while it copies leaves its copy (SIGKILL has no handler) ...
-  Result r = run_shell("{ echo 'G0 X1'; sleep 2; } | TMPDIR='" + d + "' {bin} run - -q & pid=$!; sleep 0.5; kill -KILL $pid");
+  Result r = run_shell("{ echo 'G0 X1'; sleep 2; } | TMPDIR='" + d + "' {bin} run - -q & pid=$!; sleep 0.5; kill -KILL $pid; { wait $pid; } 2>/dev/null");  // dead, its lock gone, before the next run looks
   CHECK_EQ(count_prefixed(d, "dexmill-input-"), 1);
   // ... which the next copy removes, but not a live run's (held: its lock).
   const std::string live = d + "/dexmill-input-Live1234";
