@@ -126,7 +126,7 @@ struct ViewOptions {
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
   bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)
   bool decorations = true;       // the axis triad and scale bar in images and frames; --no-decorations
-  bool antialias = true;         // the final stills 2x2 supersampled (display/supersample.h); --no-antialias
+  bool antialias = true;         // the final stills and saved frames 2x2 supersampled (display/supersample.h); --no-antialias
   bool frame_status = false;     // --frame-status: the live views' status line under every saved frame
   bool hide_tool = false;        // --hide-tool: the final image without the cutter
   // Live outputs (--window, --fbdev).

@@ -114,7 +114,7 @@ const Option<View> kView[] = {
      "no axis triad and scale bar in the images, frames and live views (they are drawn by default)",
      [](View* o, const char*) -> int { return o->decorations = false, kExitOk; }},
     {"--no-antialias", nullptr,
-     "the final --image and --error-image with aliased edges (they are drawn 2x2 supersampled by default)",
+     "the final --image and --error-image and the --frames with aliased edges (they are drawn 2x2 supersampled by default)",
      [](View* o, const char*) -> int { return o->antialias = false, kExitOk; }},
     {"--frame-status", nullptr,
      "the live views' status line (line, X Y Z, feed, tool, time) in a strip under every --frames picture",

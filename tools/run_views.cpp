@@ -22,6 +22,14 @@ bool still_antialiased(const RunOptions& o, bool overlaid) {
   return o.view.antialias && !overlaid && !o.view.path_overlay;
 }
 
+// Whether the saved frames are: as the stills, for the same reasons but
+// the --overlay (drawn over the final image alone). Each frame redraws
+// what changed at twice the size and resolves those rectangles on the
+// renderer's tiles (display/stock_view.h), so a partial redraw equals a
+// full one. The live views stay aliased: tools/scripts/window-test.sh
+// compares them with a --no-antialias still.
+bool frames_antialiased(const RunOptions& o) { return still_antialiased(o, false); }
+
 }  // namespace
 
 bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) {
@@ -98,15 +106,18 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     FrameView picture = frames_->frame();
     picture.height = o.view.height;
     frames_out_.reset(new RenderOutput());
+    frames_out_->set_antialias(frames_antialiased(o));
     if (!frames_out_->init(grid, picture, cam_, &err)) return fail(kExitUsage, "%s", err.c_str());
     every_ = o.out.every ? static_cast<uint64_t>(o.out.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
     outputs_.push_back(frames_out_.get());
   }
-  // The final image is the frame of the live view when there is one (the
-  // same pixels), else a frame of its own: anti-aliased, or the sequence's
-  // last (aliased) frame with --no-antialias or --overlay.
+  // The final image is the frame of the live view (the same pixels, aliased)
+  // or of the sequence when there is one, drawn as the still would be; else
+  // a frame of its own. Under an --overlay the still is aliased and the
+  // frames are not, so it is a frame of its own then.
   image_src_ = is_live_ ? live_.output() : frames_out_.get();
-  const bool own_still = still_antialiased(o, o.view.overlay != ViewOptions::Overlay::kNone) && !is_live_;
+  const bool own_still =
+      !is_live_ && frames_out_ && still_antialiased(o, o.view.overlay != ViewOptions::Overlay::kNone) != frames_antialiased(o);
   if (!o.out.image.empty() && (!image_src_ || own_still)) {
     if (!still(o, &image_pixels_, &image_out_)) return kExitUsage;
     outputs_.push_back(image_out_.get());
