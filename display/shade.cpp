@@ -170,20 +170,24 @@ void wide_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int
 
 namespace {
 
-// Turns a dexel's blurred gradient (gx, gy) towards the wide blur's
-// direction on a steep slope (shade.h).
+// A dexel whose wide window lies inside the grid. Within kShadeReach of
+// its edge lie the stock's straight outer walls (the hole border of
+// grid_block_stock), which make no staircase, and the 81 clamped taps there
+// would cost more than the rest of a frame's shading: the 3x3 stands alone.
 template <class H>
-void steep_blend(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t dz16, int64_t* gx, int64_t* gy) {
-  const int64_t n = oct_len(*gx, *gy);
-  if (n <= dz16) return;  // 45 degrees or less: the paper's normal
-  int64_t wx, wy;
-  // Only where the wide window lies inside the grid: within kShadeReach of
-  // its edge lie the stock's straight outer walls (the hole border of
-  // grid_block_stock), which make no staircase, and the 81 clamped taps
-  // there cost more than the rest of a frame's shading.
+bool wide_window_inside(const DexelGrid<H>& g, int32_t i, int32_t j) {
   constexpr int32_t R = kShadeReach;
-  if (i < R || i > g.nx - 1 - R || j < R || j > g.ny - 1 - R) return;
-  wide_gradient_interior(g.top + g.index(i, j), static_cast<ptrdiff_t>(g.nx), &wx, &wy);
+  return i >= R && i <= g.nx - 1 - R && j >= R && j <= g.ny - 1 - R;
+}
+
+// A steep slope: the 3x3 gradient's octagonal length above eq. 1's dz16
+// (more than 45 degrees).
+inline bool is_steep(int64_t dz16, int64_t gx, int64_t gy) { return oct_len(gx, gy) > dz16; }
+
+// Turns a steep dexel's blurred gradient (gx, gy) towards the wide blur's
+// direction (wx, wy) (shade.h), keeping its length.
+void steep_turn(int64_t dz16, int64_t wx, int64_t wy, int64_t* gx, int64_t* gy) {
+  const int64_t n = oct_len(*gx, *gy);
   // The wide vector cut to about 20 bits first, so that scaling it to the
   // local length stays within 64 bits (n < 2^38 for 32-bit heights).
   const uint64_t big = abs_u64(wx) | abs_u64(wy);
@@ -202,12 +206,27 @@ void steep_blend(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t dz16, int6
   *gy = div_round(*gy * (256 - w) + sy * w, 256);
 }
 
+// shade_grid's steep turn, with the wide blur as taps on the tops.
+template <class H>
+void steep_blend(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t dz16, int64_t* gx, int64_t* gy) {
+  if (!is_steep(dz16, *gx, *gy) || !wide_window_inside(g, i, j)) return;
+  int64_t wx, wy;
+  wide_gradient_interior(g.top + g.index(i, j), static_cast<ptrdiff_t>(g.nx), &wx, &wy);
+  steep_turn(dz16, wx, wy, gx, gy);
+}
+
 }  // namespace
 
+// The reference: the wide blur summed over grid_gradient as shade.h states
+// it, so that tests/test_shade.cpp checks shade_grid's taps against it.
 template <class H>
 void shade_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy) {
   blurred_gradient(g, i, j, gx, gy);
-  steep_blend(g, i, j, 16 * div_round(2 * g.pitch_nm, g.lsb_nm), gx, gy);
+  const int64_t dz16 = 16 * div_round(2 * g.pitch_nm, g.lsb_nm);
+  if (!is_steep(dz16, *gx, *gy) || !wide_window_inside(g, i, j)) return;
+  int64_t wx, wy;
+  wide_gradient(g, i, j, &wx, &wy);
+  steep_turn(dz16, wx, wy, gx, gy);
 }
 
 template <class H>

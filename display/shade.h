@@ -118,13 +118,14 @@ void shade_grid(const DexelGrid<H>& g, const Lighting& l, GridRect r, ShadeCache
 template <class H>
 void blurred_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
 
-// The same over the 9x9 wide blur (steep slopes' direction), with clamped
-// neighbours; shade_grid uses it kShadeReach or more from the grid's edge.
+// The same over the 9x9 wide blur (steep slopes' direction), summed over
+// grid_gradient with clamped neighbours: the definition that shade_grid's
+// taps on the tops (used kShadeReach or more from the grid's edge) equal.
 template <class H>
 void wide_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
 // The gradient a dexel is shaded with (the reference shade_grid must
 // equal): blurred_gradient, turned towards wide_gradient's direction on
-// steep slopes.
+// steep slopes kShadeReach or more from the grid's edge.
 template <class H>
 void shade_gradient(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t* gx, int64_t* gy);
 
