@@ -21,6 +21,21 @@ void corners(const View& v, const BoxNm& b, Q4 out[8]) {
   }
 }
 
+// The bounding box of points p[0, n), q4.
+struct Q4Box {
+  int64_t x0, y0, x1, y1;
+};
+Q4Box bounds_of(const Q4* p, int n) {
+  Q4Box b{p[0].x, p[0].y, p[0].x, p[0].y};
+  for (int k = 1; k < n; ++k) {
+    b.x0 = min_of(b.x0, p[k].x);
+    b.y0 = min_of(b.y0, p[k].y);
+    b.x1 = max_of(b.x1, p[k].x);
+    b.y1 = max_of(b.y1, p[k].y);
+  }
+  return b;
+}
+
 int64_t cross(const Q4& o, const Q4& a, const Q4& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
 // Andrew's monotone chain over the eight corners: the hull counterclockwise
@@ -49,33 +64,21 @@ int hull(Q4 p[8], Q4 h[16]) {
 ScreenRect box_outline_bounds(const View& v, const BoxNm& box) {
   Q4 c[8];
   corners(v, box, c);
-  int64_t x0 = c[0].x, y0 = c[0].y, x1 = c[0].x, y1 = c[0].y;
-  for (const Q4& q : c) {
-    x0 = min_of(x0, q.x);
-    y0 = min_of(y0, q.y);
-    x1 = max_of(x1, q.x);
-    y1 = max_of(y1, q.y);
-  }
-  return ScreenRect{static_cast<int32_t>(x0 >> kSubpixelBits), static_cast<int32_t>(y0 >> kSubpixelBits),
-                    static_cast<int32_t>((x1 >> kSubpixelBits) + 1), static_cast<int32_t>((y1 >> kSubpixelBits) + 1)};
+  const Q4Box b = bounds_of(c, 8);
+  return ScreenRect{static_cast<int32_t>(b.x0 >> kSubpixelBits), static_cast<int32_t>(b.y0 >> kSubpixelBits),
+                    static_cast<int32_t>((b.x1 >> kSubpixelBits) + 1), static_cast<int32_t>((b.y1 >> kSubpixelBits) + 1)};
 }
 
 bool box_outline_meets(const View& v, const BoxNm& box, const ScreenRect& r) {
   if (r.empty()) return false;
   Q4 c[8], h[16];
   corners(v, box, c);
+  const Q4Box bb = bounds_of(c, 8);  // the hull's too: it holds the extreme corners
   const int n = hull(c, h);
   // r in q4: its pixels' whole squares.
   const int64_t rx0 = static_cast<int64_t>(r.x0) << kSubpixelBits, ry0 = static_cast<int64_t>(r.y0) << kSubpixelBits;
   const int64_t rx1 = static_cast<int64_t>(r.x1) << kSubpixelBits, ry1 = static_cast<int64_t>(r.y1) << kSubpixelBits;
-  int64_t x0 = h[0].x, y0 = h[0].y, x1 = h[0].x, y1 = h[0].y;
-  for (int k = 0; k < n; ++k) {
-    x0 = min_of(x0, h[k].x);
-    y0 = min_of(y0, h[k].y);
-    x1 = max_of(x1, h[k].x);
-    y1 = max_of(y1, h[k].y);
-  }
-  if (x1 < rx0 || x0 > rx1 || y1 < ry0 || y0 > ry1) return false;
+  if (bb.x1 < rx0 || bb.x0 > rx1 || bb.y1 < ry0 || bb.y0 > ry1) return false;
   if (n < 3) return true;  // a point or a segment whose box meets r: near enough
   const Q4 rc[4] = {{rx0, ry0}, {rx1, ry0}, {rx1, ry1}, {rx0, ry1}};
   for (int k = 0; k < n; ++k) {
