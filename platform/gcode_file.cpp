@@ -167,18 +167,16 @@ bool GcodeFile::open_subroutine(const char* name, SourcePos* start) {
   return false;
 }
 
-std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n) {
-  char msg[400];
-  gcode_format_message(d, msg, sizeof msg);
-  int k = std::snprintf(buf, n, "%s:%u:%u: %s: %s%s", file, static_cast<unsigned>(d.line), static_cast<unsigned>(d.col),
-                        is_error ? "error" : "warning", msg, d.follow_on ? " (may follow from an earlier error)" : "");
-  return k < 0 ? 0 : (static_cast<std::size_t>(k) < n ? static_cast<std::size_t>(k) : n - 1);
-}
-
-std::string gcode_warning_message(const GcodeDiag& d) {
+std::string gcode_diag_message(const GcodeDiag& d) {
   char msg[400];
   gcode_format_message(d, msg, sizeof msg);
   return std::string(msg) + (d.follow_on ? " (may follow from an earlier error)" : "");
+}
+
+std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n) {
+  int k = std::snprintf(buf, n, "%s:%u:%u: %s: %s", file, static_cast<unsigned>(d.line), static_cast<unsigned>(d.col),
+                        is_error ? "error" : "warning", gcode_diag_message(d).c_str());
+  return k < 0 ? 0 : (static_cast<std::size_t>(k) < n ? static_cast<std::size_t>(k) : n - 1);
 }
 
 void GcodeStderrMessages::error(const GcodeDiag& d) {
@@ -191,7 +189,7 @@ void GcodeStderrMessages::error(const GcodeDiag& d) {
 
 void GcodeStderrMessages::warning(const GcodeDiag& d) {
   ++warnings_;
-  fold_.add(file_, d.line, d.col, gcode_warning_message(d));
+  fold_.add(file_, d.line, d.col, gcode_diag_message(d));
 }
 
 void GcodeNotes::message(uint32_t line, int kind, const char* text) {

@@ -148,8 +148,9 @@ class GcodeFile final : public LineInput, private ByteSource {
 // a follow-on error says so after its message.
 std::size_t gcode_format_diag(const char* file, const GcodeDiag& d, bool is_error, char* buf, std::size_t n);
 
-// The text of a warning after `FILE:LINE:COL: warning: `.
-std::string gcode_warning_message(const GcodeDiag& d);
+// The text of a diagnostic after `FILE:LINE:COL: error: ` or `warning: `
+// (a follow-on one says so), as gcode_format_diag prints it.
+std::string gcode_diag_message(const GcodeDiag& d);
 
 // Prints diagnostics to a stdio stream (stderr by default): errors as they
 // come, warnings folded (platform/warning_fold.h: a repeated one once, with
