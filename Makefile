@@ -132,7 +132,8 @@ check-layers:
 check-function-length:
 	@tests/check_function_length.sh --self-test && tests/check_function_length.sh
 
-# Every README block marked ```sh runnable runs as written (in a scratch
+# Every README block marked ```sh runnable runs as written, and each
+# ```text output block after one is what it printed (in a scratch
 # copy of the tree, with this build); the self-test shows a failing one fails.
 check-readme: $(BIN)
 	@tests/readme_blocks.sh --self-test $(BUILD) && tests/readme_blocks.sh $(BUILD)

@@ -50,7 +50,7 @@ void units_evidence_add(UnitsEvidence* e, const CanonRecord& r, bool programmed_
 
 bool units_look_like_inch(const UnitsEvidence& e) {
   if (!e.fed) return false;
-  if (e.x_hi_nm - e.x_lo_nm >= kInchLookExtentNm || e.y_hi_nm - e.y_lo_nm >= kInchLookExtentNm) return false;
+  if (e.extent_nm() >= kInchLookExtentNm) return false;
   if (e.feed_max_nm_per_min >= kInchLookFastFeedNmPerMin) return false;
   return e.top_nm < kInchLookTopNm || e.feed_max_nm_per_min < kInchLookSlowFeedNmPerMin;
 }
