@@ -61,13 +61,14 @@ struct Plot {
   uint32_t value;
   bool dashed;
   bool depth_test;
+  int32_t width_px;  // pixels across the line (backplot.h)
   ScreenRect touched{0, 0, 0, 0};
 
   // One pixel of the line at depth d; `step` is its index along the longer
-  // axis (the dash pattern).
+  // axis (the dash pattern, as long on the picture at any width).
   void pixel(int32_t x, int32_t y, int64_t d, int32_t step) {
     if (x < clip.x0 || x >= clip.x1 || y < clip.y0 || y >= clip.y1) return;
-    if (dashed && ((step / kBackplotDashPx) & 1)) return;
+    if (dashed && ((step / (kBackplotDashPx * width_px)) & 1)) return;
     touched = rect_union(touched, ScreenRect{x, y, x + 1, y + 1});
     uint8_t* crow = static_cast<uint8_t*>(fb->pixels) + static_cast<int64_t>(y) * fb->stride_bytes;
     if (depth_test && hidden(x, y, d)) return;
@@ -85,7 +86,13 @@ struct Plot {
     return stored > reinterpret_cast<const uint32_t*>(zrow)[x];
   }
 
-  // A projected segment: one pixel per pixel centre along its longer axis.
+  // The pixels across the line at minor-axis q4 coordinate c, from *first:
+  // width_px of them, those whose centres lie within half the width of c
+  // (one: the pixel c falls in).
+  int32_t across(int64_t c) const { return width_px == 1 ? floor_div16(c) : first_centre(c - 8 * width_px); }
+
+  // A projected segment: width_px pixels per pixel centre along its longer
+  // axis.
   void line(RasterVertex a, RasterVertex b) {
     const int64_t adx = b.x_q4 > a.x_q4 ? b.x_q4 - a.x_q4 : a.x_q4 - b.x_q4;
     const int64_t ady = b.y_q4 > a.y_q4 ? b.y_q4 - a.y_q4 : a.y_q4 - b.y_q4;
@@ -102,9 +109,11 @@ struct Plot {
     const int64_t span = a1 - a0, dm = m1 - m0, dd = static_cast<int64_t>(b.depth) - a.depth;
     int32_t p0 = first_centre(a0), p1 = floor_div16(a1 - 8);
     if (p0 > p1) {  // shorter than a pixel: the pixel of its middle
-      const int32_t mx = floor_div16((static_cast<int64_t>(a.x_q4) + b.x_q4) >> 1);
-      const int32_t my = floor_div16((static_cast<int64_t>(a.y_q4) + b.y_q4) >> 1);
-      pixel(mx, my, (static_cast<int64_t>(a.depth) + b.depth) >> 1, x_major ? mx : my);
+      const int32_t mx = across((static_cast<int64_t>(a.x_q4) + b.x_q4) >> 1);
+      const int32_t my = across((static_cast<int64_t>(a.y_q4) + b.y_q4) >> 1);
+      for (int32_t i = 0; i < width_px; ++i)
+        for (int32_t j = 0; j < width_px; ++j)
+          pixel(mx + i, my + j, (static_cast<int64_t>(a.depth) + b.depth) >> 1, x_major ? mx : my);
       return;
     }
     // Only the steps inside the clip rectangle: the pixels do not change.
@@ -113,13 +122,25 @@ struct Plot {
     if (p1 > hi) p1 = hi;
     for (int32_t p = p0; p <= p1; ++p) {
       const int64_t t = static_cast<int64_t>(p) * 16 + 8 - a0;  // q4 along the major axis, 0..span
-      const int32_t m = floor_div16(m0 + (span ? dm * t / span : 0));
+      const int32_t m = across(m0 + (span ? dm * t / span : 0));
       const int64_t d = a.depth + (span ? dd * t / span : 0);
-      if (x_major) pixel(p, m, d, p);
-      else pixel(m, p, d, p);
+      for (int32_t i = 0; i < width_px; ++i) {
+        if (x_major) pixel(p, m + i, d, p);
+        else pixel(m + i, p, d, p);
+      }
     }
   }
 };
+
+// Every pixel a projected segment w pixels wide may light: the pixels its
+// ends fall in, and w more round them (the pixels across the line reach
+// one before the pixel of the line's centre and w - 1 after it; one more
+// each way keeps the exact box's rounding out of the question).
+ScreenRect segment_box(const RasterVertex& a, const RasterVertex& b, int32_t w) {
+  const int32_t x0 = floor_div16(a.x_q4 < b.x_q4 ? a.x_q4 : b.x_q4), x1 = floor_div16(a.x_q4 < b.x_q4 ? b.x_q4 : a.x_q4);
+  const int32_t y0 = floor_div16(a.y_q4 < b.y_q4 ? a.y_q4 : b.y_q4), y1 = floor_div16(a.y_q4 < b.y_q4 ? b.y_q4 : a.y_q4);
+  return ScreenRect{x0 - w, y0 - w, x1 + 1 + w, y1 + 1 + w};
+}
 
 PointNm along(const PointNm& p, const int32_t dir_q30[3], int64_t len_nm) {
   return PointNm{p.x_nm + ((dir_q30[0] * len_nm) >> 30), p.y_nm + ((dir_q30[1] * len_nm) >> 30),
@@ -143,8 +164,9 @@ int32_t backplot_depth_bias(const View& v) {
 }
 
 ScreenRect backplot_draw(const FrameView& fb, const DepthView& z, const View& v, const PathSegment* segs, uint32_t n,
-                         uint32_t done, ScreenRect clip, const BackplotColours& colours) {
+                         uint32_t done, ScreenRect clip, const BackplotColours& colours, int32_t width_px) {
   Plot plot;
+  plot.width_px = width_px < 1 ? 1 : width_px;
   plot.fb = &fb;
   plot.z = &z;
   plot.bias = backplot_depth_bias(v);
@@ -155,10 +177,9 @@ ScreenRect backplot_draw(const FrameView& fb, const DepthView& z, const View& v,
   for (uint32_t k = 0; k < n; ++k) {
     RasterVertex a, b;
     if (!project_segment(v, segs[k], &a, &b)) continue;
-    // A cheap test first: the segment's screen box against the rectangle.
-    const int32_t x0 = floor_div16(a.x_q4 < b.x_q4 ? a.x_q4 : b.x_q4), x1 = floor_div16(a.x_q4 < b.x_q4 ? b.x_q4 : a.x_q4);
-    const int32_t y0 = floor_div16(a.y_q4 < b.y_q4 ? a.y_q4 : b.y_q4), y1 = floor_div16(a.y_q4 < b.y_q4 ? b.y_q4 : a.y_q4);
-    if (x1 < plot.clip.x0 || x0 >= plot.clip.x1 || y1 < plot.clip.y0 || y0 >= plot.clip.y1) continue;
+    // A cheap test first: the segment's screen box, widened by the pixels
+    // across the line (backplot_bounds), against the rectangle.
+    if (rect_intersect(segment_box(a, b, plot.width_px), plot.clip).empty()) continue;
     const bool feed = segs[k].kind == PathKind::kFeed;
     plot.value = values[(feed ? 2 : 0) + (k < done ? 1 : 0)];
     plot.dashed = !feed;
@@ -168,14 +189,14 @@ ScreenRect backplot_draw(const FrameView& fb, const DepthView& z, const View& v,
   return plot.touched;
 }
 
-ScreenRect backplot_bounds(const FrameView& fb, const View& v, const PathSegment* segs, uint32_t from, uint32_t to) {
+ScreenRect backplot_bounds(const FrameView& fb, const View& v, const PathSegment* segs, uint32_t from, uint32_t to,
+                           int32_t width_px) {
+  const int32_t w = width_px < 1 ? 1 : width_px;
   ScreenRect box{0, 0, 0, 0};
   for (uint32_t k = from; k < to; ++k) {
     RasterVertex a, b;
     if (!project_segment(v, segs[k], &a, &b)) continue;
-    const int32_t x0 = floor_div16(a.x_q4 < b.x_q4 ? a.x_q4 : b.x_q4), x1 = floor_div16(a.x_q4 < b.x_q4 ? b.x_q4 : a.x_q4);
-    const int32_t y0 = floor_div16(a.y_q4 < b.y_q4 ? a.y_q4 : b.y_q4), y1 = floor_div16(a.y_q4 < b.y_q4 ? b.y_q4 : a.y_q4);
-    box = rect_union(box, ScreenRect{x0 - 1, y0 - 1, x1 + 2, y1 + 2});
+    box = rect_union(box, segment_box(a, b, w));
   }
   return rect_intersect(box, ScreenRect{0, 0, fb.width, fb.height});
 }

@@ -46,17 +46,21 @@ constexpr int32_t kBackplotDashPx = 4;
 
 // Draws segs[0, n) over fb inside `clip` (clipped to the frame), those
 // before index `done` in the done colours, depth-tested against z (the
-// frame's depth buffer; its format says how depths are stored). Returns
-// the rectangle of the pixels it may have changed (empty if none).
+// frame's depth buffer; its format says how depths are stored), each line
+// width_px pixels across and its dashes width_px times as long: 2 in a
+// frame supersampled 2x2 (display/supersample.h), so the averaged picture
+// shows a line one of its pixels wide at full strength, anti-aliased.
+// Returns the rectangle of the pixels it may have changed (empty if none).
 ScreenRect backplot_draw(const FrameView& fb, const DepthView& z, const View& v, const PathSegment* segs, uint32_t n,
-                         uint32_t done, ScreenRect clip, const BackplotColours& colours);
+                         uint32_t done, ScreenRect clip, const BackplotColours& colours, int32_t width_px = 1);
 
 // The depth bias of a view (above), in depth units.
 int32_t backplot_depth_bias(const View& v);
 
 // The screen rectangle segs[from, to) may light (empty when none is in
 // view): what changes when they turn from to-come to done.
-ScreenRect backplot_bounds(const FrameView& fb, const View& v, const PathSegment* segs, uint32_t from, uint32_t to);
+ScreenRect backplot_bounds(const FrameView& fb, const View& v, const PathSegment* segs, uint32_t from, uint32_t to,
+                           int32_t width_px = 1);
 
 }  // namespace dexmill
 

@@ -21,6 +21,9 @@ void add_rect(RenderResult* res, const ScreenRect& r) {
   else res->rects[res->nrects - 1] = rect_union(res->rects[res->nrects - 1], r);
 }
 
+// The path's width in the renderer's pixels: one pixel of the picture.
+int32_t path_width_px(const StockView& v) { return v.big_pixels ? 2 : 1; }
+
 // The path over what render_update drew, inside each rectangle it
 // repainted (the whole frame after a full redraw; where pieces turned to
 // done, stock_view_draw had it repaint). Every piece is redrawn in order
@@ -30,7 +33,7 @@ void draw_path(StockView* v, RenderResult* res) {
   const BackplotColours colours;
   const DepthView depth = stock_view_depth(*v);
   for (int k = 0; k < res->nrects; ++k)
-    backplot_draw(v->r.fb, depth, v->r.view, v->path, v->path_n, done, res->rects[k], colours);
+    backplot_draw(v->r.fb, depth, v->r.view, v->path, v->path_n, done, res->rects[k], colours, path_width_px(*v));
   v->path_drawn_done = done;
 }
 
@@ -81,6 +84,16 @@ void resolve(StockView* v, RenderResult* res) {
     res->rects[k] = supersample_half_rect(res->rects[k]);
     downsample_2x2(v->big, v->fb, res->rects[k]);
   }
+}
+
+// What is drawn over the picture at its own size (view_1x), after the
+// scene: the marks, the legend and the decorations.
+void draw_layers(StockView* v, RenderResult* res) {
+  draw_marks(v, res);
+  if (v->legend) draw_legend(v, res);
+  const ScreenRect area = stock_view_picture_area(*v);
+  if (!decorations_place(*v, v->view_1x, area).empty())
+    add_rect(res, decorations_draw(v->fb, v->view_1x, renderer_stock_box(v->r), area));
 }
 
 }  // namespace
@@ -207,7 +220,8 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   if (path) {
     const uint32_t done = min_of(v->path_done, v->path_n);
     if (done > v->path_drawn_done)
-      renderer_invalidate(&v->r, backplot_bounds(v->r.fb, v->r.view, v->path, v->path_drawn_done, done));
+      renderer_invalidate(&v->r,
+                          backplot_bounds(v->r.fb, v->r.view, v->path, v->path_drawn_done, done, path_width_px(*v)));
   }
   const GridRect saved = g->dirty;
   g->dirty = v->pending;
@@ -223,12 +237,22 @@ RenderResult stock_view_draw(StockView* v, DexelGrid<height_t>* g, const CutterP
   } else {
     v->view_1x = v->r.view;
   }
-  draw_marks(v, &res);
-  if (v->legend) draw_legend(v, &res);
-  const ScreenRect area = stock_view_picture_area(*v);
-  if (!decorations_place(*v, v->view_1x, area).empty())
-    add_rect(&res, decorations_draw(v->fb, v->view_1x, renderer_stock_box(v->r), area));
+  draw_layers(v, &res);
   return res;
+}
+
+bool stock_view_blend(StockView* base, const StockView& top) {
+  const FrameView& scene = base->r.fb;
+  if (!overlay_blend(scene, stock_view_depth(*base), top.r.fb, stock_view_depth(top),
+                     ScreenRect{0, 0, scene.width, scene.height}))
+    return false;
+  if (!base->big_pixels) return true;  // blended over the picture as it is
+  RenderResult res;
+  res.nrects = 1;
+  res.rects[0] = ScreenRect{0, 0, scene.width, scene.height};
+  resolve(base, &res);
+  draw_layers(base, &res);
+  return true;
 }
 
 DepthView stock_view_depth(const StockView& v) {

@@ -169,6 +169,13 @@ inline const FrameView& stock_view_scene_frame(const StockView& v) { return v.r.
 // Draws with the scene frame and camera of `other` (a grid of the same
 // geometry): the two frames can be overlaid (display/overlay.h).
 void stock_view_share_frame(StockView* v, const StockView& other);
+// The paper's translucent overlay (display/overlay.h): top's scene, as it
+// was last drawn through the frame v shares (stock_view_share_frame),
+// blended over v's where it is nearer. Supersampled (both views must be),
+// at twice the size, then v's picture is averaged again and its marks,
+// legend and decorations drawn over it; else over v's picture as it is.
+// False (nothing drawn) when the frames or depths do not match.
+bool stock_view_blend(StockView* v, const StockView& top);
 inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
 void stock_view_set_camera(StockView* v, const Camera& c);
 // The chosen camera fitted to the stock and the fixtures, inside the

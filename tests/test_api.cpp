@@ -423,27 +423,29 @@ struct Frame {
   std::vector<uint8_t> pixels;
   std::vector<uint64_t> mem;
   dm_view* view = nullptr;
-  Frame(dm_sim* s, int32_t w, int32_t h, int32_t format, int32_t pad) {
+  Frame(dm_sim* s, int32_t w, int32_t h, int32_t format, int32_t pad, uint32_t flags = 0) {
     const int32_t stride = w * (format == DM_RGB565 ? 2 : 4) + pad;
     pixels.assign(static_cast<size_t>(stride) * h, 0);
     size_t n = 0;
-    CHECK_EQ(dm_view_bytes(s, w, h, &n), DM_OK);
+    CHECK_EQ(dm_view_bytes_flags(s, w, h, format, flags, &n), DM_OK);
     mem.assign(n / 8 + 1, 0);
     const dm_frame f{pixels.data(), w, h, stride, format};
-    CHECK_EQ(dm_view_create(s, &f, nullptr, mem.data(), n, &view), DM_OK);
+    CHECK_EQ(dm_view_create_flags(s, &f, nullptr, flags, mem.data(), n, &view), DM_OK);
   }
   ~Frame() { dm_view_destroy(view); }
 };
 
 }  // namespace
 
+namespace {
+
 // A view drawn after every few moves (incremental redraw) ends with the
 // pixels of one drawn once at the end, in both formats and with padded
 // rows; nothing allocates once the simulation and views are made.
-TEST(api_views_redraw_incrementally_without_heap) {
+void check_incremental_redraw(uint32_t flags) {
   for (int32_t format : {DM_XRGB8888, DM_RGB565}) {
     Api a(pocket_job());
-    Frame often(a.sim, 160, 120, format, 12), once(a.sim, 160, 120, format, 12);
+    Frame often(a.sim, 160, 120, format, 12, flags), once(a.sim, 160, 120, format, 12, flags);
     const std::string prog = pocket_text();
     const uint64_t before = t::heap_allocations();
     dm_budget b{};
@@ -495,6 +497,66 @@ TEST(api_views_redraw_incrementally_without_heap) {
     CHECK_EQ(dm_render(once.view, r, 4, &n), DM_E_STATE);
     a.sim = nullptr;
   }
+}
+
+}  // namespace
+
+TEST(api_views_redraw_incrementally_without_heap) { check_incremental_redraw(0); }
+
+// Anti-aliased (DM_VIEW_ANTIALIAS): a partial redraw resolves only what
+// changed, on the renderer's tiles, and still equals a whole one.
+TEST(api_antialiased_views_redraw_incrementally_without_heap) { check_incremental_redraw(DM_VIEW_ANTIALIAS); }
+
+// DM_VIEW_ANTIALIAS against an aliased view of the same cut: its memory
+// holds the frame at twice the size; inside regions of one colour the two
+// pictures are the same, at the edges they differ; bad flags and frames too
+// large to double are refused.
+TEST(api_antialiased_view_memory_edges_and_refusals) {
+  Api a(pocket_job());
+  size_t plain_n = 0, aa_n = 0, aa565_n = 0, n = 0;
+  CHECK_EQ(dm_view_bytes(a.sim, 320, 240, &plain_n), DM_OK);
+  CHECK_EQ(dm_view_bytes_flags(a.sim, 320, 240, DM_XRGB8888, DM_VIEW_ANTIALIAS, &aa_n), DM_OK);
+  CHECK_EQ(dm_view_bytes_flags(a.sim, 320, 240, DM_RGB565, DM_VIEW_ANTIALIAS, &aa565_n), DM_OK);
+  std::printf("  view bytes 320x240: %zu aliased, %zu anti-aliased (XRGB8888), %zu (RGB565)\n", plain_n, aa_n, aa565_n);
+  CHECK(aa_n > 4 * plain_n && aa_n < 6 * plain_n);  // 4x the scratch, and the doubled frame
+  CHECK_EQ(aa_n - aa565_n, static_cast<size_t>(640 * 480 * 2));  // the doubled frame's pixels, 4 or 2 bytes
+  CHECK_EQ(dm_view_bytes_flags(a.sim, 320, 240, DM_XRGB8888, 2, &n), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_bytes_flags(a.sim, 320, 240, 7, 0, &n), DM_E_FRAME);
+  CHECK_EQ(dm_view_bytes_flags(a.sim, DM_FRAME_MAX_SIDE / 2 + 1, 240, DM_XRGB8888, DM_VIEW_ANTIALIAS, &n), DM_E_FRAME);
+  CHECK_EQ(dm_view_bytes_flags(a.sim, DM_FRAME_MAX_SIDE / 2 + 1, 240, DM_XRGB8888, 0, &n), DM_OK);
+  std::vector<uint64_t> mem(aa_n / 8 + 1, 0);
+  std::vector<uint32_t> px(320 * 240, 0);
+  const dm_frame f{px.data(), 320, 240, 320 * 4, DM_XRGB8888};
+  dm_view* v = nullptr;
+  CHECK_EQ(dm_view_create_flags(a.sim, &f, nullptr, 4, mem.data(), aa_n, &v), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_create_flags(a.sim, &f, nullptr, DM_VIEW_ANTIALIAS, mem.data(), aa_n - 8, &v), DM_E_MEMORY);
+  CHECK(v == nullptr);
+  Frame plain(a.sim, 320, 240, DM_XRGB8888, 0), aa(a.sim, 320, 240, DM_XRGB8888, 0, DM_VIEW_ANTIALIAS);
+  CHECK_EQ(a.run(pocket_text(), 4096), DM_DONE);
+  dm_rect r[DM_RECTS_MAX];
+  int32_t nr = 0;
+  CHECK_EQ(dm_render(plain.view, r, DM_RECTS_MAX, &nr), DM_OK);
+  CHECK_EQ(dm_render(aa.view, r, DM_RECTS_MAX, &nr), DM_OK);
+  auto at = [](const Frame& fr, int32_t x, int32_t y) {
+    uint32_t p;
+    std::memcpy(&p, &fr.pixels[(static_cast<size_t>(y) * 320 + x) * 4], 4);
+    return p;
+  };
+  int flat = 0, flat_same = 0, differ = 0;
+  for (int32_t y = 1; y < 239; ++y)
+    for (int32_t x = 1; x < 319; ++x) {
+      differ += at(plain, x, y) != at(aa, x, y);
+      bool one = true;
+      for (int32_t dy = -1; dy <= 1; ++dy)
+        for (int32_t dx = -1; dx <= 1; ++dx) one = one && at(plain, x + dx, y + dy) == at(plain, x, y);
+      if (!one) continue;
+      ++flat;
+      flat_same += at(aa, x, y) == at(plain, x, y);
+    }
+  std::printf("  %d of %d flat pixels equal, %d pixels differ\n", flat_same, flat, differ);
+  CHECK_GT(flat, 20000);
+  CHECK_EQ(flat_same, flat);
+  CHECK_GT(differ, 300);
 }
 
 // dm_view_set_decorations: the triad and scale bar in the bottom-left

@@ -68,11 +68,15 @@ std::vector<int> changed(const FrameView& fb, const std::vector<uint32_t>& base)
 
 }  // namespace
 
-TEST(backplot_pixels_follow_the_projected_line) {
-  // Over a depth buffer that lets everything through: every lit pixel's
-  // centre within half a pixel (plus the rounding of one step) of the line
-  // through the ends as view_point and clip_project place them, one pixel
-  // per pixel centre along the longer axis, and for rapids only the dashes.
+namespace {
+
+// Over a depth buffer that lets everything through: every lit pixel's
+// centre within half the width (plus the rounding of the projected ends
+// and of one step, 2/16 pixel) of the line
+// through the ends as view_point and clip_project place them, `w` pixels
+// per pixel centre along the longer axis, and for rapids only the dashes
+// (w times as long).
+void check_pixels_follow_line(int32_t w) {
   static Scene s;
   make_scene(&s, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso);
   std::vector<uint32_t> far_z(static_cast<size_t>(kW) * kH, 0xFFFFFFFFu);
@@ -87,7 +91,7 @@ TEST(backplot_pixels_follow_the_projected_line) {
     const PathSegment sg = seg(coord(30), coord(20), coord(10), coord(30), coord(20), coord(10), kind);
     frame_fill(s.f.fb, ScreenRect{0, 0, kW, kH}, 0);
     std::vector<uint32_t> black(s.f.pixels.size(), 0);
-    backplot_draw(s.f.fb, z, s.r.view, &sg, 1, 0, ScreenRect{0, 0, kW, kH}, BackplotColours());
+    backplot_draw(s.f.fb, z, s.r.view, &sg, 1, 0, ScreenRect{0, 0, kW, kH}, BackplotColours(), w);
     const std::vector<int> lit = changed(s.f.fb, black);
     lit_total += static_cast<int>(lit.size());
     // The line in screen q4, in double, from the unclipped ends.
@@ -105,11 +109,11 @@ TEST(backplot_pixels_follow_the_projected_line) {
       const double tt = x_major ? (cx - ax) / dx : (cy - ay) / dy;
       const double off = x_major ? std::fabs(cy - (ay + dy * tt)) : std::fabs(cx - (ax + dx * tt));
       worst_off_q4 = std::max(worst_off_q4, static_cast<int>(std::ceil(off)));
-      CHECK(off <= 8.0 + 1.0);
+      CHECK(off <= 8.0 * w + 2.0);
       CHECK(tt >= -1e-9 && tt <= 1 + 1e-9);
       ++on_axis;
       const int step = x_major ? px : py;
-      if (kind == PathKind::kRapid && ((step / kBackplotDashPx) & 1) == 0) ++dashes_ok;
+      if (kind == PathKind::kRapid && ((step / (kBackplotDashPx * w)) & 1) == 0) ++dashes_ok;
     }
     // Pixel centres along the major axis inside the frame and the segment.
     const double lo = x_major ? std::min(ax, ax + dx) : std::min(ay, ay + dy);
@@ -121,18 +125,29 @@ TEST(backplot_pixels_follow_the_projected_line) {
       if (c < lo || c > hi) continue;
       const double tt = x_major ? (c - ax) / dx : (c - ay) / dy;
       const double m = (x_major ? ay + dy * tt : ax + dx * tt) / 16.0;
-      if (m < 0 || m >= (x_major ? kH : kW)) continue;
-      if (kind == PathKind::kRapid && ((p / kBackplotDashPx) & 1)) continue;
-      ++expect;
+      if (kind == PathKind::kRapid && ((p / (kBackplotDashPx * w)) & 1)) continue;
+      // The pixels across: the one m falls in, or the w whose centres lie
+      // within w / 2 of it; those inside the frame.
+      const int first = w == 1 ? static_cast<int>(std::floor(m)) : static_cast<int>(std::ceil(m - 0.5 - w / 2.0));
+      for (int i = first; i < first + w; ++i) expect += i >= 0 && i < (x_major ? kH : kW);
     }
     if (kind == PathKind::kRapid) CHECK_EQ(dashes_ok, on_axis);
     // Allow one pixel either way where the line leaves the frame or a
-    // clipped end was moved onto the guard band.
-    if (std::abs(on_axis - expect) > 2) std::printf("  segment %d: %d lit, %d expected\n", k, on_axis, expect);
-    CHECK(std::abs(on_axis - expect) <= 2);
+    // clipped end was moved onto the guard band (w across).
+    if (std::abs(on_axis - expect) > 2 * w) std::printf("  segment %d: %d lit, %d expected\n", k, on_axis, expect);
+    CHECK(std::abs(on_axis - expect) <= 2 * w);
   }
-  std::printf("  backplot: %d pixels lit by 300 segments, worst offset %.2f px\n", lit_total, worst_off_q4 / 16.0);
-  CHECK(lit_total > 10000);
+  std::printf("  backplot %d px wide: %d pixels lit by 300 segments, worst offset %.2f px\n", static_cast<int>(w),
+              lit_total, worst_off_q4 / 16.0);
+  CHECK(lit_total > 10000 * w);
+}
+
+}  // namespace
+
+TEST(backplot_pixels_follow_the_projected_line) {
+  check_pixels_follow_line(1);
+  // Two pixels across: a supersampled frame's line (display/stock_view.h).
+  check_pixels_follow_line(2);
 }
 
 TEST(backplot_depth_test_hides_the_path_behind_the_part) {
@@ -161,7 +176,7 @@ TEST(backplot_depth_test_hides_the_path_behind_the_part) {
 
 namespace {
 
-void check_rect_redraws(PixelFormat fmt, ZFormat zf) {
+void check_rect_redraws(PixelFormat fmt, ZFormat zf, int32_t w) {
   static Scene s;
   make_scene(&s, fmt, zf, ViewPreset::kIso);
   const DepthView z = depth_of(s.r);
@@ -181,7 +196,7 @@ void check_rect_redraws(PixelFormat fmt, ZFormat zf) {
   const BackplotColours colours;
   auto full = [&](uint32_t done) {
     std::memcpy(s.f.pixels.data(), s.rendered.data(), s.rendered.size() * 4);
-    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, done, all, colours);
+    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, done, all, colours, w);
     return s.f.pixels;
   };
   t::Rng pick(5);
@@ -195,7 +210,7 @@ void check_rect_redraws(PixelFormat fmt, ZFormat zf) {
     full(from);
     const int32_t x0 = static_cast<int32_t>(uniform01(&pick) * kW), y0 = static_cast<int32_t>(uniform01(&pick) * kH);
     const ScreenRect repaint{x0, y0, x0 + 1 + static_cast<int32_t>(uniform01(&pick) * 80), y0 + 1 + static_cast<int32_t>(uniform01(&pick) * 60)};
-    const ScreenRect turned = backplot_bounds(s.f.fb, s.r.view, path.data(), from, to);
+    const ScreenRect turned = backplot_bounds(s.f.fb, s.r.view, path.data(), from, to, w);
     // As the renderer does: the part repainted in both, then the path.
     for (const ScreenRect& rect : {turned, repaint}) {
       const ScreenRect c = rect_intersect(rect, all);
@@ -206,16 +221,24 @@ void check_rect_redraws(PixelFormat fmt, ZFormat zf) {
         std::memcpy(dst + y * s.f.fb.stride_bytes + c.x0 * bpp, src + y * s.f.fb.stride_bytes + c.x0 * bpp,
                     static_cast<size_t>(c.x1 - c.x0) * bpp);
     }
-    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, to, turned, colours);
-    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, to, repaint, colours);
+    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, to, turned, colours, w);
+    backplot_draw(s.f.fb, z, s.r.view, path.data(), n, to, repaint, colours, w);
     if (s.f.pixels != want) ++differ;
   }
   CHECK_EQ(differ, 0);
+  // The whole frame repainted 4x4 tile by tile (the renderer's tiles), the
+  // path drawn inside each: the full draw, to the pixel at every tile edge.
+  const std::vector<uint32_t> whole = full(n / 2);
+  std::memcpy(s.f.pixels.data(), s.rendered.data(), s.rendered.size() * 4);
+  for (int32_t y = 0; y < kH; y += 4)
+    for (int32_t x = 0; x < kW; x += 4)
+      backplot_draw(s.f.fb, z, s.r.view, path.data(), n, n / 2, ScreenRect{x, y, x + 4, y + 4}, colours, w);
+  CHECK(s.f.pixels == whole);
   // And a draw inside a rectangle changes nothing outside it.
   full(0);
   const std::vector<uint32_t> before = s.f.pixels;
   const ScreenRect r{40, 30, 200, 170};
-  backplot_draw(s.f.fb, z, s.r.view, path.data(), n, n, r, colours);
+  backplot_draw(s.f.fb, z, s.r.view, path.data(), n, n, r, colours, w);
   int outside = 0, inside = 0;
   for (int p : changed(s.f.fb, before)) {
     const int x = p % kW, y = p / kW;
@@ -229,6 +252,8 @@ void check_rect_redraws(PixelFormat fmt, ZFormat zf) {
 }  // namespace
 
 TEST(backplot_redraw_in_rectangles_equals_a_full_redraw) {
-  check_rect_redraws(PixelFormat::kXrgb8888, ZFormat::kZ32);
-  check_rect_redraws(PixelFormat::kRgb565, ZFormat::kZ16);
+  check_rect_redraws(PixelFormat::kXrgb8888, ZFormat::kZ32, 1);
+  check_rect_redraws(PixelFormat::kRgb565, ZFormat::kZ16, 1);
+  check_rect_redraws(PixelFormat::kXrgb8888, ZFormat::kZ32, 2);
+  check_rect_redraws(PixelFormat::kRgb565, ZFormat::kZ16, 2);
 }

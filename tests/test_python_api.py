@@ -108,11 +108,11 @@ class Views(unittest.TestCase):
                     ppm = f.read()
             self.assertEqual(ppm, b"P6\n160 120\n255\n" + rgb)
 
-    def test_decorated_frame_is_the_clis(self):
-        # With the triad and scale bar on, the frame `dexmill run` draws by
-        # default (aliased: --no-antialias).
+    def test_decorated_antialiased_frame_is_the_clis(self):
+        # With the triad and scale bar on and anti-aliased, the frame
+        # `dexmill run` draws by default.
         with dexmill.Simulation(STOCK, tool="ball:6", grid=(165, 115)) as sim:
-            view = sim.view(160, 120)
+            view = sim.view(160, 120, antialias=True)
             view.set_decorations(True)
             self.assertEqual(sim.run(POCKET), "done")
             view.render()
@@ -122,7 +122,7 @@ class Views(unittest.TestCase):
                 return
             with tempfile.TemporaryDirectory() as d:
                 out = os.path.join(d, "f.ppm")
-                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--no-antialias", "--stock",
+                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--stock",
                                 "0,0,-10,33,23,0", "--tool", "ball:6", "--grid", "165x115", "--size", "160x120",
                                 "--image", out], check=True)
                 with open(out, "rb") as f:

@@ -4,6 +4,7 @@
 // Along those rows the aliased picture (--no-antialias) steps from the
 // background straight to the table, the anti-aliased one holds colours
 // between the two; inside the block's flat top both pictures are the same.
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -73,4 +74,82 @@ TEST(run_antialias_smooths_edges_and_keeps_flat_regions) {
   CHECK_EQ(hard, 0);
   CHECK_GT(flat, 2000);
   CHECK_EQ(flat_same, flat);
+}
+
+namespace {
+
+// The ink of the path's done feeds (display/backplot.h: 24, 100, 255) over
+// the grey stock, in pixels of full strength: blue over red, summed and
+// divided by the colour's own. A line one pixel wide drawn one pixel wide at
+// twice the size would average to half of the aliased picture's.
+double feed_ink(const Image& im) {
+  int64_t sum = 0;
+  for (int y = 0; y < im.h; ++y)
+    for (int x = 0; x < im.w; ++x) {
+      const int d = im.at(x, y)[2] - im.at(x, y)[0];
+      if (d > 24) sum += d;
+    }
+  return static_cast<double>(sum) / (255 - 24);
+}
+
+// Pixels where the design is blended over the cut (bluer than grey).
+int blended_pixels(const Image& im) {
+  int n = 0;
+  for (int y = 0; y < im.h; ++y)
+    for (int x = 0; x < im.w; ++x) n += im.at(x, y)[2] > im.at(x, y)[0] + 40;
+  return n;
+}
+
+// Pixels of `al` inside a 3x3 block of one colour, and how many of them
+// `aa` has the same.
+void flat_equal(const Image& al, const Image& aa, int* flat, int* flat_same) {
+  *flat = *flat_same = 0;
+  for (int y = 1; y < al.h - 1; ++y)
+    for (int x = 1; x < al.w - 1; ++x)
+      if (count_in_block(al, x, y, al.at(x, y)) == 9) {
+        ++*flat;
+        *flat_same += same(aa.at(x, y), al.at(x, y));
+      }
+}
+
+}  // namespace
+
+TEST(run_antialias_path_overlay_keeps_its_strength) {
+  if (skip()) return;
+  const std::string base = "pocket.ngc -q --size 320x240 --hide-tool --no-decorations --view top --path-overlay ";
+  CHECK_EQ(run(base + "--image %/paa.ppm").code, 0);
+  CHECK_EQ(run(base + "--no-antialias --image %/pal.ppm").code, 0);
+  const Image aa = read_ppm(tmp_dir() + "/paa.ppm"), al = read_ppm(tmp_dir() + "/pal.ppm");
+  CHECK(aa.w == 320 && al.w == 320);
+  if (aa.w != 320 || al.w != 320) return;
+  const double ink_aa = feed_ink(aa), ink_al = feed_ink(al);
+  int flat = 0, flat_same = 0;
+  flat_equal(al, aa, &flat, &flat_same);
+  std::printf("  path ink: %.0f pixels anti-aliased, %.0f aliased; %d of %d flat pixels equal\n", ink_aa, ink_al,
+              flat_same, flat);
+  CHECK_GT(ink_al, 200);
+  CHECK(ink_aa > 0.85 * ink_al && ink_aa < 1.15 * ink_al);
+  CHECK_GT(flat, 20000);
+  CHECK_GT(flat_same * 100, flat * 99);  // the same picture but at the edges
+}
+
+TEST(run_antialias_overlay_blends_at_twice_the_size) {
+  if (skip()) return;
+  const std::string base = "pocket.ngc -q --size 320x240 --hide-tool --no-decorations --design pocket_design.stl "
+                           "--overlay design ";
+  CHECK_EQ(run(base + "--image %/oaa.ppm").code, 0);
+  CHECK_EQ(run(base + "--no-antialias --image %/oal.ppm").code, 0);
+  const Image aa = read_ppm(tmp_dir() + "/oaa.ppm"), al = read_ppm(tmp_dir() + "/oal.ppm");
+  CHECK(aa.w == 320 && al.w == 320);
+  if (aa.w != 320 || al.w != 320) return;
+  const int blend_aa = blended_pixels(aa), blend_al = blended_pixels(al);
+  int flat = 0, flat_same = 0;
+  flat_equal(al, aa, &flat, &flat_same);
+  std::printf("  design over the cut: %d pixels blended anti-aliased, %d aliased; %d of %d flat pixels equal\n",
+              blend_aa, blend_al, flat_same, flat);
+  CHECK_GT(blend_al, 500);
+  CHECK(blend_aa * 10 > blend_al * 9 && blend_aa * 10 < blend_al * 11);
+  CHECK_GT(flat, 20000);
+  CHECK_GT(flat_same * 100, flat * 99);
+  CHECK(aa.rgb != al.rgb);
 }

@@ -265,10 +265,18 @@ TEST(run_color_error_frames_and_image) {
   // The overlays (paper figure 9): the design translucent over the cut shows
   // the G81 hole, the cut translucent over the design the material left.
   CHECK_EQ(run("pocket.ngc -q --size 160x120 --image %/plain.ppm").code, 0);
-  CHECK_EQ(run("pocket.ngc -q --size 160x120 --design %/pde.stl --overlay design --image %/od.ppm").code, 0);
-  CHECK_EQ(run("pocket.ngc -q --size 160x120 --design %/pde.stl --overlay workpiece --image %/ow.ppm").code, 0);
+  // Aliased (--no-antialias) as they always were; anti-aliased by default,
+  // blended at twice the size (display/stock_view.h stock_view_blend):
+  // tests/test_run_antialias.cpp checks those against the aliased ones.
+  const std::string ov = "pocket.ngc -q --size 160x120 --design %/pde.stl ";
+  CHECK_EQ(run(ov + "--no-antialias --overlay design --image %/od.ppm").code, 0);
+  CHECK_EQ(run(ov + "--no-antialias --overlay workpiece --image %/ow.ppm").code, 0);
+  CHECK_EQ(run(ov + "--overlay design --image %/oda.ppm").code, 0);
+  CHECK_EQ(run(ov + "--overlay workpiece --image %/owa.ppm").code, 0);
   check_hash(d + "od.ppm", 0x6f733d2139aa551fULL);
   check_hash(d + "ow.ppm", 0xd8104bfb93a6f65dULL);
+  check_hash(d + "oda.ppm", 0xc942f3c769b19ff6ULL);
+  check_hash(d + "owa.ppm", 0x694b35e13daba2c2ULL);
   CHECK(file_hash(d + "od.ppm") != file_hash(d + "plain.ppm"));
   const Result v = run("pocket.ngc -q --overlay design");
   CHECK_EQ(v.code, 2);
@@ -396,15 +404,19 @@ TEST(run_design_bad_files_exit_1_with_the_reason) {
 TEST(run_path_overlay_draws_the_toolpath) {
   if (skip()) return;
   // The backplot over the final frame; the frames' last one (drawn a piece
-  // at a time as the cut goes) equals a still drawn whole at the end.
+  // at a time as the cut goes) equals a still drawn whole at the end,
+  // anti-aliased (the path two pixels wide at twice the size) and not.
   const std::string d = tmp_dir() + "/";
-  CHECK_EQ(run("pocket.ngc -q --size 160x120 --image %/np.ppm").code, 0);
-  CHECK_EQ(run("pocket.ngc -q --size 160x120 --path-overlay --image %/po.ppm").code, 0);
-  CHECK_EQ(run("pocket.ngc -q --size 160x120 --path-overlay --frames %/pof --frame-format ppm --every 3 "
-               "--image %/pof.ppm").code, 0);
-  CHECK(file_hash(d + "np.ppm") != file_hash(d + "po.ppm"));
-  CHECK_EQ(file_hash(d + "po.ppm"), file_hash(d + "pof.ppm"));
-  // Done feeds in their strong blue, done rapids in yellow (all is done).
+  for (const char* aa : {"", "--no-antialias "}) {
+    const std::string base = std::string("pocket.ngc -q --size 160x120 ") + aa;
+    CHECK_EQ(run(base + "--image %/np.ppm").code, 0);
+    CHECK_EQ(run(base + "--path-overlay --image %/po.ppm").code, 0);
+    CHECK_EQ(run(base + "--path-overlay --frames %/pof --frame-format ppm --every 3 --image %/pof.ppm").code, 0);
+    CHECK(file_hash(d + "np.ppm") != file_hash(d + "po.ppm"));
+    CHECK_EQ(file_hash(d + "po.ppm"), file_hash(d + "pof.ppm"));
+  }
+  // Done feeds in their strong blue, done rapids in yellow (all is done),
+  // in the exact colours of the aliased picture.
   const std::string img = slurp(d + "po.ppm");
   int blue = 0, yellow = 0;
   for (size_t k = img.size() - 160 * 120 * 3; k + 2 < img.size(); k += 3) {

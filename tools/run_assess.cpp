@@ -159,6 +159,7 @@ bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d
   ov->pixels.assign(static_cast<size_t>(fb.height) * static_cast<size_t>(fb.stride_bytes / 4 + 1), 0);
   fb.pixels = ov->pixels.data();
   ov->out.reset(new RenderOutput());
+  ov->out->set_antialias(cut_view->antialias());  // both scenes at one size
   if (!ov->out->init(ov->grid, fb, CameraChoice{}, err)) return false;
   // The design in a colour of its own: a one-class colour mode.
   ov->cls.assign(cells, 0);
@@ -170,12 +171,11 @@ bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d
   ov->out->set_colours(&ov->colours);
   ov->out->share_view_of(*cut_view);
   ov->out->draw(&ov->grid, CutterPose{});
-  const ScreenRect all{0, 0, fb.width, fb.height};
   if (o.view.overlay == ViewOptions::Overlay::kDesign) {
-    overlay_blend(cut_view->view(), cut_view->depth(), ov->out->view(), ov->out->depth(), all);
+    (void)cut_view->blend(*ov->out);  // the same size and depth format by construction
     *shown = &cut_view->view();
   } else {
-    overlay_blend(ov->out->view(), ov->out->depth(), cut_view->view(), cut_view->depth(), all);
+    (void)ov->out->blend(*cut_view);
     *shown = &ov->out->view();
   }
   return true;

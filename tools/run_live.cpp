@@ -115,6 +115,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
   }
   FrameView pic = all;
   pic.height = all.height - band_h_;
+  out_.set_antialias(o.view.live_antialiased());
   if (!out_.init(g, pic, cam, err)) return kExitIo;
   base_wall_s_ = clock_now_s();
   next_frame_s_ = base_wall_s_;

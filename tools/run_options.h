@@ -126,7 +126,12 @@ struct ViewOptions {
   enum class Overlay : uint8_t { kNone, kDesign, kWorkpiece } overlay = Overlay::kNone;
   bool path_overlay = false;     // --path-overlay: the toolpath over every frame (display/backplot.h)
   bool decorations = true;       // the axis triad and scale bar in images and frames; --no-decorations
-  bool antialias = true;         // the final stills and saved frames 2x2 supersampled (display/supersample.h); --no-antialias
+  // Edge anti-aliasing (2x2 supersampled, display/supersample.h): the
+  // stills and saved frames unless --no-antialias; the live views only
+  // with --antialias (a panel redraws 4x the pixels). The last one given wins.
+  enum class Antialias : uint8_t { kStills, kAll, kNone } antialias = Antialias::kStills;
+  bool stills_antialiased() const { return antialias != Antialias::kNone; }
+  bool live_antialiased() const { return antialias == Antialias::kAll; }
   bool frame_status = false;     // --frame-status: the live views' status line under every saved frame
   bool hide_tool = false;        // --hide-tool: the final image without the cutter
   // Live outputs (--window, --fbdev).

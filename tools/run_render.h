@@ -84,6 +84,10 @@ class RenderOutput {
   // Draws with the scene frame and camera of `other` (a grid of the same
   // geometry): the two frames can be overlaid (display/overlay.h).
   void share_view_of(const RenderOutput& other);
+  bool antialias() const { return antialias_; }
+  // top's last drawing blended over this one's where it is nearer
+  // (display/stock_view.h stock_view_blend); false if they do not match.
+  bool blend(const RenderOutput& top) { return stock_view_blend(v_.get(), *top.v_); }
   Camera camera() const;
   void set_camera(const Camera& c);
   // The chosen camera fitted to the stock (what `r` resets the window to).

@@ -11,27 +11,6 @@
 namespace dexmill {
 namespace cli {
 
-namespace {
-
-// Whether a still (--image, or --error-image: no --overlay) is drawn
-// anti-aliased: unless asked not to, or under an --overlay (which blends
-// two frames by their depth at the frame's own size) or the --path-overlay
-// (its one-pixel lines would come out at half strength: display/backplot.h
-// draws them at the supersampled size).
-bool still_antialiased(const RunOptions& o, bool overlaid) {
-  return o.view.antialias && !overlaid && !o.view.path_overlay;
-}
-
-// Whether the saved frames are: as the stills, for the same reasons but
-// the --overlay (drawn over the final image alone). Each frame redraws
-// what changed at twice the size and resolves those rectangles on the
-// renderer's tiles (display/stock_view.h), so a partial redraw equals a
-// full one. The live views stay aliased: tools/scripts/window-test.sh
-// compares them with a --no-antialias still.
-bool frames_antialiased(const RunOptions& o) { return still_antialiased(o, false); }
-
-}  // namespace
-
 bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::unique_ptr<RenderOutput>* out) {
   // A still frame of its own at --size.
   pixels->assign(static_cast<size_t>(o.view.width) * static_cast<size_t>(o.view.height), 0);
@@ -42,7 +21,7 @@ bool RunViews::still(const RunOptions& o, std::vector<uint32_t>* pixels, std::un
   fb.stride_bytes = o.view.width * 4;
   fb.format = PixelFormat::kXrgb8888;
   out->reset(new RenderOutput());
-  (*out)->set_antialias(still_antialiased(o, out == &image_out_ && o.view.overlay != ViewOptions::Overlay::kNone));
+  (*out)->set_antialias(o.view.stills_antialiased());
   std::string err;
   if ((*out)->init(sim_->grid(), fb, cam_, &err)) return true;
   fail(kExitUsage, "%s", err.c_str());
@@ -106,18 +85,21 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
     FrameView picture = frames_->frame();
     picture.height = o.view.height;
     frames_out_.reset(new RenderOutput());
-    frames_out_->set_antialias(frames_antialiased(o));
+    // Each frame redraws what changed at twice the size and resolves those
+    // rectangles on the renderer's tiles (display/stock_view.h), so a
+    // partial redraw equals a full one.
+    frames_out_->set_antialias(o.view.stills_antialiased());
     if (!frames_out_->init(grid, picture, cam_, &err)) return fail(kExitUsage, "%s", err.c_str());
     every_ = o.out.every ? static_cast<uint64_t>(o.out.every) : max_of<uint64_t>(1, (in.motion_moves + 99) / 100);
     outputs_.push_back(frames_out_.get());
   }
-  // The final image is the frame of the live view (the same pixels, aliased)
-  // or of the sequence when there is one, drawn as the still would be; else
-  // a frame of its own. Under an --overlay the still is aliased and the
-  // frames are not, so it is a frame of its own then.
+  // The final image is the frame of the live view or of the sequence when
+  // there is one drawn as the still would be (the same pixels); else (an
+  // aliased live view, or an --overlay that would change the live view's
+  // picture) a frame of its own.
   image_src_ = is_live_ ? live_.output() : frames_out_.get();
-  const bool own_still =
-      !is_live_ && frames_out_ && still_antialiased(o, o.view.overlay != ViewOptions::Overlay::kNone) != frames_antialiased(o);
+  const bool own_still = image_src_ && (image_src_->antialias() != o.view.stills_antialiased() ||
+                                        (is_live_ && o.view.overlay != ViewOptions::Overlay::kNone));
   if (!o.out.image.empty() && (!image_src_ || own_still)) {
     if (!still(o, &image_pixels_, &image_out_)) return kExitUsage;
     outputs_.push_back(image_out_.get());
@@ -231,7 +213,7 @@ int RunViews::write_images(const RunOptions& o, const GridPlan& plan, const Imag
     const FrameView* shown = &image_src_->view();
     OverlayImage overlay;
     std::string err;
-    if (o.view.overlay != ViewOptions::Overlay::kNone && image_src_ != live_out &&
+    if (o.view.overlay != ViewOptions::Overlay::kNone &&
         !overlay_image(o, plan, *in_.design, image_src_, &overlay, &shown, &err))
       return fail(kExitUsage, "%s", err.c_str());
     const double t1 = clock_now_s();

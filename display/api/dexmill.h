@@ -364,6 +364,19 @@ DM_API dm_status dm_view_bytes(const dm_sim* sim, int32_t width, int32_t height,
  * first step to frame the whole block. */
 DM_API dm_status dm_view_create(dm_sim* sim, const dm_frame* frame, const dm_camera* camera, void* mem, size_t bytes,
                                 dm_view** out);
+/* Views with options, flags of DM_VIEW_* (0: as dm_view_create).
+ * DM_VIEW_ANTIALIAS: edges anti-aliased as `dexmill run` draws its images,
+ * by 2x2 supersampling: the scene drawn at twice the frame's width and
+ * height in the view's memory and averaged into the frame, the marks and
+ * decorations drawn over it at its own size. About 5x the memory of an
+ * aliased view (4x its scratch, and the doubled frame in this format) and
+ * 4x the pixels per render; the frame at most DM_FRAME_MAX_SIDE / 2 a side (else DM_E_FRAME).
+ * Unknown flags: DM_E_ARGUMENT. */
+#define DM_VIEW_ANTIALIAS 1u
+DM_API dm_status dm_view_bytes_flags(const dm_sim* sim, int32_t width, int32_t height, int32_t format, uint32_t flags,
+                                     size_t* bytes);
+DM_API dm_status dm_view_create_flags(dm_sim* sim, const dm_frame* frame, const dm_camera* camera, uint32_t flags,
+                                      void* mem, size_t bytes, dm_view** out);
 /* Draws what changed since the last render (all of it the first time and
  * after a camera change): the tool where it is now. rects[0, *nrects)
  * (rects may be NULL; at most max_rects, the rest merged into the last)

@@ -49,6 +49,14 @@ ScreenRect screen_rect(const dm_rect& r) { return ScreenRect{r.x0, r.y0, r.x1, r
 
 bool side_ok(int32_t n) { return n >= 1 && n <= kFrameMaxSide; }
 
+constexpr uint32_t kKnownFlags = DM_VIEW_ANTIALIAS;
+
+// The renderer's scratch in a view's block, a whole number of 8-byte words
+// (the supersampled frame follows it).
+size_t scratch_part(const DexelGrid<height_t>& g, int32_t width, int32_t height, bool supersampled) {
+  return (stock_view_scratch_bytes(g, width, height, supersampled) + 7) & ~size_t{7};
+}
+
 bool finished(const Simulation& s) {
   return s.state() == SimState::kDone || s.state() == SimState::kStopped || s.state() == SimState::kIoError;
 }
@@ -58,27 +66,44 @@ bool finished(const Simulation& s) {
 extern "C" {
 
 dm_status dm_view_bytes(const dm_sim* sim, int32_t width, int32_t height, size_t* bytes) {
-  if (!live(sim) || !bytes) return DM_E_ARGUMENT;
+  return dm_view_bytes_flags(sim, width, height, DM_XRGB8888, 0, bytes);
+}
+
+dm_status dm_view_bytes_flags(const dm_sim* sim, int32_t width, int32_t height, int32_t format, uint32_t flags,
+                              size_t* bytes) {
+  if (!live(sim) || !bytes || (flags & ~kKnownFlags) != 0) return DM_E_ARGUMENT;
   *bytes = 0;
-  if (!side_ok(width) || !side_ok(height)) return DM_E_FRAME;
-  *bytes = kViewHead + stock_view_scratch_bytes(sim->sim->grid(), width, height);
+  const bool aa = (flags & DM_VIEW_ANTIALIAS) != 0;
+  if (!side_ok(width) || !side_ok(height) || (format != DM_XRGB8888 && format != DM_RGB565)) return DM_E_FRAME;
+  if (aa && (!side_ok(2 * width) || !side_ok(2 * height))) return DM_E_FRAME;
+  *bytes = kViewHead + scratch_part(sim->sim->grid(), width, height, aa) +
+           (aa ? stock_view_supersample_bytes(width, height, static_cast<PixelFormat>(format)) : 0);
   return DM_OK;
 }
 
 dm_status dm_view_create(dm_sim* sim, const dm_frame* frame, const dm_camera* camera, void* mem, size_t bytes,
                          dm_view** out) {
-  if (!live(sim) || !out) return DM_E_ARGUMENT;
+  return dm_view_create_flags(sim, frame, camera, 0, mem, bytes, out);
+}
+
+dm_status dm_view_create_flags(dm_sim* sim, const dm_frame* frame, const dm_camera* camera, uint32_t flags,
+                               void* mem, size_t bytes, dm_view** out) {
+  if (!live(sim) || !out || (flags & ~kKnownFlags) != 0) return DM_E_ARGUMENT;
   *out = nullptr;
   FrameView fb;
   CameraChoice choice;
   if (const dm_status s = frame_view_of(frame, &fb)) return s;
   if (const dm_status s = camera_of(camera, &choice)) return s;
   size_t need = 0;
-  (void)dm_view_bytes(sim, fb.width, fb.height, &need);
+  if (const dm_status s = dm_view_bytes_flags(sim, fb.width, fb.height, frame->format, flags, &need)) return s;
   if (!mem || (reinterpret_cast<uintptr_t>(mem) & 7) != 0 || bytes < need) return DM_E_MEMORY;
   dm_view* v = new (mem) dm_view();
   DexelGrid<height_t>& grid = sim->sim->grid();
-  const Status st = stock_view_init(&v->v, grid, fb, choice, static_cast<char*>(mem) + kViewHead, need - kViewHead);
+  // The block: the dm_view, the renderer's scratch, the supersampled frame.
+  const bool aa = (flags & DM_VIEW_ANTIALIAS) != 0;
+  const size_t scratch = scratch_part(grid, fb.width, fb.height, aa);
+  if (aa) stock_view_set_supersample(&v->v, static_cast<char*>(mem) + kViewHead + scratch);
+  const Status st = stock_view_init(&v->v, grid, fb, choice, static_cast<char*>(mem) + kViewHead, scratch);
   if (!ok(st)) {
     v->tag = 0;
     return st == Status::kBufferTooSmall ? DM_E_MEMORY : DM_E_FRAME;

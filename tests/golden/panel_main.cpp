@@ -416,9 +416,46 @@ bool material_frames(golden::Out& out, DexelGrid<height_t>* g, const ToolProfile
 // card's), steps of 8 moves, the view redrawn after each into the panel's
 // framebuffer (only what changed); the removed volume, the moves and the
 // last frame's hash, equal on the board and the host.
-alignas(8) unsigned char g_view_mem[kFrameW * kFrameH * 2 + kNx * kNy * 4 + 256 * 1024];
+// The finished part as a 240x136 thumbnail (a program list's preview),
+// drawn once aliased and once anti-aliased (DM_VIEW_ANTIALIAS: the scene at
+// 480x272 averaged 2x2) in the memory the preview's view had: what the
+// switch costs on the board, in bytes and instructions, at the same size.
+constexpr int32_t kThumbW = 240, kThumbH = 136;
+uint16_t g_thumb[kThumbW * kThumbH];
+// The larger of the preview's view and the anti-aliased thumbnail's: the
+// scene at twice the size (2 bytes a pixel and a 4-byte depth), the grid's
+// shading and the renderer's tables.
+constexpr size_t kViewMemBytes = kThumbW * kThumbH * 4 * 6 + kNx * kNy * 4 + 128 * 1024;
+static_assert(kViewMemBytes >= kFrameW * kFrameH * 6 + kNx * kNy * 4, "the preview's view fits too");
+alignas(8) unsigned char g_view_mem[kViewMemBytes];
 
-bool api_preview(golden::Out& out, uint64_t* steps_out) {
+struct ThumbCost {
+  uint64_t aliased = 0, antialiased = 0;  // instructions of a whole frame each
+};
+
+// One thumbnail of the finished simulation with view flags `flags`.
+bool thumbnail(golden::Out& out, dm_sim* sim, uint32_t flags, const char* name, uint64_t* cost) {
+  dm_frame frame{g_thumb, kThumbW, kThumbH, kThumbW * 2, DM_RGB565};
+  size_t need = 0;
+  dm_view* view = nullptr;
+  if (dm_view_bytes_flags(sim, kThumbW, kThumbH, DM_RGB565, flags, &need) != DM_OK || need > sizeof g_view_mem ||
+      dm_view_create_flags(sim, &frame, nullptr, flags, g_view_mem, sizeof g_view_mem, &view) != DM_OK) {
+    out.str("panel FAIL thumbnail view").str(name).kv("bytes", static_cast<int64_t>(need)).end();
+    return false;
+  }
+  const uint64_t t0 = golden::board_instructions();
+  dm_rect all;
+  int32_t n = 0;
+  (void)dm_render(view, &all, 1, &n);
+  *cost = golden::board_instructions() - t0;
+  const FrameView fb{g_thumb, kThumbW, kThumbH, kThumbW * 2, PixelFormat::kRgb565};
+  out.str("panel thumbnail ").str(name).kv("w", kThumbW).kv("h", kThumbH).kx("hash", frame_hash(fb));
+  out.kv("view_bytes", static_cast<int64_t>(need)).end();
+  dm_view_destroy(view);
+  return true;
+}
+
+bool api_preview(golden::Out& out, uint64_t* steps_out, ThumbCost* thumbs) {
   dm_job job;
   if (dm_job_init(&job, DEXMILL_API_VERSION) != DM_OK) return false;
   job.stock = dm_box{{0, 0, 0}, {mm(48), mm(32), kStockTopNm}};
@@ -473,9 +510,11 @@ bool api_preview(golden::Out& out, uint64_t* steps_out) {
   out.str("panel api").kv("state", state).kv("moves", static_cast<int64_t>(p.moves)).kv("errors", p.errors);
   out.kv("removed_um3", static_cast<int64_t>(p.removed_um3)).kx("frame", frame_hash(fb)).end();
   dm_view_destroy(view);
+  const bool thumbs_ok = thumbnail(out, sim, 0, "aliased", &thumbs->aliased) &&
+                         thumbnail(out, sim, DM_VIEW_ANTIALIAS, "antialiased", &thumbs->antialiased);
   dm_destroy(sim);
   *steps_out = steps;
-  return state == DM_DONE && p.errors == 0;
+  return state == DM_DONE && p.errors == 0 && thumbs_ok;
 }
 
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
@@ -540,7 +579,8 @@ int main(int, char**) {
   sim_destroy(checked_sim);
   checked_sim = nullptr;
   uint64_t api_steps = 0;
-  const bool api = marbled && api_preview(out, &api_steps);
+  ThumbCost thumbs;
+  const bool api = marbled && api_preview(out, &api_steps, &thumbs);
   const uint64_t t9 = golden::board_instructions();
 
   if (t3 != 0) {
@@ -556,7 +596,9 @@ int main(int, char**) {
     info_instructions(out, "plain full frame", mcost.plain_full, 0);
     info_instructions(out, "marble update(one cut)", mcost.update, 0);
     info_instructions(out, "plain update(one cut)", mcost.plain_update, 0);
-    info_instructions(out, "api: cut in 8-move steps, a redraw after each", t9 - t8, 0);
+    info_instructions(out, "api: cut in 8-move steps, a redraw after each, two thumbnails", t9 - t8, 0);
+    info_instructions(out, "thumbnail(240x136) aliased", thumbs.aliased, 0);
+    info_instructions(out, "thumbnail(240x136) anti-aliased", thumbs.antialiased, 0);
     out.str("info api steps").kv("n", static_cast<int64_t>(api_steps)).end();
   }
   return (errors == 0 && drawn && assessed && overlaid && checked && marbled && api) ? 0 : 1;

@@ -3,7 +3,9 @@
 # it: a GLFW build runs tests/run/pocket.ngc in a window under Xvfb, the
 # window is captured with xwd once the program is done, and its picture
 # (above the status line) must equal, pixel for pixel, the PPM of the same
-# final frame that the run wrote with --image.
+# final frame that the run wrote with --image: once aliased (--no-antialias,
+# the live view's default and the still's with that flag) and once
+# anti-aliased (--antialias: the live view as the still is by default).
 #
 #   tools/scripts/window-test.sh            builds build/glfw/dexmill if needed
 # Skips (exit 0, with a message) when Xvfb, xwd or GLFW is not installed:
@@ -30,19 +32,24 @@ xpid=$!
 for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${disp#:}" ] && break; sleep 0.1; done
 [ -e "/tmp/.X11-unix/X${disp#:}" ] || { echo "window-test: FAIL: Xvfb did not start"; cat "$tmp/xvfb.log"; exit 1; }
 
-# --hold keeps the last frame up while xwd takes it; the window then closes itself.
-# Live views are drawn aliased, so the still it is compared with is too.
-DISPLAY=$disp build/glfw/dexmill run tests/run/pocket.ngc --window --exit-when-done --hold 3 --speed 50 \
-  --size 320x240 --no-antialias --image "$tmp/final.ppm" -q 2>"$tmp/run.err" &
-dpid=$!
-for _ in $(seq 300); do [ -s "$tmp/final.ppm" ] && break; kill -0 "$dpid" 2>/dev/null || break; sleep 0.1; done
-[ -s "$tmp/final.ppm" ] || { echo "window-test: FAIL: no final image"; cat "$tmp/run.err"; exit 1; }
-sleep 0.5
-xwd -display "$disp" -name dexmill -silent -out "$tmp/window.xwd" || { echo "window-test: FAIL: xwd could not capture the window"; exit 1; }
-wait "$dpid"; rc=$?; dpid=
-[ "$rc" = 0 ] || { echo "window-test: FAIL: dexmill exited $rc"; cat "$tmp/run.err"; exit 1; }
+# One run in a window with flag $1; its capture is compared with its --image.
+check_window() {
+  # --hold keeps the last frame up while xwd takes it; the window then closes itself.
+  rm -f "$tmp/final.ppm" "$tmp/window.xwd"
+  DISPLAY=$disp build/glfw/dexmill run tests/run/pocket.ngc --window --exit-when-done --hold 3 --speed 50 \
+    --size 320x240 "$1" --image "$tmp/final.ppm" -q 2>"$tmp/run.err" &
+  dpid=$!
+  for _ in $(seq 300); do [ -s "$tmp/final.ppm" ] && break; kill -0 "$dpid" 2>/dev/null || break; sleep 0.1; done
+  [ -s "$tmp/final.ppm" ] || { echo "window-test: FAIL ($1): no final image"; cat "$tmp/run.err"; exit 1; }
+  sleep 0.5
+  xwd -display "$disp" -name dexmill -silent -out "$tmp/window.xwd" || { echo "window-test: FAIL ($1): xwd could not capture the window"; exit 1; }
+  wait "$dpid"; rc=$?; dpid=
+  [ "$rc" = 0 ] || { echo "window-test: FAIL ($1): dexmill exited $rc"; cat "$tmp/run.err"; exit 1; }
+  compare "$1" || exit 1
+}
 
-python3 - "$tmp/window.xwd" "$tmp/final.ppm" <<'PY'
+compare() {
+python3 - "$tmp/window.xwd" "$tmp/final.ppm" "$1" <<'PY'
 import struct, sys
 
 def read_xwd(path):
@@ -52,7 +59,7 @@ def read_xwd(path):
     byte_order, bpp, bpl, ncolors = h[7], h[11], h[12], h[19]
     rmask, gmask, bmask = h[14], h[15], h[16]
     if bpp != 32:
-        sys.exit("window-test: FAIL: xwd gave %d bits per pixel, this check reads 32" % bpp)
+        sys.exit("window-test: FAIL (" + sys.argv[3] + "): xwd gave %d bits per pixel, this check reads 32" % bpp)
     pos = header_size + 12 * ncolors
     fmt = "<I" if byte_order == 0 else ">I"
     def shift(m):
@@ -82,13 +89,17 @@ def read_ppm(path):
 ww, wh, win = read_xwd(sys.argv[1])
 pw, ph, pic = read_ppm(sys.argv[2])
 if ww != pw or wh <= ph:
-    sys.exit("window-test: FAIL: window %dx%d, image %dx%d (the window should be the image plus a status line)" % (ww, wh, pw, ph))
+    sys.exit("window-test: FAIL (" + sys.argv[3] + "): window %dx%d, image %dx%d (the window should be the image plus a status line)" % (ww, wh, pw, ph))
 for y in range(ph):
     for x in range(pw):
         if win[y][x] != pic[y][x]:
-            sys.exit("window-test: FAIL: first differing pixel (%d, %d): window %s, image %s" % (x, y, win[y][x], pic[y][x]))
+            sys.exit("window-test: FAIL (" + sys.argv[3] + "): first differing pixel (%d, %d): window %s, image %s" % (x, y, win[y][x], pic[y][x]))
 band = set(p for row in win[ph:] for p in row)
 if len(band) < 2:
-    sys.exit("window-test: FAIL: the status line under the picture is blank")
-print("window-test: ok: the %dx%d window shows the final frame pixel for pixel, with a status line below" % (ww, wh))
+    sys.exit("window-test: FAIL (" + sys.argv[3] + "): the status line under the picture is blank")
+print("window-test: ok (" + sys.argv[3] + "): the %dx%d window shows the final frame pixel for pixel, with a status line below" % (ww, wh))
 PY
+}
+
+check_window --no-antialias
+check_window --antialias
