@@ -16,6 +16,7 @@ namespace {
 Case* g_head = nullptr;
 Case* g_tail = nullptr;
 int g_case_failures = 0;
+const char* g_current = "";
 const int kMaxLinesPerCase = 12;  // a broken loop must not flood the log
 }  // namespace
 
@@ -31,6 +32,8 @@ void fail(const char* file, int line, const char* what, const char* detail) {
   std::printf("%s:%d: %s failed%s%s\n", file, line, what, detail ? ": " : "", detail ? detail : "");
   if (g_case_failures == kMaxLinesPerCase) std::printf("%s:%d: (further failures of this test not shown)\n", file, line);
 }
+
+const char* current_case() { return g_current; }
 
 const char* dexmill_binary() { return std::getenv("DEXMILL"); }
 
@@ -53,7 +56,9 @@ namespace {
 // Runs case c; true when it passed.
 bool run_case(t::Case* c) {
   t::g_case_failures = 0;
+  t::g_current = c->name;
   c->fn();
+  t::g_current = "";
   if (!t::g_case_failures) return true;
   std::printf("FAILED %s (%s:%d), %d check(s)\n", c->name, c->file, c->line, t::g_case_failures);
   return false;

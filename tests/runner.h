@@ -93,6 +93,11 @@ bool check_near(const char* file, int line, const char* what, const A& a, const 
   return false;
 }
 
+// Name of the case running now (empty between cases): tests/golden_check.cpp
+// requires it to hold "golden", so `make bless`, which runs those cases, runs
+// every check of a golden.
+const char* current_case();
+
 // Path of the built dexmill binary (from $DEXMILL), or null.
 const char* dexmill_binary();
 // Folder of the test sources (for data files), from __FILE__ of the runner.
