@@ -160,12 +160,6 @@ std::string assessment_of(const std::string& report) {
   return a == std::string::npos || b == std::string::npos ? std::string() : report.substr(a, b - a);
 }
 
-void check_hash(const std::string& path, uint64_t want) {
-  const uint64_t got = file_hash(path);
-  if (got != want) std::printf("  %s: hash 0x%016llxULL\n", path.c_str(), static_cast<unsigned long long>(got));
-  CHECK_EQ(got, want);
-}
-
 std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_rows) {
   int w = 0, h = 0, maxval = 0, used = 0;
   if (std::sscanf(bytes.c_str(), "P6 %d %d %d%n", &w, &h, &maxval, &used) != 3 || maxval != 255) return {};

@@ -1,5 +1,6 @@
 // Running `dexmill run` from tests: a command line with % for a temporary
-// folder, its exit status, standard error and standard output; file hashes.
+// folder, its exit status, standard error and standard output; file hashes
+// (the pinned ones are checked by tests/golden_check.h).
 #ifndef DEXMILL_TESTS_RUN_CLI_UTIL_H
 #define DEXMILL_TESTS_RUN_CLI_UTIL_H
 
@@ -50,8 +51,6 @@ std::string report_body(const std::string& path);
 bool skip();
 // The report's assessment object, from its key to the line before timing.
 std::string assessment_of(const std::string& report);
-// CHECKs the file's hash (printing the new one when it differs).
-void check_hash(const std::string& path, uint64_t want);
 // Pixels of a binary PPM (P6, maxval 255) as RGB triples, row by row,
 // without its last `skip_bottom_rows` rows (a legend); empty if not one.
 std::vector<unsigned char> ppm_rgb(const std::string& bytes, int skip_bottom_rows = 0);

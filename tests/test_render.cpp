@@ -14,6 +14,7 @@
 #include "display/thin_colours.h"
 #include "display/tool_colours.h"
 #include "tests/alloc_count.h"
+#include "tests/golden_check.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
@@ -450,15 +451,11 @@ TEST(surface_is_closed_even_with_holes) {
 
 namespace {
 
-// One golden frame: a scene, a camera, a format.
-struct Golden {
-  const char* name;
-  uint64_t hash;
-};
-
+// One golden frame: a scene, a camera, a format; checked against
+// tests/golden/hashes.txt and its picture tests/golden/frames/NAME.png.
 template <class H>
-uint64_t golden_frame(const char* name, int scene, ViewPreset view, Projection proj, int tool, PixelFormat fmt, ZFormat zf,
-                      int32_t w, int32_t h) {
+void golden_frame(const char* name, int scene, ViewPreset view, Projection proj, int tool, PixelFormat fmt, ZFormat zf,
+                  int32_t w, int32_t h) {
   t::TestGrid<H> tg;
   if (scene == 0) t::make_block(&tg, 40, 30, mm, 15 * mm);
   else t::make_pocketed(&tg);
@@ -470,7 +467,7 @@ uint64_t golden_frame(const char* name, int scene, ViewPreset view, Projection p
   t::TestFrame f;
   t::make_frame(&f, w, h, fmt);
   static Renderer<H> r;
-  if (!t::init_renderer(&r, tg.g, &f, opt)) return 0;
+  if (!CHECK(t::init_renderer(&r, tg.g, &f, opt))) return;
   Camera cam = renderer_fit(r, view);
   if (proj == Projection::kPerspective) {
     cam.projection = proj;
@@ -486,38 +483,31 @@ uint64_t golden_frame(const char* name, int scene, ViewPreset view, Projection p
   renderer_set_camera(&r, cam);
   render_full(&r, &tg.g, CutterPose{tool >= 0, PointNm{44 * mm, 15 * mm, 21 * mm}});
   t::dump_frame(f.fb, name);
-  return frame_hash(f.fb);
+  CHECK_GOLDEN_FRAME(name, f.fb);
 }
 
 }  // namespace
 
 TEST(golden_frames) {
   // Frame hashes (display/framebuffer.h frame_hash: pixel values, little
-  // endian, row by row), so every compiler and CPU must draw the same bits.
-  // Update only on purpose, with the reason in the commit.
+  // endian, row by row), so every compiler and CPU must draw the same bits;
+  // a frame that differs leaves its expected, actual and difference
+  // pictures (tests/golden_check.h). Update only on purpose (make bless),
+  // with the reason in the commit.
   using P = PixelFormat;
   using Z = ZFormat;
   const auto O = Projection::kOrthographic, Pp = Projection::kPerspective;
-  struct Row {
-    Golden g;
-    uint64_t got;
-  } rows[] = {
-      {{"golden-block-iso", 0x1b7f22ee343ae5f3ull}, golden_frame<uint16_t>("golden-block-iso", 0, ViewPreset::kIso, O, -1, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-iso", 0x3135aacea1303cb8ull}, golden_frame<uint16_t>("golden-pocket-iso", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-top", 0x970dd14505f2c9b0ull}, golden_frame<uint16_t>("golden-pocket-top", 1, ViewPreset::kTop, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-front", 0xc3a6e71ee981dd49ull}, golden_frame<uint16_t>("golden-pocket-front", 1, ViewPreset::kFront, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-right", 0xbc7947770861784dull}, golden_frame<uint16_t>("golden-pocket-right", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-tool-ball", 0xd3a8ff4b1c01719full}, golden_frame<uint16_t>("golden-tool-ball", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-flat", 0x1600aa416595f1b5ull}, golden_frame<uint16_t>("golden-tool-flat", 1, ViewPreset::kRight, O, 1, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-bull", 0xbd41e6d0e676c2c2ull}, golden_frame<uint16_t>("golden-tool-bull", 1, ViewPreset::kRight, O, 2, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-tool-vbit", 0x3a5bb81f976cf20bull}, golden_frame<uint16_t>("golden-tool-vbit", 1, ViewPreset::kRight, O, 3, P::kXrgb8888, Z::kZ32, 200, 150)},
-      {{"golden-pocket-565", 0x4e58ae1678e905ecull}, golden_frame<uint16_t>("golden-pocket-565", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ16, 480, 272)},
-      {{"golden-pocket-persp", 0xfe520c0df6a21daaull}, golden_frame<uint16_t>("golden-pocket-persp", 1, ViewPreset::kIso, Pp, 0, P::kXrgb8888, Z::kZ16, 320, 240)},
-      {{"golden-pocket-u8", 0x52ac679b8ccfb6dcull}, golden_frame<uint8_t>("golden-pocket-u8", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240)},
-      {{"golden-pocket-u32", 0x399926b822c9147dull}, golden_frame<uint32_t>("golden-pocket-u32", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ32, 320, 240)},
-  };
-  for (const Row& r : rows) {
-    if (r.got != r.g.hash) std::printf("%s: frame hash 0x%016llx, golden 0x%016llx\n", r.g.name, (unsigned long long)r.got, (unsigned long long)r.g.hash);
-    CHECK_EQ(r.got, r.g.hash);
-  }
+  golden_frame<uint16_t>("golden-block-iso", 0, ViewPreset::kIso, O, -1, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint16_t>("golden-pocket-iso", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint16_t>("golden-pocket-top", 1, ViewPreset::kTop, O, 0, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint16_t>("golden-pocket-front", 1, ViewPreset::kFront, O, 0, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint16_t>("golden-pocket-right", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint16_t>("golden-tool-ball", 1, ViewPreset::kRight, O, 0, P::kXrgb8888, Z::kZ32, 200, 150);
+  golden_frame<uint16_t>("golden-tool-flat", 1, ViewPreset::kRight, O, 1, P::kXrgb8888, Z::kZ32, 200, 150);
+  golden_frame<uint16_t>("golden-tool-bull", 1, ViewPreset::kRight, O, 2, P::kXrgb8888, Z::kZ32, 200, 150);
+  golden_frame<uint16_t>("golden-tool-vbit", 1, ViewPreset::kRight, O, 3, P::kXrgb8888, Z::kZ32, 200, 150);
+  golden_frame<uint16_t>("golden-pocket-565", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ16, 480, 272);
+  golden_frame<uint16_t>("golden-pocket-persp", 1, ViewPreset::kIso, Pp, 0, P::kXrgb8888, Z::kZ16, 320, 240);
+  golden_frame<uint8_t>("golden-pocket-u8", 1, ViewPreset::kIso, O, 0, P::kXrgb8888, Z::kZ32, 320, 240);
+  golden_frame<uint32_t>("golden-pocket-u32", 1, ViewPreset::kIso, O, 0, P::kRgb565, Z::kZ32, 320, 240);
 }

@@ -1,7 +1,9 @@
 // `dexmill run` end to end on the programs in tests/run/: outputs pinned by
-// hashes (frames, final image, heightmap, STL) and the report's text, and
-// every error path of ../shared/CLI.md with its exit status and message.
-// Golden values change only in a commit that says why.
+// hashes in tests/golden/hashes.txt (frames and final images, with their
+// pictures in tests/golden/frames/; heightmap, STL) and the report's text
+// (tests/run/pocket.report.golden), and every error path of `dexmill run`
+// with its exit status and message. Golden values change only through make
+// bless, in a commit that says why (tests/golden/README.md).
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/golden_check.h"
 #include "tests/pocket_part.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
@@ -26,7 +29,7 @@ using pocket_part::Facet;
 
 }  // namespace
 
-TEST(run_pocket_outputs_are_pinned) {
+TEST(run_golden_pocket_outputs) {
   if (skip()) return;
   const Result r = run("pocket.ngc -q --size 160x120 --image %/p.ppm --frames %/pf --frame-format ppm --every 4 --heightmap %/p.pgm "
                        "--stl %/p.stl --report %/p.json");
@@ -35,43 +38,38 @@ TEST(run_pocket_outputs_are_pinned) {
   CHECK(r.err == "pocket.ngc:5:1: warning: the tool before any M6 is cut as flat:6, a guess: no --tool, --tools table "
                  "or tool comment of the program gives it (give one with --tool SPEC or --tools FILE)\n");
   const std::string d = tmp_dir() + "/";
-  check_hash(d + "p.ppm", 0x326e0c33fd5f58a1ULL);
-  check_hash(d + "p.pgm", 0x78521702829f757fULL);
-  check_hash(d + "p.stl", 0xb991f38c9797df96ULL);
-  check_hash(d + "pf/frame-000001.ppm", 0xac403a45275d3a6cULL);
-  check_hash(d + "pf/frame-000004.ppm", 0xb6258e2757751083ULL);
+  CHECK_GOLDEN_FILE("run-pocket-image", d + "p.ppm");
+  CHECK_GOLDEN_FILE("run-pocket-heightmap", d + "p.pgm");
+  CHECK_GOLDEN_FILE("run-pocket-stl", d + "p.stl");
+  CHECK_GOLDEN_FILE("run-pocket-frame-1", d + "pf/frame-000001.ppm");
+  CHECK_GOLDEN_FILE("run-pocket-frame-4", d + "pf/frame-000004.ppm");
   // The untouched stock, then every 4 of the 22 moves, then the last.
   struct stat st;
   CHECK_EQ(stat((d + "pf/frame-000007.ppm").c_str(), &st), 0);
   CHECK(stat((d + "pf/frame-000008.ppm").c_str(), &st) != 0);
   // The frames are anti-aliased as the final image is, so the last frame
   // is the final image (so it is with --no-antialias:
-  // run_color_error_frames_and_image).
+  // run_golden_color_error_frames_and_image).
   CHECK_EQ(file_hash(d + "pf/frame-000007.ppm"), file_hash(d + "p.ppm"));
-  const std::string golden = slurp(std::string(t::tests_dir()) + "/run/pocket.report.golden");
-  const std::string body = report_body(d + "p.json");
-  if (body != golden) {
-    std::printf("  report differs from tests/run/pocket.report.golden:\n%s", body.c_str());
-    CHECK(false);
-  }
+  CHECK_GOLDEN_TEXT(std::string(t::tests_dir()) + "/run/pocket.report.golden", report_body(d + "p.json"));
 }
 
-TEST(run_inch_arcs_and_tool_table) {
+TEST(run_golden_inch_arcs_and_tool_table) {
   if (skip()) return;
   Result r = run("arcs_inch.ngc -q --size 120x90 --image %/a.ppm --report %/a.json");
   CHECK_EQ(r.code, 0);
-  check_hash(tmp_dir() + "/a.ppm", 0x40d0380c46a9bfa5ULL);
+  CHECK_GOLDEN_FILE("run-arcs-inch-image", tmp_dir() + "/a.ppm");
   CHECK(has(slurp(tmp_dir() + "/a.json"), "\"dwell\": 1"));
   r = run("tool_change.ngc --tools tools.tbl -q --size 120x90 --image %/t.ppm --report %/t.json --mode stamp");
   CHECK_EQ(r.code, 0);
-  check_hash(tmp_dir() + "/t.ppm", 0x3d1567a3ae9f1368ULL);
+  CHECK_GOLDEN_FILE("run-tool-change-image", tmp_dir() + "/t.ppm");
   CHECK(has(slurp(tmp_dir() + "/t.json"), "\"used\": [{\"number\": 1, \"spec\": \"flat:4\", \"source\": \"table\", "
                                           "\"line\": null, \"form\": null}, {\"number\": 2, \"spec\": \"ball:6\", "
                                           "\"source\": \"table\", \"line\": null, \"form\": null}]"));
   CHECK(has(slurp(tmp_dir() + "/t.json"), "\"mode\": \"stamp\""));
 }
 
-TEST(run_stdin_and_demo) {
+TEST(run_golden_stdin_and_demo) {
   if (skip()) return;
   const std::string in = std::string(t::tests_dir()) + "/run/pocket.ngc";
   Result r = run("- -q --size 160x120 --image %/s.ppm --report %/s.json", in.c_str());
@@ -89,10 +87,10 @@ TEST(run_stdin_and_demo) {
   CHECK_EQ(stat((tmp_dir() + "/out/demo.ngc").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.png").c_str(), &st), 0);
-  check_hash(tmp_dir() + "/out/final.ppm", 0xacdb9bbb2de9e967ULL);  // in its beech-over-aluminium block
+  CHECK_GOLDEN_FILE("run-demo-final", tmp_dir() + "/out/final.ppm");  // in its beech-over-aluminium block
   // And the error view of its own part (tools/demo_program.h): the corners
   // the roughing rows stop short of and the dome's base are left green.
-  check_hash(tmp_dir() + "/out/error.ppm", 0x273998629f628d3aULL);
+  CHECK_GOLDEN_FILE("run-demo-error", tmp_dir() + "/out/error.ppm");
   const std::string a = assessment_of(slurp(tmp_dir() + "/out/demo.json"));
   CHECK(has(a, "\"kind\": \"demo\""));
   CHECK(has(a, "\"max_gouge\": null"));
@@ -247,7 +245,7 @@ TEST(run_design_assessment_names_the_gouge_and_the_leftover) {
   CHECK(has(a, "\"max_gouge\": {\"mm\": 8.0000, \"x_mm\": 28.0435, \"y_mm\": 15.1305}"));
 }
 
-TEST(run_color_error_frames_and_image) {
+TEST(run_golden_color_error_frames_and_image) {
   if (skip()) return;
   const std::string d = tmp_dir() + "/";
   write_file(d + "pde.stl", ascii_stl(pocket_part::design()));
@@ -257,7 +255,7 @@ TEST(run_color_error_frames_and_image) {
   // final image (aliased, as the frames are); pinned (paper figure 10's view: a red G81 hole, green
   // corners and island, white elsewhere, and the legend).
   CHECK_EQ(file_hash(d + "ef/frame-000007.ppm"), file_hash(d + "e.ppm"));
-  check_hash(d + "e.ppm", 0x41cd2d14716141b3ULL);
+  CHECK_GOLDEN_FILE("run-pocket-error-view", d + "e.ppm");
   CHECK(file_hash(d + "e.ppm") != file_hash(d + "ef/frame-000001.ppm"));
   const Result u = run("pocket.ngc -q --color error");
   CHECK_EQ(u.code, 2);
@@ -273,17 +271,17 @@ TEST(run_color_error_frames_and_image) {
   CHECK_EQ(run(ov + "--no-antialias --overlay workpiece --image %/ow.ppm").code, 0);
   CHECK_EQ(run(ov + "--overlay design --image %/oda.ppm").code, 0);
   CHECK_EQ(run(ov + "--overlay workpiece --image %/owa.ppm").code, 0);
-  check_hash(d + "od.ppm", 0x6f733d2139aa551fULL);
-  check_hash(d + "ow.ppm", 0xd8104bfb93a6f65dULL);
-  check_hash(d + "oda.ppm", 0xc942f3c769b19ff6ULL);
-  check_hash(d + "owa.ppm", 0x694b35e13daba2c2ULL);
+  CHECK_GOLDEN_FILE("run-overlay-design", d + "od.ppm");
+  CHECK_GOLDEN_FILE("run-overlay-workpiece", d + "ow.ppm");
+  CHECK_GOLDEN_FILE("run-overlay-design-aa", d + "oda.ppm");
+  CHECK_GOLDEN_FILE("run-overlay-workpiece-aa", d + "owa.ppm");
   CHECK(file_hash(d + "od.ppm") != file_hash(d + "plain.ppm"));
   const Result v = run("pocket.ngc -q --overlay design");
   CHECK_EQ(v.code, 2);
   CHECK(has(v.err, "--overlay needs --design"));
 }
 
-TEST(run_gouges_are_traced_to_their_line) {
+TEST(run_golden_gouges_are_traced_to_their_line) {
   if (skip()) return;
   const std::string d = tmp_dir() + "/";
   const char* common = "-q --design pocket_design.stl --stock 0,0,-10,33,23,0";
@@ -306,10 +304,10 @@ TEST(run_gouges_are_traced_to_their_line) {
   CHECK_EQ(run("gouge_one.ngc -q --stock 0,0,-10,33,23,0 --size 160x120 --frames %/gn --frame-format ppm --every 3").code, 0);
   CHECK(file_hash(d + "gf/frame-000002.ppm") == file_hash(d + "gn/frame-000002.ppm"));  // before line 7
   CHECK(file_hash(d + "gf/frame-000004.ppm") != file_hash(d + "gn/frame-000004.ppm"));  // after it
-  check_hash(d + "gf/frame-000004.ppm", 0xf72d7b26122dc20dULL);
+  CHECK_GOLDEN_FILE("run-gouge-frame-4", d + "gf/frame-000004.ppm");
 }
 
-TEST(run_stock_from_an_stl_blank) {
+TEST(run_golden_stock_from_an_stl_blank) {
   if (skip()) return;
   // tests/run/blank_step.stl: a closed 36 x 26 x 10 mm block whose right
   // third (X > 24) is 3 mm lower; the pocket there meets the step.
@@ -320,7 +318,7 @@ TEST(run_stock_from_an_stl_blank) {
   // Less to remove than from the full box (the step was never there: the
   // engine's, test_sim_plan.cpp).
   CHECK(has(rep, "\"removed_mm3\": 1090.985"));
-  check_hash(tmp_dir() + "/blank.ppm", 0xe647c07f0e59802cULL);
+  CHECK_GOLDEN_FILE("run-blank-stock-image", tmp_dir() + "/blank.ppm");
   write_file(tmp_dir() + "/flat.stl", "solid f\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 1 1 0\n  endloop\n endfacet\nendsolid f\n");
   r = run("pocket.ngc -q --stock %/flat.stl");
   CHECK_EQ(r.code, 1);

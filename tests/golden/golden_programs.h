@@ -3,7 +3,8 @@
 // can run the same programs (tests/*.cpp may include it).
 //
 // "stamp-test" is exactly the program of tests/test_stamp.cpp
-// (golden_program), so its hashes here must equal the ones pinned there.
+// (golden_program), which checks its grids against this output's stamp-test
+// lines in golden.out: they are pinned there only.
 // The others add what a real job does: ramp entries, a zig-zag pocket, a
 // polygonal helix, drilling plunges with every cutter shape, a through hole
 // and slot, a tool too short for its depth (cases c and d of figure 2),
