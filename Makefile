@@ -3,6 +3,11 @@
 #   make              build build/dexmill
 #   make run          build and run the built-in demo (writes out/)
 #   make test         build and run every test (SAN=1: under ASan+UBSan)
+#   make bless        rewrite every golden from this build's output, and nothing
+#                     else: tests/golden/golden.out, hashes.txt and frames/,
+#                     tests/gcode/paths/*.path, tests/run/pocket.report.golden
+#                     (tests/golden/README.md: look at the pictures first, and
+#                     say in the commit why the new output is right)
 #   make CXX=clang++  the same with clang
 #   make lib          build/libdexmill.a and .so (the C API, display/api/dexmill.h) and
 #                     build/libdexmill_io.a (image files, platform/dexmill_io.h)
@@ -92,7 +97,7 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(PICFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-readme check-headers check-poison check-layers check-function-length check-c-api check-lib \
+.PHONY: all run test test-unit bless check-golden-out check-bless check-readme check-headers check-poison check-layers check-function-length check-c-api check-lib \
         test-embed test-python test-install lib install uninstall clean
 all: $(BIN)
 
@@ -139,12 +144,38 @@ check-readme: $(BIN)
 	@tests/readme_blocks.sh --self-test $(BUILD) && tests/readme_blocks.sh $(BUILD)
 
 # The cases run in TEST_JOBS worker processes (tests/runner.cpp --jobs).
+# A frame golden that differs leaves its expected, actual and difference
+# pictures in GOLDEN_DIFF (tests/golden_check.h).
 TEST_JOBS ?= 2
+GOLDEN_DIFF := $(BUILD)/golden-diff
 test-unit: $(TEST_BIN) $(BIN)
-	$(Q)DEXMILL=$(abspath $(BIN)) $(TEST_BIN) --jobs $(TEST_JOBS)
+	$(Q)DEXMILL=$(abspath $(BIN)) DEXMILL_GOLDEN_OUT=$(abspath $(GOLDEN_DIFF)) $(TEST_BIN) --jobs $(TEST_JOBS)
 
-test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit test-embed \
-      test-python test-install check-readme
+# The golden-output program (tests/golden/golden.h) built for this host as
+# make xcheck builds it for every target: its output is tests/golden/golden.out.
+GOLDEN_SRC := $(sort $(wildcard tests/golden/golden*.cpp))
+GOLDEN_BIN := $(BUILD)/golden
+$(BUILD)/obj/tests/golden/golden%.o: BUILD_KIND := int
+$(GOLDEN_BIN): $(call obj,$(GOLDEN_SRC) tests/golden/board_host.cpp) $(INT_OBJ)
+	$(call say,LINK,$@)
+	$(Q)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+check-golden-out: $(GOLDEN_BIN)
+	@$(GOLDEN_BIN) > $(BUILD)/golden.out && cmp -s tests/golden/golden.out $(BUILD)/golden.out && \
+	  echo "ok: the golden output is tests/golden/golden.out" || \
+	  { echo "FAIL: $(BUILD)/golden.out differs from tests/golden/golden.out:"; \
+	    diff tests/golden/golden.out $(BUILD)/golden.out | head -20; exit 1; }
+
+# Every golden rewritten from this build (tests/bless.sh says which), in this
+# tree; check-bless blesses a spoilt copy of tests/ and requires it to come
+# back byte for byte, so bless writes each kind and nothing else.
+BLESS_TOOLS = $(abspath $(GOLDEN_BIN)) $(abspath $(TEST_BIN)) $(abspath $(BIN)) $(TEST_JOBS)
+bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
+	$(Q)tests/bless.sh . $(BLESS_TOOLS)
+check-bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
+	$(Q)tests/bless_check.sh $(BLESS_TOOLS)
+
+test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit check-golden-out \
+      check-bless test-embed test-python test-install check-readme
 
 run: $(BIN)
 	$(BIN) run --demo pocket

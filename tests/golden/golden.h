@@ -7,8 +7,9 @@
 // path traces, ...): write `void golden_NAME(Out& out)` in
 // tests/golden/golden_NAME.cpp (any tests/golden/golden_*.cpp is built on
 // every target), declare it below, add one line to kSections in golden.cpp,
-// then run `tools/scripts/xcheck.sh --bless` to re-pin tests/golden/golden.out
-// and say why in the commit.
+// then run `make bless` to re-pin tests/golden/golden.out from this host's
+// build and `make xcheck` to see every target agree, and say why in the
+// commit (tests/golden/README.md).
 //
 // Rules for section code, so that it runs unchanged on a microcontroller:
 // integer only (it is compiled with core/integer_only.h forced in), no heap
