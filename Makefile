@@ -145,11 +145,12 @@ check-readme: $(BIN)
 
 # The cases run in TEST_JOBS worker processes (tests/runner.cpp --jobs).
 # A frame golden that differs leaves its expected, actual and difference
-# pictures in GOLDEN_DIFF (tests/golden_check.h).
+# pictures in GOLDEN_DIFF (tests/golden_check.h); a DEXMILL_BLESS left in the
+# environment must not turn the checks into writes.
 TEST_JOBS ?= 2
 GOLDEN_DIFF := $(BUILD)/golden-diff
 test-unit: $(TEST_BIN) $(BIN)
-	$(Q)DEXMILL=$(abspath $(BIN)) DEXMILL_GOLDEN_OUT=$(abspath $(GOLDEN_DIFF)) $(TEST_BIN) --jobs $(TEST_JOBS)
+	$(Q)DEXMILL_BLESS= DEXMILL=$(abspath $(BIN)) DEXMILL_GOLDEN_OUT=$(abspath $(GOLDEN_DIFF)) $(TEST_BIN) --jobs $(TEST_JOBS)
 
 # The golden-output program (tests/golden/golden.h) built for this host as
 # make xcheck builds it for every target: its output is tests/golden/golden.out.
