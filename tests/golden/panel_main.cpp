@@ -449,8 +449,9 @@ bool thumbnail(golden::Out& out, dm_sim* sim, uint32_t flags, const char* name, 
   (void)dm_render(view, &all, 1, &n);
   *cost = golden::board_instructions() - t0;
   const FrameView fb{g_thumb, kThumbW, kThumbH, kThumbW * 2, PixelFormat::kRgb565};
-  out.str("panel thumbnail ").str(name).kv("w", kThumbW).kv("h", kThumbH).kx("hash", frame_hash(fb));
-  out.kv("view_bytes", static_cast<int64_t>(need)).end();
+  out.str("panel thumbnail ").str(name).kv("w", kThumbW).kv("h", kThumbH).kx("hash", frame_hash(fb)).end();
+  // The handle holds pointers: its size differs between the host and the board.
+  out.str("info thumbnail ").str(name).kv("view_bytes", static_cast<int64_t>(need)).end();
   dm_view_destroy(view);
   return true;
 }
