@@ -16,7 +16,7 @@
 #                     build folder, so switching does not rebuild the rest
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
-# core/integer_only.h forced in, which poisons float and double (DESIGN.md
+# core/integer_only.h forced in, which poisons float and double (core/README.md,
 # invariant 1). `make test` also proves that the poison works and that every
 # header of core/ and display/ compiles on its own under those rules, and that
 # the stage folders include one way (tests/check_layers.sh).
