@@ -1,6 +1,6 @@
 // `dexmill run` end to end on the programs in tests/run/: outputs pinned by
 // hashes (frames, final image, heightmap, STL) and the report's text, and
-// every error path of ../shared/CLI.md with its exit status and message.
+// every error path of tools/CLI.md with its exit status and message.
 // Golden values change only in a commit that says why.
 #include <sys/stat.h>
 #include <sys/wait.h>
