@@ -92,7 +92,8 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(PICFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit check-readme check-headers check-poison check-layers check-function-length check-c-api check-lib \
+.PHONY: all run test test-unit check-readme check-headers check-poison check-layers check-function-length check-comments \
+        check-c-api check-lib \
         test-embed test-python test-install lib install uninstall clean
 all: $(BIN)
 
@@ -127,6 +128,12 @@ check-poison:
 check-layers:
 	@tests/check_layers.sh
 
+# Comments point inside the repository: no issue numbers, no documents
+# kept outside it (tests/check_comments.sh); the self-test first shows that
+# it catches planted ones.
+check-comments:
+	@tests/check_comments.sh --self-test && tests/check_comments.sh
+
 # No function of tools/ is longer than 120 lines; the check's self-test
 # first shows that it catches one.
 check-function-length:
@@ -143,7 +150,7 @@ TEST_JOBS ?= 2
 test-unit: $(TEST_BIN) $(BIN)
 	$(Q)DEXMILL=$(abspath $(BIN)) $(TEST_BIN) --jobs $(TEST_JOBS)
 
-test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit test-embed \
+test: check-headers check-poison check-layers check-function-length check-comments check-c-api check-lib test-unit test-embed \
       test-python test-install check-readme
 
 run: $(BIN)
