@@ -21,7 +21,7 @@
 #                     build folder, so switching does not rebuild the rest
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
-# core/integer_only.h forced in, which poisons float and double (DESIGN.md
+# core/integer_only.h forced in, which poisons float and double (core/README.md,
 # invariant 1). `make test` also proves that the poison works and that every
 # header of core/ and display/ compiles on its own under those rules, and that
 # the stage folders include one way (tests/check_layers.sh).
@@ -97,7 +97,8 @@ FLAGS_ID := $(CXX) $(BASEFLAGS) $(INTFLAGS) $(PICFLAGS) $(LDFLAGS) $(LDLIBS)
 FLAGS_STAMP := $(BUILD)/.flags
 $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`" = "$(FLAGS_ID)" ] || echo "$(FLAGS_ID)" > $(FLAGS_STAMP)))
 
-.PHONY: all run test test-unit bless check-golden-out check-bless check-readme check-headers check-poison check-layers check-function-length check-c-api check-lib \
+.PHONY: all run test test-unit bless check-golden-out check-bless check-readme check-headers check-poison check-layers \
+        check-function-length check-comments check-c-api check-lib \
         test-embed test-python test-install lib install uninstall clean
 all: $(BIN)
 
@@ -131,6 +132,12 @@ check-poison:
 # The pipeline runs one way: each stage folder includes only those below it.
 check-layers:
 	@tests/check_layers.sh
+
+# Comments point inside the repository: no issue numbers, no documents
+# kept outside it (tests/check_comments.sh); the self-test first shows that
+# it catches planted ones.
+check-comments:
+	@tests/check_comments.sh --self-test && tests/check_comments.sh
 
 # No function of tools/ is longer than 120 lines; the check's self-test
 # first shows that it catches one.
@@ -175,7 +182,8 @@ bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
 check-bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
 	$(Q)tests/bless_check.sh $(BLESS_TOOLS)
 
-test: check-headers check-poison check-layers check-function-length check-c-api check-lib test-unit check-golden-out \
+test: check-headers check-poison check-layers check-function-length check-comments check-c-api check-lib test-unit \
+      check-golden-out \
       check-bless test-embed test-python test-install check-readme
 
 run: $(BIN)

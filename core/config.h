@@ -1,4 +1,4 @@
-// Compile-time options of dexmill, in one place (STYLE.md habit 12).
+// Compile-time options of dexmill, in one place (core/README.md, habit 12).
 #ifndef DEXMILL_CORE_CONFIG_H
 #define DEXMILL_CORE_CONFIG_H
 

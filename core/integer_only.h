@@ -1,6 +1,6 @@
 // Forced include (-include) for every translation unit of core/ and display/.
 //
-// DESIGN.md invariant 1: no floating point in core/ or display/. The compiler
+// core/README.md, invariant 1: no floating point in core/ or display/. The compiler
 // enforces it: after this header, the identifiers `float` and `double` are
 // poisoned, so any use is a hard error. `#pragma GCC poison` also fires inside
 // system headers, so the few standard headers core/ and display/ may use are

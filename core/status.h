@@ -1,4 +1,4 @@
-// Status codes of the core (STYLE.md habit 4): stable numbers, one message
+// Status codes of the core (core/README.md, habit 4): stable numbers, one message
 // table, returned and never thrown. The G-code reader has its own table of
 // input errors (core/gcode/error.h), since those carry a line and column.
 #ifndef DEXMILL_CORE_STATUS_H

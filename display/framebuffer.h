@@ -1,4 +1,4 @@
-// The framebuffer view (STYLE.md habit 10, olive.c's canvas): pixels in caller
+// The framebuffer view (core/README.md habit 10; olive.c's canvas): pixels in caller
 // memory, described by `pixels, width, height, stride, format`. The renderer
 // writes straight into it; the platform layer presents rectangles of it.
 #ifndef DEXMILL_DISPLAY_FRAMEBUFFER_H

@@ -1,4 +1,4 @@
-// The platform seam (STYLE.md habit 10; LVGL's flush callback): a screen
+// The platform seam (core/README.md, habit 10; LVGL's flush callback): a screen
 // hands out a framebuffer view to draw into and shows the rectangles of it
 // that a frame changed. image files (platform/frame_files.h), a GLFW window
 // (platform/window.h) and a Linux framebuffer (platform/fbdev.h) implement

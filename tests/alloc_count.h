@@ -1,5 +1,5 @@
 // Counting global operator new/delete for the test binary: lets a test prove
-// that a stretch of code made no heap allocation (DESIGN.md invariant 2).
+// that a stretch of code made no heap allocation (core/README.md, invariant 2).
 #ifndef DEXMILL_TESTS_ALLOC_COUNT_H
 #define DEXMILL_TESTS_ALLOC_COUNT_H
 #include <cstdint>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # check_layers.sh - the pipeline runs one way (README "Where things live",
-# STYLE.md habit 1): each folder of core/ and display/ includes only the
+# core/README.md, habit 1): each folder of core/ and display/ includes only the
 # stages it is allowed to below. `make test` runs it; a new stage adds a row.
 #
 # Usage: tests/check_layers.sh   (from the repository root)

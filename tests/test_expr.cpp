@@ -1,4 +1,4 @@
-// core/gcode/gvalue.h and expr.h (issue 21): every operator and function
+// core/gcode/gvalue.h and expr.h: every operator and function
 // against a double oracle within its stated bound, LinuxCNC's precedence
 // and its MOD, EQ, ROUND, FIX and FUP rules, parameters numbered and named
 // (assignments made after the line), the errors (division by zero, domain,

@@ -1,4 +1,4 @@
-// Issue 25, item 2: the grid after a program is a function of the program and
+// The grid after a program is a function of the program and
 // the cutting options only. Mill::flush (core/cut/mill.h) makes the grid show
 // the cut so far for a frame or a live view, which flush at --every N moves
 // or at wall-clock ticks; where it is called must not change what is finally
@@ -240,10 +240,10 @@ std::string random_program(std::mt19937_64* rng, bool changes) {
   return p;
 }
 
-// The program of the issue (dexmill run --tool ball:3 --stock
+// The program where the flushes showed (dexmill run --tool ball:3 --stock
 // -2.5628,-2.9064,-6.875,145.6294,118.9275,0 --pitch 0.58574): before the
 // fix, --frames --every 1 left one dexel 1 LSB lower.
-const char kIssueProgram[] =
+const char kEveryOneProgram[] =
     "G1 F300.0 Z-2.0\n"
     "G1 X14.9484 Y104.1733\n"
     "G1 X69.9772\n"
@@ -265,16 +265,16 @@ const char kHandProgram[] =
 
 TEST(flush_cadence_leaves_the_same_grid) {
   Tally tally;
-  // The issue's program on its own grid (the run's: origin a pitch outside
+  // That program on its own grid (the run's: origin a pitch outside
   // the stock, 16-bit heights over its 6.875 mm).
   {
     const Setup s{-2562800 - 585740, -2906400 - 585740, 585740, 258, 210};
-    std::string text = kIssueProgram;
+    std::string text = kEveryOneProgram;
     const std::vector<CanonRecord> recs = records_of(text);
-    // The stock of the issue is 6.875 mm deep; this block is 10 mm, which
+    // Its stock is 6.875 mm deep; this block is 10 mm, which
     // moves the LSB (lsb_for_range) but keeps the joints where they were.
     for (CutMode mode : {CutMode::kSweep, CutMode::kStamp})
-      check_patterns<uint16_t>("issue", s, fixtures::test_tool(ToolKind::kBall, mm(3), 0, 0, mm(40)), mode, recs,
+      check_patterns<uint16_t>("every-1", s, fixtures::test_tool(ToolKind::kBall, mm(3), 0, 0, mm(40)), mode, recs,
                                &tally);
   }
   const Tool defaults[] = {fixtures::test_tool(ToolKind::kBall, mm(3), 0, 0, mm(40)),

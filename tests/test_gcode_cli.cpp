@@ -1,4 +1,4 @@
-// `dexmill path` and `dexmill check` as users run them: exit codes (CLI.md:
+// `dexmill path` and `dexmill check` as users run them: exit codes (tools/CLI.md:
 // 0 ok, 1 input errors, 2 usage, 3 I/O) and the FILE:LINE:COL messages.
 #include <sys/wait.h>
 
@@ -92,7 +92,7 @@ TEST(cli_check_reports_all_errors) {
   CHECK_EQ(r.code, 2);
 }
 
-// Odd input files (issue 22): each gives one clear error and exit 1, or reads
+// Odd input files: each gives one clear error and exit 1, or reads
 // as the text it is.
 TEST(cli_odd_input_files) {
   if (!CHECK(t::dexmill_binary() != nullptr)) return;
@@ -146,7 +146,7 @@ TEST(cli_check_warns_about_cut_short_and_empty_programs) {
   CHECK(has(r.out, "dexmill_cli_input.ngc:1:1: warning: the program makes no move\n"));
 }
 
-// Issue 22: `check` reports each root error once; what follows from it is
+// `check` reports each root error once; what follows from it is
 // counted (and shown, marked, with --follow-ons).
 TEST(cli_check_reports_each_root_error_once) {
   if (!CHECK(t::dexmill_binary() != nullptr)) return;
@@ -172,7 +172,8 @@ TEST(cli_check_reports_each_root_error_once) {
 
 TEST(cli_default_feed) {
   if (!CHECK(t::dexmill_binary() != nullptr)) return;
-  // A grbl-style program that cuts before any F (issue 21).
+  // A grbl-style program that cuts before any F (it counts on the
+  // controller's default feed: --default-feed).
   const char* prog = "G21\nG0 X1\nG1 X2\nG1 X3\nM2\n";
   Result r = sh(std::string("path ") + kIn, prog);
   CHECK_EQ(r.code, 1);

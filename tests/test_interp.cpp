@@ -276,7 +276,7 @@ std::string errors_of(const char* program) {
 
 }  // namespace
 
-// Issue 22: one cause, one error. After a block fails, what it would have set
+// One cause, one error. After a block fails, what it would have set
 // is suspect, and so is what an error blames; an error that reads a suspect
 // facet is a follow-on (core/motion/interp_follow_on.cpp).
 TEST(interp_follow_on_errors) {

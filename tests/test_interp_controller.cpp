@@ -1,4 +1,4 @@
-// What issue 21 asks of programs written for a real controller: G38.x probe
+// What programs written for a real controller expect of it: G38.x probe
 // moves, G7/G8, feeds and speeds above 1e6, a default feed, machine M codes
 // (M25), and typos in the middle of a line; each against rs274 (LinuxCNC 2.9)
 // where it has an answer, with the right warnings and no false alarms.

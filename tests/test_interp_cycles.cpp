@@ -1,8 +1,8 @@
-// The canned cycles issue 21 added (G74, G84, G86, G87, G88), what they do
-// to the spindle, where they leave the tool, and the retract level when the
-// offsets change in a series: each against what LinuxCNC 2.9's rs274 prints
-// for the same program (the moves are also in tests/gcode/paths/, checked by
-// tools/scripts/oracle-check.sh --rs274).
+// The canned cycles LinuxCNC has beyond the drilling ones (G74, G84, G86,
+// G87, G88), what they do to the spindle, where they leave the tool, and the
+// retract level when the offsets change in a series: each against what
+// LinuxCNC 2.9's rs274 prints for the same program (the moves are also in
+// tests/gcode/paths/, checked by tools/scripts/oracle-check.sh --rs274).
 #include <string>
 #include <vector>
 
@@ -175,7 +175,7 @@ TEST(cycles_g84_in_g18_g19_moves_as_linuxcnc) {
 
 TEST(cycles_retract_level_follows_offsets) {
   // LinuxCNC keeps the initial level in program coordinates (cycle_il): the
-  // issue's program retracts to Z15 after G92 Z5 (rs274), with a warning.
+  // program below retracts to Z15 after G92 Z5 (rs274), with a warning.
   t::Recorder rec;
   t::Warnings w;
   GcodeDiag d;
@@ -208,7 +208,8 @@ TEST(cycles_peck_count_is_bounded) {
   // 100 mm in 0.001 mm pecks: 99 999 pecks, legal and made.
   CHECK_EQ(run("G21 F100\nG0 Z1\nG83 X1 Z-99 R1 Q0.001", &rec, &d), GcodeError::kOk);
   CHECK_EQ(rec.count(CanonKind::kFeed), 100000u);
-  // 5 000 000 pecks: an error naming the count (issue 24), at the Q word.
+  // 5 000 000 pecks: over kMaxCyclePecks, an error naming the
+  // count, at the Q word.
   CHECK_EQ(run("G21 F100\nG83 X1 Z-4 R1 Q0.000001", &rec, &d), GcodeError::kCyclePeckCount);
   CHECK_EQ(d.a_nm, 4999999);
   CHECK_EQ(d.col, 15);

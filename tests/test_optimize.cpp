@@ -1,4 +1,4 @@
-// `dexmill optimize` (issue 19, feed optimisation) on programs the test
+// `dexmill optimize` (feed optimisation) on programs the test
 // writes: the output differs from the input only in F words on the lines
 // expected, cuts the identical grid when the engine re-simulates it with
 // the job `dexmill run` would make (tests/sim_util.h), and breaks no feed

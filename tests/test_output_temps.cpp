@@ -1,6 +1,6 @@
-// Output temporaries (issue 35): a name that fits whatever the output's
-// length (a 255-byte name used to fail with "File name too long", its
-// temporary being NAME.tmp-PID), and a clean-up that removes only what no
+// Output temporaries (platform/temp_file.h): a name that fits whatever the
+// output's length (a 255-byte name used to fail with "File name too long",
+// its temporary being NAME.tmp-PID), and a clean-up that removes only what no
 // live process holds (it used to judge by the PID alone, and deleted a live
 // run's temporary when that run was in another PID namespace).
 #include <fcntl.h>

@@ -1,9 +1,10 @@
-// O-word control flow (issue 21): the reading of o-word lines, the flow in
-// memory (a panel's MemorySource) and in files (seeking back, subroutine
-// files on a path, standard input), the fixed limits and the block limit.
-// The flow's semantics against LinuxCNC are tests/gcode/paths/owords_flow
-// (compared with rs274 by tools/scripts/oracle-check.sh --rs274) and its
-// errors tests/gcode/bad_flow (at rs274's lines).
+// O-word control flow (core/gcode/oword.h): the reading of o-word lines, the
+// flow in memory (a panel's MemorySource) and in files (seeking back,
+// subroutine files on a path, standard input), the fixed limits and the block
+// limit. The flow's semantics against LinuxCNC are
+// tests/gcode/paths/owords_flow (compared with rs274 by
+// tools/scripts/oracle-check.sh --rs274) and its errors tests/gcode/bad_flow
+// (at rs274's lines).
 #include <memory>
 #include <string>
 

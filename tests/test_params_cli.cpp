@@ -1,4 +1,4 @@
-// Parameters and expressions through the commands (issue 21): `check` and
+// Parameters and expressions through the commands: `check` and
 // `path` read them, message comments print as FILE:LINE: debug|print|message
 // and reach `run`'s report, expression errors are FILE:LINE:COL errors with
 // exit 1, and LinuxCNC's semantics hold end to end (assignments after the

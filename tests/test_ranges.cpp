@@ -1,5 +1,5 @@
-// The documented ranges' corners (issue 35: "arithmetic that cannot
-// overflow"): the smallest and largest tool of each shape (flat, ball,
+// The documented ranges' corners (core/README.md, invariant 4: nothing
+// overflows silently): the smallest and largest tool of each shape (flat, ball,
 // bull nose at both corner radii, V-bits at both angle limits and on the
 // slopes of their cones), the finest and coarsest pitch and LSB, the
 // longest grid sides, the tallest stock and coordinates at the
@@ -273,7 +273,7 @@ const Corner kSweepCorners[] = {
     {"bull 536.87 mm, corner R", "bull:536.87:268.435", box_mm(1200, 900, 400), 0, 40, 40},
     {"vbit 536.87 mm, 179.999 deg", "vbit:536.87:179.999", box_mm(1200, 900, 400), 0, 40, 40},
     {"vbit 536.87 mm, 30 deg", "vbit:536.87:30", box_mm(1200, 900, 1200), 0, 40, 40},
-    {"vbit 254 mm, 30 deg (issue 35's)", "vbit:254:30", box_mm(600, 400, 600), 0, 40, 40},
+    {"vbit 254 mm, 30 deg (the G18 arc's)", "vbit:254:30", box_mm(600, 400, 600), 0, 40, 40},
     {"vbit 174.5 mm, 1 deg", "vbit:174.5:1", box_mm(400, 400, 9000), 0, 40, 40},
     // Grids: the longest sides, the coarsest pitch, the tallest stock, the
     // finest LSB.
@@ -424,7 +424,7 @@ TEST(ranges_just_outside_are_refused) {
     CHECK_EQ(r.code, 2);
     CHECK(run_cli::has(r.err, c.message));
   }
-  // The issue's program: a 30-degree V-bit of 254 mm along its own flank
+  // A 30-degree V-bit of 254 mm along its own flank
   // through a G18 arc (UBSan: w * w overflowed; the normal build said 0).
   const std::string vb = run_cli::write_tmp("vb.ngc", "G21 G90 G94\nG0 X0 Y0 Z0\nG18\nG3 X0 Z0 K0.6345 I14.33 F500\nM2\n");
   const run_cli::Result r = run_cli::run(vb + " -q --tool vbit:254:30", nullptr, true);

@@ -1,7 +1,7 @@
 // `dexmill run` end to end on the programs in tests/run/: outputs pinned by
 // hashes in tests/golden/hashes.txt (frames and final images, with their
 // pictures in tests/golden/frames/; heightmap, STL) and the report's text
-// (tests/run/pocket.report.golden), and every error path of `dexmill run`
+// (tests/run/pocket.report.golden), and every error path of tools/CLI.md
 // with its exit status and message. Golden values change only through make
 // bless, in a commit that says why (tests/golden/README.md).
 #include <sys/stat.h>

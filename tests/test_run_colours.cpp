@@ -1,4 +1,4 @@
-// `dexmill run --color tool|slope|thin` (issue 19) on programs the test
+// `dexmill run --color tool|slope|thin` on programs the test
 // writes, seen from above: two slots by T1 and T2 in their own colours
 // (and none of them with --color plain; the classes, and that they do not
 // depend on when frames flush the cut, are the engine's:

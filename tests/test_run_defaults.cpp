@@ -1,4 +1,4 @@
-// `dexmill run`'s defaults and the options that tune them (issue 22), as
+// `dexmill run`'s defaults and the options that tune them, as
 // the report gives them: --grid keeping the stock's shape, the default rapid
 // rate and --rapid, --accel in the report, their usage errors, the warning
 // about a tool narrower than the pitch. The default pitch from the job's

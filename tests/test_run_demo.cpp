@@ -1,4 +1,4 @@
-// `dexmill run --demo NAME|list` (issue 23): the list; the instrument
+// `dexmill run --demo NAME|list` (the paper's loop, §3): the list; the instrument
 // panel end to end (its zig program, the cut from aluminium, the frames,
 // the final and error images, the report's assessment: no gouge, the
 // leftover where the 4.5 mm ball cannot reach); `dexmill zig` of a built-in

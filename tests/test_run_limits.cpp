@@ -1,9 +1,9 @@
-// The host's limits (issue 35): memory that runs out at a documented grid
-// (64 M dexels, --grid 8192x8192) is exit 3 with the size asked for, where
-// it was an uncaught std::bad_alloc (exit 134); the stack the README states
-// (64 KiB) is enough for the heaviest runs (`ulimit -s 128` used to make a
-// 3-line run segfault: each GcodeFile held its 64 KiB read buffer on the
-// stack, and `check --simulate` needed 192 KiB).
+// The host's limits (README.md "Limits"): memory that runs out at a
+// documented grid (64 M dexels, --grid 8192x8192) is exit 3 with the size
+// asked for, where it was an uncaught std::bad_alloc (exit 134); the stack
+// the README states (64 KiB) is enough for the heaviest runs (`ulimit -s 128`
+// used to make a 3-line run segfault: each GcodeFile held its 64 KiB read
+// buffer on the stack, and `check --simulate` needed 192 KiB).
 #include <dirent.h>
 
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// `dexmill run --material` (issue 19) as the CLI gives it: the process
+// `dexmill run --material` as the CLI gives it: the process
 // rules' warnings as FILE:LINE:1 on a program the test writes, the report's
 // materials (null without --material), the summary's count apart from the
 // G-code's warnings; an unknown preset and a bad material file's

@@ -1,8 +1,9 @@
-// `dexmill run`'s output files as a careful Unix tool writes them (issue
-// 22): devices and FIFOs written through, symbolic links kept, the
-// format from the extension, "-" for standard output, an output that is an
-// input refused before anything runs, earlier frames removed, a folder the
-// user cannot write, and the summary a run with no output prints.
+// `dexmill run`'s output files as a careful Unix tool writes them
+// (tools/README.md, "Outputs"): devices and FIFOs written through, symbolic
+// links kept, the format from the extension, "-" for standard output, an
+// output that is an input refused before anything runs, earlier frames
+// removed, a folder the user cannot write, and the summary a run with no
+// output prints.
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>

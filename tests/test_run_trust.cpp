@@ -1,4 +1,4 @@
-// Trust (issue 25): the program is read once whatever it is (a pipe by
+// Trust in the input: the program is read once whatever it is (a pipe by
 // name, a FIFO), a closed standard input is an error, a file changed
 // between the passes is caught, and an interrupted run leaves no debris
 // (a real signal to a real run); what a killed one leaves is

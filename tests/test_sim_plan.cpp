@@ -1,7 +1,7 @@
 // The stock, the grid and the time estimate planned as `dexmill run` plans
 // them, on the engine (tests/sim_util.h): the harness's plan of pocket.ngc
 // is the one tests/run/pocket.report.golden pins; the default pitch follows
-// the job's smallest tool within 256..1024 dexels across (issue 22); an STL
+// the job's smallest tool within 256..1024 dexels across; an STL
 // blank is the stock (less to remove than its box); the rapid rate and the
 // acceleration in the estimate. That the options reach the plan and the
 // report stays with the CLI's tests (test_run_defaults.cpp, test_run_cli.cpp).

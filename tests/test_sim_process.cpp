@@ -1,4 +1,4 @@
-// The process rules of a stock's materials (issue 19, core/check/process.h)
+// The process rules of a stock's materials (core/check/process.h)
 // on the engine (tests/sim_util.h), with the jobs of `dexmill run
 // --material`: a feed over a material's limit on exactly one line is one
 // violation on that line, coolant in wood one on its line, a spindle speed
@@ -79,8 +79,8 @@ TEST(sim_material_feed_spindle_coolant_on_their_lines) {
   CHECK(none.sim().process() == nullptr);
 }
 
-// One finding per (line, rule, material) however the cut reaches it (issue
-// 35): short moves whose end caps the next line cuts (charged back to the
+// One finding per (line, rule, material) however the cut reaches it:
+// short moves whose end caps the next line cuts (charged back to the
 // line before, column by column, alternating with the next line's own),
 // and a line an o-word loop runs four times, each through fresh wood. The
 // spindle (900 rpm, under beech's 12000) and the coolant (M8 in wood) are

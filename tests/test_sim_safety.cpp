@@ -1,4 +1,4 @@
-// The safety checks (issue 20, core/check/safety.h) on the engine
+// The safety checks (core/check/safety.h) on the engine
 // (tests/sim_util.h), with the jobs of `dexmill run`'s options: for each
 // kind a program with one offence on a known line gives one finding on that
 // line with its depth exact (the stock top and the offending Z lie on the
@@ -94,7 +94,8 @@ TEST(sim_safety_each_kind_on_its_line_and_none_without_it) {
   CHECK_EQ(total(good), uint64_t{0});
   CHECK_EQ(good.sim().safety()->rapid_removed_lsb, uint64_t{0});
   // The cut shown after every move (as frames flush the Mill's deferred
-  // end caps): the same findings (issue 25 item 2, core/cut/mill.h).
+  // end caps): the same findings (where the cut is flushed changes
+  // nothing: core/cut/mill.h, tests/test_flush_cadence.cpp).
   Run framed;
   small_block(&framed);
   SimBudget one;

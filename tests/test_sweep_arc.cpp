@@ -184,7 +184,7 @@ TEST(sweep_arc_helix_exact_against_oracle) {
 }
 
 TEST(sweep_arc_helix_of_many_turns_cuts_its_dominant_turn) {
-  // Issue 24: a helix of several turns about Z cuts what its last turn
+  // A helix of several turns about Z cuts what its last turn
   // (descending; ascending: its first) cuts, every other position having
   // a twin one turn away, lower: exact against the oracle over the whole
   // path, descending, ascending and level, ending on the start's angle or
@@ -216,7 +216,7 @@ TEST(sweep_arc_helix_of_many_turns_cuts_its_dominant_turn) {
 }
 
 TEST(sweep_arc_visits_only_the_ring_within_reach) {
-  // Issue 3: a piece visits the columns within reach, not the box around
+  // A piece visits the columns within reach, not the box around
   // it. Here the quarter turns' boxes held 2.6 times the columns within
   // reach (a helix piece took the whole circle's box: 7.3 times). A piece
   // now visits its box's part of the ring [ra - R, ra + R]: the box reaches

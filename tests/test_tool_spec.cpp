@@ -62,8 +62,9 @@ TEST(tool_spec_errors) {
   CHECK(std::strlen(tool_spec_message(ToolSpecError::kFieldCount)) > 10);
 }
 
-// The parts above the flutes (issue 20): stick-out, shank, holder pieces,
-// and the non-centre-cutting flag, each read and written back.
+// The parts above the flutes (the tool's body, core/check/body.h): stick-out,
+// shank, holder pieces, and the non-centre-cutting flag, each read and
+// written back.
 TEST(tool_spec_holder) {
   Tool t;
   CHECK_EQ(parse("flat:6,len=20,stick=35,holder=20x10,30-40x15", &t), ToolSpecError::kOk);

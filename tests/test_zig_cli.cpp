@@ -1,4 +1,4 @@
-// `dexmill zig` (issue 23): programs generated from design parts the test
+// `dexmill zig` (paper §3): programs generated from design parts the test
 // writes (a PGM relief with a raised block, steep steps and a pit; an STL
 // pyramid) are cut on the engine with the job of the same options and the
 // design (tests/sim_util.h): no gouge, lifted or zigzag, along x or y, with

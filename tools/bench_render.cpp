@@ -16,7 +16,7 @@
 //   material-w3-PRESET
 //                w3 drawn plain and in a material preset's colours
 //                (textured), full frame and update-w3's updates, with
-//                their ratios (issue 19's target: within 1.5x)
+//                their ratios (the target: textured within 1.5x of plain)
 //
 // The zig milling: x-parallel stripes one dexel apart, the tool tip following
 // a smooth relief, lifted between stripes (the lift is not cut).
@@ -189,7 +189,7 @@ void bench_update_w3(const char* name) {
                 median);
 }
 
-// Issue 19's target: a frame in a material's colours (a texture per vertex,
+// The target: a frame in a material's colours (a texture per vertex,
 // walls split) within 1.5x of a plain one. w3 at 640x480 cut from a preset
 // block, full frames (best of repeated runs, the texture of every top
 // already worked out: a camera change costs no texture) and the update

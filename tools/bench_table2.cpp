@@ -1,4 +1,4 @@
-// `dexmill bench paper-table` (issue 23): every row of the paper's Table 2
+// `dexmill bench paper-table` (tools/README.md, Benchmarks): every row of the paper's Table 2
 // for its three workpieces (paper-w1..3: the paper's resolutions, ball
 // cutters and instance counts, zig milling along x-parallel stripes with the
 // lifted return simulated), each beside the paper's figure (200 MHz Pentium

@@ -1,4 +1,4 @@
-// `dexmill bench zig-1k` (issue 23): the zig-milling path generator
+// `dexmill bench zig-1k` (paper §3's loop): the zig-milling path generator
 // (core/cam/zig.h) on a 1024 x 1024 design, a smooth relief 2 to 10 mm deep
 // at 0.1 mm, with the paper's free-form cutter (a 6-dexel ball) and a
 // 3 mm ball: positions per second, every stripe and position (the paper's

@@ -1,5 +1,5 @@
-// `dexmill optimize FILE --material M [run options] [-o OUT]` (issue 19,
-// feed optimisation; Vericut sells it as OptiPath): the program with every
+// `dexmill optimize FILE --material M [run options] [-o OUT]` (feed
+// optimisation; Vericut sells it as OptiPath): the program with every
 // cutting move's feed lowered to the lowest max feed of the materials it
 // removes, never raised above what was programmed, only F words changed.
 // Three passes: the cut exactly as `dexmill run` makes it (tools/run_job.h,

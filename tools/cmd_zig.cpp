@@ -1,4 +1,4 @@
-// `dexmill zig DESIGN [options] > prog.ngc` (issue 23, paper §3): a
+// `dexmill zig DESIGN [options] > prog.ngc` (paper §3): a
 // zig-milling finishing program generated from a design part: the design
 // sampled on the grid `dexmill run` would use for the same --stock, --pitch
 // or --grid and --tool, every tool position the lowest at which the tool

@@ -31,8 +31,8 @@ const char* demo_tool_table();
 // The stock the demo is written for: X0,Y0,Z0,X1,Y1,Z1 in mm (the program's
 // Z0 is the stock top).
 const char* demo_stock();
-// What the demo's block is made of (issue 19: cut from a visibly
-// inhomogeneous block): beech over aluminium, the paper's wood and metal
+// What the demo's block is made of (the demo is cut from a
+// visibly inhomogeneous block): beech over aluminium, the paper's wood and metal
 // compound; the program keeps within both materials' limits.
 const char* demo_material();
 

@@ -1,4 +1,4 @@
-// The colour modes `--color tool|slope|thin` of `dexmill run` (issue 19):
+// The colour modes `--color tool|slope|thin` of `dexmill run` (tools/README.md):
 // each mode's memory, its classes (display/tool_colours.h,
 // slope_colours.h, thin_colours.h) and its legend. `material` and `error`
 // are set up beside them in run_job (run_assess.h, display/material_colours.h).

@@ -1,4 +1,5 @@
-// `dexmill run --demo NAME` (issue 23, paper §3): one of the paper's
+// `dexmill run --demo NAME` (paper §3, its loop of design, program, cut and
+// assessment; tools/README.md "The paper's loop"): one of the paper's
 // workpieces end to end: its design part (core/design/builtin.h), a
 // zig-milling program generated from it (tools/zig_job.h: the paper's
 // stripes one dexel apart, lifted returns, its ball), cut from its material,

@@ -1,4 +1,4 @@
-// `--material PRESET|FILE` of `dexmill run` (issue 19): the stock's
+// `--material PRESET|FILE` of `dexmill run` (tools/README.md, "Materials"): the stock's
 // composition, for the process rules the simulation runs on the cut
 // (core/check/process.h), their warnings and the report's `materials`.
 #ifndef DEXMILL_TOOLS_RUN_MATERIAL_H

@@ -1,4 +1,5 @@
-// `dexmill zig`'s job, shared with `dexmill run --demo` (issue 23): a
+// `dexmill zig`'s job, shared with `dexmill run --demo` (the paper's loop,
+// tools/README.md): a
 // zig-milling program for the design a job (JobOptions) names (a file, or a
 // built-in part of core/design/builtin.h) on the grid `run` would use for
 // its stock, pitch or grid and tool.

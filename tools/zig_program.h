@@ -1,4 +1,4 @@
-// A zig-milling program from a design part (issue 23, paper §3): the
+// A zig-milling program from a design part (paper §3): the
 // positions of core/cam/zig.h written as plain RS274/NGC that dexmill and
 // LinuxCNC both read. One program per design grid: stripes cut in the same
 // direction with the tool lifted to the safe height and returned at rapid

@@ -1,4 +1,4 @@
-// The cutting stage (DESIGN.md pipeline: motion -> cut -> grid): a CanonSink
+// The cutting stage (core/README.md "The pipeline": motion -> cut -> grid): a CanonSink
 // that cuts every traverse, feed and arc into the dexel grid with the tool in
 // the spindle, by instances of motion (stamp, the paper's §2.3) or by exact
 // swept envelopes (sweep, core/cut/sweep.h). Tool changes (M6) switch cutters

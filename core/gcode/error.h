@@ -1,4 +1,4 @@
-// G-code input errors and warnings (STYLE.md habit 4): one enum class with
+// G-code input errors and warnings (core/README.md, habit 4): one enum class with
 // stable numbers and one message table, returned and never thrown.
 //
 // A diagnostic carries the 1-based line and column of the offending word, the

@@ -1,5 +1,5 @@
 // Decimal numbers of G-code, read straight from text into integers (never
-// through floating point; DESIGN.md "Numbers").
+// through floating point; core/README.md "Numbers").
 //
 // A Decimal is mant / 10^frac exactly as written, with up to kMaxFracDigits
 // fraction digits kept (further digits are dropped, i.e. the magnitude is

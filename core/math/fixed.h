@@ -1,6 +1,6 @@
 // Fixed-point and integer arithmetic for the whole of dexmill.
 //
-// Units (DESIGN.md "Numbers"): lengths from G-code are int64 nanometres
+// Units (core/README.md "Numbers"): lengths from G-code are int64 nanometres
 // (`_nm`), exact for mm with 6 decimals and inch with 5. Grid-space values are
 // dexel indices and height LSBs (`_dex`, `_lsb`). Fractions use the Fixed<>
 // family below; its name says the number of fraction bits (q16 = 16).

@@ -2,7 +2,7 @@
 // (not a public header: embedders read core/motion/interp.h). A block is
 // checked against a copy of the state (BlockRunner::run and the run_*
 // steps), then committed (BlockRunner::commit), so a bad block changes
-// nothing (STYLE.md habit 3). The steps live by phase, after LinuxCNC's
+// nothing (core/README.md, habit 3). The steps live by phase, after LinuxCNC's
 // interp_convert: interp.cpp (order of execution, unused words, commit),
 // interp_modes.cpp (modal groups, G4, G10/G28/G30/G92), interp_moves.cpp
 // (G0/G1, G2/G3, G38.x), interp_cycles.cpp (canned cycles).

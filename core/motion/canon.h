@@ -1,5 +1,5 @@
 // The canonical motion seam between the G-code interpreter and everything
-// downstream (STYLE.md habit 2; LinuxCNC's canon.hh is the model): the
+// downstream (core/README.md, habit 2; LinuxCNC's canon.hh is the model): the
 // interpreter emits one record per canonical command, and a consumer (the
 // cutter, the `dexmill path` printer, `dexmill check`) implements CanonSink.
 // Records are plain values; nothing downstream calls back upstream.

@@ -2,7 +2,7 @@
 //
 // Feed it one line at a time; it emits canonical records (core/motion/canon.h) to
 // a CanonSink and returns an error code for a bad line. Each block is read,
-// checked completely, then committed (STYLE.md habit 3): a block with an
+// checked completely, then committed (core/README.md, habit 3): a block with an
 // error emits nothing and changes nothing, so the caller may report it and
 // go on with the next line (`dexmill check`) or stop (`dexmill path`, `run`).
 //

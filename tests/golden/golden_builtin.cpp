@@ -1,5 +1,5 @@
 // Golden section "builtin": the paper's four workpieces (core/design/
-// builtin.h, issue 23) pinned bit for bit, one line per design: its grid at
+// builtin.h) pinned bit for bit, one line per design: its grid at
 // m = 16 bits, the lowest, highest and mean design top (LSB) and the hash of
 // every top. The designs are evaluated column by column, so even the
 // 256 x 256 free-form surface needs no memory here.

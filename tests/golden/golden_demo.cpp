@@ -1,4 +1,4 @@
-// Golden section "demo": the paper's loop (issue 23, §3) for each of its four
+// Golden section "demo": the paper's loop (paper §3) for each of its four
 // workpieces, in core and display alone, pinned bit for bit on every
 // target: the built-in design (core/design/builtin.h) -> zig positions
 // (core/cam/zig.h: stripes one dexel apart, a position on every dexel, the

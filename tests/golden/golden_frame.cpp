@@ -8,7 +8,7 @@
 // assessment's figures: E, sum of design tops, the band counts. And once,
 // the scene held in a vice with a clamp on its top (display/fixture_draw.h).
 // And the colour modes tool (the cuts by T1, the hole by T2, the update's by
-// T3), slope, and thin (under 16 mm: the cut floors), issue 19.
+// T3), slope, and thin (under 16 mm: the cut floors).
 #include <stdint.h>
 #include <string.h>
 
@@ -148,10 +148,10 @@ void backplot(Out& out, Renderer<uint16_t>& r, DexelGrid<uint16_t>& g, const Fra
   out.kx("turned", frame_hash(fb)).kv("rects", res.nrects).kv("bias", backplot_depth_bias(r.view)).end();
 }
 
-// Issue 20's fixtures: vice jaws along both y sides of the stock (x -2 to
-// 26, y -4 to 0.5 and 19 to 23.5, z 2 to 16 mm; the material spans x and y
-// 0.5 to 23 mm) and a toe clamp on the top (x 20 to 26, y 7 to 13, z 20 to
-// 22.5 mm); the update's cutter stands in front of the far jaw.
+// The fixtures of the safety checks: vice jaws along both y sides of the
+// stock (x -2 to 26, y -4 to 0.5 and 19 to 23.5, z 2 to 16 mm; the material
+// spans x and y 0.5 to 23 mm) and a toe clamp on the top (x 20 to 26, y 7 to
+// 13, z 20 to 22.5 mm); the update's cutter stands in front of the far jaw.
 const BoxNm kFixtures[3] = {
     {PointNm{-2 * kNmPerMm, -4 * kNmPerMm, 2 * kNmPerMm}, PointNm{26 * kNmPerMm, kNmPerMm / 2, 16 * kNmPerMm}},
     {PointNm{-2 * kNmPerMm, 19 * kNmPerMm, 2 * kNmPerMm}, PointNm{26 * kNmPerMm, 23 * kNmPerMm + kNmPerMm / 2, 16 * kNmPerMm}},
@@ -159,7 +159,7 @@ const BoxNm kFixtures[3] = {
 };
 
 // What colours the frame: the workpiece colour, the error view, or the
-// colour modes of issue 19.
+// colour modes (--color tool|slope|thin|material).
 enum class Colours { kPlain, kError, kTool, kSlope, kThin, kMaterial };
 
 // A material preset's textured colours over g (display/material_colours.h),
@@ -320,7 +320,7 @@ void golden_frame(Out& out) {
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kTool);
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kTop, Colours::kSlope);
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ16, ViewPreset::kIso, Colours::kThin);
-  // Issue 19: a texture per vertex, walls split (paper §2.7.1, figure 11).
+  // Material colours: a texture per vertex, walls split (paper §2.7.1, figure 11).
   one(out, PixelFormat::kXrgb8888, ZFormat::kZ32, ViewPreset::kIso, Colours::kMaterial, false, "marble");
   one(out, PixelFormat::kRgb565, ZFormat::kZ16, ViewPreset::kIso, Colours::kMaterial, false, "two-layer");
   one(out, PixelFormat::kRgb565, ZFormat::kZ32, ViewPreset::kFront, Colours::kMaterial, false, "wood");

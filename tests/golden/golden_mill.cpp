@@ -4,7 +4,7 @@
 // stamp mode into m = 8, 16, 32 grids, one grid hash per mode and m; (path)
 // every canonical record and arc chord point hashed in order, the same trace
 // `dexmill path` prints; (flow) the same trace of a program computed by
-// parameters, expressions and o-word loops and calls (issue 21): the
+// parameters, expressions and o-word loops and calls: the
 // fixed-point functions and the flow, on every target.
 #include <stdint.h>
 #include <string.h>

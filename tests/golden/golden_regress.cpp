@@ -1,5 +1,5 @@
 // Golden section "regress": regression cases named after the bug they pin
-// (STYLE.md habit 11). Each prints a line whose value must not change, and
+// (core/README.md, habit 11). Each prints a line whose value must not change, and
 // runs under the sanitizer targets of xcheck, where the bug was found.
 #include <stdint.h>
 

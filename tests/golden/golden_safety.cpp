@@ -2,7 +2,7 @@
 // safety checks know (core/check/safety.h) cut by the simulation
 // (core/sim/simulation.h) into an m = 16 grid beside a fixture, each
 // finding printed with its line, place, depth and volume: the checks give
-// the same findings on every target (issue 20).
+// the same findings on every target.
 #include <stdint.h>
 #include <string.h>
 

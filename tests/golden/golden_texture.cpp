@@ -1,5 +1,5 @@
-// Golden section "texture": the material layer (core/material, issue 19,
-// paper §2.6-2.7) pinned bit for bit: value noise and its fractal sums, each
+// Golden section "texture": the material layer (core/material, paper
+// §2.6-2.7) pinned bit for bit: value noise and its fractal sums, each
 // procedural texture, and each preset's composition (material index and
 // colour, and the lengths of each material along vertical segments), hashed
 // over a grid of points around a 100 x 70 x 20 mm block.

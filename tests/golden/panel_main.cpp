@@ -311,10 +311,10 @@ bool overlay_frame(golden::Out& out, DexelGrid<height_t>* g, PointNm tip) {
 }
 
 // ==== SAFETY: the program again, with the checks a panel runs before the
-// machine does (issue 20): rapids into material, the spindle, the tool below
-// the block, the shank above the flutes, a clamp beside the block. The
-// grid comes out as the plain cut's; each finding is printed with its line
-// and marked in red on the frame.
+// machine does (core/check/safety.h): rapids into material, the spindle, the
+// tool below the block, the shank above the flutes, a clamp beside the block.
+// The grid comes out as the plain cut's; each finding is printed with its
+// line and marked in red on the frame.
 bool safety_pass(golden::Out& out, const PanelLibrary& lib, uint64_t plain_hash, Simulation** done) {
   SimJob job = panel_job(lib);
   SimChecks& c = job.checks;
@@ -343,7 +343,7 @@ bool safety_pass(golden::Out& out, const PanelLibrary& lib, uint64_t plain_hash,
   return errors == 0 && grid_hash(*g) == plain_hash;
 }
 
-// ==== MATERIAL: the frame in marble (issue 19, paper §2.7.1) ================
+// ==== MATERIAL: the frame in marble (paper §2.7.1) ===========================
 // The same cut drawn in the marble preset's colours (a texture per vertex,
 // walls split), its hash equal to the host's; and the cost against plain
 // frames on the board: full frames (the texture of every top worked out on

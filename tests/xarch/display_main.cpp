@@ -1,9 +1,9 @@
 // Cross-target check of the display: frame hashes of full frames and of
-// incremental updates, printed so that /work/shared/tools/xarch-check.sh can
-// require the same output from every CPU and compiler:
-//
-//   bash /work/shared/tools/xarch-check.sh -j 2 -I . -m tests/xarch/display_main.cpp \
-//       tests/scene_util.cpp $(find core display -name "*.cpp")
+// incremental updates, printed so that its builds for every CPU and compiler
+// can be required to print the same output. Build it with
+// tests/scene_util.cpp and every .cpp of core/ and display/, for each target
+// the way tools/scripts/xcheck.sh builds the golden program, run each build
+// and compare the outputs.
 //
 // (Not part of `make test`: the Makefile builds tests/*.cpp only.)
 #include <cstdio>

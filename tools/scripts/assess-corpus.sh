@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# assess-corpus.sh - error assessment on real programs of ../shared/corpus
-# against design parts this project makes for them (issue 18): the part
+# assess-corpus.sh - error assessment on real programs of a corpus folder
+# (CORPUS; by default the one CI keeps beside the clone) against design
+# parts this project makes for them: the part
 # each program is written to make, as an STL the script writes, and the
 # tool its header names. Prints each run's assessment in one line; fails
 # when dexmill fails or finds a gouge (these programs make their parts

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs `dexmill path` and `dexmill check` over every file of ../shared/corpus
+# Runs `dexmill path` and `dexmill check` over every file of a corpus folder
+# (CORPUS; by default the one CI keeps beside the clone)
 # and prints one line per file: OK (path produced, N moves), or the first
 # error. A file fails the script only when dexmill crashes, path and check
 # disagree (one finds an error the other does not), or an error comes

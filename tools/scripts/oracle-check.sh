@@ -3,17 +3,17 @@
 #
 #   tools/scripts/oracle-check.sh [--rs274] [DEXMILL]
 #
-# 1. The stored oracles ../shared/corpus/linuxcnc-interp-oracle/*/expected
-#    (LinuxCNC's canonical trace of each program): skipped with a message
-#    when ../shared is absent.
+# 1. The stored oracles of the corpus folder CI keeps beside the clone,
+#    linuxcnc-interp-oracle/*/expected (LinuxCNC's canonical trace of each
+#    program): skipped with a message when that folder is absent.
 # 2. With --rs274 (needs LinuxCNC's standalone interpreter `rs274`, Debian
 #    package linuxcnc-uspace): every tests/gcode/paths/*.ngc and every file of
-#    ../shared/corpus, traced by rs274 and compared the same way, both with
+#    that corpus folder, traced by rs274 and compared the same way, both with
 #    the same tool table (for G41/G42: FAMILY.tbl beside FAMILY_NAME.ngc, or
 #    one the script writes).
-#    Also the programs `dexmill zig` writes (issue 23: they must be plain
-#    RS274/NGC), from a relief the script draws (lifted and zigzag, along x
-#    and y) and for the four built-in parts of run --demo.
+#    Also the programs `dexmill zig` writes (they must be plain RS274/NGC
+#    that LinuxCNC reads as dexmill does), from a relief the script draws
+#    (lifted and zigzag, along x and y) and for the four built-in parts of run --demo.
 # A program that dexmill refuses as "not supported" is reported, not failed.
 # rs274 prints a spline (G5, G5.1) as NURBS_FEED without its points; for a
 # trace with one, LinuxCNC's own preview of the program (lcnc_preview.py,
