@@ -10,7 +10,7 @@
 #                     say in the commit why the new output is right)
 #   make CXX=clang++  the same with clang
 #   make lib          build/libdexmill.a and .so (the C API, display/api/dexmill.h) and
-#                     build/libdexmill_io.a (image files, platform/dexmill_io.h)
+#                     build/libdexmill_io.a (image files, platform/api/dexmill_io.h)
 #   make install      PREFIX=/usr/local DESTDIR=...: the binary, the libraries, their
 #                     headers and pkg-config file, the man page, the Python wrapper;
 #                     make uninstall removes exactly those
@@ -63,7 +63,7 @@ PICFLAGS := -fPIC -fvisibility=hidden
 HOSTFLAGS :=
 LDFLAGS  += $(LDSAN)
 LDLIBS   ?=
-# The window (platform/window_glfw.cpp) needs GLFW and OpenGL.
+# The window (platform/live/window_glfw.cpp) needs GLFW and OpenGL.
 GLFW     ?=
 ifneq ($(GLFW),)
 ifneq ($(shell pkg-config --exists glfw3 gl 2>/dev/null && echo yes),yes)
@@ -73,19 +73,19 @@ HOSTFLAGS += -DDEXMILL_GLFW $(shell pkg-config --cflags glfw3 gl)
 LDLIBS   += $(shell pkg-config --libs glfw3 gl)
 endif
 
-# core/ has one folder per pipeline stage (README: "Where things live").
+# Each top-level folder has one folder per stage (README: "Where things live").
 rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
 CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
 DISPLAY_SRC  := $(sort $(call rwildcard,display,*.cpp))
-PLATFORM_SRC := $(sort $(wildcard platform/*.cpp))
-TOOLS_SRC    := $(sort $(filter-out tools/main.cpp,$(wildcard tools/*.cpp)))
+PLATFORM_SRC := $(sort $(call rwildcard,platform,*.cpp))
+TOOLS_SRC    := $(sort $(filter-out tools/cli/main.cpp tools/panel/%,$(call rwildcard,tools,*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
 INT_HEADERS  := $(sort $(call rwildcard,core display,*.h))
 
 obj = $(patsubst %.cpp,$(BUILD)/obj/%.o,$(1))
 INT_OBJ  := $(call obj,$(CORE_SRC) $(DISPLAY_SRC))
 HOST_OBJ := $(call obj,$(PLATFORM_SRC) $(TOOLS_SRC))
-MAIN_OBJ := $(call obj,tools/main.cpp)
+MAIN_OBJ := $(call obj,tools/cli/main.cpp)
 TEST_OBJ := $(call obj,$(TEST_SRC))
 HDR_STAMPS := $(patsubst %.h,$(BUILD)/hdr/%.ok,$(INT_HEADERS))
 
@@ -107,7 +107,7 @@ $(BUILD)/obj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(dir $@)
 	$(Q)$(CXX) $(BASEFLAGS) $(if $(filter int,$(BUILD_KIND)),$(INTFLAGS) $(PICFLAGS),$(HOSTFLAGS)) -c $< -o $@
 # The io header includes dexmill.h as an embedder's program does.
-$(BUILD)/obj/platform/dexmill_io.o: HOSTFLAGS += -Idisplay/api
+$(BUILD)/obj/platform/api/dexmill_io.o: HOSTFLAGS += -Idisplay/api
 
 $(BIN): $(MAIN_OBJ) $(HOST_OBJ) $(INT_OBJ)
 	$(call say,LINK,$@)
@@ -164,7 +164,7 @@ test-unit: $(TEST_BIN) $(BIN)
 GOLDEN_SRC := $(sort $(wildcard tests/golden/golden*.cpp))
 GOLDEN_BIN := $(BUILD)/golden
 $(BUILD)/obj/tests/golden/golden%.o: BUILD_KIND := int
-$(GOLDEN_BIN): $(call obj,$(GOLDEN_SRC) tests/golden/board_host.cpp) $(INT_OBJ)
+$(GOLDEN_BIN): $(call obj,$(GOLDEN_SRC) tools/panel/board_host.cpp) $(INT_OBJ)
 	$(call say,LINK,$@)
 	$(Q)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 check-golden-out: $(GOLDEN_BIN)
@@ -195,7 +195,7 @@ clean:
 # ---- the library: the C API over core/ and display/ (display/api/dexmill.h) --
 # libdexmill.a and .so hold the same objects the binary links; the .so
 # exports the dm_ functions only. libdexmill_io.a is the platform's image
-# encoders behind platform/dexmill_io.h, with the one display object they
+# encoders behind platform/api/dexmill_io.h, with the one display object they
 # use, so it links beside either.
 API_VERSION := $(shell sed -n 's/^\#define DEXMILL_API_VERSION \([0-9]*\).*/\1/p' display/api/dexmill.h)
 API_CC   ?= $(if $(findstring clang,$(CXX)),clang,gcc)
@@ -203,9 +203,9 @@ C99FLAGS := -std=c99 -Wall -Wextra -Werror -pedantic
 LIB_A    := $(BUILD)/libdexmill.a
 LIB_SO   := $(BUILD)/libdexmill.so
 LIB_IO   := $(BUILD)/libdexmill_io.a
-IO_OBJ   := $(call obj,platform/dexmill_io.cpp platform/image_file.cpp platform/ppm.cpp platform/png.cpp platform/pgm.cpp \
-              platform/read_file.cpp platform/deflate.cpp platform/output_file.cpp platform/output_set.cpp platform/temp_file.cpp platform/process.cpp \
-              display/framebuffer.cpp)
+IO_OBJ   := $(call obj,platform/api/dexmill_io.cpp platform/format/image_file.cpp platform/format/ppm.cpp platform/format/png.cpp platform/format/pgm.cpp \
+              platform/os/read_file.cpp platform/format/deflate.cpp platform/os/output_file.cpp platform/os/output_set.cpp platform/os/temp_file.cpp platform/os/process.cpp \
+              display/raster/framebuffer.cpp)
 EMBED    := $(BUILD)/embed
 lib: $(LIB_A) $(LIB_SO) $(LIB_IO)
 $(LIB_A): $(INT_OBJ)
@@ -222,15 +222,15 @@ $(LIB_IO): $(IO_OBJ)
 # The example embedder (tools/examples/embed.c), a C program on the libraries.
 # Under SAN the C++ compiler links it: clang's UBSan puts the handlers the
 # C++ objects call (-fsanitize=function) in a runtime only clang++ links.
-$(EMBED): tools/examples/embed.c display/api/dexmill.h platform/dexmill_io.h $(LIB_A) $(LIB_IO) $(FLAGS_STAMP)
+$(EMBED): tools/examples/embed.c display/api/dexmill.h platform/api/dexmill_io.h $(LIB_A) $(LIB_IO) $(FLAGS_STAMP)
 	$(call say,LINK,$@)
-	$(Q)$(API_CC) $(C99FLAGS) -O2 -Idisplay/api -Iplatform -c $< -o $@.o
+	$(Q)$(API_CC) $(C99FLAGS) -O2 -Idisplay/api -Iplatform/api -c $< -o $@.o
 	$(Q)$(if $(SAN),$(CXX),$(API_CC)) $@.o $(LIB_IO) $(LIB_A) -lstdc++ $(LDSAN) -o $@
 
 # The C API header compiles as C99 (and as C++: check-headers).
 check-c-api:
 	@$(API_CC) $(C99FLAGS) -fsyntax-only -x c display/api/dexmill.h && \
-	  $(API_CC) $(C99FLAGS) -Idisplay/api -fsyntax-only -x c platform/dexmill_io.h && \
+	  $(API_CC) $(C99FLAGS) -Idisplay/api -fsyntax-only -x c platform/api/dexmill_io.h && \
 	  echo "ok: dexmill.h and dexmill_io.h compile as C99"
 # The shared library exports the dm_ functions and nothing else.
 # Under SAN, clang's -fsanitize=function adds the type descriptors of
@@ -277,7 +277,7 @@ install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/dexmill
 	install -m 644 $(LIB_A) $(LIB_IO) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
-	install -m 644 display/api/dexmill.h platform/dexmill_io.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 display/api/dexmill.h platform/api/dexmill_io.h $(DESTDIR)$(PREFIX)/include/
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(API_VERSION)|' tools/pkgconfig/dexmill.pc.in \
 	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/dexmill.pc
 	install -m 644 $(BUILD)/dexmill.1 $(DESTDIR)$(PREFIX)/share/man/man1/dexmill.1
@@ -329,9 +329,9 @@ FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -f
 FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
 # The readers and run's backplot path are host code (std, exceptions),
 # linked into every target.
-FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/tool_table.cpp platform/stl_read.cpp platform/pgm.cpp \
-                   platform/read_file.cpp platform/output_file.cpp platform/temp_file.cpp platform/output_set.cpp \
-                   platform/process.cpp platform/material_file.cpp tools/run_path.cpp)
+FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/format/tool_table.cpp platform/format/stl_read.cpp platform/format/pgm.cpp \
+                   platform/os/read_file.cpp platform/os/output_file.cpp platform/os/temp_file.cpp platform/os/output_set.cpp \
+                   platform/os/process.cpp platform/format/material_file.cpp tools/run/run_path.cpp)
 # Per target: the longest input (the pipeline's seeds are whole programs,
 # binary STL seeds a hundred triangles), the dictionary, further options (a
 # reader must not be made to allocate hundreds of MB by a few KB of input).

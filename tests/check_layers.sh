@@ -15,18 +15,37 @@ allowed() {
     core) echo "core/math";;
     core/math) echo "";;
     core/gcode) echo "core/math";;
-    core/motion) echo "core/gcode core/math";;
+    core/canon) echo "core/math";;  # the canonical records: what every stage after the interpreter reads
+    core/interp) echo "core/canon core/gcode core/math";;
     core/grid) echo "core/math";;
     core/tool) echo "core/math";;
-    core/cut) echo "core/motion core/grid core/tool core/math";;
+    core/cut) echo "core/canon core/grid core/tool core/math";;
     core/design) echo "core/grid core/math";;
     core/assess) echo "core/design core/grid core/tool core/math";;
     core/cam) echo "core/design core/grid core/tool core/math";;  # tool paths from a design part
     core/material) echo "core/math";;  # noise, textures, materials: maths only
-    core/check) echo "core/motion core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; process rules: materials
-    core/sim) echo "core/check core/assess core/material core/cut core/design core/motion core/gcode core/grid core/tool core/math";;  # the engine: a run's stages and observers, tied together once
-    display) echo "core/sim core/check core/assess core/cut core/motion core/gcode core/design core/grid core/tool core/math core/material";;
-    display/api) echo "display core/sim core/check core/assess core/cut core/motion core/gcode core/design core/grid core/tool core/math core/material";;  # the C API: the engine and its view
+    core/safety) echo "core/canon core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; a material's limits
+    core/sim) echo "core/safety core/assess core/material core/cut core/design core/canon core/interp core/gcode core/grid core/tool core/math";;  # the engine: a run's stages and observers, tied together once
+    display/raster) echo "core/math";;  # the frame, spans, clipping, the camera
+    display/colour) echo "display/raster core/sim core/assess core/design core/grid core/material core/math";;  # a cell's colour by mode (tool colours: the provenance)
+    display/surface) echo "display/colour display/raster core/grid core/tool core/math";;
+    display/overlay) echo "display/raster core/math";;
+    display/view) echo "display/surface display/overlay display/colour display/raster core/grid core/tool core/math";;  # the whole still
+    display/api) echo "display/view display/surface display/overlay display/colour display/raster core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # the C API: the engine and its view
+    platform/os) echo "";;  # the OS seam: below every other platform stage
+    platform/format) echo "platform/os platform/mesh display/raster core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # files: images, STL, tool tables, materials
+    platform/mesh) echo "display/surface core/grid core/math";;  # surface extraction for STL: hosted, so not in display/
+    platform/report) echo "platform/os core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # a run's result
+    platform/live) echo "platform/format platform/os display/raster";;  # screens: window, framebuffer, frame files; the progress bar
+    platform/input) echo "platform/live platform/os core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # the G-code file driver; the input guard knows the frames' names
+    platform/api) echo "platform/format display/api display/raster";;  # the C header of the image files, over dexmill.h
+    tools/bench) echo "platform/os display/view display/surface display/overlay display/colour display/raster display/api core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;
+    tools/cam) echo "tools/cli platform/os platform/format platform/mesh platform/report platform/live platform/input platform/api core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # cli.h: the exit codes
+    tools/run) echo "tools/cli tools/cam platform/os platform/format platform/mesh platform/report platform/live platform/input platform/api display/view display/surface display/overlay display/colour display/raster display/api core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # cli/: the exit codes and option values; cam/: zig's program
+    tools/cli) echo "tools/run tools/cam tools/bench platform/os platform/format platform/mesh platform/report platform/live platform/input platform/api display/view display/surface display/overlay display/colour display/raster display/api core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # the commands: everything
+    tools/panel) echo "tools/bench display/view display/surface display/overlay display/colour display/raster display/api core/sim core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # integer-only like core/ (w3_path_dump, a host program, reads the bench's workload)
+    tools/panel/cm) echo "tools/panel";;  # the Cortex-M board under the panel
+    tools/examples) echo "display/api platform/api";;  # an embedder: the installed C headers only
     *) echo "?";;
   esac
 }

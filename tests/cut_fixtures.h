@@ -11,7 +11,7 @@
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
-#include "core/motion/canon.h"
+#include "core/canon/canon.h"
 #include "core/tool/tool.h"
 
 namespace fixtures {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/canon.h"
-#include "core/motion/interp.h"
+#include "core/canon/canon.h"
+#include "core/interp/interp.h"
 #include "tests/runner.h"
 
 namespace t {

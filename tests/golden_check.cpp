@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "platform/png.h"
+#include "platform/format/png.h"
 #include "tests/inflate_oracle.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"

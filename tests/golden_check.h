@@ -14,7 +14,7 @@
 //   texts   a whole file compared byte for byte: CHECK_GOLDEN_TEXT(path, got)
 //
 // Hashes of files and text are FNV-1a 64 over the bytes (run_cli::fnv), of
-// frames display/framebuffer.h frame_hash (the stored pixel values).
+// frames display/raster/framebuffer.h frame_hash (the stored pixel values).
 //
 // A check is allowed only in a case whose name holds "golden": `make bless`
 // runs exactly those cases (tests/bless.sh), so no golden can be left out.
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "display/framebuffer.h"
+#include "display/raster/framebuffer.h"
 
 namespace t {
 
@@ -51,7 +51,7 @@ struct RgbImage {
 RgbImage rgb_of_frame(const dexmill::FrameView& fb);
 // A binary PPM (P6, maxval 255); w = h = 0 when the bytes are not one.
 RgbImage rgb_of_ppm(const std::string& bytes);
-// Our own PNG encoding of img (platform/png.h), and the way back for a PNG
+// Our own PNG encoding of img (platform/format/png.h), and the way back for a PNG
 // of colour type 2, depth 8 (what png_encode_rgb8 writes); w = h = 0 when
 // the bytes are not such a PNG.
 std::vector<uint8_t> png_of(const RgbImage& img);

@@ -1,5 +1,5 @@
 // A small INFLATE decoder (RFC 1951) and zlib unwrapper (RFC 1950) for the
-// tests only: the reference the encoder of platform/deflate.h is checked
+// tests only: the reference the encoder of platform/format/deflate.h is checked
 // against. It shares no code with the encoder, reads bit by bit for
 // simplicity rather than speed, and rejects anything malformed (bad block
 // type, over-subscribed codes, bad repeat codes, distances before the start,

@@ -12,7 +12,7 @@
 #include "core/grid/grid.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
-#include "display/render.h"
+#include "display/surface/render.h"
 
 namespace t {
 

@@ -7,12 +7,12 @@
 #include "core/gcode/messages.h"
 #include "core/math/decimal.h"
 #include "core/tool/spec.h"
-#include "platform/gcode_file.h"
-#include "platform/report_json.h"
+#include "platform/input/gcode_file.h"
+#include "platform/report/report_json.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
-#include "tools/cli.h"
-#include "tools/run_stock.h"
+#include "tools/cli/cli.h"
+#include "tools/run/run_stock.h"
 
 namespace sim_test {
 

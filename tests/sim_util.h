@@ -5,7 +5,7 @@
 // with text fed in pieces and budgets of any size.
 //
 // Run: a job set up from options by `dexmill run`'s own set-up
-// (tools/run_setup.h: its defaults, the first pass's tools, stock, pitch and
+// (tools/run/run_setup.h: its defaults, the first pass's tools, stock, pitch and
 // first bad block, the inputs read by the CLI's readers), then the program
 // cut to its end. What it found is read
 // from the simulation (safety(), gouges(), process(), provenance()), and the
@@ -20,9 +20,9 @@
 
 #include "core/sim/scan.h"
 #include "core/sim/simulation.h"
-#include "platform/tool_table.h"
-#include "tools/run_options.h"
-#include "tools/run_setup.h"
+#include "platform/format/tool_table.h"
+#include "tools/run/run_options.h"
+#include "tools/run/run_setup.h"
 
 namespace sim_test {
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <set>
 
-#include "display/mesh.h"
+#include "display/surface/mesh.h"
 
 namespace t {
 

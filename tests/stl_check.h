@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/grid/grid.h"
-#include "platform/stl_cells.h"
+#include "platform/mesh/stl_cells.h"
 
 namespace t {
 

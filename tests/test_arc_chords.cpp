@@ -1,10 +1,10 @@
-// core/motion/arc_chords.h against a double-precision oracle: every chord point on
+// core/canon/arc_chords.h against a double-precision oracle: every chord point on
 // the exact arc within the stated bound, every chord's sagitta within the
 // requested tolerance plus that bound, the last point exact.
 #include <cmath>
 #include <random>
 
-#include "core/motion/arc_chords.h"
+#include "core/canon/arc_chords.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -1,4 +1,4 @@
-// The backplot (display/backplot.h): its pixels against a double-precision
+// The backplot (display/overlay/backplot.h): its pixels against a double-precision
 // line through the projected ends, the depth test against a rendered part,
 // and redraws inside rectangles against a full redraw, in both pixel and
 // depth formats.
@@ -7,8 +7,8 @@
 #include <cstring>
 #include <vector>
 
-#include "display/backplot.h"
-#include "display/clip.h"
+#include "display/overlay/backplot.h"
+#include "display/raster/clip.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
@@ -146,7 +146,7 @@ void check_pixels_follow_line(int32_t w) {
 
 TEST(backplot_pixels_follow_the_projected_line) {
   check_pixels_follow_line(1);
-  // Two pixels across: a supersampled frame's line (display/stock_view.h).
+  // Two pixels across: a supersampled frame's line (display/view/stock_view.h).
   check_pixels_follow_line(2);
 }
 

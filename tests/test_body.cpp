@@ -1,4 +1,4 @@
-// The tool's shank and holder as rings of a lower surface (core/check/body.h):
+// The tool's shank and holder as rings of a lower surface (core/safety/body.h):
 // the lowest point of a ring over a straight piece against a double
 // oracle (flat parts at their spans' ends, cones by ternary search), on
 // random pieces (level, ramps, plunges, steep and shallow) and rings (discs,
@@ -10,7 +10,7 @@
 #include <cstring>
 #include <limits>
 
-#include "core/check/body.h"
+#include "core/safety/body.h"
 #include "core/math/fixed.h"
 #include "core/tool/spec.h"
 #include "tests/rng.h"

@@ -15,8 +15,8 @@
 #include "core/design/builtin_font.h"
 #include "core/design/builtin_shape.h"
 #include "core/material/material_preset.h"
-#include "display/font.h"
-#include "platform/pgm.h"
+#include "display/overlay/font.h"
+#include "platform/format/pgm.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

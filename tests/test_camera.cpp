@@ -1,10 +1,10 @@
-// display/camera.h: presets, projections against a double oracle, fitting.
+// display/raster/camera.h: presets, projections against a double oracle, fitting.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 
 #include "core/math/trig.h"
-#include "display/camera.h"
+#include "display/raster/camera.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

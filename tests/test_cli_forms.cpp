@@ -1,4 +1,4 @@
-// The GNU forms of the command line on every subcommand (tools/option_parse.h):
+// The GNU forms of the command line on every subcommand (tools/cli/option_parse.h):
 // `--opt=value` does what `--opt value` does, `--` ends the options (a file
 // whose name begins with '-' is then an operand, and without it an unknown
 // option), and a misspelled option gets "did you mean" when a name is close

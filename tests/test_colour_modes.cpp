@@ -1,4 +1,4 @@
-// The colour modes tool, slope and thin (display/tool_colours.h,
+// The colour modes tool, slope and thin (display/colour/tool_colours.h,
 // slope_colours.h, thin_colours.h) on hand-made grids: a dexel cut by T2 is
 // T2's, one cut by T1 and then T2 too, untouched stock uncut, a hole's rim
 // its drill's; the palette wraps at 8 tools; slopes land in their bands on
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/cut/stamp.h"
-#include "display/slope_colours.h"
-#include "display/thin_colours.h"
-#include "display/tool_colours.h"
+#include "display/colour/slope_colours.h"
+#include "display/colour/thin_colours.h"
+#include "display/colour/tool_colours.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
 

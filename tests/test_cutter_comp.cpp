@@ -1,4 +1,4 @@
-// Cutter radius compensation (core/motion/cutter_comp.h, interp_comp.cpp):
+// Cutter radius compensation (core/interp/cutter_comp.h, interp_comp.cpp):
 // the integer geometry against double-precision oracles (a transcription
 // of LinuxCNC's convert_straight_comp1/comp2 and its queue for polylines),
 // the held records, atomic blocks, the tool table's radii, and each rule
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/math/trig.h"
-#include "core/motion/cutter_comp.h"
-#include "core/motion/interp.h"
+#include "core/interp/cutter_comp.h"
+#include "core/interp/interp.h"
 #include "tests/gcode_test_util.h"
 #include "tests/rng.h"
 #include "tests/runner.h"

@@ -1,5 +1,5 @@
-// The picture's decorations and framing (display/decorations.h,
-// display/box_outline.h, camera_fit_inside, the stock view's initial
+// The picture's decorations and framing (display/overlay/decorations.h,
+// display/overlay/box_outline.h, camera_fit_inside, the stock view's initial
 // camera, the legend's captions): the triad's arrows point where the
 // machine's axes go on the screen, the scale bar is a 1-2-5 length as long
 // as the view shows it, the stock is framed inside the picture, clear of
@@ -16,11 +16,11 @@
 
 #include "core/config.h"
 #include "core/math/trig.h"
-#include "display/box_outline.h"
-#include "display/decorations.h"
-#include "display/font.h"
-#include "display/legend.h"
-#include "display/stock_view.h"
+#include "display/overlay/box_outline.h"
+#include "display/overlay/decorations.h"
+#include "display/overlay/font.h"
+#include "display/overlay/legend.h"
+#include "display/view/stock_view.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
 
@@ -234,7 +234,7 @@ namespace {
 
 // A stock view over a block of the shape's x:y proportions, framed as the
 // CLI frames it: a legend with captions and decorations on; supersampled
-// 2x2 as the CLI's stills and saved frames are (tools/run_render.cpp).
+// 2x2 as the CLI's stills and saved frames are (tools/run/run_render.cpp).
 struct ViewCase {
   t::TestGrid<height_t> grid;
   t::TestFrame frame;
@@ -342,7 +342,7 @@ uint64_t incremental_equals_full(bool supersampled) {
 TEST(decorations_redrawn_incrementally_equal_a_full_frame) { incremental_equals_full(false); }
 
 // Supersampled, the repainted rectangles are resolved on the renderer's
-// 4-pixel tiles (display/stock_view.h), so a partial redraw still equals a
+// 4-pixel tiles (display/view/stock_view.h), so a partial redraw still equals a
 // full one; and the picture is not the aliased one.
 TEST(supersampled_redrawn_incrementally_equal_a_full_frame) {
   CHECK(incremental_equals_full(true) != incremental_equals_full(false));

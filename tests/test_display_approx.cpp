@@ -1,10 +1,10 @@
-// display/approx.h against a double-precision oracle: the stated bounds.
+// display/raster/approx.h against a double-precision oracle: the stated bounds.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <initializer_list>
 
-#include "display/approx.h"
+#include "display/raster/approx.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

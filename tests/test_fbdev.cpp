@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "display/framebuffer.h"
-#include "platform/fbdev.h"
+#include "display/raster/framebuffer.h"
+#include "platform/live/fbdev.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

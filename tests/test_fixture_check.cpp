@@ -1,4 +1,4 @@
-// The fixture check (core/check/safety.h) against a double oracle of the
+// The fixture check (core/safety/safety.h) against a double oracle of the
 // geometry: random clamp boxes and straight moves of ball, flat and bull
 // tools beside and through them. The oracle takes the tool's lowest point
 // over the move at each dexel column inside the box (dense samples along
@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/check/body.h"
-#include "core/check/safety.h"
+#include "core/safety/body.h"
+#include "core/safety/safety.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
 #include "tests/rng.h"

@@ -1,4 +1,4 @@
-// Fixtures drawn by the renderer (display/fixture_draw.h, render.h
+// Fixtures drawn by the renderer (display/surface/fixture_draw.h, render.h
 // renderer_set_fixtures): the box's pixels against its projected corners,
 // each visible face in its own flat shade, the depth test against the
 // stock both ways, incremental redraw equal to a full redraw with the
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/math/trig.h"
-#include "display/render.h"
+#include "display/surface/render.h"
 #include "tests/alloc_count.h"
 #include "tests/rng.h"
 #include "tests/runner.h"

@@ -14,7 +14,7 @@
 
 #include "core/cut/mill.h"
 #include "core/grid/grid.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"

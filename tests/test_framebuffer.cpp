@@ -1,12 +1,12 @@
-// display/framebuffer.h: pixel formats, the view checks, fills, the frame hash.
+// display/raster/framebuffer.h: pixel formats, the view checks, fills, the frame hash.
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
 #include <vector>
 
 #include "core/math/hash.h"
-#include "display/framebuffer.h"
-#include "display/overlay.h"
+#include "display/raster/framebuffer.h"
+#include "display/overlay/overlay.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

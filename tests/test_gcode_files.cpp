@@ -2,7 +2,7 @@
 // written on its first line (`; expect LINE:COL: MESSAGE`), and every golden
 // program's path (`dexmill path`, with --tools FAMILY.tbl when the program
 // FAMILY_NAME.ngc has one) matches NAME.path byte for byte. Also the
-// hosted reader (platform/gcode_file.h) on line ends, long lines and a long
+// hosted reader (platform/input/gcode_file.h) on line ends, long lines and a long
 // streamed file.
 #include <dirent.h>
 #include <sys/wait.h>
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
-#include "platform/gcode_file.h"
+#include "core/interp/interp.h"
+#include "platform/input/gcode_file.h"
 #include "tests/alloc_count.h"
 #include "tests/golden_check.h"
 #include "tests/runner.h"

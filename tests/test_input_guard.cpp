@@ -1,4 +1,4 @@
-// The input guard (platform/file_guard.h): no subcommand writes
+// The input guard (platform/input/file_guard.h): no subcommand writes
 // or removes a file it reads. Each surface is refused with exit 2 and a
 // message naming both files, before anything is written or removed, under
 // the file's own name, through a symbolic link and through a hard link;

@@ -1,4 +1,4 @@
-// core/motion/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
+// core/interp/interp.h: records, modal state, atomic blocks, LinuxCNC's arc
 // tolerances, warnings, and the no-heap streaming guarantee.
 #include <cstdio>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "tests/alloc_count.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
@@ -278,7 +278,7 @@ std::string errors_of(const char* program) {
 
 // One cause, one error. After a block fails, what it would have set
 // is suspect, and so is what an error blames; an error that reads a suspect
-// facet is a follow-on (core/motion/interp_follow_on.cpp).
+// facet is a follow-on (core/interp/interp_follow_on.cpp).
 TEST(interp_follow_on_errors) {
   const int feed0 = gcode_error_number(GcodeError::kFeedZero);
   const std::string f0 = std::to_string(feed0);

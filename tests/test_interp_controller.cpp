@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
-#include "core/motion/summary.h"
+#include "core/interp/interp.h"
+#include "core/canon/summary.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 

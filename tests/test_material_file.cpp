@@ -1,11 +1,11 @@
-// Material files (platform/material_file.h): a file with every statement
+// Material files (platform/format/material_file.h): a file with every statement
 // read into the composition it says, a preset with an insert, and a corpus
 // of bad files, each with the error it must give (FILE:LINE:COL).
 #include <cstring>
 #include <string>
 
 #include "core/math/fixed.h"
-#include "platform/material_file.h"
+#include "platform/format/material_file.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

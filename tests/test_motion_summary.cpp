@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "core/math/fixed.h"
-#include "core/motion/interp.h"
-#include "core/motion/summary.h"
+#include "core/interp/interp.h"
+#include "core/canon/summary.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

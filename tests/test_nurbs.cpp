@@ -1,4 +1,4 @@
-// G5.2/G5.3 NURBS (core/motion/nurbs.h) against a double-precision oracle
+// G5.2/G5.3 NURBS (core/interp/nurbs.h) against a double-precision oracle
 // written from LinuxCNC's own definition (nurbs_additional_functions.cc: the
 // clamped integer knot vector, Cox-de Boor basis, rational sum): every chord
 // point within 2 nm of the curve, the curve within the sagitta + 3 nm of the
@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "core/motion/interp.h"
-#include "core/motion/nurbs.h"
+#include "core/interp/interp.h"
+#include "core/interp/nurbs.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 

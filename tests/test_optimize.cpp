@@ -6,7 +6,7 @@
 // limits comes back byte for byte; moves in air and in a faster material
 // keep their feed; inch programs, canned cycles, G93, block delete and CRLF
 // files; usage and input errors. Then the pieces in-process: the F number
-// (tools/feed_word.h), the per-line rule and the splice (tools/feed_rewrite.h).
+// (tools/cam/feed_word.h), the per-line rule and the splice (tools/cam/feed_rewrite.h).
 #include <sys/wait.h>
 
 #include <cstdint>
@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
-#include "core/check/process.h"
+#include "core/safety/material_limits.h"
 #include "core/math/decimal.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 #include "tests/sim_util.h"
-#include "tools/feed_rewrite.h"
-#include "tools/feed_word.h"
+#include "tools/cam/feed_rewrite.h"
+#include "tools/cam/feed_word.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The option tables (tools/option_table.h): the GNU forms of the parser,
+// The option tables (tools/cli/option_table.h): the GNU forms of the parser,
 // the suggestions for a misspelled option, and that every option of every
 // table is in its subcommand's `--help` and in `dexmill --man-options`, so
 // the help, the man page and the parser cannot drift apart.
@@ -7,10 +7,10 @@
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
-#include "tools/cli.h"
-#include "tools/option_help.h"
-#include "tools/option_parse.h"
-#include "tools/option_suggest.h"
+#include "tools/cli/cli.h"
+#include "tools/cli/option_help.h"
+#include "tools/cli/option_parse.h"
+#include "tools/cli/option_suggest.h"
 
 namespace {
 

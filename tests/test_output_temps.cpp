@@ -1,4 +1,4 @@
-// Output temporaries (platform/temp_file.h): a name that fits whatever the
+// Output temporaries (platform/os/temp_file.h): a name that fits whatever the
 // output's length (a 255-byte name used to fail with "File name too long",
 // its temporary being NAME.tmp-PID), and a clean-up that removes only what no
 // live process holds (it used to judge by the PID alone, and deleted a live
@@ -13,8 +13,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "platform/output_file.h"
-#include "platform/temp_file.h"
+#include "platform/os/output_file.h"
+#include "platform/os/temp_file.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/gcode/oword.h"
-#include "core/motion/interp.h"
-#include "platform/gcode_file.h"
+#include "core/interp/interp.h"
+#include "platform/input/gcode_file.h"
 #include "tests/gcode_test_util.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"

@@ -1,4 +1,4 @@
-// Our own zlib/DEFLATE and PNG encoders (platform/deflate.h, platform/png.h)
+// Our own zlib/DEFLATE and PNG encoders (platform/format/deflate.h, platform/format/png.h)
 // against independent references written here: a bitwise CRC-32, a modulo-
 // every-byte Adler-32, an INFLATE decoder (tests/inflate_oracle.h, itself
 // checked on streams made by Python's zlib), and a PNG reader that checks
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "platform/deflate.h"
-#include "platform/png.h"
+#include "platform/format/deflate.h"
+#include "platform/format/png.h"
 #include "tests/inflate_oracle.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
@@ -515,7 +515,7 @@ DecodedPng decode_png(const Bytes& png) {
   std::size_t bpp = 0;
   if (d.colour_type == 2 && d.bit_depth == 8) bpp = 3;
   if (d.colour_type == 0 && d.bit_depth == 16) bpp = 2;
-  // Grey images are filtered row by row, RGB frames not (platform/png.cpp).
+  // Grey images are filtered row by row, RGB frames not (platform/format/png.cpp).
   d.ok = bpp != 0 && unfilter(&d, bpp, d.colour_type == 0);
   return d;
 }

@@ -1,4 +1,4 @@
-// Polar coordinates (@, ^; core/motion/polar.h and the interpreter's use of
+// Polar coordinates (@, ^; core/interp/polar.h and the interpreter's use of
 // them): the integer geometry against a double oracle of LinuxCNC's
 // find_ends and CYCLE_MACRO (the error bound of polar.h), and programs
 // against what LinuxCNC 2.9's rs274 prints for them, errors included.
@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "core/motion/interp.h"
-#include "core/motion/polar.h"
+#include "core/interp/interp.h"
+#include "core/interp/polar.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 

@@ -10,7 +10,7 @@
 // 100 m) in both cut modes and every height width. The program's ranges
 // are stated where they are decided: core/tool/tool.h (tools),
 // core/grid/grid.h and core/sim/stock_plan.h (grids, stock),
-// core/cut/sweep.h (the sweep's own bound on the radius), core/motion/interp.h
+// core/cut/sweep.h (the sweep's own bound on the radius), core/interp/interp.h
 // (coordinates). `make test SAN=1` runs this under ASan + UBSan with
 // -fno-sanitize-recover, and with DEXMILL_CHECKED_ARITH (core/config.h), so
 // that a product the code assumes fits (mul_shift_fit) and does not ends
@@ -31,7 +31,7 @@
 
 #include "core/cut/mill.h"
 #include "core/grid/grid.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "core/sim/stock_plan.h"
 #include "core/tool/spec.h"
 #include "tests/run_cli_util.h"
@@ -75,7 +75,7 @@ std::string motion_program(const StockBox& b, int64_t r, double cone_slope) {
   const int64_t sx = max_of<int64_t>(1, min_of(r, (b.hi.x_nm - b.lo.x_nm) / 2));
   const int64_t sy = max_of<int64_t>(1, min_of(r, (b.hi.y_nm - b.lo.y_nm) / 2));
   const int64_t d = max_of<int64_t>(1, min_of(r, height / 2));
-  // (Arcs of LinuxCNC's least radius at least, 1.27 um: core/motion/arc_center.h.)
+  // (Arcs of LinuxCNC's least radius at least, 1.27 um: core/interp/arc_center.h.)
   const int64_t ra = max_of<int64_t>(min_of(sx, sy), 2000);
   const int64_t up = min_of(top + r + 1, kGcodeMaxCoordNm);
   Program p;
@@ -136,7 +136,7 @@ std::string motion_program(const StockBox& b, int64_t r, double cone_slope) {
   p.add("G0", {{'X', -rbig}, {'Y', 0}, {'Z', top - d}});
   p.add("G3 P2", {{'X', -rbig}, {'Y', 0}, {'Z', top - 2 * d}, {'I', rbig}, {'J', 0}});
   p.add("G0", {{'X', sx}, {'Y', -sy}, {'Z', top - d}});  // a rapid through the stock
-  // The interpreter's limits (core/motion/interp.h): the corners of the
+  // The interpreter's limits (core/interp/interp.h): the corners of the
   // +-10 m box, a 3-D diagonal between them through the stock's top, a
   // plunge to -10 m and an arc of R 100 m.
   const int64_t lim = kGcodeMaxCoordNm;

@@ -1,12 +1,12 @@
-// display/raster.h and display/clip.h: the fill rule, clip independence,
+// display/raster/raster.h and display/raster/clip.h: the fill rule, clip independence,
 // interpolation against a double oracle, clipping.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
 
-#include "display/clip.h"
-#include "display/raster.h"
+#include "display/raster/clip.h"
+#include "display/raster/raster.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

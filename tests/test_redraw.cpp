@@ -1,8 +1,8 @@
-// display/redraw.h: tiles merged into rectangles, block height ranges.
+// display/surface/redraw.h: tiles merged into rectangles, block height ranges.
 #include <cstdint>
 #include <vector>
 
-#include "display/redraw.h"
+#include "display/surface/redraw.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"

@@ -1,4 +1,4 @@
-// display/render.h: incremental redraw equals a full redraw, the surface is
+// display/surface/render.h: incremental redraw equals a full redraw, the surface is
 // watertight, no heap while drawing, golden frame hashes.
 #include <cmath>
 #include <cstdio>
@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "core/math/trig.h"
-#include "display/material_colours.h"
-#include "display/render.h"
-#include "display/slope_colours.h"
-#include "display/thin_colours.h"
-#include "display/tool_colours.h"
+#include "display/colour/material_colours.h"
+#include "display/surface/render.h"
+#include "display/colour/slope_colours.h"
+#include "display/colour/thin_colours.h"
+#include "display/colour/tool_colours.h"
 #include "tests/alloc_count.h"
 #include "tests/golden_check.h"
 #include "tests/rng.h"
@@ -489,7 +489,7 @@ void golden_frame(const char* name, int scene, ViewPreset view, Projection proj,
 }  // namespace
 
 TEST(golden_frames) {
-  // Frame hashes (display/framebuffer.h frame_hash: pixel values, little
+  // Frame hashes (display/raster/framebuffer.h frame_hash: pixel values, little
   // endian, row by row), so every compiler and CPU must draw the same bits;
   // a frame that differs leaves its expected, actual and difference
   // pictures (tests/golden_check.h). Update only on purpose (make bless),

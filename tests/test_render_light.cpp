@@ -1,11 +1,11 @@
-// display/shade.h's key and fill lights: every face the camera sees of the
+// display/surface/shade.h's key and fill lights: every face the camera sees of the
 // plain workpiece is at least about 25 % grey, from every side.
 #include <cstdint>
 #include <cstdio>
 
 #include "core/cut/stamp.h"
 #include "core/math/trig.h"
-#include "display/render.h"
+#include "display/surface/render.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
 

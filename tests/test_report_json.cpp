@@ -1,7 +1,7 @@
 // The report's number formatting: exact volumes and fixed decimals.
 #include <string>
 
-#include "platform/report_json.h"
+#include "platform/report/report_json.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -1,11 +1,11 @@
-// Rotated coordinate systems (core/motion/rotation.h): the integer turn
+// Rotated coordinate systems (core/interp/rotation.h): the integer turn
 // against a double oracle within its stated bound, whole turns exact, and
 // a point turned and turned back within twice the bound.
 #include <cmath>
 #include <cstdio>
 #include <random>
 
-#include "core/motion/rotation.h"
+#include "core/interp/rotation.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -1,4 +1,4 @@
-// `dexmill run`'s anti-aliased stills (display/supersample.h) on a known
+// `dexmill run`'s anti-aliased stills (display/view/supersample.h) on a known
 // scene: the uncut block from straight above, turned 30 degrees, on the
 // flat table, whose slanted edges cross the background's dark top rows.
 // Along those rows the aliased picture (--no-antialias) steps from the
@@ -78,7 +78,7 @@ TEST(run_antialias_smooths_edges_and_keeps_flat_regions) {
 
 namespace {
 
-// The ink of the path's done feeds (display/backplot.h: 24, 100, 255) over
+// The ink of the path's done feeds (display/overlay/backplot.h: 24, 100, 255) over
 // the grey stock, in pixels of full strength: blue over red, summed and
 // divided by the colour's own. A line one pixel wide drawn one pixel wide at
 // twice the size would average to half of the aliased picture's.

@@ -88,7 +88,7 @@ TEST(run_golden_stdin_and_demo) {
   CHECK_EQ(stat((tmp_dir() + "/out/final.ppm").c_str(), &st), 0);
   CHECK_EQ(stat((tmp_dir() + "/out/frames/frame-000050.png").c_str(), &st), 0);
   CHECK_GOLDEN_FILE("run-demo-final", tmp_dir() + "/out/final.ppm");  // in its beech-over-aluminium block
-  // And the error view of its own part (tools/demo_program.h): the corners
+  // And the error view of its own part (tools/run/demo_program.h): the corners
   // the roughing rows stop short of and the dome's base are left green.
   CHECK_GOLDEN_FILE("run-demo-error", tmp_dir() + "/out/error.ppm");
   const std::string a = assessment_of(slurp(tmp_dir() + "/out/demo.json"));
@@ -264,7 +264,7 @@ TEST(run_golden_color_error_frames_and_image) {
   // the G81 hole, the cut translucent over the design the material left.
   CHECK_EQ(run("pocket.ngc -q --size 160x120 --image %/plain.ppm").code, 0);
   // Aliased (--no-antialias) as they always were; anti-aliased by default,
-  // blended at twice the size (display/stock_view.h stock_view_blend):
+  // blended at twice the size (display/view/stock_view.h stock_view_blend):
   // tests/test_run_antialias.cpp checks those against the aliased ones.
   const std::string ov = "pocket.ngc -q --size 160x120 --design %/pde.stl ";
   CHECK_EQ(run(ov + "--no-antialias --overlay design --image %/od.ppm").code, 0);

@@ -14,7 +14,7 @@ namespace {
 
 using namespace run_cli;
 
-// The triad's X red (display/decorations.cpp), apart from the cutter's
+// The triad's X red (display/overlay/decorations.cpp), apart from the cutter's
 // darker, shaded red.
 bool axis_red(const unsigned char* p) { return p[0] > 225 && p[1] > 50 && p[1] < 90 && p[2] > 40 && p[2] < 70; }
 // Any shade of the cutter's red.

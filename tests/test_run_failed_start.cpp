@@ -1,4 +1,4 @@
-// A run that cannot start harms nothing (tools/run_setup.h
+// A run that cannot start harms nothing (tools/run/run_setup.h
 // remove_earlier_frames): a --window this build cannot open, a display
 // that is missing, a --fbdev that is no framebuffer all exit non-zero with
 // a message and leave the frames of an earlier run in --frames as they
@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "platform/window.h"
+#include "platform/live/window.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 

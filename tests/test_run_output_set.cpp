@@ -1,4 +1,4 @@
-// A run's files are published together (platform/output_set.h):
+// A run's files are published together (platform/os/output_set.h):
 // each is written to its temporary, the report last, and all are renamed in
 // one pass at the end. A signal in the writing phase used to leave the new
 // image beside the old heightmap, STL and report; now it leaves the old set

@@ -15,7 +15,7 @@
 
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
-#include "tools/run_live.h"
+#include "tools/run/run_live.h"
 
 namespace {
 

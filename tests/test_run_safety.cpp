@@ -1,4 +1,4 @@
-// Safety checks of `dexmill run` (core/check/safety.h) as the
+// Safety checks of `dexmill run` (core/safety/safety.h) as the
 // CLI gives them: a program with one offence of each kind gives each
 // warning as FILE:LINE:1 with its message, and the report's collisions;
 // without --check the report says null and nothing is warned;

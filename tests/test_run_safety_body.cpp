@@ -1,4 +1,4 @@
-// The checks of the tool's body (core/check/body.h) as the CLI gives them: a tool
+// The checks of the tool's body (core/safety/body.h) as the CLI gives them: a tool
 // whose spec has a flute length is checked without --check, its finding a
 // FILE:LINE:1 warning, counted in the summary of a run with no output;
 // --fixture's usage, --stop-at collision's exit 4 at a fixture; `check

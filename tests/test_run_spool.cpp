@@ -1,5 +1,5 @@
 // The copy of a program that cannot be read twice
-// (platform/program_input.h): bounded where the reading stops (/dev/zero,
+// (platform/input/program_input.h): bounded where the reading stops (/dev/zero,
 // binary data), by --max-input beyond that, its write errors said with
 // their cause, and what a killed run left removed by the next copy. Each
 // run here is under `ulimit -f` so that a copy without bound fails fast

@@ -1,4 +1,4 @@
-// What `dexmill run` with no FILE cuts (tools/run_options.h
+// What `dexmill run` with no FILE cuts (tools/run/run_options.h
 // choose_program): standard input when it is a file or a pipe, the
 // built-in demo on a terminal or with --demo pocket, and a usage error
 // naming `-` when standard input holds nothing.

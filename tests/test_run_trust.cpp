@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "platform/program_input.h"
+#include "platform/input/program_input.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 

@@ -1,5 +1,5 @@
 // `dexmill run` and `check` on a program's units and its tool table's
-// (core/motion/units_guess.h, core/sim/tool_units.h): the warnings at the
+// (core/interp/units_guess.h, core/sim/tool_units.h): the warnings at the
 // first move, counted in the summary and listed in the report, and
 // --tool-units. The programs are written here.
 #include <algorithm>

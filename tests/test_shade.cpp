@@ -1,4 +1,4 @@
-// display/shade.h: lighting against a double oracle, the blurred normals of
+// display/surface/shade.h: lighting against a double oracle, the blurred normals of
 // §2.4.2, the colour ramps.
 #include <cmath>
 #include <cstdint>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/grid/grid.h"
-#include "display/shade.h"
+#include "display/surface/shade.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

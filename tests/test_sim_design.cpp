@@ -5,7 +5,7 @@
 // binary STL; a tolerance box forgiving a corner), gouge_one.ngc's one gouge
 // on line 7 (stopping there cuts less; short of the floor or on it, none),
 // a design from a height image (P5 and P2 alike). The figures are the
-// report's own text of the assessment (platform/report_json.h). The warnings
+// report's own text of the assessment (platform/report/report_json.h). The warnings
 // as FILE:LINE:1, the report's design key, the exit statuses and the
 // images stay with the CLI's tests (test_run_cli.cpp).
 #include <string>

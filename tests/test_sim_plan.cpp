@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/math/fixed.h"
-#include "platform/report_json.h"
+#include "platform/report/report_json.h"
 #include "tests/runner.h"
 #include "tests/sim_util.h"
 

@@ -1,4 +1,4 @@
-// The process rules of a stock's materials (core/check/process.h)
+// The process rules of a stock's materials (core/safety/material_limits.h)
 // on the engine (tests/sim_util.h), with the jobs of `dexmill run
 // --material`: a feed over a material's limit on exactly one line is one
 // violation on that line, coolant in wood one on its line, a spindle speed

@@ -1,4 +1,4 @@
-// The safety checks (core/check/safety.h) on the engine
+// The safety checks (core/safety/safety.h) on the engine
 // (tests/sim_util.h), with the jobs of `dexmill run`'s options: for each
 // kind a program with one offence on a known line gives one finding on that
 // line with its depth exact (the stock top and the offending Z lie on the

@@ -1,4 +1,4 @@
-// G5 and G5.1 splines (core/motion/spline.h, core/motion/interp_spline.cpp):
+// G5 and G5.1 splines (core/interp/spline.h, core/interp/interp_spline.cpp):
 // the chords against a double oracle of the Bezier curve LinuxCNC hands
 // NURBS_FEED (spline.h's bound, both ways, and no needless chords), and
 // programs against what LinuxCNC 2.9's rs274 does with them, errors
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
-#include "core/motion/spline.h"
+#include "core/interp/interp.h"
+#include "core/interp/spline.h"
 #include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 

@@ -1,6 +1,6 @@
 // An output on standard output that is lost is an I/O error (exit 3,
 // tools/CLI.md):
-// closed (`>&-`, which platform/process.cpp used to fill with a writable
+// closed (`>&-`, which platform/os/process.cpp used to fill with a writable
 // /dev/null, so that every write "succeeded") or full (/dev/full, where the
 // summary's failed flush went unchecked). Each command that writes to
 // standard output, both ways: exit 3 and a message saying so, where all

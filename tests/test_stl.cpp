@@ -1,5 +1,5 @@
 // The STL file: written, read back with the project's own reader
-// (platform/stl_read.h), every vertex exactly on a grid point, closed
+// (platform/format/stl_read.h), every vertex exactly on a grid point, closed
 // (every directed edge once, its reverse once), the cell surface's volume
 // to the last LSB, the count in its header the one stl_triangle_count
 // gives; on grids with holes, islands, diagonal contacts and through holes.
@@ -11,8 +11,8 @@
 
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
-#include "platform/stl.h"
-#include "platform/stl_read.h"
+#include "platform/format/stl.h"
+#include "platform/format/stl_read.h"
 #include "tests/runner.h"
 #include "tests/stl_check.h"
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/grid/grid.h"
-#include "platform/stl_ladder.h"
-#include "platform/stl_merge.h"
+#include "platform/mesh/stl_ladder.h"
+#include "platform/mesh/stl_merge.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"

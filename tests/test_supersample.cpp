@@ -1,10 +1,10 @@
-// display/supersample.h: the 2x2 resolve against a per-channel reference,
+// display/view/supersample.h: the 2x2 resolve against a per-channel reference,
 // both formats, rectangles and clipping.
 #include <cstdint>
 #include <vector>
 
-#include "display/framebuffer.h"
-#include "display/supersample.h"
+#include "display/raster/framebuffer.h"
+#include "display/view/supersample.h"
 #include "tests/rng.h"
 #include "tests/runner.h"
 

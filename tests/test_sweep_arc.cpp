@@ -11,7 +11,7 @@
 #include "core/cut/mill.h"
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "core/tool/tool.h"
 #include "tests/alloc_count.h"
 #include "tests/cut_fixtures.h"

@@ -9,7 +9,7 @@
 
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
-#include "core/motion/canon.h"
+#include "core/canon/canon.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"

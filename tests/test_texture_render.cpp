@@ -1,4 +1,4 @@
-// Colours per vertex (paper §2.7.1, display/material_colours.h textured):
+// Colours per vertex (paper §2.7.1, display/colour/material_colours.h textured):
 // the lit ramp against shade_ramp, side faces split so that a layer's
 // boundary shows sharp on a wall (figure 11) and without cracks, uncut tops
 // tinted apart from cut ones.
@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "display/material_colours.h"
-#include "display/render.h"
+#include "display/colour/material_colours.h"
+#include "display/surface/render.h"
 #include "tests/runner.h"
 #include "tests/scene_util.h"
 

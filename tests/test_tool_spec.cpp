@@ -62,7 +62,7 @@ TEST(tool_spec_errors) {
   CHECK(std::strlen(tool_spec_message(ToolSpecError::kFieldCount)) > 10);
 }
 
-// The parts above the flutes (the tool's body, core/check/body.h): stick-out,
+// The parts above the flutes (the tool's body, core/safety/body.h): stick-out,
 // shank, holder pieces, and the non-centre-cutting flag, each read and
 // written back.
 TEST(tool_spec_holder) {

@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "core/math/fixed.h"
-#include "platform/tool_table.h"
+#include "platform/format/tool_table.h"
 #include "tests/runner.h"
 
 using namespace dexmill;

@@ -1,4 +1,4 @@
-// No silent guess about units (core/motion/units_guess.h,
+// No silent guess about units (core/interp/units_guess.h,
 // core/sim/tool_units.h): a program that sets no G20/G21 before it moves is
 // warned of at that move, loudly when its numbers look like inches; the
 // tool table is read in the program's units when it sets them before its
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "core/sim/chunk_input.h"
 #include "core/sim/tool_units.h"
 #include "display/api/dexmill.h"

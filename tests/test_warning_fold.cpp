@@ -1,4 +1,4 @@
-// Repeated warnings fold into one (platform/warning_fold.h): the list and
+// Repeated warnings fold into one (platform/input/warning_fold.h): the list and
 // its text, then `dexmill check` and `run` on a program with 64 identical
 // warnings (stderr, the report, the summary's count), the process rules'
 // warnings of one missing spindle speed, and what must stay apart:
@@ -6,7 +6,7 @@
 // of an error. And check's one line for a program with no error.
 #include <string>
 
-#include "platform/warning_fold.h"
+#include "platform/input/warning_fold.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 

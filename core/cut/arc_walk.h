@@ -4,7 +4,7 @@
 // only. Depth-first halving of the sweep: a stretch whose bounding box (its
 // end points, widened by its bulge) misses the region is dropped whole; a
 // reachable stretch of at most 64 chords is cut into equal chords of the
-// angle core/motion/arc_chords.h would use. No heap, and small enough for a
+// angle core/canon/arc_chords.h would use. No heap, and small enough for a
 // microcontroller's stack: 52 stretches of two angles (832 bytes; the
 // halving depth is at most 47 for 10 000 turns), end points recomputed.
 #ifndef DEXMILL_CORE_CUT_ARC_WALK_H
@@ -14,8 +14,8 @@
 
 #include "core/math/fixed.h"
 #include "core/math/trig.h"
-#include "core/motion/arc_chords.h"
-#include "core/motion/canon.h"
+#include "core/canon/arc_chords.h"
+#include "core/canon/canon.h"
 
 namespace dexmill {
 
@@ -25,7 +25,7 @@ struct RectNm {
 };
 
 // Calls chord(from, to) for every chord of sagitta <= sagitta_nm (plus the
-// 2 nm + 6e-9 r of core/motion/arc_chords.h) that can reach `reach`, in path order.
+// 2 nm + 6e-9 r of core/canon/arc_chords.h) that can reach `reach`, in path order.
 template <class F>
 void arc_walk(const CanonRecord& arc, int64_t sagitta_nm, const RectNm& reach, F chord) {
   ArcChords geo;

@@ -9,7 +9,7 @@
 // not hide it. Arcs: sweep mode cuts them with sweep_arc (exact for level XY
 // arcs with ball and flat ends, else 1 um chords); stamp mode places
 // instances along chords of sagitta <= kArcChordSagittaNm (1 um), so the path
-// stays within 1 um + 7 nm of the exact arc (core/motion/arc_chords.h).
+// stays within 1 um + 7 nm of the exact arc (core/canon/arc_chords.h).
 #ifndef DEXMILL_CORE_CUT_MILL_H
 #define DEXMILL_CORE_CUT_MILL_H
 
@@ -19,7 +19,7 @@
 #include "core/cut/stats.h"
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
-#include "core/motion/canon.h"
+#include "core/canon/canon.h"
 #include "core/status.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"

@@ -55,7 +55,7 @@
 #include "core/cut/stats.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
-#include "core/motion/canon.h"
+#include "core/canon/canon.h"
 #include "core/point.h"
 #include "core/status.h"
 #include "core/tool/tool.h"

@@ -5,7 +5,7 @@
 // of the arc nearest the column (the profile rises with distance), and that
 // distance is closed form: |rho - Ra| when the column's direction from the
 // centre lies in the arc's sector, else the distance to the nearer end
-// point. Arcs are taken a quarter turn at a time (core/motion/arc_chords.h places
+// point. Arcs are taken a quarter turn at a time (core/canon/arc_chords.h places
 // the pieces), which keeps the sector test to two cross products.
 //
 // Everything else (helices, G18/G19 planes, bull nose and V-bit, radii over
@@ -31,7 +31,7 @@
 #include "core/cut/sweep.h"
 #include "core/cut/sweep_cut.h"
 #include "core/math/fixed.h"
-#include "core/motion/arc_chords.h"
+#include "core/canon/arc_chords.h"
 
 namespace dexmill {
 namespace {

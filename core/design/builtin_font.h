@@ -2,7 +2,7 @@
 // (core/design/builtin_panel.cpp): one font pixel per dexel at the paper's
 // 80 x 40 resolution, the smallest size at which capitals stay legible.
 // Only the glyphs the built-in designs spell; any other character is blank.
-// The glyphs are display/font.h's (which core/ may not include; a test
+// The glyphs are display/overlay/font.h's (which core/ may not include; a test
 // holds the two equal), so the panel's lettering matches the frames' text.
 #ifndef DEXMILL_CORE_DESIGN_BUILTIN_FONT_H
 #define DEXMILL_CORE_DESIGN_BUILTIN_FONT_H

@@ -72,7 +72,7 @@ struct HeightImage {
 Status design_from_image(DesignGrid* d, const HeightImage& img, int64_t x0_nm, int64_t y0_nm, int64_t x1_nm,
                          int64_t y1_nm, int64_t z_low_nm, int64_t z_high_nm);
 
-// The design as a dexel grid, to draw it (display/overlay.h): `g`, set up by
+// The design as a dexel grid, to draw it (display/overlay/overlay.h): `g`, set up by
 // grid_init with the design's geometry, gets tops clamped to [1, 2^m - 1]
 // and bottoms 0; columns without design material, and those outside
 // `region` (a run's ring of holes around the stock), become holes.

@@ -5,7 +5,7 @@
 // word's text (for messages such as "G41 ... is not supported") and up to two
 // lengths in nanometres (for messages that quote radii). gcode_format_message()
 // turns it into text without any I/O, so a controller can show it on its panel;
-// the hosted reader (platform/gcode_file.h) prefixes `FILE:LINE:COL: error: `.
+// the hosted reader (platform/input/gcode_file.h) prefixes `FILE:LINE:COL: error: `.
 #ifndef DEXMILL_CORE_GCODE_ERROR_H
 #define DEXMILL_CORE_GCODE_ERROR_H
 
@@ -215,7 +215,7 @@ struct GcodeDiag {
   int64_t a_nm;    // lengths quoted by the message ({a}, {b}), nm
   int64_t b_nm;
   // The error may be only a consequence of an earlier one (an earlier bad
-  // block left the state it reads unknown; core/motion/interp_follow_on.cpp).
+  // block left the state it reads unknown; core/interp/interp_follow_on.cpp).
   bool follow_on;
 };
 

@@ -59,7 +59,7 @@ GcodeError gvalue_unary(GUnary f, GValue a, GValue* out);
 GValue gvalue_atan2(GValue y, GValue x);
 // Degrees (e9) as a binary angle (2^32 a turn, core/math/trig.h): reduced to
 // [0, 360) exactly, then rounded to nearest (0.5 bam, 7.3e-10 rad). SIN and
-// COS go through it, and so do the polar words' angles (core/motion/polar.h).
+// COS go through it, and so do the polar words' angles (core/interp/polar.h).
 uint32_t bam_of_degrees(int64_t deg_e9);
 
 }  // namespace dexmill

@@ -70,7 +70,7 @@ class GcodeScanner {
 };
 
 // A lenient walk over a line that may not read (for telling which parts of
-// the modal state a bad line meant to change; core/motion/interp_follow_on.cpp).
+// the modal state a bad line meant to change; core/interp/interp_follow_on.cpp).
 // It yields each letter that begins a word, as LinuxCNC would see it, with
 // its value when that is a plain number. Comments, [ ] expressions and
 // #<named> parameters are stepped over; other bytes are skipped.

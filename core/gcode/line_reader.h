@@ -1,5 +1,5 @@
 // Program text into lines, the one way every input is split (a file on the
-// host, platform/gcode_file.h; chunks an embedder feeds, core/sim/chunk_input.h):
+// host, platform/input/gcode_file.h; chunks an embedder feeds, core/sim/chunk_input.h):
 //
 // What counts as text, decided on the input's first bytes (the first
 // buffer: up to kStartBytes, fewer only when the buffer is smaller or the

@@ -1,6 +1,6 @@
 // Where a runner's diagnostics go (core/sim/gcode_runner.h): errors, the
 // interpreter's warnings (GcodeDiagSink), the file they are of; counted.
-// The host prints them (platform/gcode_file.h GcodeStderrMessages); an
+// The host prints them (platform/input/gcode_file.h GcodeStderrMessages); an
 // embedder keeps them (core/sim/simulation.h).
 #ifndef DEXMILL_CORE_GCODE_MESSAGES_H
 #define DEXMILL_CORE_GCODE_MESSAGES_H

@@ -1,7 +1,7 @@
 // The columns a record lowered, against a shadow of the tops before it:
-// what the safety checks (core/check/safety.h) and the process rules
-// (core/check/process.h) walk after every record to charge each removal to
-// the move that made it, and the tool colour mode (display/tool_colours.h)
+// what the safety checks (core/safety/safety.h) and the process rules
+// (core/safety/material_limits.h) walk after every record to charge each removal to
+// the move that made it, and the tool colour mode (display/colour/tool_colours.h)
 // to colour each column by the tool that lowered it. A walk over the grid
 // alone, so it lives with the grid, where display/ may use it too.
 #ifndef DEXMILL_CORE_GRID_REMOVALS_H

@@ -1,5 +1,5 @@
 // A colour of the material layer: 8 bits per channel, sRGB as stored. The
-// display has its own Rgb (display/framebuffer.h) with the same fields;
+// display has its own Rgb (display/raster/framebuffer.h) with the same fields;
 // core cannot include display/, so it converts field by field.
 #ifndef DEXMILL_CORE_MATERIAL_COLOUR_H
 #define DEXMILL_CORE_MATERIAL_COLOUR_H

@@ -34,7 +34,7 @@
 #include <stdint.h>
 
 #include "core/gcode/line_reader.h"
-#include "core/motion/canon.h"
+#include "core/canon/canon.h"
 #include "core/tool/tool_comment.h"
 #include "core/tool/tool.h"
 

@@ -12,7 +12,7 @@
 
 #include "core/gcode/line_reader.h"
 #include "core/gcode/messages.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 
 namespace dexmill {
 

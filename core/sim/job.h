@@ -2,7 +2,7 @@
 // stock, the tools, how the program is read, and which observers watch
 // the cut. Plain values and pointers to inputs the caller keeps (a tool
 // library, a design part, a stock's materials): never a file name, never
-// an output. The CLI fills one from its options (tools/run_job.cpp), the
+// an output. The CLI fills one from its options (tools/run/run_job.cpp), the
 // embedding API from its calls (display/api/dexmill.h), a panel from its
 // flash.
 #ifndef DEXMILL_CORE_SIM_JOB_H
@@ -16,15 +16,15 @@
 #include "core/design/design.h"
 #include "core/gcode/error.h"
 #include "core/material/material.h"
-#include "core/motion/interp.h"
-#include "core/motion/summary.h"
+#include "core/interp/interp.h"
+#include "core/canon/summary.h"
 #include "core/point.h"
 #include "core/sim/stock_plan.h"
 #include "core/tool/tool.h"
 
 namespace dexmill {
 
-// The safety checks (core/check/safety.h) and their limits.
+// The safety checks (core/safety/safety.h) and their limits.
 struct SimChecks {
   bool rapid = false, spindle = false, below = false, shank = false, holder = false, plunge = false;
   bool has_table = false;
@@ -72,7 +72,7 @@ struct SimJob {
   const Tool* tools = nullptr;
   int ntools = 0;
 
-  // Reading the program (core/motion/interp.h InterpOptions).
+  // Reading the program (core/interp/interp.h InterpOptions).
   bool inch = false;                    // units before any G20/G21
   bool units_given = false;             // the caller chose them: no warning for a program that sets none
   int64_t default_feed_nm_per_min = 0;  // a controller's feed for moves with none in force (0: an error)
@@ -97,12 +97,12 @@ struct SimJob {
   const StockComposition* material = nullptr;  // the process rules of the stock's materials (null: off)
   size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
   // The process rules' findings of lines 0..n-1 told apart exactly (3 bytes
-  // a line; core/check/process.h): the program's line count + 1. 0: only
+  // a line; core/safety/material_limits.h): the program's line count + 1. 0: only
   // the last few are (a line met again later counts again).
   size_t process_lines = 0;
   bool provenance = false;              // which tool last cut each column
   bool provenance_lines = false;        // and which line (needs provenance)
-  int32_t provenance_slots = 7;         // classes for the tools (display/tool_colours.h kToolColourSlots)
+  int32_t provenance_slots = 7;         // classes for the tools (display/colour/tool_colours.h kToolColourSlots)
   int32_t provenance_first_tool = -1;   // the number the tool before any M6 is listed under
 
   // Stopping: at the first record of line stop_line or later (a program cut
@@ -114,7 +114,7 @@ struct SimJob {
 };
 
 // The memory of one reading of a program (about 68 KB): its parameters
-// (core/gcode/params.h) and its o-word control flow (core/motion/oword_store.h).
+// (core/gcode/params.h) and its o-word control flow (core/interp/oword_store.h).
 struct ProgramMemory {
   ParamStore params;
   OwordStore control;

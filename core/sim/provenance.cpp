@@ -78,7 +78,7 @@ bool provenance_record(ToolProvenance<H>* p, GridRect changed, uint32_t line, co
     }
     if (now != 0 || g.bottom[k] != 0) return;
     // Cut through: the hole's walls are the side faces of the dexels
-    // around it, which take their own dexel's class (display/mesh.cpp).
+    // around it, which take their own dexel's class (display/surface/mesh.cpp).
     // Those no tool lowered take this one's (a ring a dexel wide on their
     // tops too).
     const int32_t ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};

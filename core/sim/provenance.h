@@ -1,6 +1,6 @@
 // Which tool, and which program line, last lowered each column: the
 // simulation's provenance observer (core/sim/simulation.h). What `--color
-// tool` draws (display/tool_colours.h: AXIS and CAMotics colour a
+// tool` draws (display/colour/tool_colours.h: AXIS and CAMotics colour a
 // simulation by tool), what the embedding API answers for a point, what a
 // saved stock will carry.
 //
@@ -9,7 +9,7 @@
 // a shadow of the tops (core/grid/removals.h) take the class of the tool
 // in the spindle, and (when kept) the record's line. A column cut through
 // (now a hole) also gives its class to the uncut columns beside it, whose
-// side faces are the hole's walls (display/mesh.cpp draws a wall in its own
+// side faces are the hole's walls (display/surface/mesh.cpp draws a wall in its own
 // dexel's class), so a drilled hole shows its drill rather than uncut
 // stock. Nothing of this runs unless it is set up: off, it costs nothing.
 //

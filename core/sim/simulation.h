@@ -20,7 +20,7 @@
 // What the observers charge to a line: a record's removals to its line,
 // except a move's deferred end cap (the Mill cuts the tool standing at a
 // move's end with the next record, core/cut/mill.h), which is charged to
-// the move that brought the tool there, as core/check/safety.h and
+// the move that brought the tool there, as core/safety/safety.h and
 // core/assess/gouge_watch.h describe. "The line before" is the last line
 // that moved the tool: a record that does not move (S, M3, T) never
 // takes a cap that is not its own.
@@ -31,15 +31,15 @@
 #include <stdint.h>
 
 #include "core/assess/gouge_watch.h"
-#include "core/check/body.h"
-#include "core/check/process.h"
-#include "core/check/safety.h"
+#include "core/safety/body.h"
+#include "core/safety/material_limits.h"
+#include "core/safety/safety.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
 #include "core/gcode/messages.h"
 #include "core/grid/grid.h"
-#include "core/motion/interp.h"
-#include "core/motion/summary.h"
+#include "core/interp/interp.h"
+#include "core/canon/summary.h"
 #include "core/sim/chunk_input.h"
 #include "core/sim/gcode_runner.h"
 #include "core/sim/job.h"
@@ -296,7 +296,7 @@ class SimulationT final : public CanonSink {
   SafetyOrigin safety_origin_{SafetyMove{}, PointNm{0, 0, 0}, nullptr};
   ProcessOrigin process_origin_{ProcessState{}, PointNm{0, 0, 0}, nullptr};
   ToolProfile profile_{};  // the tool in the spindle
-  ToolBody body_{};        // its shank and holder (core/check/body.h)
+  ToolBody body_{};        // its shank and holder (core/safety/body.h)
   SimStatus status_{};
   uint64_t material_before_ = 0;
 };

@@ -43,7 +43,7 @@ struct SimulationT<H>::Memory {
   uint32_t* fixture_bottom = nullptr;
   uint32_t* process_shadow = nullptr;
   int64_t* line_feed = nullptr;
-  uint8_t* process_seen = nullptr;  // the findings counted per line (core/check/process.h)
+  uint8_t* process_seen = nullptr;  // the findings counted per line (core/safety/material_limits.h)
   uint8_t* seen = nullptr;
   size_t seen_bytes = 0;
   uint8_t* prov_cls = nullptr;

@@ -2,7 +2,7 @@
 // and the embedding API's explicit boxes go through the same plan).
 //
 // Default stock (no box given), from a first pass over the program
-// (core/sim/scan.h, core/motion/summary.h), for programs that put Z0 on
+// (core/sim/scan.h, core/canon/summary.h), for programs that put Z0 on
 // the stock top as CAM programs do:
 //   top    Z = 0 when any feed reaches below 0; otherwise (a program zeroed on
 //          the table) the highest level a feed reaches: the highest of the
@@ -43,7 +43,7 @@
 
 #include "core/design/design.h"
 #include "core/grid/grid.h"
-#include "core/motion/summary.h"
+#include "core/canon/summary.h"
 #include "core/point.h"
 
 namespace dexmill {

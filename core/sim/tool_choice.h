@@ -16,7 +16,7 @@
 #include <stdint.h>
 
 #include "core/cut/mill.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 #include "core/sim/comment_tools.h"
 #include "core/tool/tool.h"
 

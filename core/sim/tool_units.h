@@ -10,7 +10,7 @@
 #define DEXMILL_CORE_SIM_TOOL_UNITS_H
 
 #include "core/gcode/line_reader.h"
-#include "core/motion/interp.h"
+#include "core/interp/interp.h"
 
 namespace dexmill {
 

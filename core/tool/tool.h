@@ -40,7 +40,7 @@ struct Tool {
   int32_t tip_angle_mdeg = 0;     // kVBit only: included angle, kVBitAngleMinMdeg..kVBitAngleMaxMdeg
   int64_t flute_length_nm = 0;    // cutting length above the tip (0: as long as the tool)
   int64_t length_nm = 0;          // stick-out: tip to the top of the shaft (the holder's face)
-  // What the safety checks need (core/check/body.h); the cut ignores them.
+  // What the safety checks need (core/safety/body.h); the cut ignores them.
   int64_t stick_out_nm = 0;       // stick-out as given (0: the default rule, core/tool/spec.h)
   int64_t shank_diameter_nm = 0;  // above the flutes (0: the cutting diameter)
   bool centre_cutting = true;     // false: must not plunge straight down into material
@@ -98,7 +98,7 @@ int64_t profile_height_r2_nm(const ToolProfile& p, uint64_t r2_nm2);
 // (x_nm, y_nm) down to z_nm or lower, within lsb_nm: what the Mill cut
 // there when it cut that tool position (a deferred end cap is charged to
 // the move that brought the tool there: core/assess/gouge_watch.h,
-// core/check/safety.h).
+// core/safety/safety.h).
 bool profile_explains_cut(const ToolProfile& p, const PointNm& tip, int64_t x_nm, int64_t y_nm, int64_t z_nm,
                           int64_t lsb_nm);
 

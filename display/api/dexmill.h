@@ -231,7 +231,7 @@ enum {  /* dm_progress.stop_reason */
   DM_STOPPED_TOOL = 4,        /* a T the library lacks, or one too large for the memory sized */
   DM_STOPPED_BY_CALLER = 5
 };
-enum {  /* dm_progress.units_verdict (core/motion/units_guess.h) */
+enum {  /* dm_progress.units_verdict (core/interp/units_guess.h) */
   DM_UNITS_VERDICT_SET = 0,       /* the program set them (G20/G21) before its first move, or made none */
                                   /* (1: units a caller marked as chosen; this API has no such mark) */
   DM_UNITS_VERDICT_DEFAULT = 2,   /* it did not: read in dm_job.units (a warning at that move) */

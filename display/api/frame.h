@@ -4,7 +4,7 @@
 #define DEXMILL_DISPLAY_API_FRAME_H
 
 #include "display/api/dexmill.h"
-#include "display/framebuffer.h"
+#include "display/raster/framebuffer.h"
 
 namespace dexmill {
 namespace api {

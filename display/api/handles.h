@@ -16,7 +16,7 @@
 #include "core/material/material.h"
 #include "core/sim/simulation.h"
 #include "display/api/dexmill.h"
-#include "display/stock_view.h"
+#include "display/view/stock_view.h"
 
 namespace dexmill {
 namespace api {

@@ -1,6 +1,6 @@
 // The embedding API: its messages, names and version (dexmill.h).
-#include "core/check/process.h"
-#include "core/check/safety.h"
+#include "core/safety/material_limits.h"
+#include "core/safety/safety.h"
 #include "core/math/decimal.h"
 #include "display/api/dexmill.h"
 

@@ -1,5 +1,5 @@
 // The embedding API: a simulation drawn into the caller's framebuffer, as
-// `dexmill run` draws it (display/stock_view.h; dexmill.h).
+// `dexmill run` draws it (display/view/stock_view.h; dexmill.h).
 #include <new>
 
 #include "core/math/trig.h"

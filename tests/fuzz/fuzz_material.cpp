@@ -1,4 +1,4 @@
-// libFuzzer target: the material file reader (platform/material_file.h)
+// libFuzzer target: the material file reader (platform/format/material_file.h)
 // and the composition it builds (core/material/). Input: the file's text,
 // read for a fixed 100 x 60 x 20 mm stock. A file that reads must give a
 // composition whose every material index is in range, whose lookups at a
@@ -16,7 +16,7 @@
 #include "core/material/column.h"
 #include "core/material/material.h"
 #include "core/math/fixed.h"
-#include "platform/material_file.h"
+#include "platform/format/material_file.h"
 #include "tests/fuzz/fuzz_entry.h"
 
 namespace fuzz_material {

@@ -1,4 +1,4 @@
-// libFuzzer target: the PGM reader (platform/pgm.h), P5 and P2, 8 and 16
+// libFuzzer target: the PGM reader (platform/format/pgm.h), P5 and P2, 8 and 16
 // bit, and the design made from the image (core/design/design.h's
 // design_from_image, what `run --design FILE.pgm` does). The input is the
 // file. The reader must take memory in proportion to the file, not to what
@@ -13,7 +13,7 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
-#include "platform/pgm.h"
+#include "platform/format/pgm.h"
 #include "tests/fuzz/fuzz_entry.h"
 
 namespace fuzz_pgm {

@@ -12,7 +12,7 @@
 //   line 1        a tool spec (core/tool/spec.h: "ball:6", "bull:10:1.5,len=20");
 //                 the tool in the spindle at the start (flat:3 if it does not parse)
 //   lines 2..     with the header's table flag: a LinuxCNC tool table
-//                 (platform/tool_table.h), up to the first empty line; T
+//                 (platform/format/tool_table.h), up to the first empty line; T
 //                 words and G43 H then use it (a table that does not
 //                 parse: every T is the line-1 tool)
 //   the rest      the G-code program
@@ -28,18 +28,18 @@
 #include "core/cut/mill.h"
 #include "core/design/design.h"
 #include "core/grid/grid.h"
-#include "core/motion/interp.h"
-#include "core/motion/summary.h"
+#include "core/interp/interp.h"
+#include "core/canon/summary.h"
 #include "core/sim/simulation.h"
 #include "core/sim/simulation_impl.h"  // the 8- and 32-bit engines
 #include "core/tool/cutter.h"
 #include "core/tool/spec.h"
 #include "core/tool/tool.h"
-#include "platform/tool_table.h"
+#include "platform/format/tool_table.h"
 #include "tests/fuzz/fuzz_entry.h"
 #include "tests/fuzz/fuzz_render.h"
 #include "tests/fuzz/fuzz_spec.h"
-#include "tools/run_path.h"
+#include "tools/run/run_path.h"
 
 namespace fuzz_pipeline {
 
@@ -84,7 +84,7 @@ class NoWarnings final : public GcodeDiagSink {
   uint64_t count = 0;
 };
 
-// The backplot's pieces (tools/run_path.h), with a cap.
+// The backplot's pieces (tools/run/run_path.h), with a cap.
 class PathSink final : public CanonSink {
  public:
   explicit PathSink(std::vector<PathSegment>* path, int64_t sagitta_nm) : path_(path), sagitta_nm_(sagitta_nm) {}

@@ -1,10 +1,10 @@
 // The pipeline target's drawing stage: two renderers of the same grid, one
 // kept up to date with render_update after every step of the cut (the way
 // `dexmill run` and a panel draw), the other drawing each step whole with
-// render_full. display/render.h promises that the two give the same pixels,
+// render_full. display/surface/render.h promises that the two give the same pixels,
 // bit for bit, and that the rectangles render_update returns cover every
 // pixel it changed; both are checked after every step, with the backplot
-// (display/backplot.h promises the same of a path redrawn inside those
+// (display/overlay/backplot.h promises the same of a path redrawn inside those
 // rectangles) and the error colour mode when the input asks for them.
 #ifndef DEXMILL_TESTS_FUZZ_RENDER_H
 #define DEXMILL_TESTS_FUZZ_RENDER_H
@@ -16,9 +16,9 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
-#include "display/backplot.h"
-#include "display/error_colours.h"
-#include "display/render.h"
+#include "display/overlay/backplot.h"
+#include "display/colour/error_colours.h"
+#include "display/surface/render.h"
 #include "tests/fuzz/fuzz_entry.h"
 
 namespace fuzz {

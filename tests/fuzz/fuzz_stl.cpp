@@ -1,4 +1,4 @@
-// libFuzzer target: the STL reader (platform/stl_read.h), binary and ASCII,
+// libFuzzer target: the STL reader (platform/format/stl_read.h), binary and ASCII,
 // and the design built from its triangles (core/design/design.h). The input
 // is the file. A mesh that reads is laid on a grid fitted to its box, as
 // `run --design` and `--stock FILE.stl` do, and every column's design top
@@ -13,7 +13,7 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
-#include "platform/stl_read.h"
+#include "platform/format/stl_read.h"
 #include "tests/fuzz/fuzz_entry.h"
 
 namespace fuzz_stl {

@@ -1,4 +1,4 @@
-// libFuzzer target: the LinuxCNC tool table reader (platform/tool_table.h)
+// libFuzzer target: the LinuxCNC tool table reader (platform/format/tool_table.h)
 // and the tool specs it finds in comments (core/tool/spec.h). Input: one
 // byte of flags (bit 0: the machine is in inches), then the table's text.
 // A table that reads must give each of its tools back by number, each a
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/tool/tool.h"
-#include "platform/tool_table.h"
+#include "platform/format/tool_table.h"
 #include "tests/fuzz/fuzz_entry.h"
 #include "tests/fuzz/fuzz_spec.h"
 

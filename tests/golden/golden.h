@@ -21,7 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "tests/golden/golden_out.h"
+#include "tools/panel/text_out.h"
 
 namespace golden {
 

@@ -16,8 +16,8 @@
 #include "core/grid/grid.h"
 #include "core/material/material_preset.h"
 #include "core/tool/tool.h"
-#include "display/material_colours.h"
-#include "display/render.h"
+#include "display/colour/material_colours.h"
+#include "display/surface/render.h"
 #include "tests/golden/golden.h"
 
 using namespace dexmill;

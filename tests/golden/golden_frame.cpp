@@ -1,12 +1,12 @@
 // Golden section "frame": the golden mill program's kind of part (a pocketed
-// block with a through hole, cut by sweeps) rendered by display/render.h at
+// block with a through hole, cut by sweeps) rendered by display/surface/render.h at
 // 120x90 in both pixel formats and both z formats, in the iso and top views,
 // plus one incremental update after a further cut; one frame hash a line
 // (display's frame_hash: pixel values as little-endian bytes, any stride).
 // The same scene against a design part (a plane 6 mm below the top with a
 // pyramid on it) in the error view (paper §2.5, figure 10), with the
 // assessment's figures: E, sum of design tops, the band counts. And once,
-// the scene held in a vice with a clamp on its top (display/fixture_draw.h).
+// the scene held in a vice with a clamp on its top (display/surface/fixture_draw.h).
 // And the colour modes tool (the cuts by T1, the hole by T2, the update's by
 // T3), slope, and thin (under 16 mm: the cut floors).
 #include <stdint.h>
@@ -18,15 +18,15 @@
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "core/material/material_preset.h"
-#include "display/error_colours.h"
-#include "display/material_colours.h"
-#include "display/backplot.h"
-#include "display/marker.h"
-#include "display/overlay.h"
-#include "display/render.h"
-#include "display/slope_colours.h"
-#include "display/thin_colours.h"
-#include "display/tool_colours.h"
+#include "display/colour/error_colours.h"
+#include "display/colour/material_colours.h"
+#include "display/overlay/backplot.h"
+#include "display/overlay/marker.h"
+#include "display/overlay/overlay.h"
+#include "display/surface/render.h"
+#include "display/colour/slope_colours.h"
+#include "display/colour/thin_colours.h"
+#include "display/colour/tool_colours.h"
 #include "tests/golden/golden.h"
 
 using namespace dexmill;
@@ -81,7 +81,7 @@ bool error_view(Arena& a, const DexelGrid<uint16_t>& g, ErrorView* e, Out& out) 
 }
 
 // Paper figure 9: the design as a grid of its own, drawn through the same
-// view, blended over the cut where it is the nearer (display/overlay.h).
+// view, blended over the cut where it is the nearer (display/overlay/overlay.h).
 void overlay(Out& out, Arena& a, const DexelGrid<uint16_t>& g, const ErrorView& ev, Renderer<uint16_t>& r,
              const FrameView& fb, const RenderOptions& opt) {
   const size_t cells = static_cast<size_t>(g.nx) * g.ny;
@@ -125,7 +125,7 @@ void overlay(Out& out, Arena& a, const DexelGrid<uint16_t>& g, const ErrorView& 
   out.kx("design_over_cut", frame_hash(fb)).end();
 }
 
-// The toolpath over the frame (display/backplot.h): the four cuts done,
+// The toolpath over the frame (display/overlay/backplot.h): the four cuts done,
 // then a lift and a rapid still to come; then the lift done, the renderer
 // repainting where it lies and the path redrawn there (as dexmill run does).
 void backplot(Out& out, Renderer<uint16_t>& r, DexelGrid<uint16_t>& g, const FrameView& fb, const CutterPose& pose) {
@@ -162,7 +162,7 @@ const BoxNm kFixtures[3] = {
 // colour modes (--color tool|slope|thin|material).
 enum class Colours { kPlain, kError, kTool, kSlope, kThin, kMaterial };
 
-// A material preset's textured colours over g (display/material_colours.h),
+// A material preset's textured colours over g (display/colour/material_colours.h),
 // memory from the arena; false when it is short.
 bool material_view(Arena& a, const DexelGrid<uint16_t>& g, const char* preset, MaterialColours<uint16_t>* m) {
   static StockComposition comp;

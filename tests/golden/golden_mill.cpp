@@ -1,6 +1,6 @@
 // Golden sections "mill", "path" and "flow": a G-code program stored as text
 // (as a panel would keep it in flash) read by the interpreter
-// (core/motion/interp.h) and (mill) cut by core/cut/mill.h in sweep and
+// (core/interp/interp.h) and (mill) cut by core/cut/mill.h in sweep and
 // stamp mode into m = 8, 16, 32 grids, one grid hash per mode and m; (path)
 // every canonical record and arc chord point hashed in order, the same trace
 // `dexmill path` prints; (flow) the same trace of a program computed by
@@ -12,8 +12,8 @@
 #include "core/cut/mill.h"
 #include "core/grid/grid.h"
 #include "core/math/hash.h"
-#include "core/motion/arc_chords.h"
-#include "core/motion/interp.h"
+#include "core/canon/arc_chords.h"
+#include "core/interp/interp.h"
 #include "core/tool/tool.h"
 #include "tests/golden/golden.h"
 #include "tests/golden/path_hash.h"

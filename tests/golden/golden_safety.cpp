@@ -1,12 +1,12 @@
 // Golden section "safety": a program with one offence of each kind the
-// safety checks know (core/check/safety.h) cut by the simulation
+// safety checks know (core/safety/safety.h) cut by the simulation
 // (core/sim/simulation.h) into an m = 16 grid beside a fixture, each
 // finding printed with its line, place, depth and volume: the checks give
 // the same findings on every target.
 #include <stdint.h>
 #include <string.h>
 
-#include "core/check/safety.h"
+#include "core/safety/safety.h"
 #include "core/grid/grid.h"
 #include "core/sim/simulation.h"
 #include "core/tool/spec.h"

@@ -8,8 +8,8 @@
 #include <stdint.h>
 
 #include "core/math/hash.h"
-#include "core/motion/arc_chords.h"
-#include "core/motion/canon.h"
+#include "core/canon/arc_chords.h"
+#include "core/canon/canon.h"
 
 namespace golden {
 

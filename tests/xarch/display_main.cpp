@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "core/math/trig.h"
-#include "display/render.h"
+#include "display/surface/render.h"
 #include "tests/scene_util.h"
 
 using namespace dexmill;

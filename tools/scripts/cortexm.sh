@@ -2,7 +2,7 @@
 # cortexm.sh - proves that core/ and display/ build freestanding for Cortex-M
 # (`make cortexm`): compiles every .cpp under core/ and display/ (found, not listed) with
 # arm-none-eabi-g++ for each CPU with the project's integer-only flags,
-# links them with the bare start-up of tests/golden/cm/startup.c (vectors,
+# links them with the bare start-up of tools/panel/cm/startup.c (vectors,
 # .data/.bss, nothing else; no heap set-up), reports flash and RAM per CPU,
 # and fails if the image references
 #   heap        malloc/calloc/realloc/free/_sbrk (and their _r forms), operator new/delete
@@ -94,7 +94,7 @@ for cpu in ${CPUS//,/ }; do
     $P-g++ $FLAGS -c "$s" -o "$o" 2> "$D/compile.log" || { cat "$D/compile.log"; echo "cortexm: COMPILE FAILED ($cpu): $s"; exit 2; }
     objs+=("$o")
   done
-  $P-gcc $CF -O$OPT -ffunction-sections -c tests/golden/cm/startup.c -o "$D/startup.o" &&
+  $P-gcc $CF -O$OPT -ffunction-sections -c tools/panel/cm/startup.c -o "$D/startup.o" &&
     $P-gcc $CF -O$OPT -ffunction-sections -c "$WORK/stub.c" -o "$D/stub.o" || exit 2
 
   # GC roots: the global symbols core/ and display/ define.
@@ -102,7 +102,7 @@ for cpu in ${CPUS//,/ }; do
   roots=(); while read -r r; do roots+=("-Wl,--undefined=$r"); done < "$D/roots.txt"
   # nosys.specs supplies _sbrk & co. (and `end` the heap start it wants), so
   # a heap user links and is named below instead of failing the link.
-  LINK="-nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--defsym=end=_ebss -T tests/golden/cm/mps2.ld -Wl,--gc-sections -Wl,--no-warn-rwx-segments"
+  LINK="-nostartfiles --specs=nano.specs --specs=nosys.specs -Wl,--defsym=end=_ebss -T tools/panel/cm/mps2.ld -Wl,--gc-sections -Wl,--no-warn-rwx-segments"
   if ! $P-g++ $CF -O$OPT "${objs[@]}" "$D/startup.o" "$D/stub.o" $LINK -Wl,--cref,--no-demangle -Wl,-Map="$D/image.map" \
        "${roots[@]}" -o "$D/image.elf" > "$D/link.log" 2>&1; then
     grep -v 'is not implemented and will always fail' "$D/link.log" | head -20; echo "cortexm: LINK FAILED ($cpu)"; exit 2

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The check the "looks like inches" rule (core/motion/units_guess.h) was
+# The check the "looks like inches" rule (core/interp/units_guess.h) was
 # chosen by: every corpus program that says G20 (index.tsv's units column)
 # is copied with its G20/G21 words taken out and must get the loud warning
 # from `dexmill check`; every one that says G21, copied the same way, must

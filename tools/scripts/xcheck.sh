@@ -32,9 +32,9 @@
 #   cm0-qemu   Cortex-M0+  -Os (ARMv6-M, soft float), run on the Cortex-M3 of
 #              mps2-an385 (qemu has no M0 board with enough RAM; the build is
 #              checked to contain only ARMv6-M instructions, see check_v6m)
-# Cortex-M builds are bare metal: tests/golden/cm/startup.c, newlib-nano only
+# Cortex-M builds are bare metal: tools/panel/cm/startup.c, newlib-nano only
 # for mem*, no heap (the link fails if malloc's _sbrk is needed), output
-# through semihosting (tests/golden/cm/board_semihost.cpp).
+# through semihosting (tools/panel/cm/board_semihost.cpp).
 #
 # Compile flags follow the Makefile: the warnings of $DEXMILL_WARN and, for
 # core/, display/ and the golden sections, $DEXMILL_INTFLAGS (integer only, no
@@ -64,11 +64,11 @@ while [ $# -gt 0 ]; do
 done
 
 # ---- sources (globs: new core/ and display/ files and golden sections join by themselves)
-INT_SRC=$( (find core display -name "*.cpp"; ls tests/golden/golden*.cpp) 2>/dev/null | LC_ALL=C sort)
-HOST_BOARD=tests/golden/board_host.cpp
-CM_BOARD="tests/golden/cm/board_semihost.cpp"
-CM_STARTUP=tests/golden/cm/startup.c
-CM_LD=tests/golden/cm/mps2.ld
+INT_SRC=$( (find core display -name "*.cpp"; ls tests/golden/golden*.cpp tools/panel/text_out.cpp) 2>/dev/null | LC_ALL=C sort)
+HOST_BOARD=tools/panel/board_host.cpp
+CM_BOARD="tools/panel/cm/board_semihost.cpp"
+CM_STARTUP=tools/panel/cm/startup.c
+CM_LD=tools/panel/cm/mps2.ld
 
 # ---- target table: sets CXX FLAGS LDFLAGS RUN KIND NEED (commands that must exist)
 QEMU_SEMI="qemu-system-arm -nographic -monitor none -serial none -chardev stdio,id=semi0 -semihosting-config enable=on,target=native,chardev=semi0"

@@ -1,0 +1,724 @@
+// zlib (RFC 1950) and DEFLATE (RFC 1951) compression, CRC-32 and Adler-32.
+//
+// The compressor works in three stages:
+//   1. LZ77 (RFC 1951 section 4): a MatchFinder keeps hash chains of every
+//      earlier position within the 32 KiB window; parse_lz77 walks the input
+//      with one-step lazy matching and hands literals and matches on.
+//   2. A BlockWriter buffers those symbols and, every kBlockSymbols of them,
+//      writes one block (section 3.2.3) as whichever is smallest of dynamic
+//      Huffman (3.2.7), fixed Huffman (3.2.6) or stored (3.2.4).
+//   3. Huffman codes are limited to 15 bits (7 for the code length code) by
+//      the package-merge algorithm, which gives the best lengths under the
+//      limit, and are assigned canonically (3.2.2).
+// Every choice depends only on the input bytes, so output is deterministic.
+#include "platform/format/deflate.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+namespace dexmill {
+
+// ---- CRC-32 (PNG specification section 5.5; ISO 3309) ---------------------
+
+namespace {
+
+// 0x04C11DB7 with its bits reversed: PNG's CRC works on bits least
+// significant first, so the table is built for the reflected polynomial.
+constexpr uint32_t kCrc32PolynomialReflected = 0xEDB88320u;
+
+// The CRC register after shifting each possible byte through it: one table
+// look-up per byte instead of eight bit steps.
+constexpr std::array<uint32_t, 256> make_crc32_table() {
+  std::array<uint32_t, 256> table{};
+  for (uint32_t byte = 0; byte < 256; ++byte) {
+    uint32_t c = byte;
+    for (int bit = 0; bit < 8; ++bit) c = (c & 1) ? kCrc32PolynomialReflected ^ (c >> 1) : c >> 1;
+    table[byte] = c;
+  }
+  return table;
+}
+
+constexpr std::array<uint32_t, 256> kCrc32Table = make_crc32_table();
+
+}  // namespace
+
+uint32_t crc32_update(uint32_t crc, const uint8_t* p, std::size_t n) {
+  // The register is kept inverted between calls, so a running value of 0
+  // means "no data yet" and the result is the finished CRC.
+  uint32_t c = ~crc;
+  for (std::size_t i = 0; i < n; ++i) c = kCrc32Table[(c ^ p[i]) & 0xFFu] ^ (c >> 8);
+  return ~c;
+}
+
+// ---- Adler-32 (RFC 1950 sections 8 and 9) ---------------------------------
+
+namespace {
+
+// The largest prime below 2^16 (RFC 1950 section 9, "ADLER32").
+constexpr uint32_t kAdlerModulus = 65521;
+// Bytes that may be summed before reducing: the largest n for which the sum
+// s2 cannot pass 2^32 - 1 from reduced start values, i.e.
+// 255 * n * (n + 1) / 2 + (n + 1) * (kAdlerModulus - 1) <= 2^32 - 1.
+constexpr std::size_t kAdlerBytesPerReduction = 5552;
+
+}  // namespace
+
+uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n) {
+  uint32_t s1 = adler & 0xFFFFu;
+  uint32_t s2 = adler >> 16;
+  while (n > 0) {
+    const std::size_t run = std::min(n, kAdlerBytesPerReduction);
+    for (std::size_t i = 0; i < run; ++i) {
+      s1 += p[i];
+      s2 += s1;
+    }
+    s1 %= kAdlerModulus;
+    s2 %= kAdlerModulus;
+    p += run;
+    n -= run;
+  }
+  return (s2 << 16) | s1;
+}
+
+// ---- DEFLATE ---------------------------------------------------------------
+
+namespace {
+
+// Alphabets (RFC 1951 section 3.2.5): literal/length symbols 0..285 (256 ends
+// a block), distance symbols 0..29, code length symbols 0..18 (3.2.7).
+constexpr int kLitLenSymbols = 286;
+// The fixed code (section 3.2.6) also assigns codes to 286 and 287, which
+// never occur but shift the codes of every longer length, so it spans 288.
+constexpr int kFixedLitLenSymbols = 288;
+constexpr int kDistSymbols = 30;
+constexpr int kCodeLengthSymbols = 19;
+constexpr int kEndOfBlock = 256;
+constexpr int kFirstLengthSymbol = 257;
+// Fewest literal/length and distance codes a dynamic header may announce.
+constexpr int kMinLitLenCodes = 257;
+constexpr int kMinDistCodes = 1;
+constexpr int kMinCodeLengthCodes = 4;
+// Longest code lengths allowed (section 3.2.7: lengths 0..15, and the code
+// length code's own lengths are sent in 3 bits).
+constexpr int kMaxCodeBits = 15;
+constexpr int kMaxCodeLengthCodeBits = 7;
+// Section 3.2.7: widths of the dynamic header's fields HLIT, HDIST, HCLEN
+// and of each code length code length.
+constexpr int kHlitBits = 5, kHdistBits = 5, kHclenBits = 4, kCodeLengthCodeLengthBits = 3;
+
+// Section 3.2.5: base and extra bits of each length symbol (from 257) and of
+// each distance symbol.
+constexpr int kLengthCodes = 29;
+constexpr uint16_t kLengthBase[kLengthCodes] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+constexpr uint8_t kLengthExtraBits[kLengthCodes] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                          2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+constexpr uint16_t kDistBase[kDistSymbols] = {1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,    65,    97,    129,
+                                    193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
+constexpr uint8_t kDistExtraBits[kDistSymbols] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
+                                        6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+// Section 3.2.7: the order in which the code length code's lengths are sent
+// (the ones most often unused come last, so they can be left off).
+constexpr uint8_t kCodeLengthOrder[kCodeLengthSymbols] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+// Section 3.2.7: code length symbols 16 (repeat the previous length 3..6
+// times), 17 (3..10 zeros) and 18 (11..138 zeros), with their extra bits.
+constexpr int kRepeatPrevious = 16;
+constexpr int kRepeatZerosShort = 17;
+constexpr int kRepeatZerosLong = 18;
+constexpr int kRepeatMinCount = 3;  // the least any of the three repeats
+constexpr int kRepeatPreviousMaxCount = 6;
+constexpr int kZerosLongMinCount = 11;
+constexpr int kZerosLongMaxCount = 138;
+constexpr uint8_t kCodeLengthExtraBits[kCodeLengthSymbols] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+                                                              0, 0, 0, 0, 0, 0, 2, 3, 7};
+
+// Section 3.2.4: a stored block holds at most 65535 bytes (LEN is 16 bits).
+constexpr std::size_t kStoredMaxBytes = 65535;
+constexpr int kStoredLenBits = 16;  // LEN, then NLEN of the same width
+// Section 3.2.3: BTYPE values.
+constexpr uint32_t kBlockStored = 0, kBlockFixed = 1, kBlockDynamic = 2;
+constexpr int kBlockTypeBits = 2;
+constexpr int kBlockHeaderBits = 1 + kBlockTypeBits;  // BFINAL and BTYPE
+
+// Symbols per block: enough that a dynamic header (typically 60 to 100
+// bytes) costs little, few enough that codes follow changes in the data.
+constexpr std::size_t kBlockSymbols = 16384;
+
+// Section 3.2.5: distances reach 32768 bytes back; lengths are 3..258.
+constexpr std::size_t kWindowBytes = 32768;
+constexpr int kMinMatchBytes = 3;
+constexpr int kMaxMatchBytes = 258;
+// Hash chains (section 4 suggests them): the three bytes at a position select
+// one of 2^kHashBits chain heads.
+constexpr int kHashBits = 15;
+// Bounds that keep time near linear: candidates examined per position, a
+// length that ends the search at once, and the length below which the next
+// position is tried too before a match is taken (lazy matching, section 4).
+// That second search only has to beat the first; when the first is already
+// good it looks at a quarter of the candidates.
+constexpr int kMaxChainSteps = 128;
+constexpr int kNiceMatchBytes = 128;
+constexpr int kLazyBelowBytes = 32;
+constexpr int kGoodMatchBytes = 8;
+// A 3-byte match farther back than this costs more bits (distance extra bits
+// included) than its three literals on typical data, so it is not taken.
+constexpr std::size_t kFarShortMatchBytes = 4096;
+
+// ---- bit output ----
+
+// Appends bits to a byte vector least significant bit first, as section
+// 3.1.1 packs data elements; Huffman codes are stored reversed so that they
+// come out most significant bit first, as the same section requires.
+class BitWriter {
+ public:
+  explicit BitWriter(std::vector<uint8_t>* out) : out_(out) {}
+
+  // Appends the low count_bits (0..32) bits of value.
+  void put(uint32_t value, int count_bits) {
+    pending_ |= static_cast<uint64_t>(value) << pending_bits_;
+    pending_bits_ += count_bits;
+    while (pending_bits_ >= 8) {
+      out_->push_back(static_cast<uint8_t>(pending_));
+      pending_ >>= 8;
+      pending_bits_ -= 8;
+    }
+  }
+  // Pads with zero bits to the next byte boundary.
+  void align_to_byte() {
+    if (pending_bits_ > 0) put(0, 8 - pending_bits_);
+  }
+  // Appends whole bytes; the writer must be at a byte boundary.
+  void put_bytes(const uint8_t* p, std::size_t n) { out_->insert(out_->end(), p, p + n); }
+  // Bits written since the last byte boundary (0..7).
+  int pending_bits() const { return pending_bits_; }
+
+ private:
+  std::vector<uint8_t>* out_;
+  uint64_t pending_ = 0;
+  int pending_bits_ = 0;
+};
+
+// ---- Huffman codes ----
+
+// A prefix code over up to kFixedLitLenSymbols symbols: each symbol's code
+// length (0 for a symbol not in the code) and its code with the bits reversed.
+struct HuffmanCode {
+  int symbols = 0;
+  uint8_t bits[kFixedLitLenSymbols] = {};
+  uint16_t reversed[kFixedLitLenSymbols] = {};
+};
+
+uint16_t reverse_bits(uint32_t code, int count_bits) {
+  uint32_t r = 0;
+  for (int i = 0; i < count_bits; ++i) r |= ((code >> i) & 1u) << (count_bits - 1 - i);
+  return static_cast<uint16_t>(r);
+}
+
+// Section 3.2.2: codes of each length are consecutive integers in symbol
+// order, and all codes of a length follow those of the length below.
+void assign_canonical_codes(HuffmanCode* code) {
+  uint32_t count_per_length[kMaxCodeBits + 1] = {};
+  for (int s = 0; s < code->symbols; ++s) ++count_per_length[code->bits[s]];
+  count_per_length[0] = 0;
+  uint32_t next_code[kMaxCodeBits + 1] = {};
+  uint32_t first = 0;
+  for (int len = 1; len <= kMaxCodeBits; ++len) {
+    first = (first + count_per_length[len - 1]) << 1;
+    next_code[len] = first;
+  }
+  for (int s = 0; s < code->symbols; ++s) {
+    const int len = code->bits[s];
+    code->reversed[s] = len ? reverse_bits(next_code[len]++, len) : 0;
+  }
+}
+
+// A node of package-merge: a leaf (one symbol) or a package of two items.
+struct PackageNode {
+  uint64_t weight;
+  int32_t symbol;  // -1 for a package
+  int32_t left, right;
+};
+
+// Adds one to the code length of every symbol below node: each time a
+// symbol takes part in a chosen item its code grows by one bit.
+void count_leaves(const std::vector<PackageNode>& nodes, int32_t node, uint8_t* bits) {
+  const PackageNode& n = nodes[static_cast<std::size_t>(node)];
+  if (n.symbol >= 0) {
+    ++bits[n.symbol];
+    return;
+  }
+  count_leaves(nodes, n.left, bits);
+  count_leaves(nodes, n.right, bits);
+}
+
+// The leaves of package-merge, lightest first: every used symbol, and when
+// fewer than two are used, the first unused ones as if seen once, so that
+// every code is complete (one lone 1-bit code is legal, section 3.2.7, but
+// not every decoder accepts it).
+std::vector<PackageNode> package_leaves(const uint32_t* freq, int symbols) {
+  std::vector<PackageNode> leaves;
+  for (int s = 0; s < symbols; ++s)
+    if (freq[s] > 0) leaves.push_back({freq[s], s, -1, -1});
+  for (int s = 0; leaves.size() < 2 && s < symbols; ++s)
+    if (freq[s] == 0) leaves.push_back({1, s, -1, -1});
+  // (weight, symbol) orders totally, so the result never depends on the sort.
+  std::sort(leaves.begin(), leaves.end(), [](const PackageNode& a, const PackageNode& b) {
+    return a.weight != b.weight ? a.weight < b.weight : a.symbol < b.symbol;
+  });
+  return leaves;
+}
+
+}  // namespace
+
+// Package-merge (Larmore and Hirschberg, 1990) finds the lengths: the list of
+// level 1 is the leaves; each further level pairs neighbours of the list
+// below into packages and merges them with the leaves by weight. The lightest
+// 2n - 2 items of the last list, expanded into their leaves, give each
+// symbol's length as the number of times it appears.
+void huffman_code_lengths(const uint32_t* freq, int symbols, int max_bits, uint8_t* bits) {
+  std::fill(bits, bits + std::max(symbols, 0), 0);
+  if (symbols < 2 || max_bits < 1 || max_bits > kMaxCodeBits || symbols > (1 << max_bits)) return;
+  std::vector<PackageNode> nodes = package_leaves(freq, symbols);
+  const std::size_t leaf_count = nodes.size();
+  std::vector<int32_t> list(leaf_count);
+  for (std::size_t i = 0; i < leaf_count; ++i) list[i] = static_cast<int32_t>(i);
+  for (int level = 2; level <= max_bits; ++level) {
+    std::vector<int32_t> merged;
+    merged.reserve(leaf_count + list.size() / 2);
+    std::size_t leaf = 0;
+    for (std::size_t i = 0; i + 1 < list.size(); i += 2) {
+      const uint64_t weight = nodes[static_cast<std::size_t>(list[i])].weight + nodes[static_cast<std::size_t>(list[i + 1])].weight;
+      while (leaf < leaf_count && nodes[leaf].weight <= weight) merged.push_back(static_cast<int32_t>(leaf++));
+      nodes.push_back({weight, -1, list[i], list[i + 1]});
+      merged.push_back(static_cast<int32_t>(nodes.size() - 1));
+    }
+    while (leaf < leaf_count) merged.push_back(static_cast<int32_t>(leaf++));
+    list.swap(merged);
+  }
+  for (std::size_t i = 0; i < 2 * leaf_count - 2; ++i) count_leaves(nodes, list[i], bits);
+}
+
+namespace {
+
+// The best code for these frequencies with lengths of at most max_bits.
+void build_code(const uint32_t* freq, int symbols, int max_bits, HuffmanCode* code) {
+  code->symbols = symbols;
+  huffman_code_lengths(freq, symbols, max_bits, code->bits);
+  assign_canonical_codes(code);
+}
+
+// Section 3.2.6: the fixed literal/length code (8, 9, 7 and 8 bits by range)
+// and the fixed 5-bit distance code.
+void build_fixed_codes(HuffmanCode* litlen, HuffmanCode* dist) {
+  litlen->symbols = kFixedLitLenSymbols;
+  for (int s = 0; s < kFixedLitLenSymbols; ++s) litlen->bits[s] = s < 144 ? 8 : s < 256 ? 9 : s < 280 ? 7 : 8;
+  assign_canonical_codes(litlen);
+  dist->symbols = kDistSymbols;
+  std::fill(dist->bits, dist->bits + kDistSymbols, 5);
+  assign_canonical_codes(dist);
+}
+
+// ---- symbols of a block ----
+
+// A literal (distance 0, value the byte) or a match (length 3..258 bytes,
+// distance 1..32768 bytes).
+struct LzSymbol {
+  uint16_t value_or_length;
+  uint16_t distance;
+};
+
+// The index into kLengthBase / kDistBase of the range that holds v.
+int base_index(const uint16_t* base, int count, uint32_t v) {
+  return static_cast<int>(std::upper_bound(base, base + count, v) - base) - 1;
+}
+
+// Symbol counts of one block and the extra bits its matches carry (the same
+// for every Huffman code).
+struct BlockStats {
+  uint32_t litlen[kLitLenSymbols] = {};
+  uint32_t dist[kDistSymbols] = {};
+  uint64_t extra_bits = 0;
+};
+
+BlockStats count_symbols(const std::vector<LzSymbol>& symbols) {
+  BlockStats st;
+  for (const LzSymbol& s : symbols) {
+    if (s.distance == 0) {
+      ++st.litlen[s.value_or_length];
+      continue;
+    }
+    const int li = base_index(kLengthBase, kLengthCodes, s.value_or_length);
+    const int di = base_index(kDistBase, kDistSymbols, s.distance);
+    ++st.litlen[kFirstLengthSymbol + li];
+    ++st.dist[di];
+    st.extra_bits += kLengthExtraBits[li] + kDistExtraBits[di];
+  }
+  st.litlen[kEndOfBlock] = 1;
+  return st;
+}
+
+// Bits of the block's symbols (with end of block) under these codes.
+uint64_t payload_bits(const BlockStats& st, const HuffmanCode& litlen, const HuffmanCode& dist) {
+  uint64_t bits = st.extra_bits;
+  for (int s = 0; s < kLitLenSymbols; ++s) bits += static_cast<uint64_t>(st.litlen[s]) * litlen.bits[s];
+  for (int s = 0; s < kDistSymbols; ++s) bits += static_cast<uint64_t>(st.dist[s]) * dist.bits[s];
+  return bits;
+}
+
+// ---- dynamic block header (section 3.2.7) ----
+
+// One symbol of the code length alphabet with its extra-bits value.
+struct CodeLengthItem {
+  uint8_t symbol;
+  uint8_t extra;
+};
+
+// Run-length codes `run` copies of length `len`: zeros by 17 and 18, other
+// lengths once literally then by 16, leftovers shorter than a repeat code's
+// minimum literally.
+void encode_run(uint8_t len, int run, std::vector<CodeLengthItem>* items) {
+  if (len == 0) {
+    while (run >= kZerosLongMinCount) {
+      const int take = std::min(run, kZerosLongMaxCount);
+      items->push_back({kRepeatZerosLong, static_cast<uint8_t>(take - kZerosLongMinCount)});
+      run -= take;
+    }
+    if (run >= kRepeatMinCount) {  // 3..10 zeros
+      items->push_back({kRepeatZerosShort, static_cast<uint8_t>(run - kRepeatMinCount)});
+      run = 0;
+    }
+  } else {
+    items->push_back({len, 0});
+    --run;
+    while (run >= kRepeatMinCount) {
+      const int take = std::min(run, kRepeatPreviousMaxCount);
+      items->push_back({kRepeatPrevious, static_cast<uint8_t>(take - kRepeatMinCount)});
+      run -= take;
+    }
+  }
+  for (; run > 0; --run) items->push_back({len, 0});
+}
+
+// The literal/length and distance code lengths form one sequence, and runs
+// may cross from one to the other (section 3.2.7).
+std::vector<CodeLengthItem> run_length_code(const uint8_t* lengths, int count) {
+  std::vector<CodeLengthItem> items;
+  for (int i = 0; i < count;) {
+    int run = 1;
+    while (i + run < count && lengths[i + run] == lengths[i]) ++run;
+    encode_run(lengths[i], run, &items);
+    i += run;
+  }
+  return items;
+}
+
+struct DynamicHeader {
+  int litlen_codes = 0;       // HLIT + 257
+  int dist_codes = 0;         // HDIST + 1
+  int code_length_codes = 0;  // HCLEN + 4
+  std::vector<CodeLengthItem> items;
+  HuffmanCode code_length_code;
+  uint64_t bits = 0;  // the header's size after BFINAL and BTYPE
+};
+
+// Number of codes to send: trailing unused ones are left off, down to min.
+int used_codes(const uint8_t* bits, int count, int min) {
+  while (count > min && bits[count - 1] == 0) --count;
+  return count;
+}
+
+DynamicHeader plan_dynamic_header(const HuffmanCode& litlen, const HuffmanCode& dist) {
+  DynamicHeader h;
+  h.litlen_codes = used_codes(litlen.bits, kLitLenSymbols, kMinLitLenCodes);
+  h.dist_codes = used_codes(dist.bits, kDistSymbols, kMinDistCodes);
+  uint8_t lengths[kLitLenSymbols + kDistSymbols];
+  std::copy(litlen.bits, litlen.bits + h.litlen_codes, lengths);
+  std::copy(dist.bits, dist.bits + h.dist_codes, lengths + h.litlen_codes);
+  h.items = run_length_code(lengths, h.litlen_codes + h.dist_codes);
+
+  uint32_t freq[kCodeLengthSymbols] = {};
+  for (const CodeLengthItem& it : h.items) ++freq[it.symbol];
+  build_code(freq, kCodeLengthSymbols, kMaxCodeLengthCodeBits, &h.code_length_code);
+  uint8_t sent_order[kCodeLengthSymbols];
+  for (int i = 0; i < kCodeLengthSymbols; ++i) sent_order[i] = h.code_length_code.bits[kCodeLengthOrder[i]];
+  h.code_length_codes = used_codes(sent_order, kCodeLengthSymbols, kMinCodeLengthCodes);
+
+  h.bits = kHlitBits + kHdistBits + kHclenBits + kCodeLengthCodeLengthBits * static_cast<uint64_t>(h.code_length_codes);
+  for (const CodeLengthItem& it : h.items) h.bits += h.code_length_code.bits[it.symbol] + kCodeLengthExtraBits[it.symbol];
+  return h;
+}
+
+void write_dynamic_header(const DynamicHeader& h, BitWriter* out) {
+  out->put(static_cast<uint32_t>(h.litlen_codes - kMinLitLenCodes), kHlitBits);
+  out->put(static_cast<uint32_t>(h.dist_codes - kMinDistCodes), kHdistBits);
+  out->put(static_cast<uint32_t>(h.code_length_codes - kMinCodeLengthCodes), kHclenBits);
+  for (int i = 0; i < h.code_length_codes; ++i)
+    out->put(h.code_length_code.bits[kCodeLengthOrder[i]], kCodeLengthCodeLengthBits);
+  for (const CodeLengthItem& it : h.items) {
+    out->put(h.code_length_code.reversed[it.symbol], h.code_length_code.bits[it.symbol]);
+    out->put(it.extra, kCodeLengthExtraBits[it.symbol]);
+  }
+}
+
+// ---- block output ----
+
+// Section 3.2.3: BFINAL (set on the last block), then BTYPE.
+void put_block_header(bool final, uint32_t type, BitWriter* out) {
+  out->put(final ? 1 : 0, 1);
+  out->put(type, kBlockTypeBits);
+}
+
+void put_symbol(const HuffmanCode& code, int symbol, BitWriter* out) {
+  out->put(code.reversed[symbol], code.bits[symbol]);
+}
+
+// Section 3.2.5: a match is its length symbol and extra bits, then its
+// distance symbol and extra bits.
+void write_symbols(const std::vector<LzSymbol>& symbols, const HuffmanCode& litlen, const HuffmanCode& dist, BitWriter* out) {
+  for (const LzSymbol& s : symbols) {
+    if (s.distance == 0) {
+      put_symbol(litlen, s.value_or_length, out);
+      continue;
+    }
+    const int li = base_index(kLengthBase, kLengthCodes, s.value_or_length);
+    put_symbol(litlen, kFirstLengthSymbol + li, out);
+    out->put(s.value_or_length - kLengthBase[li], kLengthExtraBits[li]);
+    const int di = base_index(kDistBase, kDistSymbols, s.distance);
+    put_symbol(dist, di, out);
+    out->put(s.distance - kDistBase[di], kDistExtraBits[di]);
+  }
+  put_symbol(litlen, kEndOfBlock, out);
+}
+
+// Section 3.2.4: stored blocks of at most 65535 bytes each, each aligned to a
+// byte and led by LEN and its one's complement NLEN. `final` marks the last.
+// Returns the bits written, or with out null the bits it would write when
+// started pending_bits after a byte boundary.
+uint64_t stored_blocks(const uint8_t* p, std::size_t n, bool final, int pending_bits, BitWriter* out) {
+  uint64_t bits = 0;
+  do {
+    const std::size_t take = std::min(n, kStoredMaxBytes);
+    const bool last = final && take == n;
+    const int pad_bits = (8 - (pending_bits + kBlockHeaderBits) % 8) % 8;
+    bits += kBlockHeaderBits + pad_bits + 2 * kStoredLenBits + 8 * static_cast<uint64_t>(take);
+    pending_bits = 0;
+    if (out) {
+      put_block_header(last, kBlockStored, out);
+      out->align_to_byte();
+      out->put(static_cast<uint32_t>(take), kStoredLenBits);
+      out->put(static_cast<uint32_t>(~take & 0xFFFFu), kStoredLenBits);
+      out->put_bytes(p, take);
+    }
+    p += take;
+    n -= take;
+  } while (n > 0);
+  return bits;
+}
+
+// Collects the LZ77 symbols of the input and writes them block by block.
+class BlockWriter {
+ public:
+  BlockWriter(const uint8_t* data, BitWriter* out) : data_(data), out_(out) {
+    build_fixed_codes(&fixed_litlen_, &fixed_dist_);
+    symbols_.reserve(kBlockSymbols);
+  }
+
+  void literal() { add({data_[end_], 0}, 1); }
+  void match(int length_bytes, std::size_t distance_bytes) {
+    add({static_cast<uint16_t>(length_bytes), static_cast<uint16_t>(distance_bytes)}, static_cast<std::size_t>(length_bytes));
+  }
+  // Writes what is left as the final block (an empty one for empty input).
+  void finish() { write_block(true); }
+
+ private:
+  void add(LzSymbol s, std::size_t bytes) {
+    // Full blocks are written only once more input follows, so the last
+    // block written is never empty unless the input is.
+    if (symbols_.size() == kBlockSymbols) write_block(false);
+    symbols_.push_back(s);
+    end_ += bytes;
+  }
+
+  void write_block(bool final) {
+    const BlockStats st = count_symbols(symbols_);
+    HuffmanCode litlen, dist;
+    build_code(st.litlen, kLitLenSymbols, kMaxCodeBits, &litlen);
+    build_code(st.dist, kDistSymbols, kMaxCodeBits, &dist);
+    const DynamicHeader header = plan_dynamic_header(litlen, dist);
+    const uint64_t dynamic_bits = kBlockHeaderBits + header.bits + payload_bits(st, litlen, dist);
+    const uint64_t fixed_bits = kBlockHeaderBits + payload_bits(st, fixed_litlen_, fixed_dist_);
+    const uint64_t stored_bits = stored_blocks(data_ + start_, end_ - start_, final, out_->pending_bits(), nullptr);
+
+    if (stored_bits < dynamic_bits && stored_bits < fixed_bits) {
+      stored_blocks(data_ + start_, end_ - start_, final, out_->pending_bits(), out_);
+    } else if (fixed_bits <= dynamic_bits) {
+      put_block_header(final, kBlockFixed, out_);
+      write_symbols(symbols_, fixed_litlen_, fixed_dist_, out_);
+    } else {
+      put_block_header(final, kBlockDynamic, out_);
+      write_dynamic_header(header, out_);
+      write_symbols(symbols_, litlen, dist, out_);
+    }
+    symbols_.clear();
+    start_ = end_;
+  }
+
+  const uint8_t* data_;
+  BitWriter* out_;
+  HuffmanCode fixed_litlen_, fixed_dist_;
+  std::vector<LzSymbol> symbols_;
+  std::size_t start_ = 0;  // first input byte of the block being collected
+  std::size_t end_ = 0;    // one past its last
+};
+
+// ---- LZ77 (section 4) ----
+
+struct Match {
+  int length_bytes = 0;  // 0: no match worth taking
+  std::size_t distance_bytes = 0;
+};
+
+// Hash chains over the window: head_ holds the latest position of each
+// 3-byte hash, prev_ (indexed by position modulo the window) the position
+// before it with the same hash. Positions are int64_t so -1 can mean none.
+class MatchFinder {
+ public:
+  MatchFinder(const uint8_t* data, std::size_t n)
+      : data_(data), n_(n), head_(std::size_t{1} << kHashBits, -1), prev_(kWindowBytes, -1) {}
+
+  // The longest match for the bytes at pos among earlier positions in the
+  // window (the nearest of equal length) if longer than longer_than_bytes,
+  // or none.
+  Match longest(std::size_t pos, int longer_than_bytes) const {
+    if (n_ - pos < static_cast<std::size_t>(kMinMatchBytes)) return Match{};
+    const int max_len = static_cast<int>(std::min<std::size_t>(kMaxMatchBytes, n_ - pos));
+    int best_len = std::max(kMinMatchBytes - 1, longer_than_bytes);
+    if (best_len >= max_len) return Match{};
+    const int max_steps = longer_than_bytes >= kGoodMatchBytes ? kMaxChainSteps / 4 : kMaxChainSteps;
+    const uint8_t* here = data_ + pos;
+    Match best;
+    int64_t cand = head_[hash(pos)];
+    for (int steps = 0; cand >= 0 && pos - static_cast<std::size_t>(cand) <= kWindowBytes && steps < max_steps; ++steps) {
+      const uint8_t* there = data_ + cand;
+      // Only a candidate that also agrees one byte past the best can beat it.
+      if (there[best_len] == here[best_len]) {
+        const int len = common_prefix(there, here, max_len);
+        if (len > best_len) {
+          best_len = len;
+          best = Match{len, pos - static_cast<std::size_t>(cand)};
+          if (len >= kNiceMatchBytes || len == max_len) break;
+        }
+      }
+      const int64_t next = prev_[static_cast<std::size_t>(cand) % kWindowBytes];
+      if (next >= cand) break;  // defensive: chains only run backwards
+      cand = next;
+    }
+    if (best.length_bytes == kMinMatchBytes && best.distance_bytes > kFarShortMatchBytes) return Match{};
+    return best;
+  }
+
+  // Makes pos a candidate for later positions. Insert each position after
+  // searching it: its slot in prev_ is the one of pos - 32768, still needed
+  // by that search.
+  void insert(std::size_t pos) {
+    if (n_ - pos < static_cast<std::size_t>(kMinMatchBytes)) return;
+    const uint32_t h = hash(pos);
+    prev_[pos % kWindowBytes] = head_[h];
+    head_[h] = static_cast<int64_t>(pos);
+  }
+
+  // Searches then inserts pos; none past the end.
+  Match step(std::size_t pos, int longer_than_bytes = 0) {
+    if (pos >= n_) return Match{};
+    const Match m = longest(pos, longer_than_bytes);
+    insert(pos);
+    return m;
+  }
+
+ private:
+  // Multiplicative hashing (Knuth's 2654435761, near 2^32 / golden ratio)
+  // spreads the 24 bits of three bytes over the table.
+  uint32_t hash(std::size_t pos) const {
+    const uint32_t three = static_cast<uint32_t>(data_[pos]) << 16 | static_cast<uint32_t>(data_[pos + 1]) << 8 | data_[pos + 2];
+    return (three * 2654435761u) >> (32 - kHashBits);
+  }
+
+  // Compares eight bytes at a time while they agree (the same result as
+  // byte by byte on any byte order), then finishes byte by byte.
+  static int common_prefix(const uint8_t* a, const uint8_t* b, int max_len) {
+    int len = 0;
+    for (; len + 8 <= max_len; len += 8) {
+      uint64_t wa, wb;
+      std::memcpy(&wa, a + len, 8);
+      std::memcpy(&wb, b + len, 8);
+      if (wa != wb) break;
+    }
+    while (len < max_len && a[len] == b[len]) ++len;
+    return len;
+  }
+
+  const uint8_t* data_;
+  std::size_t n_;
+  std::vector<int64_t> head_;
+  std::vector<int64_t> prev_;
+};
+
+// Greedy parsing with one step of lazy evaluation (section 4): a match found
+// at pos is deferred when pos + 1 has a longer one, pos then going out as a
+// literal. Every position is inserted into the chains exactly once.
+void parse_lz77(const uint8_t* data, std::size_t n, BlockWriter* out) {
+  MatchFinder finder(data, n);
+  std::size_t pos = 0;
+  Match cur = finder.step(0);
+  while (pos < n) {
+    if (cur.length_bytes == 0) {
+      out->literal();
+      cur = finder.step(++pos);
+      continue;
+    }
+    std::size_t inserted_to = pos + 1;  // positions below this are in the chains
+    if (cur.length_bytes < kLazyBelowBytes) {
+      const Match next = finder.step(pos + 1, cur.length_bytes);
+      ++inserted_to;
+      if (next.length_bytes > cur.length_bytes) {
+        out->literal();
+        ++pos;
+        cur = next;
+        continue;
+      }
+    }
+    const std::size_t end = pos + static_cast<std::size_t>(cur.length_bytes);
+    for (std::size_t p = inserted_to; p < end; ++p) finder.insert(p);
+    out->match(cur.length_bytes, cur.distance_bytes);
+    pos = end;
+    cur = finder.step(pos);
+  }
+}
+
+// RFC 1950 section 2.2: CMF 0x78 is method 8 (deflate) with CINFO 7 (a
+// 32 KiB window); FLG 0x9C has no preset dictionary, FLEVEL 2 (the default
+// algorithm) and FCHECK making CMF * 256 + FLG a multiple of 31.
+constexpr uint8_t kZlibCmf = 0x78;
+constexpr uint8_t kZlibFlg = 0x9C;
+static_assert((kZlibCmf * 256 + kZlibFlg) % 31 == 0, "FCHECK");
+
+}  // namespace
+
+void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out) {
+  out->clear();
+  out->reserve(n / 4 + 64);
+  out->push_back(kZlibCmf);
+  out->push_back(kZlibFlg);
+  BitWriter bits(out);
+  BlockWriter blocks(data, &bits);
+  if (n > 0) parse_lz77(data, n, &blocks);
+  blocks.finish();
+  bits.align_to_byte();
+  // RFC 1950 section 2.2: ADLER32 of the uncompressed data, most significant
+  // byte first.
+  const uint32_t adler = adler32_update(1, data, n);
+  for (int shift = 24; shift >= 0; shift -= 8) out->push_back(static_cast<uint8_t>(adler >> shift));
+}
+
+}  // namespace dexmill

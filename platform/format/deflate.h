@@ -1,0 +1,47 @@
+// Lossless compression of our own for PNG output (platform/format/png.h): a zlib
+// stream (RFC 1950) of DEFLATE data (RFC 1951), and the two checksums those
+// formats use. No library: the standard library only.
+//
+// The output is a pure function of the input bytes (no time, no addresses,
+// no platform-dependent choices), so every run on every platform writes the
+// same stream.
+#ifndef DEXMILL_PLATFORM_FORMAT_DEFLATE_H
+#define DEXMILL_PLATFORM_FORMAT_DEFLATE_H
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dexmill {
+
+// CRC-32 of ISO 3309 as PNG uses it (PNG specification, section 5.5:
+// reflected polynomial 0xEDB88320, register preset to all ones and inverted
+// at the end). Start with crc = 0; data in pieces may be fed by passing each
+// call's result to the next. crc32_update(0, "123456789", 9) == 0xCBF43926.
+uint32_t crc32_update(uint32_t crc, const uint8_t* p, std::size_t n);
+
+// Adler-32 (RFC 1950, sections 8 and 9). Start with adler = 1; data in pieces
+// may be fed by passing each call's result to the next.
+// adler32_update(1, "Wikipedia", 9) == 0x11E60398.
+uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n);
+
+// Replaces *out with a zlib stream (RFC 1950: header 0x78 0x9C, DEFLATE data,
+// Adler-32 of the input) of the n bytes at data (data may be null when n is
+// 0). The DEFLATE data is LZ77 over a 32 KiB window with hash chains and
+// one-step lazy matching; each block is written as dynamic Huffman, fixed
+// Huffman or stored, whichever is smallest (a block holds 16384 symbols, so
+// at least 16 KiB but the last), so the stream never exceeds
+// n + 11 + 5 * (n / 16384) bytes.
+void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out);
+
+// The Huffman code lengths zlib_compress uses (public so tests can reach
+// them): for symbols 0..symbols-1 seen freq[s] times, writes into bits[s]
+// lengths of at most max_bits that minimise sum(freq[s] * bits[s]) (0 for an
+// unused symbol; when fewer than two symbols are used the lowest unused ones
+// count as used once, so the code is always complete: sum 2^-bits[s] == 1).
+// Needs 2 <= symbols <= 2^max_bits and max_bits <= 15, else all bits are 0.
+void huffman_code_lengths(const uint32_t* freq, int symbols, int max_bits, uint8_t* bits);
+
+}  // namespace dexmill
+
+#endif

@@ -1,0 +1,136 @@
+#include "tools/cam/optimize_pass.h"
+
+#include <cstdio>
+
+#include "core/safety/material_limits.h"
+#include "core/gcode/block.h"
+#include "core/math/fixed.h"
+#include "core/interp/interp.h"
+#include "platform/input/gcode_file.h"
+#include "tools/cli/cli.h"
+#include "tools/cam/feed_rewrite.h"
+#include "tools/cam/feed_word.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// The records of the line being interpreted.
+class LineRecords final : public CanonSink {
+ public:
+  void emit(const CanonRecord& r) override { records.push_back(r); }
+  std::vector<CanonRecord> records;
+};
+
+bool is_feed(const CanonRecord& r) { return r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc; }
+
+std::string mm_per_min(int64_t nm_per_min) { return feed_number(nm_per_min, false, 0).text; }
+
+}  // namespace
+
+int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
+  GcodeFile file;
+  if (!file.open(in.read_path.c_str())) return fail(kExitIo, "%s", file.error());
+  const std::unique_ptr<GcodeMemory> memory = gcode_memory();
+  InterpOptions opt;
+  opt.inch = in.inch;
+  opt.tools = in.tools;  // warnings were printed by the cut's reading
+  memory->attach(&opt);
+  LineRecords sink;
+  Interp interp(&sink, opt);
+  MotionSummary before(in.time_model), after(in.time_model);
+  FeedRewriter rewriter;
+  const char* text = nullptr;
+  std::size_t len = 0;
+  uint32_t line = 0;
+  for (;;) {
+    const GcodeFile::Read rd = file.next(&text, &len, &line);
+    if (rd == GcodeFile::Read::kEof) break;
+    if (rd == GcodeFile::Read::kIoError) return fail(kExitIo, "%s", file.error());
+    GcodeDiag diag{};
+    sink.records.clear();
+    const GcodeError ge =
+        rd == GcodeFile::Read::kLine ? interp.execute_line(text, len, line, &diag) : GcodeError::kLineTooLong;
+    // A line a loop runs twice would want two feeds: the rewrite is per line.
+    if (ge == GcodeError::kOwordNoSource)
+      return fail(kExitInput, "%s:%u: dexmill optimize rewrites programs without o-word loops and calls only",
+                  in.shown_name.c_str(), line);
+    if (ge != GcodeError::kOk)
+      return fail(kExitInput, "%s:%u: the program no longer reads as it did when it was cut", in.shown_name.c_str(), line);
+    FeedLine fl;
+    int64_t hi = 0;  // G94: the moves of a line share its F; G93: a line makes one move
+    for (const CanonRecord& r : sink.records)
+      if (is_feed(r)) {
+        fl.feeds = true;
+        hi = max_of(hi, r.feed_nm_per_min);
+      }
+    const InterpState& st = interp.state();
+    // A feed tied to the spindle (G95's F, G33/G33.1's K) is no F per
+    // minute this pass could rewrite: left as written, said when too fast.
+    if (fl.feeds && (st.per_rev || st.motion == 330 || st.motion == 331)) {
+      fl.feeds = false;
+      if (line < in.limits->size() && (*in.limits)[line] < hi) {
+        std::fprintf(stderr, "%s:%u:1: warning: feed per spindle revolution (G95, G33, G33.1) left as written: %s mm/min "
+                     "where a material's limit is %s mm/min\n", in.shown_name.c_str(), line, mm_per_min(hi).c_str(),
+                     mm_per_min((*in.limits)[line]).c_str());
+        ++out->left_over;
+      }
+    }
+    // A block's feed mode and units are those its own moves and F word use.
+    fl.inverse_time = st.inverse_time;
+    fl.programmed_nm_per_min = hi;
+    fl.limit_nm_per_min = line < in.limits->size() ? (*in.limits)[line] : kNoFeedLimit;
+    fl.feed_after_nm_per_min = st.feed_nm_per_min;
+    fl.inch = st.inch;
+    GcodeBlock b;
+    GcodeLineKind kind;
+    if (gcode_read_block(text, len, line, &b, &kind, &diag) == GcodeError::kOk && kind == GcodeLineKind::kBlock) {
+      fl.has_f = b.has_word('F');
+      if (fl.has_f) fl.inverse_f = b.val('F');
+      fl.sets_feed = fl.has_f || b.g[kGFeedMode] >= 0;
+      fl.block_delete = b.block_delete;
+    }
+    const FeedEdit e = rewriter.line(fl);
+    if (fl.feeds && fl.inverse_time && fl.limit_nm_per_min < hi && e.kind == FeedEdit::Kind::kNone) {
+      std::fprintf(stderr, "%s:%u:1: warning: inverse-time feed (G93) left as written: %s mm/min where a material's limit is %s mm/min, "
+                   "and F would be below 0.000001\n", in.shown_name.c_str(), line, mm_per_min(hi).c_str(),
+                   mm_per_min(fl.limit_nm_per_min).c_str());
+      ++out->left_over;
+    }
+    for (CanonRecord r : sink.records) {
+      before.emit(r);
+      if (is_feed(r)) r.feed_nm_per_min = e.feed_nm_per_min;
+      after.emit(r);
+    }
+    if (e.kind == FeedEdit::Kind::kNone) continue;
+    const FeedSplice s = feed_splice(text, len, e);
+    if (s.text.empty()) return fail(kExitInput, "%s:%u: cannot place an F word in this line", in.shown_name.c_str(), line);
+    out->splices.push_back(ProgramSplice{file.line_offset() + s.at, s.erase, s.text});
+    ++out->lines_changed;
+    if (e.lowered) {
+      ++out->lines_lowered;
+      ++out->lowered_to[fl.limit_nm_per_min];
+    } else {
+      ++out->lines_restored;
+    }
+  }
+  out->before_us = before.estimated_time_us();
+  out->after_us = after.estimated_time_us();
+  return kExitOk;
+}
+
+std::string apply_splices(const std::string& program, const std::vector<ProgramSplice>& splices) {
+  std::string o;
+  o.reserve(program.size() + 16 * splices.size());
+  uint64_t from = 0;
+  for (const ProgramSplice& s : splices) {
+    o.append(program, from, s.at - from);
+    o += s.text;
+    from = s.at + s.erase;
+  }
+  o.append(program, from, std::string::npos);
+  return o;
+}
+
+}  // namespace cli
+}  // namespace dexmill

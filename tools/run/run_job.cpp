@@ -1,0 +1,267 @@
+// `dexmill run`: the options into a job for the engine (core/sim/simulation.h),
+// its files and views around it; see run_job.h.
+#include "tools/run/run_job.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/sim/simulation.h"
+#include "platform/os/clock.h"
+#include "platform/input/gcode_file.h"
+#include "platform/format/image_file.h"
+#include "platform/os/memory.h"
+#include "platform/os/output_file.h"
+#include "platform/os/output_set.h"
+#include "platform/os/process.h"
+#include "platform/live/progress.h"
+#include "platform/report/report_json.h"
+#include "platform/report/report_summary.h"
+#include "platform/format/stl.h"
+#include "tools/cli/cli.h"
+#include "tools/run/run_assess.h"
+#include "tools/run/run_material.h"
+#include "tools/run/run_safety.h"
+#include "tools/run/run_setup.h"
+#include "tools/run/run_views.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// One run: the engine set up (tools/run/run_setup.h), and its views.
+struct Run {
+  RunSetup setup;
+  RunViews views;
+  double t_start = 0;
+};
+
+bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
+  // Row 0 of the image is the grid's last row (north up); samples are the
+  // top heights in LSB (the report gives the LSB), holes 0.
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  ZeroedBlock block;
+  if (!block.allocate(n * sizeof(uint16_t))) {
+    std::snprintf(err, errn, "cannot allocate %s for the %dx%d heightmap", size_text(n * sizeof(uint16_t)).c_str(),
+                  static_cast<int>(g.nx), static_cast<int>(g.ny));
+    return false;
+  }
+  uint16_t* img = static_cast<uint16_t*>(block.data());
+  for (int32_t j = 0; j < g.ny; ++j)
+    for (int32_t i = 0; i < g.nx; ++i) {
+      const uint64_t h = g.top[g.index(i, j)];
+      img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
+          static_cast<uint16_t>(h > 65535 ? 65535 : h);
+    }
+  return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
+}
+
+// The report, with the whole run's time (when asked for); false when it
+// cannot be written (printed).
+bool write_report(const RunOptions& o, Run* run) {
+  if (o.out.report.empty()) return true;
+  run->setup.rep.timing.emplace_back("total", clock_now_s() - run->t_start);
+  char e[1300];
+  if (write_report_json(o.out.report.c_str(), run->setup.rep, e, sizeof e)) return true;
+  fail(kExitIo, "%s", e);
+  return false;
+}
+
+// The views the options ask for, over the engine's grid (tools/run/run_views.h).
+int open_views(const RunOptions& o, Run* run) {
+  RunSetup& s = run->setup;
+  RunViews::Inputs in;
+  in.lib = s.lib;
+  in.design = o.job.design.empty() ? nullptr : &s.design;
+  in.material = o.job.material.empty() ? nullptr : &s.material;
+  in.path = s.want_path ? &s.path : nullptr;
+  in.motion_moves = s.rep.rapid + s.rep.feed + s.rep.arc;
+  in.total_us = s.rep.estimated_us;
+  in.top_lsb = o.job.stock_stl.empty() ? static_cast<uint32_t>(s.plan.top_lsb) : 0u;
+  return run->views.open(o, s.sim, in);
+}
+
+// The cut: the program read again, a line a step, with the progress bar
+// and the live view between lines. kExitOk or an exit code (printed).
+int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
+  RunSetup& su = run->setup;
+  Simulation& sim = *su.sim;
+  RunViews& v = run->views;
+  std::string err;
+  const double t0 = clock_now_s();
+  if (!su.input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
+  if (v.has_frames()) v.write_frame();  // the untouched stock
+  GcodeFile in;
+  if (!in.open(su.read_path.c_str(), su.shown_name.c_str())) return fail(kExitIo, "%s", in.error());
+  in.set_subroutine_path(o.job.read.subroutine_path);
+  in.set_guard(su.guard);
+  sim.read_from(&in);
+  SimBudget line;
+  line.lines = 1;
+  Progress progress(stderr, !o.view.quiet && !v.live());
+  while (sim.step(line) == SimState::kReady) {
+    progress.update(in.bytes_read(), in.total_bytes(), sim.status().moves);
+    if (!v.frame_error.empty()) break;
+    if (v.live() && !v.live_view().tick(&sim.grid(), CutterPose{true, sim.mill().position()}, v.status)) {
+      *user_quit = !v.live_view().failed();
+      break;
+    }
+  }
+  progress.finish();
+  sim.finish();
+  std::vector<PointNm> error_at, stop_at;
+  if (su.job.stop_line) error_at.push_back(sim.mill().position());  // the bad block's place, in amber
+  const SafetyWatch* safety = sim.safety();
+  if (sim.stop_reason() == SimStop::kCollision && safety && safety->nevents > 0)  // the finding it stopped at, in red
+    stop_at.push_back(safety->events[safety->nevents - 1].at);
+  v.after_cut(error_at, stop_at);
+  if (const GougeWatch* w = sim.gouges()) print_gouges(*w, sim.grid(), &su.design);
+  if (safety) {
+    safety_print(*safety, su.shown_name, sim.grid());
+    safety_to_report(*safety, &su.rep);
+  }
+  if (const ProcessWatch* w = sim.process()) {
+    if (o.view.material_warnings) material_print(su.material, *w, su.shown_name);
+    material_to_report(su.material, *w, sim.grid(), &su.rep);
+  }
+  if (sim.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
+  if (!v.frame_error.empty()) return fail(kExitIo, "%s", v.frame_error.c_str());
+  if (v.live_view().failed()) return fail(kExitIo, "%s", v.live_view().error().c_str());
+  if (v.has_frames() && (v.last_frame_moves != sim.status().moves || su.job.stop_line) && !v.write_frame())
+    return fail(kExitIo, "%s", v.frame_error.c_str());
+  su.rep.timing.emplace_back("cut", clock_now_s() - t0 - v.render_s - v.write_s);
+  return kExitOk;
+}
+
+// The final images, the heightmap and the STL, into the set (their
+// renames wait for the report's: platform/os/output_set.h).
+int write_files(const RunOptions& o, Run* run) {
+  RunSetup& su = run->setup;
+  RunViews& v = run->views;
+  if (const int code = v.write_images(o, su.plan, su.formats.image, su.formats.error_image)) return code;
+  char e[1300];
+  const double t_files = clock_now_s();
+  if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
+    return fail(kExitIo, "%s", e);
+  double stl_s = 0;
+  if (!o.out.stl.empty()) {
+    const double t_stl = clock_now_s();
+    if (!write_stl(o.out.stl.c_str(), su.sim->grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    stl_s = clock_now_s() - t_stl;
+  }
+  v.write_s += clock_now_s() - t_files;
+  su.rep.timing.emplace_back("render", v.render_s);
+  su.rep.timing.emplace_back("write", v.write_s);
+  if (!o.out.stl.empty()) su.rep.timing.emplace_back("stl", stl_s);  // a part of write
+  return kExitOk;
+}
+
+// The report's list of what the run wrote beside it.
+void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, RunReport* rep) {
+  if (!o.out.frames_dir.empty()) rep->outputs.push_back(ReportOutput{"--frames", o.out.frames_dir, -1, v.frames_written()});
+  const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl}};
+  for (const auto& f : files)
+    if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
+}
+
+// The report's results, the final frame and files, the report itself.
+int write_results(const RunOptions& o, Run* run, bool user_quit) {
+  RunSetup& su = run->setup;
+  Simulation& sim = *su.sim;
+  RunReport& rep = su.rep;
+  RunViews& v = run->views;
+  switch (sim.stop_reason()) {
+    case SimStop::kGouge: rep.stopped_reason = "gouge"; rep.stopped_line = sim.stop_line(); break;
+    case SimStop::kCollision: rep.stopped_reason = "collision"; rep.stopped_line = sim.stop_line(); break;
+    default: break;
+  }
+  rep.instances = sim.mill().stats().instances;
+  rep.dexel_updates = sim.mill().stats().dexel_updates;
+  rep.removed_lsb_dexels = sim.removed_lsb();
+  if (const GougeWatch* w = sim.gouges()) {
+    const double t0 = clock_now_s();
+    assess_design(*w, sim.grid(), &su.design);
+    rep.have_assessment = true;
+    rep.assessment = su.design.report;
+    rep.timing.emplace_back("assess", clock_now_s() - t0);
+  }
+  const CutterPose pose{true, sim.mill().position()};
+  if (v.live() && !user_quit && !v.live_view().last_frame(&sim.grid(), pose, v.status))
+    return fail(kExitIo, "%s", v.live_view().error().c_str());
+  // Every file complete before any is renamed, the report last, so that a
+  // report in place names the run each listed file is from.
+  OutputSet set;
+  if (const int code = write_files(o, run)) return code;
+  list_outputs(o, set, v, &rep);
+  if (!write_report(o, run)) return kExitIo;
+  std::string err;
+  if (!set.publish(&err)) return fail(kExitIo, "%s", err.c_str());
+  if (v.live() && !user_quit && !v.live_view().wait_done(&sim.grid(), pose, v.status))
+    return fail(kExitIo, "%s", v.live_view().error().c_str());
+  return kExitOk;
+}
+
+// What goes to standard output when it was closed would be lost at the
+// end: refused before the run, the I/O error the write would meet.
+int check_standard_output(const RunOptions& o) {
+  std::string err;
+  if (standard_output_usable(&err)) return kExitOk;
+  const std::pair<const char*, const std::string*> outs[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
+                                                            {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
+                                                            {"--report", &o.out.report}};
+  for (const auto& out : outs)
+    if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());
+  if (run_prints_summary(o)) return fail(kExitIo, "cannot print the summary: %s (write a --report instead)", err.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
+  if (const int code = check_standard_output(o)) return code;
+  Run run;
+  run.t_start = clock_now_s();
+  RunSetup& su = run.setup;
+  su.guard = guard;
+  su.rep.run_started = clock_utc_text();
+  su.rep.run_pid = static_cast<long>(getpid());
+  if (const int code = run_setup(&o, &su)) {
+    if (su.refused && !write_report(o, &run)) return kExitIo;  // --strict: the report of a program not cut
+    return code;
+  }
+  if (const int code = open_views(o, &run)) return code;
+  if (const int code = remove_earlier_frames(o, &su)) return code;
+  bool user_quit = false;
+  if (const int code = cut_pass(o, &run, &user_quit)) return code;
+  if (const int code = write_results(o, &run, user_quit)) return code;
+  Simulation& sim = *su.sim;
+  if (result) {
+    result->finished = true;
+    result->shown_name = su.shown_name;
+    result->safety_findings = sim.safety() ? sim.safety()->total : 0;
+    result->gouged = sim.gouged();
+    if (const ProcessWatch* w = sim.process())
+      result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
+  }
+  if (run_prints_summary(o)) {
+    std::fputs(report_summary_text(su.rep).c_str(), stdout);
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+      return fail(kExitIo, "cannot print the summary on standard output: %s", std::strerror(errno));
+  }
+  if (su.job.stop_line) return kExitInput;
+  if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
+  if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
+  if (!o.view.quiet && su.demo)
+    std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
+                 image_format_extension(o.out.frame_format));
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill

@@ -1,0 +1,46 @@
+// `dexmill run`: the options into a job for the engine, and the files and
+// views around it. Two passes over the program:
+//   scan  the interpreter alone (core/sim/scan.h): motion counts and
+//         boxes, the time estimate, the tools it uses; every G-code error
+//         and warning is reported here; a program with an error is cut up
+//         to its first bad block (with --strict not at all: exit 1, the
+//         report still written);
+//   cut   the simulation (core/sim/simulation.h) on a grid planned from the
+//         scan (core/sim/stock_plan.h), a line a step, with frames, the live
+//         view and the progress bar between steps (tools/run/run_views.h);
+// then the outputs: --image, --heightmap, --stl, --report, each written
+// completely or not at all (exit 3 when one cannot be written).
+#ifndef DEXMILL_TOOLS_RUN_RUN_JOB_H
+#define DEXMILL_TOOLS_RUN_RUN_JOB_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "platform/input/file_guard.h"
+#include "tools/run/run_options.h"
+
+namespace dexmill {
+namespace cli {
+
+// What the subcommands that run a job for its findings read from it.
+struct RunResult {
+  bool finished = false;     // the run went through to its verdict (exit 0, 1 for a partial cut, or 4)
+  std::string shown_name;    // the program's name in messages
+  uint64_t safety_findings = 0;
+  bool gouged = false;
+  // With JobOptions::feed_limits: per line (the index), the lowest max feed
+  // among the materials that line's feed moves removed (kNoFeedLimit: none;
+  // core/safety/material_limits.h); what `dexmill optimize` lowers feeds to.
+  std::vector<int64_t> line_feed_limits;
+};
+
+// Runs the job; returns the exit status (the man page's). Every file it
+// reads, writes or removes goes through the command's `guard`
+// (platform/input/file_guard.h), with what the command registered before.
+int run_job(RunOptions o, FileGuard* guard, RunResult* result = nullptr);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif

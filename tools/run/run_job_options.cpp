@@ -1,0 +1,238 @@
+// The options of `dexmill run` that make its job (run_options.h
+// JobOptions): what is cut, the design it is assessed against, the checks
+// and the verdict. Each entry: name, value, help, what it does.
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "core/design/builtin.h"
+#include "core/math/fixed.h"
+#include "core/tool/spec.h"
+#include "display/surface/fixture_draw.h"
+#include "tools/cli/cli.h"
+#include "tools/cli/option_values.h"
+#include "tools/run/run_demo.h"
+#include "tools/run/run_option_table.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+using Job = JobOptions;
+
+int demo(Job* o, const char* v) {
+  if (std::strcmp(v, "list") && std::strcmp(v, kBuiltinDemoName) && !builtin_design_find(v)) {
+    std::string names = kBuiltinDemoName;
+    for (int32_t k = 0; k < builtin_design_count(); ++k) names += std::string(", ") + builtin_design_at(k).name;
+    return fail(kExitUsage, "--demo must be list or one of %s, not '%s'", names.c_str(), v);
+  }
+  o->demo = v;
+  return kExitOk;
+}
+
+int stock(Job* o, const char* v) {
+  if (has_extension(v, ".stl")) return o->stock_stl = v, kExitOk;
+  if (!parse_box(v, o->stock_nm))
+    return fail(kExitUsage, "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1 (or a FILE.stl), not '%s'", v);
+  o->have_stock = true;
+  return kExitOk;
+}
+
+int tool(Job* o, const char* v) {
+  const ToolSpecError e = tool_spec_parse(v, std::strlen(v), &o->tool);
+  if (e != ToolSpecError::kOk) return fail(kExitUsage, "bad --tool '%s': %s", v, tool_spec_message(e));
+  o->tool_text = v;
+  o->tool_given = true;
+  return kExitOk;
+}
+
+// A machine rate in mm/min (mm/s2) from 1 to 1000000.
+int machine_rate(const char* name, const char* what, const char* v, int64_t* nm) {
+  if (!parse_scaled(v, kNmPerMm, nm) || *nm < kNmPerMm || *nm > 1000000 * kNmPerMm)
+    return fail(kExitUsage, "%s needs the machine's %s, from 1 to 1000000, not '%s'", name, what, v);
+  return kExitOk;
+}
+
+int max_input(Job* o, const char* v) {
+  char* end = nullptr;
+  const unsigned long long mib = std::strtoull(v, &end, 10);
+  if (!*v || *end || v[0] == '-' || mib < 1 || mib > (1ULL << 20))
+    return fail(kExitUsage, "--max-input needs a size in MiB from 1 to 1048576, not '%s'", v);
+  o->max_input_bytes = static_cast<uint64_t>(mib) << 20;
+  return kExitOk;
+}
+
+const Option<Job> kJob[] = {
+    {"--demo", "NAME|list",
+     "pocket: the built-in demo (what run with no FILE runs on a terminal; writes out/); else one of the "
+     "paper's workpieces end to end: its design part, a zig-milling program made from it (dexmill zig), cut "
+     "from its material, drawn, assessed; writes out/NAME/ (program, final.png, error.png, frames/, "
+     "report.json); list: the demos",
+     demo},
+    {"--stock", "X0,Y0,Z0,X1,Y1,Z1|FILE.stl",
+     "the stock box, mm, machine coordinates (default: from the program), or a pre-machined blank: an STL "
+     "mesh's tops over its bounding box",
+     stock},
+    {"--grid", "NXxNY",
+     "dexel resolution: the most dexels each way, keeping the stock's shape (default: a 32nd of the smallest "
+     "tool, 256 to 1024 dexels across the longer side)",
+     [](Job* o, const char* v) -> int {
+       if (!parse_pair(v, 4, 65535, &o->grid_nx, &o->grid_ny))
+         return fail(kExitUsage, "--grid needs NXxNY with whole numbers from 4 to 65535, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--pitch", "MM", "dexel spacing, instead of --grid",
+     [](Job* o, const char* v) -> int {
+       if (!parse_scaled(v, kNmPerMm, &o->pitch_nm) || o->pitch_nm < 100 || o->pitch_nm > 100 * kNmPerMm)
+         return fail(kExitUsage, "--pitch needs a dexel spacing from 0.0001 to 100 mm, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--tool", "SPEC",
+     "ball:D flat:D bull:D:R vbit:D:ANGLE, then optionally ,len=L ,stick=S ,shank=D ,holder=DxH[,D1-D2xH...] "
+     ",nocentre (mm, degrees); without --tools every T is this tool; with none, each T is the tool the program's "
+     "comments describe (Fusion, pcb2gcode, Estlcam, Vectric, Carbide Create... headers), else flat:6 with a warning",
+     tool},
+    {"--mode", "sweep|stamp", "exact swept envelopes or the paper's instances of motion (default sweep)",
+     [](Job* o, const char* v) -> int {
+       if (!std::strcmp(v, "sweep")) o->mode = CutMode::kSweep;
+       else if (!std::strcmp(v, "stamp")) o->mode = CutMode::kStamp;
+       else return fail(kExitUsage, "--mode must be sweep or stamp, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--material", "PRESET|FILE",
+     "what the stock is made of (presets: two-layer, marble, wood, bronze, aluminium, wood-on-aluminium, ...): "
+     "each material's feed, spindle and coolant limits are checked on what the cut removes; the report's "
+     "materials",
+     [](Job* o, const char* v) -> int { return o->material = v, kExitOk; }},
+    {"--rapid", "MM/MIN", "the machine's rapid rate, for the time estimate (default 5000)",
+     [](Job* o, const char* v) -> int { return machine_rate("--rapid", "rapid rate in mm/min", v, &o->rapid_nm_per_min); }},
+    {"--accel", "MM/S2",
+     "time estimate with every move speeding up from rest and slowing to rest at this acceleration (default: "
+     "none)",
+     [](Job* o, const char* v) -> int { return machine_rate("--accel", "acceleration in mm/s2", v, &o->accel_nm_per_s2); }},
+    {"--max-input", "MIB",
+     "the most of a program that cannot be read twice (standard input, a pipe, a FIFO, a device), which is "
+     "copied to $TMPDIR first; beyond it the run stops with an error (default 1024; a regular file has no "
+     "limit)",
+     max_input},
+    {"--strict", nullptr,
+     "a program with an input error is not cut at all (by default the cut goes up to the bad block, which the "
+     "frames mark in amber, and the run exits 1)",
+     [](Job* o, const char*) -> int { return o->strict = true, kExitOk; }},
+};
+
+int design(Job* o, const char* v) {
+  const bool file = has_extension(v, ".stl") || has_extension(v, ".pgm");
+  o->builtin = file ? nullptr : builtin_design_find(v);
+  if (!file && !o->builtin)
+    return fail(kExitUsage, "--design needs an .stl mesh, a .pgm height image or a built-in part's name, not '%s'", v);
+  o->design = o->builtin ? std::string("(built-in part ") + v + ")" : v;
+  o->design_pgm = has_extension(v, ".pgm");
+  return kExitOk;
+}
+
+int tolerance_box(Job* o, const char* v) {
+  int64_t b[5];
+  if (!parse_mm_list(v, 5, b) || b[0] > b[2] || b[1] > b[3] || b[4] < 0 || b[4] > 100 * kNmPerMm)
+    return fail(kExitUsage,
+                "--tolerance-box needs X0,Y0,X1,Y1,TOL in mm with X0 <= X1, Y0 <= Y1, 0 <= TOL <= 100, not '%s'", v);
+  o->tolerance_boxes.push_back(ToleranceBox{b[0], b[1], b[2], b[3], b[4]});
+  return kExitOk;
+}
+
+const Option<Job> kDesign[] = {
+    {"--design", "FILE.stl|FILE.pgm|NAME",
+     "the design part (an STL mesh, a PGM height image or a built-in part): the report gains an assessment "
+     "(paper 2.5)",
+     design},
+    {"--design-offset", "X,Y,Z", "mm added to every vertex of an STL design",
+     [](Job* o, const char* v) -> int {
+       if (!parse_mm_list(v, 3, o->design_offset_nm)) return fail(kExitUsage, "--design-offset needs X,Y,Z in mm, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--design-z", "ZLOW,ZHIGH", "a PGM design's black and white, mm (it spans the stock's XY)",
+     [](Job* o, const char* v) -> int {
+       if (!parse_mm_list(v, 2, o->design_z_nm) || o->design_z_nm[0] >= o->design_z_nm[1])
+         return fail(kExitUsage, "--design-z needs ZLOW,ZHIGH in mm with ZLOW < ZHIGH, not '%s'", v);
+       o->have_design_z = true;
+       return kExitOk;
+     }},
+    {"--tolerance", "MM", "|cut - design| within it is not an error (default 0.05)",
+     [](Job* o, const char* v) -> int {
+       if (!parse_scaled(v, kNmPerMm, &o->tolerance_nm) || o->tolerance_nm < 0 || o->tolerance_nm > 100 * kNmPerMm)
+         return fail(kExitUsage, "--tolerance needs mm from 0 to 100, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--tolerance-box", "X0,Y0,X1,Y1,TOL", "another tolerance inside a box (repeatable; the last box holding a column wins)",
+     tolerance_box},
+};
+
+int check(Job* o, const char* v) {
+  for (const char* p = v; *p;) {
+    const char* end = std::strchr(p, ',');
+    const std::string word(p, end ? static_cast<size_t>(end - p) : std::strlen(p));
+    SafetyChoice& c = o->checks;
+    if (word == "rapid") c.rapid = true;
+    else if (word == "spindle") c.spindle = true;
+    else if (word == "below") c.below = true;
+    else if (word == "shank") c.shank = true;
+    else if (word == "holder") c.holder = true;
+    else if (word == "plunge") c.plunge = true;
+    else if (word == "all") c.all();
+    else
+      return fail(kExitUsage, "--check takes rapid, spindle, below, shank, holder, plunge or all (comma-separated), not '%s'",
+                  word.c_str());
+    p = end ? end + 1 : p + word.size();
+  }
+  return kExitOk;
+}
+
+int fixture(Job* o, const char* v) {
+  int64_t b[6];
+  if (!parse_box(v, b)) return fail(kExitUsage, "--fixture needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1, not '%s'", v);
+  if (o->checks.fixtures.size() >= static_cast<size_t>(kFixturesMax))
+    return fail(kExitUsage, "at most %d --fixture boxes", kFixturesMax);
+  o->checks.fixtures.push_back(BoxNm{PointNm{b[0], b[1], b[2]}, PointNm{b[3], b[4], b[5]}});
+  return kExitOk;
+}
+
+int stop_at(Job* o, const char* v) {
+  if (!std::strcmp(v, "any")) o->stop_at_any = true;
+  else if (!std::strcmp(v, "gouge")) o->stop_at_gouge = true;
+  else if (!std::strcmp(v, "collision")) o->stop_at_collision = true;
+  else return fail(kExitUsage, "--stop-at must be gouge, collision or any, not '%s'", v);
+  return kExitOk;
+}
+
+const Option<Job> kChecks[] = {
+    {"--check", "CHECK[,CHECK...]",
+     "safety checks: rapid (rapids that remove material), spindle (cutting with the spindle stopped), below "
+     "(the tool below the stock), shank (the shank above the flutes touching material; len=), holder (the "
+     "holder touching it; holder=), plunge (a nocentre tool plunging), or all; a tool that gives len=, holder= "
+     "or nocentre has its check on without asking",
+     check},
+    {"--table", "Z", "the table's Z (mm): the tool going below it is a finding",
+     [](Job* o, const char* v) -> int {
+       if (!parse_scaled(v, kNmPerMm, &o->checks.table_nm)) return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);
+       o->checks.has_table = true;
+       return kExitOk;
+     }},
+    {"--fixture", "X0,Y0,Z0,X1,Y1,Z1",
+     "a box (mm) the tool and holder must never enter, drawn in steel blue (repeatable, up to 8)", fixture},
+    {"--stop-at", "gouge|collision|any",
+     "stop at the first gouge, safety finding or either (outputs show that state), exit 4", stop_at},
+    {"--fail-on-gouge", nullptr, "run to the end, exit 4 if the cut gouged the design",
+     [](Job* o, const char*) -> int { return o->fail_on_gouge = true, kExitOk; }},
+    {"--fail-on-collision", nullptr,
+     "run to the end, exit 4 if a safety check found something (all checks run unless --check names some)",
+     [](Job* o, const char*) -> int { return o->fail_on_collision = true, kExitOk; }},
+};
+
+}  // namespace
+
+OptionList<JobOptions> run_job_options() { return option_list(kJob); }
+OptionList<JobOptions> run_design_options() { return option_list(kDesign); }
+OptionList<JobOptions> run_check_options() { return option_list(kChecks); }
+
+}  // namespace cli
+}  // namespace dexmill

@@ -1,0 +1,302 @@
+// The set-up of `dexmill run`; see run_setup.h.
+#include "tools/run/run_setup.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "core/tool/spec.h"
+#include "platform/os/clock.h"
+#include "platform/live/frame_files.h"
+#include "platform/os/memory.h"
+#include "platform/os/output_file.h"
+#include "platform/os/process.h"
+#include "platform/live/window.h"
+#include "tools/cli/cli.h"
+#include "tools/run/demo_program.h"
+#include "tools/run/guard_inputs.h"
+#include "tools/run/run_colours.h"
+#include "tools/run/run_demo.h"
+#include "tools/run/run_safety.h"
+#include "tools/run/run_scan.h"
+#include "tools/run/run_stock.h"
+#include "tools/run/run_tool_table.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// Every file the run reads, writes or removes, through the input guard
+// (platform/input/file_guard.h) before any is touched: the demo's program (an
+// output it then reads), the inputs, the outputs, the summary on standard
+// output, the frames and the earlier frames their folder holds.
+int guard_files(const RunOptions& o, RunSetup* run) {
+  FileGuard& g = *run->guard;
+  if (!o.job.made_program.empty())
+    if (const int code = guard_status(g, g.check_output("the demo's program", run->read_path, FileGuard::kProgram)))
+      return code;
+  if (const int code = guard_job_inputs(o.job, run->read_path, &g)) return code;
+  if (const int code = check_outputs(o.out, &g, &run->formats)) return code;
+  if (run_prints_summary(o))
+    if (const int code = guard_status(g, g.check_output("the summary", "-"))) return code;
+  const std::string& dir = o.out.frames_dir;
+  if (dir.empty()) return kExitOk;
+  std::string err;
+  if (!make_dirs(dir, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (access(dir.c_str(), W_OK) != 0)
+    return fail(kExitIo, "cannot write frames into '%s': %s", dir.c_str(), std::strerror(errno));
+  if (const int code = guard_status(g, g.check_frames("--frames", dir))) return code;
+  if (!find_old_frames(dir, &run->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  for (const std::string& old : run->old_frames)
+    if (const int code = guard_status(g, g.check_removal("--frames", dir, old))) return code;
+  return kExitOk;
+}
+
+// No FILE, and standard input (no terminal: choose_program read it) holds
+// nothing: an empty program was surely not meant (a script, a CI job).
+int no_program(const char* why) {
+  return fail(kExitUsage, "no program: no FILE was given and standard input (not a terminal) %s; give a FILE, - to "
+              "read standard input, or --demo %s for the built-in demo", why, kBuiltinDemoName);
+}
+
+// The demo's defaults, every file checked, the demo's program written, the
+// program opened: before anything long happens.
+int prepare(RunOptions* o, RunSetup* run) {
+  std::string err;
+  // A build without GLFW can never open the window: said before anything
+  // is read, made or written (a display that is missing shows when the
+  // window opens, still before any file is touched: remove_earlier_frames).
+  if (o->view.window && !Window::available()) return fail(kExitUsage, "--window: %s", Window().error());
+  run->demo = o->job.file.empty();
+  run->read_path = run->shown_name = o->job.file;
+  if (run->demo) {
+    if (const int code = demo_defaults(o)) return code;
+    run->read_path = run->shown_name = kDemoProgramPath;
+  }
+  if (const int code = guard_files(*o, run)) return code;
+  const std::string& made = o->job.made_program;
+  char e[1300];
+  if (!made.empty() && !write_output(run->read_path.c_str(), made.data(), made.size(), e, sizeof e))
+    return fail(kExitIo, "%s", e);
+  if (!run->demo) {
+    if (o->job.file == "-") run->shown_name = "<stdin>";
+    if (!o->job.shown_name.empty()) run->shown_name = o->job.shown_name;
+    run->input.set_copy_limit(o->job.max_input_bytes);
+    if (o->job.stdin_implied && standard_input_closed()) return no_program("is closed");
+    if (!run->input.open(o->job.file, &err)) return fail(run->input.too_large() ? kExitInput : kExitIo, "%s", err.c_str());
+    if (o->job.stdin_implied && run->input.bytes() == 0) return no_program("is empty");
+    run->read_path = run->input.read_path();
+  }
+  return kExitOk;
+}
+
+// The tool table (or the demo's) and the library T/M6 pick from.
+int load_tools(const RunOptions& o, RunSetup* run) {
+  run->have_table = !o.job.read.tools_file.empty() || run->demo;
+  if (!o.job.read.tools_file.empty()) {
+    bool inch = false;
+    if (const int code = load_read_tool_table(o.job.read, run->read_path, &run->table, &inch)) return code;
+    run->rep.tool_table_units = inch ? "inch" : "mm";
+  } else if (run->demo) {
+    const char* t = demo_tool_table();
+    if (run->table.parse("demo tool table", t, std::strlen(t), false) != ToolTableFile::Load::kOk)
+      return fail(kExitInput, "%s", run->table.message().c_str());
+  }
+  for (const std::string& w : run->table.warnings()) std::fprintf(stderr, "%s\n", w.c_str());
+  // --tool, then the table, then the program's comments (read by the
+  // first pass), then the default (core/sim/tool_choice.h).
+  run->choice.reset(new ToolChoice(o.job.tool, o.job.tool_given, run->have_table ? &run->table : nullptr,
+                                   run->have_table ? &run->table : nullptr));
+  run->lib = run->choice.get();
+  SimJob& j = run->job;
+  j.mode = o.job.mode;
+  j.tool = o.job.tool;
+  j.library = run->lib;
+  j.offsets = run->choice.get();
+  j.inch = o.job.read.inch;
+  j.units_given = o.job.read.units_given;
+  j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
+  j.max_blocks = o.job.read.max_blocks;
+  j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  j.time.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  return kExitOk;
+}
+
+// The stock (an STL blank, the option's box, the demo's, or the program's
+// extents) and the grid that holds it.
+int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
+  RunReport& rep = run->rep;
+  StockBox stock;
+  if (!o.job.stock_stl.empty()) {
+    if (const int code = read_stock_stl(o.job.stock_stl, &run->blank, &stock)) return code;
+    rep.stock_source = "stl";
+  } else if (o.job.have_stock) {
+    stock = StockBox{PointNm{o.job.stock_nm[0], o.job.stock_nm[1], o.job.stock_nm[2]}, PointNm{o.job.stock_nm[3], o.job.stock_nm[4], o.job.stock_nm[5]}};
+    rep.stock_source = "option";
+  } else if (run->demo) {
+    stock = demo_stock_box();
+    rep.stock_source = "demo";
+  } else {
+    stock = default_stock(scan.summary, scan.max_radius_nm);
+    rep.stock_source = "program";
+  }
+  int64_t pitch_nm = o.job.pitch_nm;
+  if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
+  std::string err;
+  if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, &run->plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  // A tool narrower than the pitch may fall between the dexel axes and cut
+  // nothing: say so rather than show an untouched block.
+  for (int k = 0; k < scan.ntools; ++k)
+    if (scan.tools[k].diameter_nm < run->plan.geo.pitch_nm) {
+      char spec[kToolSpecTextMax];
+      tool_spec_format(scan.tools[k], spec, sizeof spec);
+      std::fprintf(stderr, "dexmill: warning: the tool %s is narrower than the grid's pitch (%s mm) and may cut nothing; "
+                   "give a finer --pitch\n", spec, nm_to_mm_text(run->plan.geo.pitch_nm, 4).c_str());
+      break;
+    }
+  const GridPlan& plan = run->plan;
+  rep.have_stock = true;
+  rep.stock_lo = plan.stock.lo;
+  rep.stock_hi = plan.stock.hi;
+  rep.nx = plan.geo.nx;
+  rep.ny = plan.geo.ny;
+  rep.pitch_nm = plan.geo.pitch_nm;
+  rep.lsb_nm = plan.geo.lsb_nm;
+  return kExitOk;
+}
+
+// The engine's message for a job it cannot set up.
+int setup_failed(const SimSetup& why, const RunOptions& o, const RunSetup& run) {
+  char spec[kToolSpecTextMax];
+  tool_spec_format(why.tool < 0 ? run.job.tool : run.job.tools[why.tool], spec, sizeof spec);
+  switch (why.error) {
+    case SimError::kToolTooWideStamp:
+      return fail(kExitUsage, "the tool %s spans more than %d dexels at this pitch; use a coarser --pitch or --mode sweep",
+                  spec, 2 * kCutterMaxReach + 1);
+    case SimError::kToolTooLargeSweep:
+      return fail(kExitUsage, "the tool %s is too large for --mode sweep (radius above 2^28 nm = 268.435 mm, a "
+                  "diameter of 536.87 mm; --mode stamp takes up to 1000 mm)", spec);
+    case SimError::kToolInvalid:
+    case SimError::kToolCannotCut: return fail(kExitUsage, "the tool %s cannot cut this grid", o.job.tool_text.c_str());
+    case SimError::kFixturesOutside:
+      return fail(kExitUsage, "--fixture: the fixtures hold no dexel column of the stock's lattice, or span more than "
+                  "65535 of them");
+    case SimError::kFixturesTooLarge:
+      return fail(kExitUsage, "--fixture: the fixtures span more than 64 M dexel columns at this pitch; use a coarser --pitch");
+    default: return fail(kExitUsage, "the stock and grid give a geometry the dexel grid cannot hold");
+  }
+}
+
+// The job's observers from the options, the engine made over its memory,
+// the stock carved, the design and the views set up.
+int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
+  SimJob& j = run->job;
+  j.plan = run->plan;
+  run->tools.assign(scan.tools + 1, scan.tools + scan.ntools);
+  j.tools = run->tools.data();
+  j.ntools = static_cast<int>(run->tools.size());
+  if (!o.job.design.empty()) {  // before the cut: a bad file costs no simulation
+    if (const int code = load_design(o.job, run->plan, run->shown_name, &run->design)) return code;
+    j.design = &run->design.grid;
+    j.assess = run->design.opt;
+  }
+  j.checks = safety_checks(o.job.checks);
+  sim_checks_for_tools(&j.checks, scan.tools, scan.ntools);
+  if (!o.job.material.empty()) {
+    const BoxNm box{run->plan.stock.lo, run->plan.stock.hi};
+    if (const int code = material_start(&run->material, o.job.material, box)) return code;
+    j.material = run->material.comp.get();
+    if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+    j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
+  }
+  j.provenance = o.view.color == ViewOptions::Color::kTool;
+  j.provenance_first_tool = kInitialToolNumber;
+  j.stop_at_gouge = o.job.stop_at_gouge;
+  j.stop_at_collision = o.job.stop_at_collision;
+  SimSetup why;
+  const size_t bytes = sim_required_bytes(j, &why);
+  if (!bytes) return setup_failed(why, o, *run);
+  if (!run->memory.allocate(bytes))
+    return fail(kExitIo, "cannot allocate %s for the %dx%d grid (and the engine that cuts it)", size_text(bytes).c_str(),
+                static_cast<int>(run->plan.geo.nx), static_cast<int>(run->plan.geo.ny));
+  run->sim = sim_create(j, run->memory.data(), bytes, &why);
+  if (!run->sim) return setup_failed(why, o, *run);
+  if (!run->blank.empty()) {
+    const int code = carve_stock(&run->sim->grid(), run->plan, run->blank);
+    if (code != kExitOk) return code;
+  }
+  run->sim->start();
+  return kExitOk;
+}
+
+// The first pass and its verdict on the program: the report's program
+// part; a program with an input error is cut up to its first bad block (as
+// LinuxCNC's preview draws the path up to it), unless --strict.
+int first_pass(const RunOptions& o, RunSetup* run) {
+  RunReport& rep = run->rep;
+  rep.file = run->shown_name;
+  rep.units = o.job.read.inch ? "inch" : "mm";
+  rep.mode = o.job.mode == CutMode::kSweep ? "sweep" : "stamp";
+  rep.default_tool = o.job.tool_text;
+  rep.tool_table = run->demo && o.job.read.tools_file.empty() ? "(built-in demo table)" : o.job.read.tools_file;
+  rep.height_bits = DEXMILL_HEIGHT_BITS;
+  rep.rapid_nm_per_min = o.job.rapid_nm_per_min;
+  rep.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  RunMessages msgs(run->shown_name, run->print);
+  GcodeNotes notes(run->shown_name.c_str(), run->print);
+  SimJob scan_job = run->job;
+  scan_job.notes = &notes;
+  run->scan.reset(new ProgramScan(scan_job));
+  run->scan->set_tool_choice(run->choice.get());
+  run->want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
+  const double t0 = clock_now_s();
+  const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table, run->guard, run->choice.get()};
+  if (const int code = scan_pass(in, run->scan.get(), notes, run->want_path ? &run->path : nullptr, &msgs, &rep))
+    return code;
+  rep.timing.emplace_back("scan", clock_now_s() - t0);
+  run->job.tool = run->scan->tools[0];  // a comment's, when it gives the tool before any M6
+  run->scan_errors = msgs.errors();
+  run->scan_warnings = msgs.warnings();
+  if (!msgs.errors()) return kExitOk;
+  if (o.job.strict) {
+    run->refused = true;
+    return kExitInput;
+  }
+  run->job.stop_line = rep.errors.front().line;
+  rep.stopped_reason = "error";
+  rep.stopped_line = run->job.stop_line;
+  return kExitOk;
+}
+
+}  // namespace
+
+int remove_earlier_frames(const RunOptions& o, RunSetup* s) {
+  std::string err;
+  if (!remove_old_frames(s->old_frames, &err)) return fail(kExitIo, "%s", err.c_str());
+  if (!s->old_frames.empty() && !o.view.quiet && !s->demo)
+    std::fprintf(stderr, "dexmill: removed %zu frames of an earlier run from '%s'\n", s->old_frames.size(),
+                 o.out.frames_dir.c_str());
+  s->old_frames.clear();
+  return kExitOk;
+}
+
+int run_setup(RunOptions* o, RunSetup* s) {
+  if (const int code = prepare(o, s)) return code;
+  if (const int code = load_tools(*o, s)) return code;
+  if (const int code = first_pass(*o, s)) return code;
+  ToolSource initial = ToolSource::kDefault;
+  (void)s->choice->initial(&initial);
+  if (initial == ToolSource::kComment) {  // the views and messages show the tool the cut starts with
+    char spec[kToolSpecTextMax];
+    tool_spec_format(s->job.tool, spec, sizeof spec);
+    o->job.tool = s->job.tool;
+    o->job.tool_text = spec;
+  }
+  if (const int code = plan_stock(*o, *s->scan, s)) return code;
+  return start_engine(*o, *s->scan, s);
+}
+
+}  // namespace cli
+}  // namespace dexmill

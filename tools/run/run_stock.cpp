@@ -1,0 +1,83 @@
+// Default stock and grid planning; see run_stock.h.
+#include "tools/run/run_stock.h"
+
+#include <cstdio>
+
+#include "core/config.h"
+#include "platform/format/stl_read.h"
+#include "tools/cli/cli.h"
+
+namespace dexmill {
+namespace cli {
+
+bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
+               std::string* err) {
+  int64_t nx = 0, ny = 0;
+  switch (dexmill::plan_grid(stock, grid_nx, grid_ny, pitch_nm, out, &nx, &ny)) {
+    case PlanError::kOk: return true;
+    case PlanError::kGridTooSmall: *err = "--grid needs at least 4x4 dexels"; return false;
+    case PlanError::kTooManyDexels: {
+      char b[200];
+      std::snprintf(b, sizeof b, "the grid would be %lldx%lld dexels, more than the %lld M dexels a run may use; "
+                    "give a coarser --pitch or --grid", static_cast<long long>(nx), static_cast<long long>(ny),
+                    static_cast<long long>(kMaxGridCells >> 20));
+      *err = b;
+      return false;
+    }
+    case PlanError::kBadGeometry: break;
+    case PlanError::kBadStock: {
+      char b[200];
+      std::snprintf(b, sizeof b, "the stock must lie within 1 km of the origin, with X0<X1, Y0<Y1, Z0<Z1, and be at "
+                    "most %lld m tall (its heights' 2^%d - 1 steps of at most 1 m)",
+                    static_cast<long long>(height_max<height_t>()), DEXMILL_HEIGHT_BITS);
+      *err = b;
+      return false;
+    }
+  }
+  *err = "the stock and grid give a geometry the dexel grid cannot hold (pitch 1 nm to 1 m, at most 65535 dexels a "
+         "side, within 1 km of the origin)";
+  return false;
+}
+
+int read_stock_stl(const std::string& path, std::vector<TriangleNm>* tris, StockBox* box) {
+  std::string err;
+  StlReadInfo info;
+  const StlRead r = stl_read(path, PointNm{0, 0, 0},
+                             [tris](const PointNm* v, std::string*) {
+                               tris->push_back(TriangleNm{{v[0], v[1], v[2]}});
+                               return true;
+                             },
+                             &info, &err);
+  if (r != StlRead::kOk) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return r == StlRead::kIoError ? kExitIo : kExitInput;
+  }
+  BoxAccum b;
+  for (const TriangleNm& t : *tris)
+    for (const PointNm& p : t.v) b.add(p);
+  if (b.lo.x_nm >= b.hi.x_nm || b.lo.y_nm >= b.hi.y_nm || b.lo.z_nm >= b.hi.z_nm) {
+    std::fprintf(stderr, "%s: error: the blank is flat (its box has no width, depth or height)\n", path.c_str());
+    return kExitInput;
+  }
+  *box = StockBox{b.lo, b.hi};
+  return kExitOk;
+}
+
+template <class H>
+int carve_stock(DexelGrid<H>* g, const GridPlan& plan, const std::vector<TriangleNm>& tris) {
+  const size_t cells = static_cast<size_t>(g->nx) * static_cast<size_t>(g->ny);
+  std::vector<int32_t> tops(cells);
+  DesignGrid d;
+  if (!ok(design_init(&d, plan.geo, tops.data(), cells)))
+    return fail(kExitUsage, "a blank wider than %.2f m cannot be read from STL", static_cast<double>(kDesignRangeNm) * 1e-9);
+  for (const TriangleNm& t : tris) (void)design_add_triangle(&d, t);  // within the box: in range
+  dexmill::carve_stock(g, plan, d);
+  return kExitOk;
+}
+
+template int carve_stock<uint8_t>(DexelGrid<uint8_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+template int carve_stock<uint16_t>(DexelGrid<uint16_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+template int carve_stock<uint32_t>(DexelGrid<uint32_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+
+}  // namespace cli
+}  // namespace dexmill
