@@ -1,15 +1,24 @@
 #!/usr/bin/env bash
 # check_layers.sh - the pipeline runs one way (README "Where things live",
-# core/README.md, habit 1): each folder of core/ and display/ includes only the
-# stages it is allowed to below. `make test` runs it; a new stage adds a row.
+# core/README.md, habit 1): each stage folder of core/, display/, platform/ and
+# tools/ includes only the stages it is allowed to. `make test` runs it,
+# after its self-test; a new stage adds a row.
 #
-# Usage: tests/check_layers.sh   (from the repository root)
+# Usage: tests/check_layers.sh              (from anywhere in the repository)
+#        tests/check_layers.sh --self-test  plants, in a scratch tree, one
+#          include each row forbids and one it allows, and a folder with no
+#          row; fails unless exactly the forbidden ones and the folder are caught
 # Exit: 0 every include is allowed, 1 otherwise (each offence listed).
 set -u
+SELF=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")
 cd "$(dirname "$0")/.."
 
 # folder -> the folders its files may include (itself always; the shared
-# basics of core/ itself: config.h, status.h, point.h, integer_only.h)
+# basics of core/ itself, config.h, status.h, point.h, integer_only.h, for
+# everyone). An include without a folder is the file beside it, or one of
+# the C headers an embedder puts on its path (display/api/dexmill.h,
+# platform/api/dexmill_io.h), or else a header generated into the build
+# (tools/panel/panel_w3_main.cpp's w3_path.h), which has no stage.
 allowed() {
   case $1 in
     core) echo "core/math";;
@@ -50,23 +59,72 @@ allowed() {
   esac
 }
 
-bad=0; files=0
-while IFS= read -r f; do
-  files=$((files + 1))
-  dir=$(dirname "$f")
-  ok=$(allowed "$dir")
-  if [ "$ok" = "?" ]; then
-    echo "check_layers: $dir/ is not in the table of tests/check_layers.sh (add its row)"; bad=1; continue
+
+# The folders of the table, in its order.
+rows() { sed -n 's/^    \([a-z][a-z/]*\)) echo .*/\1/p' "$SELF"; }
+
+# check_tree ROOT: every source under ROOT's core/, display/, platform/ and
+# tools/ against the table; prints each offence, fails if there was one.
+check_tree() (
+  cd "$1" || exit 1
+  bad=0; files=0
+  while IFS= read -r f; do
+    files=$((files + 1))
+    dir=$(dirname "$f")
+    ok=$(allowed "$dir")
+    if [ "$ok" = "?" ]; then
+      echo "check_layers: $dir/ is not in the table of tests/check_layers.sh (add its row)"; bad=1; continue
+    fi
+    while IFS=: read -r line inc; do
+      case $inc in
+        */*) to=$(dirname "$inc");;
+        *) if [ -e "$dir/$inc" ]; then to=$dir
+           elif [ -e "display/api/$inc" ]; then to=display/api
+           elif [ -e "platform/api/$inc" ]; then to=platform/api
+           else continue; fi;;
+      esac
+      [ "$to" = "$dir" ] && continue
+      [ "$to" = core ] && continue
+      case " $ok " in *" $to "*) continue;; esac
+      echo "$f:$line: includes $inc, but $dir/ may include only: ${ok:-(nothing)}"
+      bad=1
+    done < <(grep -n '^#include "' "$f" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
+  done < <(find core display platform tools \( -name '*.h' -o -name '*.cpp' -o -name '*.c' \) 2>/dev/null | LC_ALL=C sort)
+  [ $files -gt 0 ] || { echo "check_layers: no sources found" >&2; exit 1; }
+  [ $bad = 0 ] && echo "ok: $files files of core/, display/, platform/ and tools/ include only the stages they may"
+  exit $bad
+)
+
+self_test() {
+  local t d ok b good want=() n=0 out st w
+  t=$(mktemp -d); trap 'rm -rf "$t"' RETURN
+  for d in $(rows); do
+    mkdir -p "$t/$d"; ok=$(allowed "$d")
+    good=${ok%% *}; [ -n "$good" ] || good=core
+    printf '#include "%s/x.h"\n' "$good" > "$t/$d/good.h"
+    b=
+    for b in $(rows); do
+      [ "$b" = "$d" ] || [ "$b" = core ] && continue
+      case " $ok " in *" $b "*) continue;; esac
+      break
+    done
+    [ -n "$b" ] && [ "$b" != "$d" ] || { echo "check_layers self-test: $d/ forbids nothing to plant" >&2; return 1; }
+    printf '#include "%s/x.h"\n' "$b" > "$t/$d/bad.h"
+    want+=("$d/bad.h:1: includes $b/x.h"); n=$((n + 1))
+  done
+  mkdir -p "$t/platform/nowhere"; : > "$t/platform/nowhere/a.h"
+  want+=("check_layers: platform/nowhere/ is not in the table")
+  out=$(check_tree "$t"); st=$?
+  [ $st = 1 ] || { echo "check_layers self-test: the planted tree passed (status $st)" >&2; return 1; }
+  for w in "${want[@]}"; do
+    grep -qF -- "$w" <<< "$out" || { echo "check_layers self-test: not caught: $w" >&2; return 1; }
+  done
+  if grep -q 'good\.h' <<< "$out"; then
+    echo "check_layers self-test: an allowed include was refused:" >&2; grep 'good\.h' <<< "$out" >&2; return 1
   fi
-  while IFS=: read -r line inc; do
-    to=$(dirname "$inc")
-    [ "$to" = "$dir" ] && continue
-    [ "$to" = core ] && [ "${dir%%/*}" = core -o "${dir%%/*}" = display ] && continue
-    case " $ok " in *" $to "*) continue;; esac
-    echo "$f:$line: includes $inc, but $dir/ may include only: ${ok:-(nothing)}"
-    bad=1
-  done < <(grep -n '^#include "' "$f" | sed 's/^\([0-9]*\):#include "\([^"]*\)".*/\1:\2/')
-done < <(find core display -name '*.h' -o -name '*.cpp' | LC_ALL=C sort)
-[ $files -gt 0 ] || { echo "check_layers: no sources found" >&2; exit 1; }
-[ $bad = 0 ] && echo "ok: $files files of core/ and display/ include only the stages below them"
-exit $bad
+  [ "$(grep -c ': includes ' <<< "$out")" = $n ] || { echo "check_layers self-test: other offences than the planted:" >&2; echo "$out" >&2; return 1; }
+  echo "ok: check_layers catches a forbidden include in each of its $n rows, and a folder with no row"
+}
+
+if [ "${1:-}" = --self-test ]; then self_test; exit; fi
+check_tree .
