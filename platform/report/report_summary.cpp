@@ -3,6 +3,8 @@
 #include <cinttypes>
 #include <cstdio>
 
+#include "platform/report/report_json.h"  // the numbers as text
+
 namespace dexmill {
 
 namespace {

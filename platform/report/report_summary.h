@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 
 namespace dexmill {
 

@@ -17,7 +17,7 @@
 #include "platform/input/file_guard.h"
 #include "platform/os/output_file.h"
 #include "platform/os/process.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "tools/cli/cli.h"
 #include "tools/run/guard_inputs.h"
 #include "tools/run/run_assess.h"

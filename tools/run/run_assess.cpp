@@ -7,6 +7,7 @@
 #include "core/assess/assess.h"
 #include "platform/format/pgm.h"
 #include "platform/format/stl_read.h"
+#include "platform/report/report_json.h"
 #include "tools/cli/cli.h"
 #include "tools/run/demo_program.h"
 

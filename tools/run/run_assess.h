@@ -13,7 +13,7 @@
 #include "core/assess/gouge_watch.h"
 #include "core/design/design.h"
 #include "display/colour/error_colours.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "tools/run/run_render.h"
 #include "tools/run/run_options.h"
 #include "tools/run/run_stock.h"

@@ -7,6 +7,7 @@
 #include "core/material/material_preset.h"
 #include "platform/format/material_file.h"
 #include "platform/input/warning_fold.h"
+#include "platform/report/report_json.h"
 #include "tools/cli/cli.h"
 
 namespace dexmill {

@@ -13,7 +13,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/material/material.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 
 namespace dexmill {
 namespace cli {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "platform/report/report_json.h"
+
 namespace dexmill {
 namespace cli {
 

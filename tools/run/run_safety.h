@@ -12,7 +12,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/sim/job.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "tools/run/run_options.h"
 
 namespace dexmill {

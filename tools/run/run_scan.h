@@ -14,7 +14,7 @@
 #include "display/overlay/backplot.h"
 #include "platform/input/gcode_file.h"
 #include "platform/input/warning_fold.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "platform/format/tool_table.h"
 #include "tools/run/read_options.h"
 

@@ -14,6 +14,7 @@
 #include "platform/os/output_file.h"
 #include "platform/os/process.h"
 #include "platform/live/window.h"
+#include "platform/report/report_json.h"
 #include "tools/cli/cli.h"
 #include "tools/run/demo_program.h"
 #include "tools/run/guard_inputs.h"

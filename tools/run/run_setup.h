@@ -22,7 +22,7 @@
 #include "platform/input/file_guard.h"
 #include "platform/os/memory.h"
 #include "platform/input/program_input.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "platform/format/tool_table.h"
 #include "tools/run/run_assess.h"
 #include "tools/run/run_material.h"

@@ -10,7 +10,7 @@
 
 #include "core/sim/scan.h"
 #include "core/sim/tool_choice.h"
-#include "platform/report/report_json.h"
+#include "platform/report/run_report.h"
 #include "tools/run/run_scan.h"
 
 namespace dexmill {

@@ -1,0 +1,138 @@
+// The result of one run (`dexmill run`, the jobs of `check --simulate`,
+// `optimize` and `zig`): what the run glue fills (tools/run/) and the
+// writers print, the JSON report (platform/report/report_json.h, whose
+// comment gives each key) and the summary on standard output
+// (platform/report/report_summary.h). Plain values; lengths in nm, volumes in
+// LSB x dexels, times in microseconds, as the engine counts them: the
+// writers turn them into text.
+#ifndef DEXMILL_PLATFORM_REPORT_RUN_REPORT_H
+#define DEXMILL_PLATFORM_REPORT_RUN_REPORT_H
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/assess/assess.h"
+#include "core/safety/safety.h"
+#include "core/point.h"
+
+namespace dexmill {
+
+struct ReportDiag {
+  uint32_t line = 0, column = 0;
+  std::string message;
+  // A warning that came more than once (platform/input/warning_fold.h): how
+  // often, and the line it last came on; line and column are the first's.
+  uint64_t count = 1;
+  uint32_t last_line = 0;
+};
+
+struct ReportToolUse {
+  int32_t number;      // -1: the tool in the spindle before any M6
+  std::string spec;
+  std::string source;  // "option", "table", "comment", "default" (empty: not known)
+  uint32_t line = 0;   // source "comment": the comment's line, and its form (core/tool/tool_comment.h)
+  std::string form;
+};
+
+// An output of the run beside the report: a file and its bytes, or the
+// frame folder and its frames (bytes -1).
+struct ReportOutput {
+  std::string option;  // "--image", "--frames", ...
+  std::string path;    // as given
+  int64_t bytes = -1;
+  uint32_t files = 0;
+};
+
+// A gouge charged to the line that made it.
+struct ReportGouge {
+  uint32_t line = 0;
+  PointNm at{0, 0, 0};     // the deepest column's x, y and its design z
+  int64_t depth_nm = 0;
+  PointNm tool{0, 0, 0};   // the tool tip at the end of that line's move
+  uint64_t columns = 0;    // columns it gouged first
+};
+
+// The assessment against a design part (report key `assessment`).
+struct ReportAssessment {
+  std::string file, kind;      // the design file, "stl" or "pgm"
+  uint64_t triangles = 0;      // STL: facets read
+  int64_t tolerance_nm = 0;
+  uint64_t tolerance_boxes = 0;
+  AssessResult result;
+  PointNm max_gouge_at{0, 0, 0}, max_leftover_at{0, 0, 0};  // machine x, y of those columns
+  std::vector<ReportGouge> gouges;  // the first kept (core/assess/gouge_watch.h)
+  uint64_t gouges_total = 0;        // all of them
+};
+
+// A material of the stock (--material): what the cut took of it.
+struct ReportMaterial {
+  std::string name;
+  std::string removed_mm3;  // exact text
+  double mass_g = 0;
+  double cut_time_s = 0;
+  uint64_t violations = 0;
+};
+struct ReportViolation {
+  std::string rule;  // "feed", "spindle", "coolant"
+  uint32_t line = 0;
+  std::string material, message;
+};
+
+struct RunReport {
+  std::string file;
+  uint32_t lines = 0;
+  const char* units = "mm";  // "mm", "inch" or "mixed"
+  uint64_t rapid = 0, feed = 0, arc = 0, dwell = 0, tool_change = 0;
+  std::vector<ReportDiag> errors, warnings;
+  uint64_t warnings_total = 0;
+  struct Message {
+    uint32_t line;
+    std::string kind, text;
+  };
+  std::vector<Message> messages;
+  bool have_stock = false;
+  PointNm stock_lo{0, 0, 0}, stock_hi{0, 0, 0};
+  std::string stock_source;
+  int32_t nx = 0, ny = 0;
+  int64_t pitch_nm = 0, lsb_nm = 0;
+  int height_bits = 16;
+  std::string mode;
+  std::string default_tool, tool_table;
+  std::string tool_table_units;  // "mm" or "inch" (tools/run/run_tool_table.h); empty: no table file
+  std::vector<ReportToolUse> tools_used;
+  uint64_t removed_lsb_dexels = 0;  // sum over dexels of height removed, LSB
+  int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
+  int64_t rapid_nm_per_min = 0;
+  int64_t accel_nm_per_s2 = 0;  // --accel; 0: none
+  bool have_bounds = false;
+  PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
+  uint64_t instances = 0, dexel_updates = 0;
+  std::string stopped_reason;  // empty: ran to the end
+  uint32_t stopped_line = 0;
+  bool have_assessment = false;
+  ReportAssessment assessment;
+  // The safety checks (core/safety/safety.h) when any ran: their events as
+  // kept, the count of all, and what rapids removed.
+  bool have_collisions = false;
+  std::vector<SafetyEvent> collisions;
+  uint64_t collisions_total = 0;
+  uint64_t rapid_removed_lsb = 0;
+  // The stock's materials and the process rules (--material), when given.
+  bool have_materials = false;
+  std::string material_source;
+  std::vector<ReportMaterial> materials;
+  std::vector<ReportViolation> material_violations;  // as kept
+  uint64_t material_violations_total = 0;
+  std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
+  // The run that wrote the report and what else it wrote (platform/os/output_set.h:
+  // the report is published last).
+  std::string run_started;       // UTC, ISO 8601 to the millisecond
+  long run_pid = 0;
+  std::vector<ReportOutput> outputs;
+};
+
+}  // namespace dexmill
+
+#endif
