@@ -6,199 +6,32 @@
 // interp_convert: interp.cpp (order of execution, unused words, commit),
 // interp_modes.cpp (modal groups, G4, G10/G28/G30/G92), interp_moves.cpp
 // (G0/G1, G2/G3, G38.x), interp_cycles.cpp (canned cycles).
+//
+// Its parts by concept: block_limits.h (the numbers' bounds), block_axes.h
+// (axes, planes, rotated frames), warn_once.h, follow_on.h (facets of the
+// state, for follow-on errors), block_plan.h (Plan, CompOps), cycle_words.h.
 #ifndef DEXMILL_CORE_INTERP_BLOCK_RUNNER_H
 #define DEXMILL_CORE_INTERP_BLOCK_RUNNER_H
 
 #include <stdint.h>
 
 #include "core/canon/canon.h"
+#include "core/interp/block_axes.h"
+#include "core/interp/block_limits.h"
+#include "core/interp/block_plan.h"
 #include "core/interp/cutter_comp.h"
+#include "core/interp/cycle_words.h"
 #include "core/interp/cycles.h"
+#include "core/interp/follow_on.h"
 #include "core/interp/interp.h"
 #include "core/interp/polar.h"
 #include "core/interp/spline.h"
+#include "core/interp/warn_once.h"
 #include "core/point.h"
 
 namespace dexmill {
-namespace interp_detail {
-
-
-// F and S: LinuxCNC takes any value (the machine clamps to its maximum
-// velocity); these bounds only keep the arithmetic in range. Above
-// kFastFeedNmPerMin / kFastSpindleRpm a program gets one warning each.
-constexpr int64_t kMaxFeedUnitsPerMin = 1000000000;
-constexpr int64_t kMaxSpindleRpm = 1000000000;
-constexpr int64_t kFastFeedNmPerMin = 1000000LL * 1000000;  // 1e6 mm/min
-constexpr int64_t kFastSpindleRpm = 1000000;
-constexpr int64_t kMaxDwellS = 1000000;
-constexpr int64_t kMaxRepeats = 1000000;
-constexpr int64_t kMaxTurns = 10000;
-constexpr int64_t kMaxToolNumber = 1000000000;
-constexpr int64_t kMaxCycleMoves = 10000000;
-
-inline int64_t& axis_ref(PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
-inline int64_t axis_val(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
-inline bool is_cycle(int m) { return m == 730 || m == 740 || (m >= 810 && m <= 890 && m % 10 == 0); }
-inline bool is_probe(int m) { return m >= 382 && m <= 385; }
-// |v|, saturating: INT64_MIN (a saturated huge number) stays beyond every limit.
-inline int64_t abs64(int64_t v) { return v == INT64_MIN ? INT64_MAX : (v < 0 ? -v : v); }
-constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
-// Where the tool is (InterpState::stray).
-inline PointNm tool_at(const InterpState& s) {
-  return PointNm{s.pos.x_nm + s.stray.x_nm, s.pos.y_nm + s.stray.y_nm, s.pos.z_nm + s.stray.z_nm};
-}
-// Rotated coordinate systems (rotation.h): whether the system in force of s
-// is turned, and a point of s's (unrotated) frame as a machine point and back.
-inline bool rotated(const InterpState& s) {
-  const int64_t r = s.rotation_deg_e9[s.coord_system];
-  return r != 0 && r % (360LL * 1000000000) != 0;  // the common case without a division
-}
-inline PointNm machine_of(const InterpState& s, const PointNm& p) {
-  if (!rotated(s)) return p;
-  const PointNm& o = s.work_offset[s.coord_system];
-  return rotate_about(xy_rotation(s.rotation_deg_e9[s.coord_system]), p, o.x_nm, o.y_nm);
-}
-inline PointNm frame_of_machine(const InterpState& s, const PointNm& m) {
-  if (!rotated(s)) return m;
-  const PointNm& o = s.work_offset[s.coord_system];
-  return rotate_about(xy_rotation_inverse(xy_rotation(s.rotation_deg_e9[s.coord_system])), m, o.x_nm, o.y_nm);
-}
-// Whether a turned frame (in a or b) moves between a and b: another system,
-// turn or origin. Then the tool's point is worked out anew (Interp::reframe_tool).
-inline bool frame_moved(const InterpState& a, const InterpState& b) {
-  if (!rotated(a) && !rotated(b)) return false;  // the machine frame both ways
-  const PointNm& oa = a.work_offset[a.coord_system];
-  const PointNm& ob = b.work_offset[b.coord_system];
-  return a.coord_system != b.coord_system || a.rotation_deg_e9[a.coord_system] != b.rotation_deg_e9[b.coord_system] ||
-         oa.x_nm != ob.x_nm || oa.y_nm != ob.y_nm;
-}
-// A feed tied to the spindle (G33/G33.1's K, G95's F): length per revolution
-// times rpm. Lengths <= 1e10 nm and S <= 1e9 rpm: saturated rather than
-// wrapped; the time estimate counts a feed at most at 1e6 mm/min anyway.
-inline int64_t sync_feed(int64_t nm_per_rev, int64_t rpm) {
-  return rpm > 0 && nm_per_rev > INT64_MAX / rpm ? INT64_MAX : nm_per_rev * rpm;
-}
-// Warnings a program gets once (Interp::warned_once_).
-enum WarnOnce : uint16_t {
-  kOnceDefaultFeed = 1 << 0,
-  kOnceFastFeed = 1 << 1,
-  kOnceFastSpindle = 1 << 2,
-  kOnceProbe = 1 << 3,
-  kOnceTapPlane = 1 << 4,
-  kOnceManualRetract = 1 << 5,
-  kOnceDiameter = 1 << 6,
-  kOnceCompNoTable = 1 << 7,
-  kOnceG49H = 1 << 8,
-};
-inline int plane_axis_a(Plane p) { return p == Plane::kXY ? 0 : p == Plane::kZX ? 2 : 1; }
-inline int plane_axis_b(Plane p) { return p == Plane::kXY ? 1 : p == Plane::kZX ? 0 : 2; }
-inline int plane_axis_c(Plane p) { return p == Plane::kXY ? 2 : p == Plane::kZX ? 1 : 0; }
-
-// Facets of the modal state, for telling a root error from its follow-ons
-// (the rule is in interp_follow_on.cpp).
-enum Facet : uint16_t {
-  kFacetX = 1 << 0,
-  kFacetY = 1 << 1,
-  kFacetZ = 1 << 2,
-  kFacetPosition = kFacetX | kFacetY | kFacetZ,
-  kFacetMotion = 1 << 3,       // modal motion, canned cycles' sticky R, Z, Q, P and levels
-  kFacetFeed = 1 << 4,         // F and G93/G94
-  kFacetPlane = 1 << 5,
-  kFacetUnits = 1 << 6,
-  kFacetDistance = 1 << 7,     // G90/G91
-  kFacetArcDistance = 1 << 8,  // G90.1/G91.1
-  kFacetOffsets = 1 << 9,      // work offsets, G92, tool length offset
-  kFacetTool = 1 << 10,
-  kFacetEnd = 1 << 11,         // whether the program ended (M2/M30)
-  kFacetComp = 1 << 12,        // cutter radius compensation (G40, G41, G42)
-  kFacetAll = (1 << 13) - 1,
-};
-// The facets a line would set, read leniently (it may not read at all).
-uint16_t facets_written(const char* text, size_t len);
-// The facets a block sets itself, from `s` (the state before it) on, given
-// the facets now suspect.
-uint16_t facets_set(const GcodeBlock& b, const InterpState& s, uint16_t suspect);
-// Suspect facets once a block that sets `set` has run.
-uint16_t suspect_after(uint16_t suspect, uint16_t set);
-// What the check that raised an error read, and what the error blames.
-struct ErrorFacets {
-  uint16_t read;          // facets it read, after the block's own words applied
-  uint16_t before_block;  // facets it read as they were before the block
-  uint16_t blamed;        // facets the error says are wrong
-};
-ErrorFacets error_facets(GcodeError e, const GcodeBlock& b);
-
-}  // namespace interp_detail
 // Only the interpreter's own files include this header.
 using namespace interp_detail;
-
-// What cutter compensation does in a block (core/interp/interp_comp.cpp):
-// done on a scratch queue while the block is checked, again when it commits.
-// Only the two flags are set in a block that does not compensate.
-struct CompOps {
-  bool off_flush;  // G40 ended compensation: the held moves end where the tool is, and go
-  bool motion;     // the block's move is compensated: the steps below replace it
-  // 1. The held records go (kDequeue), after their moves end at flush_to (kMoveEnd).
-  enum Flush : uint8_t { kKeep, kDequeue, kMoveEnd } flush;
-  Vec2 flush_to;
-  // 2. A move round the corner, made at once.
-  bool corner;
-  CanonKind corner_kind;
-  PointNm corner_end, corner_centre;
-  int32_t corner_turns;
-  // 3. Where the held move starts (LinuxCNC's set_endpoint), if set.
-  bool set_endpoint;
-  Vec2 endpoint;
-  // 4. The compensated move, held.
-  CanonKind kind;
-  PointNm end;
-  CanonArc arc;
-  int64_t dir_a, dir_b, sweep_bam;
-  PointNm prog_start;  // the programmed move starts here (G93 feeds come from it)
-};
-
-// What a checked block will do when committed.
-struct Plan {
-  bool tool_change = false;
-  bool spindle = false;
-  bool coolant = false;
-  bool dwell = false;
-  int64_t dwell_ms = 0;
-  enum Motion : uint8_t { kNone, kStraight, kArc, kCycle, kHome, kSpline, kTap, kNurbs } motion = kNone;
-  CanonKind straight_kind = CanonKind::kTraverse;
-  PointNm target{0, 0, 0};
-  CanonArc arc{Plane::kXY, {0, 0, 0}, 1};
-  bool inverse_time = false;
-  Decimal inverse_f{0, 0};
-  int64_t sync_feed_nm_per_min = 0;  // G33/G33.1: K times S (0: the modal feed)
-  // G5.2: a control point to add (nurbs_add: 1 go on, 2 start anew from the
-  // position); set whole when nurbs_add says so.
-  uint8_t nurbs_add = 0;
-  int32_t nurbs_order;
-  bool nurbs_has_point;
-  int64_t nurbs_first_weight, nurbs_x, nurbs_y, nurbs_weight;
-  bool rest_skipped = false;  // M72 ran the saved modes in place of the rest of the line
-  int16_t context_op = -1;  // M70 M71 M73 (tenths): what commit does to the level's context
-  ModalContext context;     // M70/M73: the state saved (set whole when context_op says so)
-  PointNm home_via{0, 0, 0};
-  CyclePlan cycle{};
-  SplinePlan spline;  // set whole by run_spline before anything reads it
-  int16_t stop = -1;  // M0/M1/M2/M30/M60 in tenths
-  CompOps comp;       // cutter compensation (off_flush and motion false unless it acts)
-  Plan() {
-    comp.off_flush = false;
-    comp.motion = false;
-  }
-};
-
-// A canned cycle's words, from the block or kept from the last one.
-struct CycleWords {
-  int64_t r_raw, z_raw;  // R and the plane axis's word as written, nm
-  int64_t repeats;       // L
-  int64_t q;             // G73/G83 peck, nm
-  int64_t p_ms;          // dwell
-  int64_t ijk[3];        // G87's I, J, K, nm
-};
 
 // Checks one block against a copy of the state; commit() applies it.
 struct BlockRunner {
