@@ -6,8 +6,9 @@
 //   tools/panel/board_host.cpp        hosted Linux (native or qemu-user): stdout
 //   tools/panel/cm/board_semihost.cpp bare-metal Cortex-M on an emulated MPS2
 //                                      board: Arm semihosting, SysTick
-// Everything else in tests/golden/ is integer-only, heap-free and I/O-free,
-// like core/, so the same bytes come out everywhere.
+// Everything else of the golden program (tests/golden/) and of the panel
+// here is integer-only, heap-free and I/O-free, like core/, so the same
+// bytes come out everywhere (w3_path_dump.cpp, a host program, excepted).
 #ifndef DEXMILL_TOOLS_PANEL_BOARD_H
 #define DEXMILL_TOOLS_PANEL_BOARD_H
 
