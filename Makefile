@@ -167,7 +167,7 @@ test-unit: $(TEST_BIN) $(BIN)
 GOLDEN_SRC := $(sort $(wildcard tests/golden/golden*.cpp))
 GOLDEN_BIN := $(BUILD)/golden
 $(BUILD)/obj/tests/golden/golden%.o: BUILD_KIND := int
-$(GOLDEN_BIN): $(call obj,$(GOLDEN_SRC) tools/panel/board_host.cpp) $(INT_OBJ)
+$(GOLDEN_BIN): $(call obj,$(GOLDEN_SRC) tools/panel/text_out.cpp tools/panel/board_host.cpp) $(INT_OBJ)
 	$(call say,LINK,$@)
 	$(Q)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 check-golden-out: $(GOLDEN_BIN)
