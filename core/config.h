@@ -25,6 +25,18 @@ namespace dexmill {
 
 constexpr bool kCheckedArith = DEXMILL_CHECKED_ARITH != 0;
 
+// The word width of the sweep's column loops (core/cut/sweep_piece.h, the
+// row kernels): 32-bit offsets, squares and slope products where the CPU
+// has no 128-bit integers (mul_shift's test for a 32-bit CPU,
+// core/math/fixed.h), 64-bit ones elsewhere, where those cost the same.
+// Both widths give the same bits; the host tests run both (core/cut/
+// sweep_internal.h, sweep_line_w).
+#ifdef __SIZEOF_INT128__
+constexpr int kSweepWordBits = 64;
+#else
+constexpr int kSweepWordBits = 32;
+#endif
+
 template <int Bits> struct HeightOfBits;
 template <> struct HeightOfBits<8> { using type = uint8_t; };
 template <> struct HeightOfBits<16> { using type = uint16_t; };

@@ -8,7 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "core/config.h"
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/grid/grid.h"
 #include "core/math/fixed.h"
 #include "core/canon/canon.h"
@@ -104,26 +106,55 @@ inline std::vector<dexmill::PointNm> raster_path(double size_mm, double r_mm, do
   return p;
 }
 
-// The test of an exact shortcut: cuts twice with cut(grid, tool, stats,
-// chain), with every option on and with SweepTool's `option` off, each into
-// a fresh n x n grid filled to 30 mm, and ends both chains. *equal: the two
-// grids (tops and bottoms) are the same. False when the tool cannot be
-// prepared.
+// The sweep's entry points (core/cut/sweep_internal.h) with a tool, the
+// switches k and the column loops' word width W bound: what the tests that
+// turn a switch off, or run both widths, cut with.
+template <class H, int W = dexmill::kSweepWordBits>
+struct Sweep {
+  const dexmill::SweepTool& t;
+  const dexmill::SweepTuning& k;
+  void line(dexmill::DexelGrid<H>* g, dexmill::PointNm a, dexmill::PointNm b, dexmill::CutStats* st,
+            bool start_cap = true) const {
+    dexmill::sweep_line_w<H, W>(g, t, k, a, b, st, start_cap);
+  }
+  void chain_line(dexmill::DexelGrid<H>* g, dexmill::PointNm a, dexmill::PointNm b, dexmill::CutStats* st,
+                  dexmill::SweepChain* c) const {
+    dexmill::sweep_chain_line_w<H, W>(g, t, k, a, b, st, c);
+  }
+  void chain_end(dexmill::DexelGrid<H>* g, dexmill::CutStats* st, dexmill::SweepChain* c) const {
+    dexmill::sweep_chain_end_w<H, W>(g, t, k, st, c);
+  }
+  void arc(dexmill::DexelGrid<H>* g, const dexmill::CanonRecord& r, dexmill::CutStats* st, bool start_cap = true) const {
+    dexmill::sweep_arc_w<H, W>(g, t, k, r, st, start_cap);
+  }
+  void chain_arc(dexmill::DexelGrid<H>* g, const dexmill::CanonRecord& r, dexmill::CutStats* st,
+                 dexmill::SweepChain* c) const {
+    dexmill::sweep_chain_arc_w<H, W>(g, t, k, r, st, c);
+  }
+};
+
+// The test of an exact shortcut: cuts twice with cut(grid, sweep, stats,
+// chain) (sweep: a Sweep<H>), with every switch on and with SweepTuning's
+// `option` off, each into a fresh n x n grid filled to 30 mm, and ends both
+// chains. *equal: the two grids (tops and bottoms) are the same. False when
+// the tool cannot be prepared.
 template <class H, class Cut>
-bool cut_on_and_off(const dexmill::Tool& tool, int32_t n, int64_t pitch, int64_t lsb, bool dexmill::SweepTool::*option,
-                    Cut cut, dexmill::CutStats* s_on, dexmill::CutStats* s_off, bool* equal) {
+bool cut_on_and_off(const dexmill::Tool& tool, int32_t n, int64_t pitch, int64_t lsb,
+                    bool dexmill::SweepTuning::*option, Cut cut, dexmill::CutStats* s_on, dexmill::CutStats* s_off,
+                    bool* equal) {
   TestGrid<H> with(n, n, pitch, lsb), without(n, n, pitch, lsb);
   with.fill(mm(30));
   without.fill(mm(30));
-  dexmill::SweepTool on, off;
-  if (dexmill::sweep_tool_prepare(dexmill::tool_profile(tool), lsb, &on) != dexmill::Status::kOk) return false;
-  off = on;
-  off.*option = false;
+  dexmill::SweepTool t;
+  if (dexmill::sweep_tool_prepare(dexmill::tool_profile(tool), lsb, &t) != dexmill::Status::kOk) return false;
+  dexmill::SweepTuning k_off;
+  k_off.*option = false;
+  const Sweep<H> on{t, dexmill::kSweepDefaults}, off{t, k_off};
   dexmill::SweepChain c_on, c_off;
   cut(&with.g, on, s_on, &c_on);
   cut(&without.g, off, s_off, &c_off);
-  dexmill::sweep_chain_end(&with.g, on, s_on, &c_on);
-  dexmill::sweep_chain_end(&without.g, off, s_off, &c_off);
+  on.chain_end(&with.g, s_on, &c_on);
+  off.chain_end(&without.g, s_off, &c_off);
   *equal = with.top == without.top && with.bottom == without.bottom;
   return true;
 }

@@ -185,7 +185,7 @@ TEST(fixed_mul_shift_paths_agree) {
 }
 
 // mul_shift_fit: the same bits as mul_shift whenever the result fits, on
-// every path (the sweep's inner loops rely on it; see core/cut/sweep_line.cpp).
+// every path (the sweep's inner loops rely on it; see core/cut/sweep_piece.h).
 TEST(fixed_mul_shift_fit_equals_mul_shift_when_it_fits) {
   std::mt19937_64 rng(22);
   int checked = 0;

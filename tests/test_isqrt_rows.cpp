@@ -5,7 +5,7 @@
 // loops stop only there); these cases prove it on the arguments the sweep
 // feeds it, and that the seed keeps the loops short.
 //
-// Rows as core/cut/sweep_line.cpp's general direction builds them: v_acc
+// Rows as core/cut/sweep_piece.h's general direction builds them: v_acc
 // (U * 2^30) steps by dv a column, v = (v_acc + 2^29) >> 30, v2 = min(v^2,
 // R^2), x = R^2 - v2 (the ball's half chord rho). Level arcs
 // (core/cut/sweep_arc.cpp): the radial distance floor(|(qx, qy)|) with qx

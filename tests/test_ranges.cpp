@@ -90,7 +90,7 @@ std::string motion_program(const StockBox& b, int64_t r, double cone_slope) {
   p.add("G1", {{'X', -sx}, {'Y', -sy}, {'Z', top - 2 * d}});  // 3-D diagonal
   p.add("G1", {{'X', sx}, {'Z', top - d}});           // ramp up along X
   p.add("G1", {{'Y', sy}, {'Z', top - 2 * d}});       // ramp down along Y
-  // The steepest ramp short of a plunge (2^24:1, core/cut/sweep_line.cpp)
+  // The steepest ramp short of a plunge (2^24:1, core/cut/sweep_piece.h)
   // and beyond it, and the gentlest: 1 nm of Z over the path.
   p.add("G1", {{'X', sx - 1}, {'Z', up}});
   p.add("G1", {{'X', sx}, {'Z', top - d}});

@@ -8,6 +8,7 @@
 
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/grid/grid.h"
 #include "core/tool/cutter.h"
 #include "core/tool/tool.h"
@@ -37,16 +38,17 @@ const Tool kTools[] = {make_tool(ToolKind::kBall, mm(6)),         make_tool(Tool
                        make_tool(ToolKind::kVBit, mm(4), 0, 30000), make_tool(ToolKind::kBall, 3175000)};
 const char* const kToolNames[] = {"ball6", "flat5", "bull8r2", "vbit90", "vbit30", "ball3.175"};
 
-// Checks every dexel of the grid after one move against the oracle with the
-// backward bound of core/cut/sweep.h: within 1 LSB of the exact height at the
-// column or at the column moved by 1 nm in x or y.
-template <class H>
-int check_move(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t pitch, int64_t lsb, int report) {
+// Checks every dexel of the grid after one move, cut with the column loops
+// in W-bit words (core/config.h, kSweepWordBits), against the oracle with
+// the backward bound of core/cut/sweep.h: within 1 LSB of the exact height at
+// the column or at the column moved by 1 nm in x or y.
+template <class H, int W>
+int check_move_w(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t pitch, int64_t lsb, int report) {
   Fixture<H> f(64, 48, pitch, lsb);
   SweepTool st_tool;
   if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &st_tool), Status::kOk)) return 1;
   CutStats st;
-  sweep_line(&f.g, st_tool, a, b, &st);
+  sweep_line_w<H, W>(&f.g, st_tool, kSweepDefaults, a, b, &st, true);
   oracle::P3 pa{double(a.x_nm), double(a.y_nm), double(a.z_nm)}, pb{double(b.x_nm), double(b.y_nm), double(b.z_nm)};
   int bad = 0;
   const double hmax = static_cast<double>(f.stock_lsb);
@@ -64,13 +66,20 @@ int check_move(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t
       const double got = f.g.top[f.g.index(i, j)];
       if (got < lo - 1.0 || got > hi + 1.0) {
         if (++bad <= report)
-          std::printf("  %s m=%d: dexel (%d,%d) top %.0f, oracle [%.3f, %.3f] for move (%lld,%lld,%lld)->(%lld,%lld,%lld)\n",
-                      name, int(sizeof(H) * 8), i, j, got, lo, hi, (long long)a.x_nm, (long long)a.y_nm,
+          std::printf("  %s m=%d w=%d: dexel (%d,%d) top %.0f, oracle [%.3f, %.3f] for move (%lld,%lld,%lld)->(%lld,%lld,%lld)\n",
+                      name, int(sizeof(H) * 8), W, i, j, got, lo, hi, (long long)a.x_nm, (long long)a.y_nm,
                       (long long)a.z_nm, (long long)b.x_nm, (long long)b.y_nm, (long long)b.z_nm);
       }
     }
   }
   return bad;
+}
+
+// Both word widths against the oracle.
+template <class H>
+int check_move(const Tool& tool, const char* name, PointNm a, PointNm b, int64_t pitch, int64_t lsb, int report) {
+  return check_move_w<H, 32>(tool, name, a, b, pitch, lsb, report) +
+         check_move_w<H, 64>(tool, name, a, b, pitch, lsb, report);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "core/cut/bull_flank.h"
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
 #include "tests/runner.h"
@@ -37,15 +38,17 @@ double flank_min(const Tool& t, double m, double v) {
   return flank_cost(t, m, v, (lo + hi) / 2);
 }
 
-// Every bull-nose ramp cut against the oracle: within 1 LSB of the exact
-// lowest point at the column or at the column moved 1 nm (core/cut/sweep.h).
-int check_ramp(const Tool& tool, PointNm a, PointNm b, int64_t pitch, int64_t lsb) {
+// Every bull-nose ramp cut, with the column loops in W-bit words
+// (core/config.h), against the oracle: within 1 LSB of the exact lowest
+// point at the column or at the column moved 1 nm (core/cut/sweep.h).
+template <int W>
+int check_ramp_w(const Tool& tool, PointNm a, PointNm b, int64_t pitch, int64_t lsb) {
   fixtures::TestGrid<uint16_t> f(64, 48, pitch, lsb);
   f.fill(mm(30));
   SweepTool st_tool;
   if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &st_tool), Status::kOk)) return 1;
   CutStats st;
-  sweep_line(&f.g, st_tool, a, b, &st);
+  sweep_line_w<uint16_t, W>(&f.g, st_tool, kSweepDefaults, a, b, &st, true);
   const oracle::P3 pa{double(a.x_nm), double(a.y_nm), double(a.z_nm)}, pb{double(b.x_nm), double(b.y_nm), double(b.z_nm)};
   const double hmax = static_cast<double>(f.stock_lsb);
   int bad = 0;
@@ -61,13 +64,18 @@ int check_ramp(const Tool& tool, PointNm a, PointNm b, int64_t pitch, int64_t ls
       }
       const double got = f.g.top[f.g.index(i, j)];
       if ((got < lo - 1.0 || got > hi + 1.0) && ++bad <= 3)
-        std::printf("  bull %lld/%lld: dexel (%d,%d) top %.0f, oracle [%.3f, %.3f], move (%lld,%lld,%lld)->(%lld,%lld,%lld)\n",
-                    (long long)tool.diameter_nm, (long long)tool.corner_radius_nm, i, j, got, lo, hi,
+        std::printf("  bull %lld/%lld w=%d: dexel (%d,%d) top %.0f, oracle [%.3f, %.3f], move (%lld,%lld,%lld)->(%lld,%lld,%lld)\n",
+                    (long long)tool.diameter_nm, (long long)tool.corner_radius_nm, W, i, j, got, lo, hi,
                     (long long)a.x_nm, (long long)a.y_nm, (long long)a.z_nm, (long long)b.x_nm, (long long)b.y_nm,
                     (long long)b.z_nm);
     }
   }
   return bad;
+}
+
+// Both word widths.
+int check_ramp(const Tool& tool, PointNm a, PointNm b, int64_t pitch, int64_t lsb) {
+  return check_ramp_w<32>(tool, a, b, pitch, lsb) + check_ramp_w<64>(tool, a, b, pitch, lsb);
 }
 
 }  // namespace

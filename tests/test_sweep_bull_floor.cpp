@@ -1,6 +1,6 @@
-// core/cut/sweep_line.cpp, bull_row_above: leaving out the bull nose's rows
+// core/cut/sweep_piece.h, bull_row_above: leaving out the bull nose's rows
 // along x whose tops are all under the row's floor changes no bit. Each path
-// is cut twice, with the skip and without (SweepTool::bull_row_floor),
+// is cut twice, with the skip and without (SweepTuning::bull_row_floor),
 // chained and move by move, and the grids and the visits must be equal; the
 // skip must also have happened, often.
 //
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
@@ -87,21 +88,21 @@ template <class H>
 void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int64_t pitch, int64_t lsb, bool chained,
              int64_t dz_nm, Count* c) {
   // Both passes through one chain a grid, ended after each pass.
-  auto cut = [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+  auto cut = [&](DexelGrid<H>* g, const fixtures::Sweep<H>& sw, CutStats* st, SweepChain* ch) {
     for (int64_t drop : {int64_t{0}, dz_nm}) {
       for (size_t k = 1; k < path.size(); ++k) {
         PointNm a = path[k - 1], b = path[k];
         a.z_nm -= drop;
         b.z_nm -= drop;
-        if (chained) sweep_chain_line(g, t, a, b, st, ch);
-        else sweep_line(g, t, a, b, st);
+        if (chained) sw.chain_line(g, a, b, st, ch);
+        else sw.line(g, a, b, st);
       }
-      sweep_chain_end(g, t, st, ch);
+      sw.chain_end(g, st, ch);
     }
   };
   CutStats s_on, s_off;
   bool equal = false;
-  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTool::bull_row_floor, cut, &s_on, &s_off, &equal)))
+  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTuning::bull_row_floor, cut, &s_on, &s_off, &equal)))
     return;
   ++c->runs;
   c->row_skips += s_on.row_skips;
@@ -184,10 +185,11 @@ TEST(sweep_bull_row_floor_at_its_edge) {
     const Tool& tool = tools[trial % 4];
     const int64_t pitch = pitches[(trial / 4) % 3];
     const int32_t n = 64;
-    SweepTool on, off;
+    SweepTool on;
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-    off = on;
-    off.bull_row_floor = false;
+    SweepTuning k_off;
+    k_off.bull_row_floor = false;
+    const fixtures::Sweep<uint16_t> off{on, k_off};
     const int64_t r_nm = tool.diameter_nm / 2;
     // The track on row j0; the row k pitches off it is the one at the edge.
     const int32_t j0 = n / 2;
@@ -225,16 +227,16 @@ TEST(sweep_bull_row_floor_at_its_edge) {
     CutStats s_on, s_off;
     if (trial % 2) {
       sweep_line(&with.g, on, a, b, &s_on);
-      sweep_line(&without.g, off, a, b, &s_off);
+      off.line(&without.g, a, b, &s_off);
     } else {  // chained: a level lead-in first, then the move
       SweepChain c_on, c_off;
       const PointNm lead{a.x_nm + (b.x_nm > a.x_nm ? -pitch / 2 : pitch / 2), a.y_nm, a.z_nm};
       sweep_chain_line(&with.g, on, lead, a, &s_on, &c_on);
-      sweep_chain_line(&without.g, off, lead, a, &s_off, &c_off);
+      off.chain_line(&without.g, lead, a, &s_off, &c_off);
       sweep_chain_line(&with.g, on, a, b, &s_on, &c_on);
-      sweep_chain_line(&without.g, off, a, b, &s_off, &c_off);
+      off.chain_line(&without.g, a, b, &s_off, &c_off);
       sweep_chain_end(&with.g, on, &s_on, &c_on);
-      sweep_chain_end(&without.g, off, &s_off, &c_off);
+      off.chain_end(&without.g, &s_off, &c_off);
     }
     ++runs;
     CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
@@ -199,7 +200,7 @@ TEST(sweep_chain_equals_full_caps) {
 TEST(sweep_chain_row_shortcuts_change_no_bit) {
   // The rows' shortcuts against the long way, on chained rasters along x
   // (fixtures::raster_path) for every tool kind, several pitches and LSBs:
-  // SweepTool::wedge_stops (a collinear wedge visited from the flank out,
+  // SweepTuning::wedge_stops (a collinear wedge visited from the flank out,
   // up to its edge) and bull_row_shortcuts (the bull nose's memo in row
   // slots), both off, must leave the same grids and count the same visits.
   std::mt19937_64 rng(2024);
@@ -224,19 +225,20 @@ TEST(sweep_chain_row_shortcuts_change_no_bit) {
     fixtures::TestGrid<uint16_t> on_g(n, n, pitch, lsb), off_g(n, n, pitch, lsb);
     on_g.fill(mm(30));
     off_g.fill(mm(30));
-    SweepTool on, off;
+    SweepTool on;
     if (!CHECK_EQ(sweep_tool_prepare(tool_profile(tool), lsb, &on), Status::kOk)) return;
-    off = on;
-    off.wedge_stops = false;
-    off.bull_row_shortcuts = false;
+    SweepTuning k_off;
+    k_off.wedge_stops = false;
+    k_off.bull_row_shortcuts = false;
+    const fixtures::Sweep<uint16_t> off{on, k_off};
     CutStats s_on, s_off;
     SweepChain c_on, c_off;
     for (size_t i = 1; i < path.size(); ++i) {
       sweep_chain_line(&on_g.g, on, path[i - 1], path[i], &s_on, &c_on);
-      sweep_chain_line(&off_g.g, off, path[i - 1], path[i], &s_off, &c_off);
+      off.chain_line(&off_g.g, path[i - 1], path[i], &s_off, &c_off);
     }
     sweep_chain_end(&on_g.g, on, &s_on, &c_on);
-    sweep_chain_end(&off_g.g, off, &s_off, &c_off);
+    off.chain_end(&off_g.g, &s_off, &c_off);
     ++runs;
     updates += s_on.dexel_updates;
     CHECK_EQ(s_on.dexel_updates, s_off.dexel_updates);

@@ -1,6 +1,6 @@
-// core/cut/sweep_line.cpp, ball_floor_of: leaving out the columns whose top is
+// core/cut/sweep_piece.h, ball_floor_of: leaving out the columns whose top is
 // under the ball's floor changes no bit. Each path is cut twice, with the
-// skip and without (SweepTool::skip_under_floor), chained and move by move,
+// skip and without (SweepTuning::skip_under_floor), chained and move by move,
 // and the grids must be equal; the skip must also have happened.
 #include <cmath>
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/grid/grid.h"
 #include "core/canon/canon.h"
 #include "core/tool/tool.h"
@@ -70,13 +71,13 @@ struct Count {
   uint64_t skips = 0, updates = 0;
 };
 
-// Cuts with cut(grid, tool, stats, chain) twice, with the skip and without,
+// Cuts with cut(grid, sweep, stats, chain) twice, with the skip and without,
 // and needs the same grids and visits.
 template <class H, class Cut>
 void compare_skip(const Tool& tool, int32_t n, int64_t pitch, int64_t lsb, const char* what, Count* c, Cut cut) {
   CutStats s_on, s_off;
   bool equal = false;
-  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTool::skip_under_floor, cut, &s_on, &s_off, &equal)))
+  if (!CHECK(fixtures::cut_on_and_off<H>(tool, n, pitch, lsb, &SweepTuning::skip_under_floor, cut, &s_on, &s_off, &equal)))
     return;
   ++c->runs;
   c->skips += s_on.floor_skips;
@@ -92,10 +93,10 @@ void compare_skip(const Tool& tool, int32_t n, int64_t pitch, int64_t lsb, const
 template <class H>
 void compare(const Tool& tool, const std::vector<PointNm>& path, int32_t n, int64_t pitch, int64_t lsb, bool chained,
              Count* c) {
-  compare_skip<H>(tool, n, pitch, lsb, "lines", c, [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+  compare_skip<H>(tool, n, pitch, lsb, "lines", c, [&](DexelGrid<H>* g, const fixtures::Sweep<H>& sw, CutStats* st, SweepChain* ch) {
     for (size_t k = 1; k < path.size(); ++k) {
-      if (chained) sweep_chain_line(g, t, path[k - 1], path[k], st, ch);
-      else sweep_line(g, t, path[k - 1], path[k], st);
+      if (chained) sw.chain_line(g, path[k - 1], path[k], st, ch);
+      else sw.line(g, path[k - 1], path[k], st);
     }
   });
 }
@@ -167,10 +168,10 @@ void compare_arcs(const Tool& tool, int64_t lsb, uint64_t seed, Count* c) {
   const int32_t n = 100;
   const int64_t pitch = 250000;
   const std::vector<CanonRecord> arcs = make_arcs(double(n * pitch), double(tool.diameter_nm / 2), &rng);
-  compare_skip<H>(tool, n, pitch, lsb, "arcs", c, [&](DexelGrid<H>* g, const SweepTool& t, CutStats* st, SweepChain* ch) {
+  compare_skip<H>(tool, n, pitch, lsb, "arcs", c, [&](DexelGrid<H>* g, const fixtures::Sweep<H>& sw, CutStats* st, SweepChain* ch) {
     for (size_t k = 0; k < arcs.size(); ++k) {
-      if (k % 2) sweep_chain_arc(g, t, arcs[k], st, ch);
-      else sweep_arc(g, t, arcs[k], st);
+      if (k % 2) sw.chain_arc(g, arcs[k], st, ch);
+      else sw.arc(g, arcs[k], st);
     }
   });
 }

@@ -1,5 +1,5 @@
 // The bull nose's flank on a ramp: where along the track a column's lowest
-// point lies (w*, core/cut/sweep_line.cpp's file comment), from the torus's
+// point lies (w*, core/cut/sweep_piece.h's file comment), from the torus's
 // geometry instead of a search of F(w) - m w. Internal to the sweep.
 //
 // Geometry. The bull nose is a flat disc of radius a swept by a ball of
@@ -48,7 +48,7 @@
 
 #include <stdint.h>
 
-#include "core/cut/sweep.h"
+#include "core/cut/sweep_internal.h"
 #include "core/math/fixed.h"
 
 namespace dexmill {
@@ -164,7 +164,7 @@ inline bool bull_flank_w_memo(const SweepTool& t, const SweepLine& lp, int64_t v
       m->row_inv_q32 = inv;
       m->next_way = way;
     }
-    if (m->row_inv_q32) {  // the row's slot in the piece's way (sweep.h, BullFlankMemo)
+    if (m->row_inv_q32) {  // the row's slot in the piece's way (core/cut/sweep_internal.h, BullFlankMemo)
       const uint64_t half_pitches = (static_cast<uint64_t>(v_abs) * m->row_inv_q32) >> 32;
       e = &m->slot[(2 * half_pitches + lp.bull_way) & ((1u << BullFlankMemo::kSlotBits) - 1)];
       // The other way holds the last piece's: the same slope (a chain's

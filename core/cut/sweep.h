@@ -21,7 +21,7 @@
 //     U); indices < 2^16; origins within 1 km; tops <= 2^32 - 1 LSB (2^40 V);
 //   points: clamped to 2^46 nm (clamp_point), so a tip height above z0 is
 //     within 2^46 + 2^40 nm, |z_v| < 2^55 V;
-//   pieces (core/cut/sweep_line.cpp): at most 2^27 nm = 2^29 U long
+//   pieces (core/cut/sweep_piece.h): at most 2^27 nm = 2^29 U long
 //     horizontally, and no steeper than 2^24:1 (else a plunge), so a slope
 //     is below 2^24 (m_geo_q30 < 2^54) and 2^24 * 64 / lsb <= 2^30 V per U
 //     (slope_v_q32 < 2^62), and a piece's whole rise is under 2^55 V;
@@ -50,6 +50,7 @@
 #ifndef DEXMILL_CORE_CUT_SWEEP_H
 #define DEXMILL_CORE_CUT_SWEEP_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "core/cut/stats.h"
@@ -84,27 +85,6 @@ struct SweepTool {
   // ((r^2 >> bowl_pre) * bowl_q) >> bowl_post: a 32 x 32-bit product.
   uint32_t bowl_q;
   int bowl_pre, bowl_post;
-  // Ball pieces in a general direction and level ball arcs leave out the
-  // columns whose top is under every height they compute there
-  // (core/cut/sweep_line.cpp, ball_floor_of; core/cut/sweep_arc.cpp, level_piece):
-  // the same bits without most of a pocket's square roots. Tests turn it
-  // off to check exactly that.
-  bool skip_under_floor = true;
-  // Rows along x visit a collinear wedge (SweepChain) from the flank
-  // outwards and stop at its edge (core/cut/sweep_line.cpp): the same bits
-  // as every column tested. Tests turn it off to check exactly that.
-  bool wedge_stops = true;
-  // Bull-nose chains keep their pieces' w* in row slots of their memo
-  // (BullFlankMemo), so that the next piece finds the last one's on every
-  // row: the same bits as the hashed slots (and as no memo). Tests turn it
-  // off to check exactly that.
-  bool bull_row_shortcuts = true;
-  // Bull-nose ramps along x leave the rows at either end of their range
-  // whose every top is at or under the least height the piece computes on
-  // them (core/cut/sweep_line.cpp, bull_row_above, bull_trim_rows): no
-  // contact solve, no roots, the same bits and visit counts. Tests turn it
-  // off to check exactly that.
-  bool bull_row_floor = true;
   int64_t lsb_nm;          // the LSB this was prepared for
 };
 
@@ -158,66 +138,8 @@ inline int64_t sweep_bowl_v(const SweepTool& t, int64_t r2) {
 template <class H>
 void sweep_line(DexelGrid<H>* g, const SweepTool& t, PointNm a, PointNm b, CutStats* st, bool start_cap = true);
 
-// The bull nose's w* for the last few (piece, |v|) of a chain
-// (core/cut/bull_flank.h): a cache of a pure function of the tool, the
-// piece's slope and |v|, so the bits are those of computing it. A chained
-// piece along x meets the previous piece's w* on every row, at the same
-// offsets (its collinear wedge), and finds it here. 128 slots (3 KB): the
-// rows of two pieces of a tool some 60 rows wide. Only bull-nose pieces
-// read and fill it.
-//
-// Which slot: with the grid's pitch known (row_inv_q32, set by the chain),
-// slot 2 k + way for |v| in [k, k + 1) half pitches, way the piece's
-// (SweepLine::bull_way, alternating along the chain). A row's |v| is a
-// whole number of U, v0 + n p or (p - v0) + n p on the two sides of the
-// track (v0 in [0, p)), one below half a pitch and one above: distinct
-// rows, distinct slots (for tools up to 64 half pitches, 32 rows, in
-// radius), and the last piece's w* on each row waits in the other way for
-// the next piece's wedge (a lookup tries both ways: pieces often repeat the
-// last one's slope). Without the pitch, a hash of |v| and the slope.
-// Any slot may hold any key (it is checked): the choice only costs hits.
-struct BullFlankMemo {
-  static constexpr int kSlotBits = 7;
-  struct Slot {
-    int64_t m_q30, sin_q30;  // the piece's slope (SweepLine::m_geo_q30, ball_sin_q30)
-    uint32_t v_plus1;        // |v| + 1, U (|v| <= R + 1 < 2^31); 0: empty
-    int32_t w_u;             // w*, U, with its sign
-  };
-  Slot slot[1 << kSlotBits] = {};
-  int64_t r_u = 0, rc_u = 0;  // the tool the slots hold (another empties them)
-  uint64_t row_inv_q32 = 0;   // ceil(2^32 / half a pitch in U), or 0: hashed slots
-  uint8_t next_way = 0;       // the next piece's way
-};
-
-// A straight piece prepared for sweeping (internal to core/cut/sweep_line.cpp;
-// declared here so that a SweepChain can hold the last one).
-struct SweepLine {
-  int64_t len_u;             // horizontal length l, U
-  int64_t ex_q30, ey_q30;    // unit direction e
-  int64_t za_v, zb_v;        // tip heights above the grid's z0, V
-  int64_t slope_v_q32;       // dz/ds in V per U, q32
-  int64_t m_geo_q30;         // dz/ds, dimensionless, q30
-  int64_t ball_sin_q30;      // ball: m / sqrt(1 + m^2)
-  int64_t ball_k_q30;        // ball: sqrt(1 + m^2)
-  int64_t vbit_c1_q30;       // V-bit: m / sqrt(k^2 - m^2), valid when vbit_inside
-  bool vbit_inside;          // V-bit: |m| < k
-  bool level;                // dz == 0
-  bool plunge;               // no horizontal motion (or steeper than 2^24:1)
-  uint8_t bull_way;          // bull nose in a chain (bull_memo set): its memo way (BullFlankMemo), 0 or 1
-  BullFlankMemo* bull_memo = nullptr;  // bull nose in a chain: the chain's memo
-};
-
-// floor(sqrt(x)) for the last few x: a cache of a pure function, so the bits
-// are those of computing it. The moves of one x-parallel stripe meet the same
-// rows at the same cross offsets v, and each row's root rho(v) is the most
-// expensive part of its set-up; the chain keeps one for its moves. 128
-// slots (1.5 KB): a tool 30 rows wide meets 31 offsets, which 32 slots
-// hashed into with about half of them colliding.
-struct RootMemo {
-  static constexpr int kSlotBits = 7;
-  uint64_t key[1 << kSlotBits] = {};   // zeroes are true entries: sqrt(0) = 0
-  uint32_t root[1 << kSlotBits] = {};
-};
+// The size of SweepChain::parts (below).
+constexpr size_t kSweepChainPartsBytes = 4736;
 
 // A polyline of straight moves cut with one tool, move by move.
 //
@@ -242,13 +164,15 @@ struct SweepChain {
   enum class State : uint8_t {
     kFresh,    // no move before: cut the whole start cap
     kCovered,  // the tool at `end` is cut already: skip the start cap
-    kPending,  // the end cap of `last` at `end` is pending
+    kPending,  // the end cap of the last piece at `end` is pending
   };
   State state = State::kFresh;
   PointNm end{0, 0, 0};
-  SweepLine last{};
-  RootMemo roots;
-  BullFlankMemo bull_memo;
+  // The last piece and the chain's memos (SweepChainParts, internal to the
+  // sweep: core/cut/sweep_internal.h), held here so that a chain needs no
+  // heap; zero bytes are their empty state. kSweepChainPartsBytes is their
+  // size with 64-bit pointers, and sweep_internal.h checks that they fit.
+  alignas(8) unsigned char parts[kSweepChainPartsBytes] = {};
 };
 
 // Cuts a -> b as the next move of chain c (a move that does not start at

@@ -25,11 +25,11 @@
 //     ra sin^2 < 2^62, (rho - ra)^2 <= R^2; kappa, kk, qq by muldiv
 //     (128-bit, saturating), kk < 2^46 (q30, the exactness test), disc
 //     saturated; z0 + dz s / span + P < 2^56 V;
-//   chords: sweep_line's ranges (sweep_line.cpp).
+//   chords: sweep_line's ranges (core/cut/sweep_piece.h).
 #include "core/cut/arc_walk.h"
 #include "core/cut/stamp.h"
-#include "core/cut/sweep.h"
 #include "core/cut/sweep_cut.h"
+#include "core/cut/sweep_internal.h"
 #include "core/math/fixed.h"
 #include "core/canon/arc_chords.h"
 
@@ -102,7 +102,7 @@ RingRuns ring_runs(const ArcRing& ring, int64_t qy, int64_t qx0, int64_t p_u, in
 }
 
 template <class H, class F>
-void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
+void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, CutStats* st, int64_t cx_nm, int64_t cy_nm, int64_t x0,
                  int64_t y0, int64_t x1, int64_t y1, const ArcRing& ring, int64_t zlow_v, int64_t zhigh_v, F column) {
   const int64_t hmax = height_max<H>();
   if (zlow_v >= (hmax << kSweepVBits) || zhigh_v + t.len_v <= 0) return;
@@ -110,7 +110,7 @@ void cut_arc_box(DexelGrid<H>* g, const SweepTool& t, CutStats* st, int64_t cx_n
   const bool shaft_above = ct_lsb >= g->top_bound_lsb;  // see DexelGrid::top_bound_lsb
   // Only where a cut is a min() does a tool height at or above the top
   // leave the column as it is.
-  const bool may_keep = shaft_above && t.skip_under_floor;
+  const bool may_keep = shaft_above && tune.skip_under_floor;
   uint64_t floor_skips = 0;
   SweepColumns box;
   if (!sweep_columns(*g, t, cx_nm + x0 / kSweepUnitsPerNm, cx_nm + x1 / kSweepUnitsPerNm, cy_nm + y0 / kSweepUnitsPerNm,
@@ -185,7 +185,7 @@ PieceBox piece_box(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t ra, i
 // A level quarter-turn (at most) piece from A to B about C, radius ra, all in
 // U relative to C; dir = +1 counterclockwise.
 template <class H>
-void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
+void level_piece(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
                  int64_t bx, int64_t by, int64_t ra, int dir, int64_t z_nm, CutStats* st, bool start_cap) {
   const int64_t z_v = sweep_height_v(*g, z_nm);
   const int64_t reach2 = sweep_reach2(t);
@@ -198,7 +198,7 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   const int64_t r_reach = t.r_u + 2, slack = 8;
   const ArcRing ring{max_of<int64_t>(0, min_of(ra, ra_a) - r_reach - slack), max_of(ra, ra_a + 1) + r_reach + 1 + slack};
   const bool ball = t.kind == ToolKind::kBall;
-  cut_arc_box(g, t, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, z_v, z_v,
+  cut_arc_box(g, t, tune, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, z_v, z_v,
               [&](int64_t qx, int64_t qy, int64_t keep_v, int64_t* h_v, int64_t*) {
     const bool after_a = cross(ax, ay, qx, qy) * dir >= 0, before_b = cross(qx, qy, bx, by) * dir >= 0;
     int64_t d2;
@@ -215,7 +215,7 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
     }
     if (d2 > reach2) return ArcColumn::kOut;
     // The ball's profile is at least its paraboloid less 1 V (the level case
-    // of ball_floor_of, core/cut/sweep_line.cpp): at or above keep_v, no root.
+    // of ball_floor_of, core/cut/sweep_piece.h): at or above keep_v, no root.
     if (ball && z_v + sweep_bowl_v(t, min_of(d2, t.r2_u)) - 1 >= keep_v) return ArcColumn::kUnderFloor;
     *h_v = z_v + sweep_profile_v(t, min_of(d2, t.r2_u));
     return ArcColumn::kCut;
@@ -236,7 +236,7 @@ void level_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
 // Angles are CORDIC binary angles (2 bam: 3e-9 rad), so the column is met
 // within ra * 3e-9 of its place: inside the backward bound for ra <= 2^27 nm.
 template <class H>
-void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
+void helix_piece(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, int64_t cx_nm, int64_t cy_nm, int64_t ax, int64_t ay,
                  int64_t bx, int64_t by, int64_t ra, int dir, int64_t z0_nm, int64_t z1_nm, CutStats* st,
                  bool start_cap) {
   const int64_t z0_v = sweep_height_v(*g, z0_nm);
@@ -255,7 +255,7 @@ void helix_piece(DexelGrid<H>* g, const SweepTool& t, int64_t cx_nm, int64_t cy_
   // Columns within R of the circle (rho = floor(|q|), the test below).
   const PieceBox box = piece_box(ax, ay, bx, by, ra, radius_of(ax, ay), dir);
   const ArcRing ring{max_of<int64_t>(0, ra - t.r_u - 1), ra + t.r_u + 1};
-  cut_arc_box(g, t, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, zlow, zhigh,
+  cut_arc_box(g, t, tune, st, cx_nm, cy_nm, box.x0, box.y0, box.x1, box.y1, ring, zlow, zhigh,
               [&](int64_t qx, int64_t qy, int64_t, int64_t* h_v, int64_t* zct_v) {
     const int64_t rho2 = qx * qx + qy * qy;
     const int64_t rho = static_cast<int64_t>(isqrt_fast_u64(static_cast<uint64_t>(rho2)));
@@ -340,11 +340,12 @@ bool dominant_turn(const CanonRecord& arc, bool* start_cap, CanonRecord* one) {
   return true;
 }
 
-template <class H>
-void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap) {
+template <class H, int W>
+void sweep_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, const CanonRecord& arc, CutStats* st,
+                 bool start_cap) {
   CanonRecord one;
   if (dominant_turn(arc, &start_cap, &one)) {
-    sweep_arc(g, t, one, st, start_cap);
+    sweep_arc_w<H, W>(g, t, tune, one, st, start_cap);
     return;
   }
   const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
@@ -372,7 +373,7 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
     PointNm last = arc.start;
     bool chained = !start_cap;
     arc_walk(arc, kArcChordSagittaNm, reach, [&](PointNm a, PointNm b) {
-      sweep_line(g, t, a, b, st, !(chained && a == last));
+      sweep_line_w<H, W>(g, t, tune, a, b, st, !(chained && a == last));
       last = b;
       chained = true;
     });
@@ -392,29 +393,47 @@ void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutS
       const int64_t re = hypot_round(ex, ey);
       const int64_t bx_nm = re ? muldiv_round(ex, ra_nm, re) : 0, by_nm = re ? muldiv_round(ey, ra_nm, re) : 0;
       if (level)
-        level_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
+        level_piece(g, t, tune, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
                     ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, st, cap);
       else
-        helix_piece(g, t, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
+        helix_piece(g, t, tune, cx, cy, ax, ay, bx_nm * kSweepUnitsPerNm, by_nm * kSweepUnitsPerNm,
                     ra_nm * kSweepUnitsPerNm, arc.arc.turns < 0 ? -1 : 1, from.z_nm, to.z_nm, st, cap);
       const PointNm on_circle{cx + bx_nm, cy + by_nm, to.z_nm};
-      if (!(on_circle == to)) sweep_line(g, t, on_circle, to, st, false);
+      if (!(on_circle == to)) sweep_line_w<H, W>(g, t, tune, on_circle, to, st, false);
     }
     from = to;
     cap = false;
   }
 }
 
-template <class H>
-void sweep_chain_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, SweepChain* c) {
-  sweep_chain_end(g, t, st, c);
+template <class H, int W>
+void sweep_chain_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, const CanonRecord& arc,
+                       CutStats* st, SweepChain* c) {
+  sweep_chain_end_w<H, W>(g, t, tune, st, c);
   const bool joined = c->state != SweepChain::State::kFresh && c->end == arc.start;
-  sweep_arc(g, t, arc, st, !joined);
+  sweep_arc_w<H, W>(g, t, tune, arc, st, !joined);
   c->state = SweepChain::State::kCovered;
   c->end = arc.end;
 }
 
+template <class H>
+void sweep_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, bool start_cap) {
+  sweep_arc_w<H, kSweepWordBits>(g, t, kSweepDefaults, arc, st, start_cap);
+}
+
+template <class H>
+void sweep_chain_arc(DexelGrid<H>* g, const SweepTool& t, const CanonRecord& arc, CutStats* st, SweepChain* c) {
+  sweep_chain_arc_w<H, kSweepWordBits>(g, t, kSweepDefaults, arc, st, c);
+}
+
+#define DEXMILL_SWEEP_ARC_W_INSTANTIATE(H, W)                                                                   \
+  template void sweep_arc_w<H, W>(DexelGrid<H>*, const SweepTool&, const SweepTuning&, const CanonRecord&,     \
+                                  CutStats*, bool);                                                            \
+  template void sweep_chain_arc_w<H, W>(DexelGrid<H>*, const SweepTool&, const SweepTuning&, const CanonRecord&, \
+                                        CutStats*, SweepChain*);
 #define DEXMILL_SWEEP_ARC_INSTANTIATE(H)                                                                    \
+  DEXMILL_SWEEP_ARC_W_INSTANTIATE(H, 32)                                                                    \
+  DEXMILL_SWEEP_ARC_W_INSTANTIATE(H, 64)                                                                    \
   template void sweep_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, bool);         \
   template void sweep_chain_arc<H>(DexelGrid<H>*, const SweepTool&, const CanonRecord&, CutStats*, SweepChain*);
 DEXMILL_SWEEP_ARC_INSTANTIATE(uint8_t)

@@ -6,8 +6,6 @@
 
 #include <stdint.h>
 
-#include <type_traits>
-
 #include "core/cut/stamp.h"
 #include "core/cut/sweep.h"
 #include "core/grid/grid.h"
@@ -51,7 +49,7 @@ inline int64_t sweep_height_v(const DexelGrid<H>& g, int64_t z_nm) {
 
 // The least height in V that sweep_cut_dexel rounds to top_lsb or above:
 // where the shaft is above every top (a min()), a tool at or above it leaves
-// the dexel as it is. The floor tests of core/cut/sweep_line.cpp and
+// the dexel as it is. The floor tests of core/cut/sweep_piece.h and
 // core/cut/sweep_arc.cpp compare with it.
 inline int64_t sweep_keep_v(int64_t top_lsb) {
   return (top_lsb << kSweepVBits) - (static_cast<int64_t>(1) << (kSweepVBits - 1));
@@ -66,8 +64,10 @@ inline int64_t sweep_keep_v(int64_t top_lsb) {
 // two registers) the biased accumulator acc + 2^29 split into its whole part
 // (mod 2^32: a value read fits, one past the last may wrap unread) and
 // its 30-bit fraction kept in the top bits of a word, so that the fraction's
-// carry is the add's own (adds, adc). Forced inline: -Os calls them
-// otherwise, at twice their cost, once a column.
+// carry is the add's own (adds, adc). The sweep's 32-bit column loops
+// (core/cut/sweep_piece.h, general_row) take the split form on every CPU,
+// so that a host's tests run what a 32-bit CPU does. Forced inline: -Os
+// calls them otherwise, at twice their cost, once a column.
 template <class I>
 struct RoundWalk30Acc {
   int64_t acc = 0, d = 0;
@@ -94,7 +94,6 @@ struct RoundWalk30Split {
     frac = f;
   }
 };
-using RoundWalk30 = std::conditional<(sizeof(void*) >= 8), RoundWalk30Acc<int32_t>, RoundWalk30Split>::type;
 
 // Applies the lowest tool height h_v (V above z0) at one dexel; ct_lsb is the
 // shaft top, shaft_above when it is above every possible top (then only
