@@ -203,8 +203,8 @@ clean:
 # ---- the library: the C API over core/ and display/ (display/api/dexmill.h) --
 # libdexmill.a and .so hold the same objects the binary links; the .so
 # exports the dm_ functions only. libdexmill_io.a is the platform's image
-# encoders behind platform/api/dexmill_io.h, with the one display object they
-# use, so it links beside either.
+# encoders behind platform/api/dexmill_io.h, with the display and core
+# objects they use (the framebuffer, CRC-32), so it links beside either.
 API_VERSION := $(shell sed -n 's/^\#define DEXMILL_API_VERSION \([0-9]*\).*/\1/p' display/api/dexmill.h)
 API_CC   ?= $(if $(findstring clang,$(CXX)),clang,gcc)
 C99FLAGS := -std=c99 -Wall -Wextra -Werror -pedantic
@@ -213,7 +213,7 @@ LIB_SO   := $(BUILD)/libdexmill.so
 LIB_IO   := $(BUILD)/libdexmill_io.a
 IO_OBJ   := $(call obj,platform/api/dexmill_io.cpp platform/format/image_file.cpp platform/format/ppm.cpp platform/format/png.cpp platform/format/pgm.cpp \
               platform/os/read_file.cpp platform/format/deflate.cpp platform/os/output_file.cpp platform/os/output_set.cpp platform/os/temp_file.cpp platform/os/process.cpp \
-              display/raster/framebuffer.cpp)
+              display/raster/framebuffer.cpp core/math/crc32.cpp)
 EMBED    := $(BUILD)/embed
 lib: $(LIB_A) $(LIB_SO) $(LIB_IO)
 $(LIB_A): $(INT_OBJ)

@@ -344,6 +344,10 @@ void Interp::reset() {
   // R_PLANE; a machine's RS274NGC_STARTUP_CODE may say G98.
   state_.retract_to_r = true;
   state_.comp.first_move = true;
+  if (options_.start_given) {
+    state_.pos = options_.start_pos;
+    state_.tool = state_.selected_tool = options_.start_tool;
+  }
   records_ = 0;
   moves_ = 0;
   any_code_ = false;

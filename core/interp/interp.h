@@ -96,6 +96,13 @@ struct InterpOptions {
   uint64_t max_blocks = kDefaultMaxBlocks;
   // Sagitta of the chords G5/G5.1 splines become (core/interp/spline.h).
   int64_t spline_sagitta_nm = 1000;
+  // Where the machine is when the program starts: the tool tip (machine,
+  // nm) and the tool in the spindle, as a previous program on the same
+  // stock left them (core/stock/stock_file.h). Otherwise the program
+  // starts at the origin with tool 0, as LinuxCNC's interpreter does.
+  bool start_given = false;
+  PointNm start_pos{0, 0, 0};
+  int32_t start_tool = 0;
 };
 
 // The modal machine state; plain data, copied whole to make a block atomic.

@@ -20,6 +20,7 @@
 #include "core/canon/summary.h"
 #include "core/point.h"
 #include "core/sim/stock_plan.h"
+#include "core/stock/stock_file.h"
 #include "core/tool/tool.h"
 
 namespace dexmill {
@@ -102,8 +103,17 @@ struct SimJob {
   size_t process_lines = 0;
   bool provenance = false;              // which tool last cut each column
   bool provenance_lines = false;        // and which line (needs provenance)
+  bool provenance_programs = false;     // and which of the chain's programs (needs provenance_lines; a saved stock's layer)
   int32_t provenance_slots = 7;         // classes for the tools (display/colour/tool_colours.h kToolColourSlots)
   int32_t provenance_first_tool = -1;   // the number the tool before any M6 is listed under
+
+  // A saved stock this run continues (core/stock/stock_file.h; the plan is
+  // its grid, sim_plan_of_stock): the simulation leaves its grid unfilled
+  // for the front end to read the stock's columns into stock_columns()
+  // before start(), and takes from it the stock's bounds, the tool's place
+  // and number, the provenance's tool order and the chain's programs.
+  // Null: a fresh stock from the plan.
+  const StockMeta* resume = nullptr;
 
   // Stopping: at the first record of line stop_line or later (a program cut
   // up to its first bad block: 0, none), and at the end of a line that

@@ -49,6 +49,35 @@ void provenance_init(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t first_
 }
 
 template <class H>
+void provenance_resume(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t current, int32_t slots, uint8_t* cls,
+                       uint32_t* shadow, uint32_t* lines, uint8_t* programs, bool have_classes, bool have_lines,
+                       const int32_t* tools, int32_t ntools, int32_t unlisted, uint8_t program_index) {
+  p->grid = &g;
+  p->cls = cls;
+  p->shadow = shadow;
+  p->line = lines;
+  p->program = lines ? programs : nullptr;
+  p->program_index = program_index;
+  p->slots = slots < 1 ? 1 : (slots > 255 ? 255 : slots);
+  p->pending = GridRect::none();
+  p->ntools = have_classes ? (ntools < 0 ? 0 : ntools > kProvenanceMaxTools ? kProvenanceMaxTools : ntools) : 0;
+  for (int32_t k = 0; k < p->ntools; ++k) p->tool[k] = tools[k];
+  p->unlisted = have_classes ? unlisted : 0;
+  p->current = current;
+  p->current_class = 0;
+  // The tool in the spindle keeps its class when it cut before.
+  for (int32_t k = 0; k < p->ntools; ++k)
+    if (p->tool[k] == current) p->current_class = provenance_class_of(k, p->slots);
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  for (size_t k = 0; k < n; ++k) {
+    if (!have_classes) cls[k] = 0;
+    shadow[k] = g.top[k];
+    if (lines && !have_lines) lines[k] = 0;
+    if (p->program && !have_lines) p->program[k] = 0;
+  }
+}
+
+template <class H>
 void provenance_set_tool(ToolProvenance<H>* p, int32_t number) {
   if (number == p->current) return;
   p->current = number;
@@ -75,6 +104,7 @@ bool provenance_record(ToolProvenance<H>* p, GridRect changed, uint32_t line, co
     if (p->line) {
       const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm, z = g.z0_nm + int64_t{now} * g.lsb_nm;
       p->line[k] = prev && profile_explains_cut(*prev->tool, prev->end, x, y, z, g.lsb_nm) ? prev->line : line;
+      if (p->program) p->program[k] = p->program_index;
     }
     if (now != 0 || g.bottom[k] != 0) return;
     // Cut through: the hole's walls are the side faces of the dexels
@@ -92,6 +122,9 @@ bool provenance_record(ToolProvenance<H>* p, GridRect changed, uint32_t line, co
 }
 
 #define DEXMILL_PROVENANCE_INSTANTIATE(H)                                                                          \
+  template void provenance_resume<H>(ToolProvenance<H>*, const DexelGrid<H>&, int32_t, int32_t, uint8_t*,         \
+                                     uint32_t*, uint32_t*, uint8_t*, bool, bool, const int32_t*, int32_t, int32_t,  \
+                                     uint8_t);                                                                    \
   template void provenance_init<H>(ToolProvenance<H>*, const DexelGrid<H>&, int32_t, int32_t, uint8_t*, uint32_t*, \
                                    uint32_t*);                                                                    \
   template void provenance_set_tool<H>(ToolProvenance<H>*, int32_t);                                              \

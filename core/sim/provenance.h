@@ -38,6 +38,8 @@ struct ToolProvenance {
   uint8_t* cls = nullptr;               // nx*ny classes, caller memory
   uint32_t* shadow = nullptr;           // nx*ny tops (LSB) as of the last record, caller memory
   uint32_t* line = nullptr;             // nx*ny: the line that last lowered each top (0: none); null: not kept
+  uint8_t* program = nullptr;           // nx*ny: and the chain's program it is in (with line; null: not kept)
+  uint8_t program_index = 0;            // the program this run is in the chain (a saved stock's count of programs)
   int32_t slots = 1;                    // classes 1..slots for the tools
   GridRect pending = GridRect::none();  // changes noted since the last record (provenance_note)
   int32_t tool[kProvenanceMaxTools] = {};  // tool numbers, in the order they first lowered a top
@@ -66,6 +68,17 @@ void provenance_init(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t first_
 template <class H>
 void provenance_set_tool(ToolProvenance<H>* p, int32_t number);
 
+// Sets p up for grid g over a saved stock's classes, lines and programs
+// (core/stock/stock_file.h, read into cls, lines and programs already):
+// its tools listed in the order they first cut (ntools of them, then
+// `unlisted` more), tool number `current` in the spindle, this run the
+// chain's program `program_index`. Null arrays are cleared-as-uncut ones
+// the stock did not hold (then every column is uncut, line 0).
+template <class H>
+void provenance_resume(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t current, int32_t slots, uint8_t* cls,
+                       uint32_t* shadow, uint32_t* lines, uint8_t* programs, bool have_classes, bool have_lines,
+                       const int32_t* tools, int32_t ntools, int32_t unlisted, uint8_t program_index);
+
 // Changes that are not a record's (a frame's flush showing a deferred end
 // cap, which the next record puts back and cuts for good): kept for the
 // next record's walk, not classified now, so that the classes do not depend
@@ -93,6 +106,9 @@ bool provenance_record(ToolProvenance<H>* p, GridRect changed, uint32_t line, co
 #define DEXMILL_PROVENANCE_EXTERN(H)                                                                                \
   extern template void provenance_init<H>(ToolProvenance<H>*, const DexelGrid<H>&, int32_t, int32_t, uint8_t*,    \
                                           uint32_t*, uint32_t*);                                                \
+  extern template void provenance_resume<H>(ToolProvenance<H>*, const DexelGrid<H>&, int32_t, int32_t, uint8_t*,  \
+                                            uint32_t*, uint32_t*, uint8_t*, bool, bool, const int32_t*, int32_t,   \
+                                            int32_t, uint8_t);                                                     \
   extern template void provenance_set_tool<H>(ToolProvenance<H>*, int32_t);                                       \
   extern template void provenance_note<H>(ToolProvenance<H>*, GridRect);                                          \
   extern template bool provenance_record<H>(ToolProvenance<H>*, GridRect, uint32_t, const ProvenanceOrigin*);

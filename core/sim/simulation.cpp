@@ -26,6 +26,11 @@ InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, P
   o.messages = job.notes;
   o.default_feed_nm_per_min = job.default_feed_nm_per_min;
   o.max_blocks = job.max_blocks;
+  if (job.resume && job.resume->have_position) {
+    o.start_given = true;
+    o.start_pos = job.resume->position;
+    o.start_tool = job.resume->tool;
+  }
   if (mem) {
     memset(static_cast<void*>(mem), 0, sizeof *mem);  // as a fresh one: every default is zero (params.h, oword_store.h)
     o.params = &mem->params;

@@ -202,6 +202,18 @@ class SimulationT final : public CanonSink {
     *n = msgs_.nkept;
     return msgs_.kept;
   }
+  // The stock's columns, to read a saved stock into (job.resume, before
+  // start()) or to save it from: the layers of `layers` (StockLayer bits)
+  // this simulation keeps (provenance's), null for the others.
+  StockColumns stock_columns(uint8_t layers) {
+    StockColumns c;
+    c.top = grid_.top;
+    c.bottom = grid_.bottom;
+    if (job_.provenance && (layers & kStockLayerClass)) c.cls = prov_cls_;
+    if (layers & kStockLayerLine) c.line = prov_lines_;
+    if (c.line && (layers & kStockLayerProgram)) c.program = prov_programs_;
+    return c;
+  }
   // The observers (null when off).
   const SafetyWatch* safety() const { return safety_on_ ? &safety_ : nullptr; }
   const GougeWatch* gouges() const { return job_.design ? &gouges_ : nullptr; }
@@ -279,6 +291,7 @@ class SimulationT final : public CanonSink {
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;
   uint32_t* prov_lines_;
+  uint8_t* prov_programs_;
   // the cut's state
   bool started_ = false, finished_ = false;
   SimState state_ = SimState::kReady;

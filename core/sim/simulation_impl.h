@@ -49,6 +49,7 @@ struct SimulationT<H>::Memory {
   uint8_t* prov_cls = nullptr;
   uint32_t* prov_shadow = nullptr;
   uint32_t* prov_lines = nullptr;
+  uint8_t* prov_programs = nullptr;
 };
 
 namespace sim_detail {
@@ -163,6 +164,7 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
     mem.prov_cls = c.take<uint8_t>(cells);
     mem.prov_shadow = c.take<uint32_t>(cells);
     if (job.provenance_lines) mem.prov_lines = c.take<uint32_t>(cells);
+    if (job.provenance_lines && job.provenance_programs) mem.prov_programs = c.take<uint8_t>(cells);
   }
   if (m) *m = mem;
   return c.used();
@@ -230,11 +232,12 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       process_seen_(m.process_seen),
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
-      prov_lines_(m.prov_lines) {
+      prov_lines_(m.prov_lines),
+      prov_programs_(m.prov_programs) {
   msgs_.warn_to = job.warnings;
   const size_t cells = static_cast<size_t>(grid_.nx) * static_cast<size_t>(grid_.ny);
   (void)grid_init(&grid_, job.plan.geo, m.top, m.bottom, cells);  // the geometry was checked
-  fill_stock(&grid_, job.plan);
+  if (!job.resume) fill_stock(&grid_, job.plan);  // else the front end reads a saved one in (stock_columns)
   if (m.fixture_top) {
     fixture_grid_.top = m.fixture_top;
     fixture_grid_.bottom = m.fixture_bottom;
@@ -269,6 +272,11 @@ template <class H>
 void SimulationT<H>::start() {
   if (started_) return;
   started_ = true;
+  if (const StockMeta* r = job_.resume) {  // what the cut's shortcuts rely on, as the stock file holds it
+    grid_.bottoms_zero = r->bottoms_zero;
+    grid_.top_bound_lsb = r->top_bound_lsb;
+    grid_.dirty = grid_.bounds();
+  }
   const size_t cells = static_cast<size_t>(grid_.nx) * static_cast<size_t>(grid_.ny);
   material_before_ = grid_material_lsb(grid_);
   if (job_.design) (void)gouge_watch_init(&gouges_, job_.design, job_.assess, gouge_seen_, gouge_watch_seen_bytes(grid_.nx, grid_.ny));
@@ -296,9 +304,17 @@ void SimulationT<H>::start() {
       safety_.nfixture_boxes = c.nfixtures;
     }
   }
-  if (job_.provenance)
-    provenance_init(&prov_, grid_, job_.provenance_first_tool, job_.provenance_slots, prov_cls_, prov_shadow_,
-                    prov_lines_);
+  if (job_.provenance) {
+    const StockMeta* r = job_.resume;
+    const bool classes = r && (r->layers & kStockLayerClass), lines = r && (r->layers & kStockLayerLine);
+    const bool programs = lines && (r->layers & kStockLayerProgram);
+    // A stock's lines without their programs are its first program's.
+    if (prov_programs_ && lines && !programs) memset(prov_programs_, 0, cells);
+    provenance_resume(&prov_, grid_, classes ? r->prov_current : job_.provenance_first_tool,
+                      classes ? r->prov_slots : job_.provenance_slots, prov_cls_, prov_shadow_, prov_lines_,
+                      prov_programs_, classes, lines, r ? r->prov_tool : nullptr, classes ? r->prov_ntools : 0,
+                      classes ? r->prov_unlisted : 0, static_cast<uint8_t>(r ? r->nprograms : 0));
+  }
   load_tool(job_.tool);
 }
 

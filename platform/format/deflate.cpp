@@ -14,42 +14,9 @@
 #include "platform/format/deflate.h"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 
 namespace dexmill {
-
-// ---- CRC-32 (PNG specification section 5.5; ISO 3309) ---------------------
-
-namespace {
-
-// 0x04C11DB7 with its bits reversed: PNG's CRC works on bits least
-// significant first, so the table is built for the reflected polynomial.
-constexpr uint32_t kCrc32PolynomialReflected = 0xEDB88320u;
-
-// The CRC register after shifting each possible byte through it: one table
-// look-up per byte instead of eight bit steps.
-constexpr std::array<uint32_t, 256> make_crc32_table() {
-  std::array<uint32_t, 256> table{};
-  for (uint32_t byte = 0; byte < 256; ++byte) {
-    uint32_t c = byte;
-    for (int bit = 0; bit < 8; ++bit) c = (c & 1) ? kCrc32PolynomialReflected ^ (c >> 1) : c >> 1;
-    table[byte] = c;
-  }
-  return table;
-}
-
-constexpr std::array<uint32_t, 256> kCrc32Table = make_crc32_table();
-
-}  // namespace
-
-uint32_t crc32_update(uint32_t crc, const uint8_t* p, std::size_t n) {
-  // The register is kept inverted between calls, so a running value of 0
-  // means "no data yet" and the result is the finished CRC.
-  uint32_t c = ~crc;
-  for (std::size_t i = 0; i < n; ++i) c = kCrc32Table[(c ^ p[i]) & 0xFFu] ^ (c >> 8);
-  return ~c;
-}
 
 // ---- Adler-32 (RFC 1950 sections 8 and 9) ---------------------------------
 

@@ -1,6 +1,6 @@
 // Lossless compression of our own for PNG output (platform/format/png.h): a zlib
 // stream (RFC 1950) of DEFLATE data (RFC 1951), and the two checksums those
-// formats use. No library: the standard library only.
+// formats use (CRC-32 from core/math/crc32.h). No library: the standard library only.
 //
 // The output is a pure function of the input bytes (no time, no addresses,
 // no platform-dependent choices), so every run on every platform writes the
@@ -12,13 +12,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/math/crc32.h"
+
 namespace dexmill {
 
-// CRC-32 of ISO 3309 as PNG uses it (PNG specification, section 5.5:
-// reflected polynomial 0xEDB88320, register preset to all ones and inverted
-// at the end). Start with crc = 0; data in pieces may be fed by passing each
-// call's result to the next. crc32_update(0, "123456789", 9) == 0xCBF43926.
-uint32_t crc32_update(uint32_t crc, const uint8_t* p, std::size_t n);
+// CRC-32 (PNG specification section 5.5) is core/math/crc32.h.
 
 // Adler-32 (RFC 1950, sections 8 and 9). Start with adler = 1; data in pieces
 // may be fed by passing each call's result to the next.

@@ -89,6 +89,20 @@ std::string fixed_text_u128(unsigned __int128 units, int decimals) {
 
 unsigned __int128 round_div(unsigned __int128 n, unsigned __int128 d) { return (n + d / 2) / d; }
 
+// The chain of programs on this stock (core/stock/stock_file.h), this run last.
+std::string chain_text(const RunReport& r) {
+  std::string o = "  \"chain\": {\"programs\": [";
+  for (size_t k = 0; k < r.chain.size(); ++k) {
+    const RunReport::ChainProgram& p = r.chain[k];
+    o += std::string(k ? ", " : "") + "{\"file\": " + quoted(p.file) + ", \"removed_mm3\": " +
+         volume_mm3_text(p.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + ", \"estimated_time_s\": " +
+         seconds_of_us(p.estimated_us) + ", \"moves\": " + u64(p.moves) + "}";
+  }
+  o += "], \"removed_mm3\": " + volume_mm3_text(r.chain_removed_lsb_dexels, r.lsb_nm, r.pitch_nm) +
+       ", \"estimated_time_s\": " + seconds_of_us(r.chain_us) + ", \"moves\": " + u64(r.chain_moves) + "},\n";
+  return o;
+}
+
 std::string assessment_text(const RunReport& rep) {
   const ReportAssessment& a = rep.assessment;
   const AssessResult& r = a.result;
@@ -288,6 +302,7 @@ std::string report_json_text(const RunReport& r) {
   o += "]},\n";
   o += "  \"removed_mm3\": " + (r.nx ? volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) : std::string("0.000")) + ",\n";
   o += "  \"estimated_time_s\": " + seconds_of_us(r.estimated_us) + ",\n";
+  if (r.have_chain) o += chain_text(r);
   o += "  \"time_model\": {\"rapid_mm_per_min\": " + nm_to_mm_text(r.rapid_nm_per_min, 0) + ", \"accel_mm_per_s2\": " +
        (r.accel_nm_per_s2 ? nm_to_mm_text(r.accel_nm_per_s2, 3) : std::string("null")) + ", \"feed_s\": " +
        seconds_of_us(r.feed_us) + ", \"rapid_s\": " + seconds_of_us(r.rapid_us) + ", \"dwell_s\": " +

@@ -103,6 +103,19 @@ struct RunReport {
   std::string tool_table_units;  // "mm" or "inch" (tools/run/run_tool_table.h); empty: no table file
   std::vector<ReportToolUse> tools_used;
   uint64_t removed_lsb_dexels = 0;  // sum over dexels of height removed, LSB
+  // The chain of programs the stock has been through (--stock FILE.dxstock,
+  // --save-stock), this run's last; totals over all of them.
+  struct ChainProgram {
+    std::string file;
+    uint64_t removed_lsb_dexels;
+    int64_t estimated_us;
+    uint64_t moves;
+  };
+  bool have_chain = false;
+  std::vector<ChainProgram> chain;
+  uint64_t chain_removed_lsb_dexels = 0;
+  int64_t chain_us = 0;
+  uint64_t chain_moves = 0;
   int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
   int64_t rapid_nm_per_min = 0;
   int64_t accel_nm_per_s2 = 0;  // --accel; 0: none

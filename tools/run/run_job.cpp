@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "core/sim/simulation.h"
+#include "core/sim/stock_state.h"
+#include "platform/format/stock_io.h"
 #include "platform/os/clock.h"
 #include "platform/input/gcode_file.h"
 #include "platform/format/image_file.h"
@@ -59,6 +61,21 @@ bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<heigh
           static_cast<uint16_t>(h > 65535 ? 65535 : h);
     }
   return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
+}
+
+// The chain of programs on a saved stock, this run's last (a run that
+// neither continues nor saves a stock has none).
+void chain_to_report(const Simulation& sim, const std::string& name, RunReport* rep) {
+  StockMeta m;
+  if (!sim.job().resume && !sim.job().provenance_programs) return;
+  if (sim_stock_meta(sim, name.c_str(), &m) != StockStateError::kOk) return;
+  rep->have_chain = true;
+  for (int k = 0; k < m.nprograms; ++k)
+    rep->chain.push_back(RunReport::ChainProgram{m.programs[k].name, m.programs[k].removed_lsb_dexels,
+                                                 m.programs[k].sim_us, m.programs[k].moves});
+  rep->chain_removed_lsb_dexels = m.removed_lsb_dexels;
+  rep->chain_us = m.sim_us;
+  rep->chain_moves = m.moves;
 }
 
 // The report, with the whole run's time (when asked for); false when it
@@ -148,6 +165,19 @@ int write_files(const RunOptions& o, Run* run) {
   const double t_files = clock_now_s();
   if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
+  if (!o.out.save_stock.empty()) {
+    StockMeta m;
+    if (sim_stock_meta(*su.sim, su.shown_name.c_str(), &m) != StockStateError::kOk)
+      return fail(kExitUsage, "--save-stock: the stock already holds the %d programs a stock file remembers",
+                  kStockMaxPrograms);
+    // The stock's material and design, as the options name them (a later
+    // run is told when it names others).
+    if (!o.job.material.empty()) stock_name_set(m.material, o.job.material.c_str());
+    if (!o.job.design.empty()) stock_name_set(m.design, o.job.design.c_str());
+    std::string err;
+    if (!write_stock_file(o.out.save_stock.c_str(), m, su.sim->stock_columns(m.layers), &err))
+      return fail(kExitIo, "%s", err.c_str());
+  }
   double stl_s = 0;
   if (!o.out.stl.empty()) {
     const double t_stl = clock_now_s();
@@ -165,7 +195,8 @@ int write_files(const RunOptions& o, Run* run) {
 void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, RunReport* rep) {
   if (!o.out.frames_dir.empty()) rep->outputs.push_back(ReportOutput{"--frames", o.out.frames_dir, -1, v.frames_written()});
   const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
-                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl}};
+                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
+                                                             {"--save-stock", &o.out.save_stock}};
   for (const auto& f : files)
     if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
 }
@@ -184,6 +215,7 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   rep.instances = sim.mill().stats().instances;
   rep.dexel_updates = sim.mill().stats().dexel_updates;
   rep.removed_lsb_dexels = sim.removed_lsb();
+  chain_to_report(sim, su.shown_name, &rep);
   if (const GougeWatch* w = sim.gouges()) {
     const double t0 = clock_now_s();
     assess_design(*w, sim.grid(), &su.design);
@@ -214,6 +246,7 @@ int check_standard_output(const RunOptions& o) {
   if (standard_output_usable(&err)) return kExitOk;
   const std::pair<const char*, const std::string*> outs[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
+                                                            {"--save-stock", &o.out.save_stock},
                                                             {"--report", &o.out.report}};
   for (const auto& out : outs)
     if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());

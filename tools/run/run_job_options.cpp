@@ -32,8 +32,10 @@ int demo(Job* o, const char* v) {
 
 int stock(Job* o, const char* v) {
   if (has_extension(v, ".stl")) return o->stock_stl = v, kExitOk;
+  if (has_extension(v, ".dxstock")) return o->stock_file = v, kExitOk;
   if (!parse_box(v, o->stock_nm))
-    return fail(kExitUsage, "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1 (or a FILE.stl), not '%s'", v);
+    return fail(kExitUsage,
+                "--stock needs X0,Y0,Z0,X1,Y1,Z1 in mm with X0<X1, Y0<Y1, Z0<Z1 (or a FILE.stl or FILE.dxstock), not '%s'", v);
   o->have_stock = true;
   return kExitOk;
 }
@@ -69,9 +71,10 @@ const Option<Job> kJob[] = {
      "from its material, drawn, assessed; writes out/NAME/ (program, final.png, error.png, frames/, "
      "report.json); list: the demos",
      demo},
-    {"--stock", "X0,Y0,Z0,X1,Y1,Z1|FILE.stl",
+    {"--stock", "X0,Y0,Z0,X1,Y1,Z1|FILE.stl|FILE.dxstock",
      "the stock box, mm, machine coordinates (default: from the program), or a pre-machined blank: an STL "
-     "mesh's tops over its bounding box",
+     "mesh's tops over its bounding box, or a stock saved by --save-stock, continued where it was left (its "
+     "grid, the tool and where it stood)",
      stock},
     {"--grid", "NXxNY",
      "dexel resolution: the most dexels each way, keeping the stock's shape (default: a 32nd of the smallest "

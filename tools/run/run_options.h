@@ -58,6 +58,7 @@ struct JobOptions {
   bool have_stock = false;
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
   std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
+  std::string stock_file;        // --stock FILE.dxstock: a saved stock, continued (core/stock/stock_file.h)
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   std::string tool_text = "flat:6";
@@ -105,6 +106,7 @@ struct OutputOptions {
   ImageFormat frame_format = ImageFormat::kPng;  // --frame-format
   int64_t every = 0;             // --every; 0: about 100 frames over the program
   std::string heightmap, stl, report;
+  std::string save_stock;        // --save-stock FILE.dxstock: the final stock, to continue from
   // With none of the files above: the summary on stdout (`check
   // --simulate` and `optimize` run a job for its findings, without it).
   bool print_summary = true;

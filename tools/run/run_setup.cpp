@@ -23,6 +23,7 @@
 #include "tools/run/run_safety.h"
 #include "tools/run/run_scan.h"
 #include "tools/run/run_stock.h"
+#include "core/sim/stock_state.h"
 #include "tools/run/run_tool_table.h"
 
 namespace dexmill {
@@ -125,11 +126,60 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   return kExitOk;
 }
 
+// The report's stock and grid.
+void report_plan(RunSetup* run) {
+  const GridPlan& plan = run->plan;
+  RunReport& rep = run->rep;
+  rep.have_stock = true;
+  rep.stock_lo = plan.stock.lo;
+  rep.stock_hi = plan.stock.hi;
+  rep.nx = plan.geo.nx;
+  rep.ny = plan.geo.ny;
+  rep.pitch_nm = plan.geo.pitch_nm;
+  rep.lsb_nm = plan.geo.lsb_nm;
+}
+
+// --stock FILE.dxstock: the saved stock's header read, before the first
+// pass (the program starts where the tool was left: job.resume); its
+// columns are read into the engine once it exists (start_engine).
+int open_saved_stock(const RunOptions& o, RunSetup* run) {
+  if (o.job.stock_file.empty()) return kExitOk;
+  if (o.job.grid_nx || o.job.pitch_nm)
+    return fail(kExitUsage, "--grid and --pitch cannot change a saved stock's grid: '%s' keeps the grid it was "
+                "cut on", o.job.stock_file.c_str());
+  run->stock_in.reset(new StockFileReader);
+  std::string err;
+  if (!run->stock_in->open(o.job.stock_file, &err)) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return run->stock_in->io_error() ? kExitIo : kExitInput;
+  }
+  run->stock_meta = run->stock_in->meta();
+  const StockMeta& m = run->stock_meta;
+  if (sim_stock_fits<height_t>(m) != StockStateError::kOk) {  // the header's m, at byte 17
+    std::fprintf(stderr, "%s:1:17: error: a stock of %d-bit heights; this dexmill is built for %d-bit ones\n",
+                 o.job.stock_file.c_str(), m.height_bits, DEXMILL_HEIGHT_BITS);
+    return kExitInput;
+  }
+  if (m.nprograms >= kStockMaxPrograms && !o.out.save_stock.empty())
+    return fail(kExitUsage, "%s: the stock already holds the %d programs a stock file remembers; it cannot be "
+                "saved again", o.job.stock_file.c_str(), kStockMaxPrograms);
+  run->job.resume = &run->stock_meta;
+  return kExitOk;
+}
+
+int plan_saved_stock(RunSetup* run) {
+  run->plan = sim_plan_of_stock(run->stock_meta);
+  run->rep.stock_source = "dxstock";
+  report_plan(run);
+  return kExitOk;
+}
+
 // The stock (an STL blank, the option's box, the demo's, or the program's
 // extents) and the grid that holds it.
 int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   RunReport& rep = run->rep;
   StockBox stock;
+  if (run->stock_in) return plan_saved_stock(run);
   if (!o.job.stock_stl.empty()) {
     if (const int code = read_stock_stl(o.job.stock_stl, &run->blank, &stock)) return code;
     rep.stock_source = "stl";
@@ -157,14 +207,7 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
                    "give a finer --pitch\n", spec, nm_to_mm_text(run->plan.geo.pitch_nm, 4).c_str());
       break;
     }
-  const GridPlan& plan = run->plan;
-  rep.have_stock = true;
-  rep.stock_lo = plan.stock.lo;
-  rep.stock_hi = plan.stock.hi;
-  rep.nx = plan.geo.nx;
-  rep.ny = plan.geo.ny;
-  rep.pitch_nm = plan.geo.pitch_nm;
-  rep.lsb_nm = plan.geo.lsb_nm;
+  report_plan(run);
   return kExitOk;
 }
 
@@ -196,6 +239,12 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   SimJob& j = run->job;
   j.plan = run->plan;
   run->tools.assign(scan.tools + 1, scan.tools + scan.ntools);
+  // A saved stock's tool is still in the spindle: the table's, when it has it.
+  Tool kept;
+  if (j.resume && j.resume->have_position && j.resume->tool != 0 && run->lib && run->lib->tool(j.resume->tool, &kept)) {
+    j.tool = kept;
+    run->tools.push_back(kept);
+  }
   j.tools = run->tools.data();
   j.ntools = static_cast<int>(run->tools.size());
   if (!o.job.design.empty()) {  // before the cut: a bad file costs no simulation
@@ -214,6 +263,12 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
+  // A stock saved, or continued with its provenance: which tool, line and
+  // program cut each column is carried.
+  if (!o.out.save_stock.empty() || (j.resume && (j.resume->layers & kStockLayerClass))) {
+    j.provenance = true;
+    j.provenance_lines = j.provenance_programs = true;
+  }
   j.stop_at_gouge = o.job.stop_at_gouge;
   j.stop_at_collision = o.job.stop_at_collision;
   SimSetup why;
@@ -224,6 +279,14 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
                 static_cast<int>(run->plan.geo.nx), static_cast<int>(run->plan.geo.ny));
   run->sim = sim_create(j, run->memory.data(), bytes, &why);
   if (!run->sim) return setup_failed(why, o, *run);
+  if (run->stock_in) {
+    std::string err;
+    if (!run->stock_in->read_columns(run->sim->stock_columns(run->stock_meta.layers), &err)) {
+      std::fprintf(stderr, "%s\n", err.c_str());
+      return run->stock_in->io_error() ? kExitIo : kExitInput;
+    }
+    run->stock_in.reset();
+  }
   if (!run->blank.empty()) {
     const int code = carve_stock(&run->sim->grid(), run->plan, run->blank);
     if (code != kExitOk) return code;
@@ -286,6 +349,7 @@ int remove_earlier_frames(const RunOptions& o, RunSetup* s) {
 int run_setup(RunOptions* o, RunSetup* s) {
   if (const int code = prepare(o, s)) return code;
   if (const int code = load_tools(*o, s)) return code;
+  if (const int code = open_saved_stock(*o, s)) return code;
   if (const int code = first_pass(*o, s)) return code;
   ToolSource initial = ToolSource::kDefault;
   (void)s->choice->initial(&initial);

@@ -23,6 +23,7 @@
 #include "platform/os/memory.h"
 #include "platform/input/program_input.h"
 #include "platform/report/run_report.h"
+#include "platform/format/stock_io.h"
 #include "platform/format/tool_table.h"
 #include "tools/run/run_assess.h"
 #include "tools/run/run_material.h"
@@ -56,6 +57,8 @@ struct RunSetup {
   std::vector<Tool> tools;       // the scan's, for the job
   GridPlan plan{};
   std::vector<TriangleNm> blank;
+  std::unique_ptr<StockFileReader> stock_in;  // --stock FILE.dxstock, read up to its columns
+  StockMeta stock_meta;                       // its header: the job's resume
   RunDesign design;
   RunMaterial material;
   ZeroedBlock memory;            // the engine's (sim_required_bytes)

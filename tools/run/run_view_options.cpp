@@ -42,6 +42,13 @@ const Option<Out> kOutputs[] = {
      [](Out* o, const char* v) -> int { return o->heightmap = v, kExitOk; }},
     {"--stl", "FILE.stl", "the final surface as a closed binary STL",
      [](Out* o, const char* v) -> int { return o->stl = v, kExitOk; }},
+    {"--save-stock", "FILE.dxstock",
+     "the final stock, its columns exact, with which tool and line cut each one and the chain of programs "
+     "that made it: --stock FILE.dxstock continues from it",
+     [](Out* o, const char* v) -> int {
+       if (!has_extension(v, ".dxstock")) return fail(kExitUsage, "--save-stock needs a FILE.dxstock, not '%s'", v);
+       return o->save_stock = v, kExitOk;
+     }},
     {"--report", "FILE.json", "summary: program, errors, stock, grid, tools, volume, time",
      [](Out* o, const char* v) -> int { return o->report = v, kExitOk; }},
 };
