@@ -14,6 +14,7 @@
 #include "core/stock/stock_file.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
+#include "tests/stock_util.h"
 
 namespace {
 
@@ -52,46 +53,6 @@ std::string lines(int from, int to) {  // 1-based, inclusive
   return s;
 }
 
-// A stock file's columns (tops, bottoms as 16-bit heights; classes, lines,
-// programs when held), read with the core's reader.
-struct Columns {
-  StockMeta meta;
-  std::vector<uint16_t> top, bottom;
-  std::vector<uint8_t> cls, program;
-  std::vector<uint32_t> line;
-  bool ok = false;
-};
-Columns read_stock(const std::string& path) {
-  Columns c;
-  const std::string bytes = slurp(path);
-  StockReader rd;
-  size_t at = 0;
-  while (at < bytes.size()) {
-    size_t used = 0;
-    if (rd.feed(reinterpret_cast<const uint8_t*>(bytes.data()) + at, bytes.size() - at, &used) != StockError::kOk)
-      return c;
-    at += used;
-    if (rd.header_done() && !rd.bound()) {
-      c.meta = rd.meta();
-      const size_t n = static_cast<size_t>(c.meta.geo.nx) * static_cast<size_t>(c.meta.geo.ny);
-      c.top.resize(n);
-      c.bottom.resize(n);
-      c.cls.resize(n);
-      c.program.resize(n);
-      c.line.resize(n);
-      StockColumns cols;
-      cols.top = c.top.data();
-      cols.bottom = c.bottom.data();
-      cols.cls = c.cls.data();
-      cols.line = c.line.data();
-      cols.program = c.program.data();
-      if (!rd.bind(cols)) return c;
-    }
-  }
-  c.ok = rd.finish() == StockError::kOk && c.meta.height_bits == 16;
-  return c;
-}
-
 // A JSON number after "key": in text (the first one).
 std::string json_value(const std::string& text, const std::string& key) {
   const size_t at = text.find("\"" + key + "\": ");
@@ -125,7 +86,7 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
                     "%/whole.json --save-stock %/whole.dxstock --error-image %/whole_err.ppm" + design).code,
                0);
       const std::string whole = slurp(tmp_dir() + "/whole.json");
-      const Columns w = read_stock(tmp_dir() + "/whole.dxstock");
+      const t::StockFileColumns w = t::read_stock_file(tmp_dir() + "/whole.dxstock");
       CHECK(w.ok);
       for (int k : splits) {
         write_tmp("a.ngc", lines(1, k).c_str());
@@ -160,7 +121,7 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
         CHECK(has(chain, "/b.ngc\", \"removed_mm3\""));
         // Bottoms and tool classes too; each line names the same block of
         // the whole program (part two's lines are k - 1 further on there).
-        const Columns s = read_stock(tmp_dir() + "/b.dxstock");
+        const t::StockFileColumns s = t::read_stock_file(tmp_dir() + "/b.dxstock");
         CHECK(s.ok);
         if (!s.ok || !w.ok) continue;
         int differ = 0, worst = 0;
@@ -256,4 +217,29 @@ TEST(run_bad_stock_files_are_errors_with_their_place) {
   r = run("%/one.ngc -q --tool flat:3 --stock %/eight.dxstock");
   CHECK_EQ(r.code, 1);
   CHECK(has(r.err, "eight.dxstock:1:17: error: a stock of 8-bit heights"));
+}
+
+TEST(run_setup_refuses_what_would_resample) {
+  if (skip()) return;
+  write_tmp("s1.ngc", "G21 G90\nG0 X5 Y5 Z5\nG1 Z-1 F300\nG1 X20 F600\nG0 Z5\nM30\n");
+  CHECK_EQ(run("%/s1.ngc -q --tool flat:3 --stock 0,0,-5,30,20,0 --pitch 0.5 --save-stock %/s1.dxstock").code, 0);
+  Result r = run("%/s1.ngc -q --tool flat:3 --stock %/s1.dxstock --setup offset=0.3,0,0");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "the nearest exact one is offset=0.5,0,0"));
+  r = run("%/s1.ngc -q --tool flat:3 --setup flip-x");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "--setup turns a saved stock"));
+  r = run("%/s1.ngc -q --tool flat:3 --stock %/s1.dxstock --setup flip-z");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "not 'flip-z'"));
+  // A quarter turn of the 30 x 20 stock: the box keeps its centre and
+  // swaps its extents; turned back, the same tops as before.
+  write_tmp("none.ngc", "G21 G90\nM30\n");
+  CHECK_EQ(run("%/none.ngc -q --tool flat:3 --stock %/s1.dxstock --setup rotate-90 --report %/r90.json --save-stock "
+               "%/r90.dxstock").code,
+           0);
+  CHECK(has(slurp(tmp_dir() + "/r90.json"), "\"min_mm\": [5.0000, -5.0000, -5.0000], \"max_mm\": [25.0000, 25.0000, 0.0000]"));
+  CHECK_EQ(run("%/none.ngc -q --tool flat:3 --stock %/r90.dxstock --setup rotate-270 --heightmap %/back.pgm").code, 0);
+  CHECK_EQ(run("%/none.ngc -q --tool flat:3 --stock %/s1.dxstock --heightmap %/as_cut.pgm").code, 0);
+  CHECK(slurp(tmp_dir() + "/back.pgm") == slurp(tmp_dir() + "/as_cut.pgm"));
 }

@@ -48,12 +48,13 @@ struct StockProgram {
 };
 
 // Where the part's own frame is, seen from the current setup: a part point
-// p_part = turn * p_machine + offset (turn row-major, entries -1, 0, 1; a
-// rotation or reflection). Materials and design parts live in the part's
-// frame (core/stock/README.md).
+// 2 p_part = turn * 2 p_machine + offset (turn row-major, entries -1, 0, 1;
+// a rotation or reflection; offset in half nanometres, since a box's
+// centre, which setups turn about, may fall on half a nanometre).
+// Materials and design parts live in the part's frame (core/stock/README.md).
 struct StockFrame {
   int8_t turn[9];
-  int64_t offset_nm[3];
+  int64_t offset_half_nm[3];
 };
 StockFrame stock_frame_identity();
 

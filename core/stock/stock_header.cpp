@@ -83,7 +83,7 @@ void put_body(Put* w, const StockMeta& m) {
   w->u(m.moves, 8);
   for (int k = 0; k < 9; ++k) w->s8(m.frame.turn[k]);
   w->u(0, 3);
-  for (int k = 0; k < 3; ++k) w->i64(m.frame.offset_nm[k]);
+  for (int k = 0; k < 3; ++k) w->i64(m.frame.offset_half_nm[k]);
   w->name(m.material);
   w->u(m.material_hash, 8);
   w->name(m.design);
@@ -134,7 +134,7 @@ void get_body(Get* r, StockMeta* m) {
   m->moves = r->u(8);
   for (int k = 0; k < 9; ++k) m->frame.turn[k] = r->s8();
   (void)r->u(3);
-  for (int k = 0; k < 3; ++k) m->frame.offset_nm[k] = r->i64();
+  for (int k = 0; k < 3; ++k) m->frame.offset_half_nm[k] = r->i64();
   r->name(m->material);
   m->material_hash = r->u(8);
   r->name(m->design);
@@ -240,7 +240,7 @@ StockError stock_meta_check(const StockMeta& m, const char** detail) {
   if (m.sim_us < 0) return bad("time");
   if (!turn_ok(m.frame.turn)) return bad("part frame");
   for (int k = 0; k < 3; ++k)
-    if (m.frame.offset_nm[k] < -kCoordMaxNm || m.frame.offset_nm[k] > kCoordMaxNm) return bad("part frame offset");
+    if (m.frame.offset_half_nm[k] < -4 * kCoordMaxNm || m.frame.offset_half_nm[k] > 4 * kCoordMaxNm) return bad("part frame offset");
   if (!name_ok(m.material) || !name_ok(m.design)) return bad("material or design name");
   if (m.prov_ntools < 0 || m.prov_ntools > kStockMaxTools || m.prov_unlisted < 0) return bad("provenance tools");
   if ((m.layers & kStockLayerClass) ? (m.prov_slots < 1 || m.prov_slots > 255) : m.prov_slots != 0)

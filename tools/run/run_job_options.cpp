@@ -40,6 +40,44 @@ int stock(Job* o, const char* v) {
   return kExitOk;
 }
 
+// --setup: flip-x, flip-y, rotate-90|180|270, offset=X,Y,Z (mm), several
+// joined by '+' or spaces, applied flips first, then the turn, then the
+// offset (core/stock/stock_transform.h).
+int setup(Job* o, const char* v) {
+  StockSetup s;
+  std::string text(v);
+  for (char& ch : text)
+    if (ch == '+') ch = ' ';
+  size_t at = 0;
+  bool any = false;
+  while (at < text.size()) {
+    const size_t end = text.find(' ', at) == std::string::npos ? text.size() : text.find(' ', at);
+    const std::string word = text.substr(at, end - at);
+    at = end + 1;
+    if (word.empty()) continue;
+    any = true;
+    if (word == "flip-x") s.flip_x = !s.flip_x;
+    else if (word == "flip-y") s.flip_y = !s.flip_y;
+    else if (word == "rotate-90") s.quarter_turns += 1;
+    else if (word == "rotate-180") s.quarter_turns += 2;
+    else if (word == "rotate-270") s.quarter_turns += 3;
+    else if (word.compare(0, 7, "offset=") == 0) {
+      int64_t d[3];
+      if (!parse_mm_list(word.c_str() + 7, 3, d))
+        return fail(kExitUsage, "--setup offset= needs X,Y,Z in mm, not '%s'", word.c_str() + 7);
+      s.offset_nm = PointNm{s.offset_nm.x_nm + d[0], s.offset_nm.y_nm + d[1], s.offset_nm.z_nm + d[2]};
+    } else {
+      return fail(kExitUsage, "--setup takes flip-x, flip-y, rotate-90, rotate-180, rotate-270 and offset=X,Y,Z "
+                  "(joined by '+'), not '%s'", word.c_str());
+    }
+  }
+  if (!any) return fail(kExitUsage, "--setup needs a setup (flip-x, flip-y, rotate-90|180|270, offset=X,Y,Z)");
+  s.quarter_turns %= 4;
+  o->setups.push_back(s);
+  o->setup_texts.push_back(v);
+  return kExitOk;
+}
+
 int tool(Job* o, const char* v) {
   const ToolSpecError e = tool_spec_parse(v, std::strlen(v), &o->tool);
   if (e != ToolSpecError::kOk) return fail(kExitUsage, "bad --tool '%s': %s", v, tool_spec_message(e));
@@ -76,6 +114,11 @@ const Option<Job> kJob[] = {
      "mesh's tops over its bounding box, or a stock saved by --save-stock, continued where it was left (its "
      "grid, the tool and where it stood)",
      stock},
+    {"--setup", "T",
+     "turns a saved stock (--stock FILE.dxstock) into this program's fixturing, exactly: flip-x, flip-y (the "
+     "part turned over about its box's X or Y axis), rotate-90|180|270 (about Z, counterclockwise), "
+     "offset=X,Y,Z (mm, whole dexels and height steps); joined by '+', repeatable, in order",
+     setup},
     {"--grid", "NXxNY",
      "dexel resolution: the most dexels each way, keeping the stock's shape (default: a 32nd of the smallest "
      "tool, 256 to 1024 dexels across the longer side)",

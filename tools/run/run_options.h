@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/stock/stock_transform.h"
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
 #include "core/design/builtin.h"
@@ -59,6 +60,8 @@ struct JobOptions {
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
   std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
   std::string stock_file;        // --stock FILE.dxstock: a saved stock, continued (core/stock/stock_file.h)
+  std::vector<StockSetup> setups;  // --setup T (repeatable): turned into this program's fixturing, in order
+  std::vector<std::string> setup_texts;  // as given, for messages
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   std::string tool_text = "flat:6";

@@ -139,11 +139,23 @@ void report_plan(RunSetup* run) {
   rep.lsb_nm = plan.geo.lsb_nm;
 }
 
+// Millimetres with no trailing zeros (0.5, not 0.500000).
+std::string short_mm(int64_t nm) {
+  std::string s = nm_to_mm_text(nm, 6);
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
 // --stock FILE.dxstock: the saved stock's header read, before the first
 // pass (the program starts where the tool was left: job.resume); its
 // columns are read into the engine once it exists (start_engine).
 int open_saved_stock(const RunOptions& o, RunSetup* run) {
-  if (o.job.stock_file.empty()) return kExitOk;
+  if (o.job.stock_file.empty()) {
+    if (!o.job.setups.empty())
+      return fail(kExitUsage, "--setup turns a saved stock: give the stock with --stock FILE.dxstock");
+    return kExitOk;
+  }
   if (o.job.grid_nx || o.job.pitch_nm)
     return fail(kExitUsage, "--grid and --pitch cannot change a saved stock's grid: '%s' keeps the grid it was "
                 "cut on", o.job.stock_file.c_str());
@@ -163,7 +175,32 @@ int open_saved_stock(const RunOptions& o, RunSetup* run) {
   if (m.nprograms >= kStockMaxPrograms && !o.out.save_stock.empty())
     return fail(kExitUsage, "%s: the stock already holds the %d programs a stock file remembers; it cannot be "
                 "saved again", o.job.stock_file.c_str(), kStockMaxPrograms);
+  run->stock_file_meta = m;
+  for (size_t k = 0; k < o.job.setups.size(); ++k) {
+    PointNm nearest{0, 0, 0};
+    const StockSetupError e = stock_setup_meta(o.job.setups[k], &run->stock_meta, &nearest);
+    if (e == StockSetupError::kOffsetNotExact)
+      return fail(kExitUsage, "--setup '%s': %s; the nearest exact one is offset=%s,%s,%s", o.job.setup_texts[k].c_str(),
+                  stock_setup_message(e), short_mm(nearest.x_nm).c_str(), short_mm(nearest.y_nm).c_str(),
+                  short_mm(nearest.z_nm).c_str());
+    if (e != StockSetupError::kOk)
+      return fail(kExitUsage, "--setup '%s': %s", o.job.setup_texts[k].c_str(), stock_setup_message(e));
+  }
   run->job.resume = &run->stock_meta;
+  return kExitOk;
+}
+
+// The --setup turns on the columns read in the file's layout (the engine's
+// grid is already the turned one's: same count of columns).
+int turn_saved_stock(const RunOptions& o, RunSetup* run) {
+  StockMeta m = run->stock_file_meta;
+  const StockColumns cols = run->sim->stock_columns(m.layers);
+  for (size_t k = 0; k < o.job.setups.size(); ++k) {
+    std::vector<uint32_t> scratch(stock_setup_scratch_bytes(m, o.job.setups[k]) / 4 + 1);
+    const StockSetupError e = stock_apply_setup(o.job.setups[k], &m, cols, scratch.data(), scratch.size() * 4);
+    if (e != StockSetupError::kOk)
+      return fail(kExitUsage, "--setup '%s': %s", o.job.setup_texts[k].c_str(), stock_setup_message(e));
+  }
   return kExitOk;
 }
 
@@ -286,6 +323,7 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
       return run->stock_in->io_error() ? kExitIo : kExitInput;
     }
     run->stock_in.reset();
+    if (const int code = turn_saved_stock(o, run)) return code;
   }
   if (!run->blank.empty()) {
     const int code = carve_stock(&run->sim->grid(), run->plan, run->blank);

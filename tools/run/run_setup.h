@@ -58,7 +58,8 @@ struct RunSetup {
   GridPlan plan{};
   std::vector<TriangleNm> blank;
   std::unique_ptr<StockFileReader> stock_in;  // --stock FILE.dxstock, read up to its columns
-  StockMeta stock_meta;                       // its header: the job's resume
+  StockMeta stock_meta;                       // its header after the --setup turns: the job's resume
+  StockMeta stock_file_meta;                  // as the file has it (the columns are read in its layout)
   RunDesign design;
   RunMaterial material;
   ZeroedBlock memory;            // the engine's (sim_required_bytes)
