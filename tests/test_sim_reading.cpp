@@ -49,9 +49,10 @@ struct Moves final : SimObserver {
 
 }  // namespace
 
-// #5061-#5070 after a probe move: its end point (the machine's contact
-// point cannot be known), in the coordinates in force then, and 1.
-TEST(sim_probe_results_are_the_end_point) {
+// #5061-#5070 after a probe move: where it touched the stock (the engine
+// has it: core/cut/probe.h), in the coordinates in force then, and 1. The
+// probe down to Z-2 stops on the untouched top, Z0.
+TEST(sim_probe_results_are_where_it_touched) {
   Moves moves;
   Run r;
   r.observer = &moves;
@@ -67,9 +68,9 @@ TEST(sim_probe_results_are_the_end_point) {
   CHECK_EQ(probe.line, 5u);
   CHECK_EQ(probe.end.x_nm, 15 * kNmPerMm);
   CHECK_EQ(probe.end.y_nm, 5 * kNmPerMm);
-  CHECK_EQ(probe.end.z_nm, -2 * kNmPerMm);
+  CHECK_EQ(probe.end.z_nm, 0);
   CHECK(after.kind == CanonKind::kTraverse);
   CHECK_EQ(after.end.x_nm, 16 * kNmPerMm);
   CHECK_EQ(after.end.y_nm, 5 * kNmPerMm);
-  CHECK_EQ(after.end.z_nm, -1 * kNmPerMm);
+  CHECK_EQ(after.end.z_nm, 1 * kNmPerMm);
 }

@@ -88,6 +88,9 @@ const char* gcode_error_template(GcodeError e) {
       return "{w}: Q makes {n} pecks down {b} mm, more than the 1000000 a block may make (is Q in the right units?)";
     case GcodeError::kProbeNoAxis: return "{w}: probe move without X, Y or Z";
     case GcodeError::kProbeTooClose: return "{w}: the probe move ends where it starts";
+    case GcodeError::kProbeAlreadyTripped: return "{w}: the probe already touches the stock where the move starts";
+    case GcodeError::kProbeNotTripped: return "{w}: the probe does not touch the stock where the move starts";
+    case GcodeError::kProbeNoContact: return "{w}: the probe move reached its end without tripping (G38.2: touching the stock, G38.4: leaving it)";
     case GcodeError::kPolarWithXY: return "{w} word with polar coordinates (@ and ^ give X and Y)";
     case GcodeError::kPolarPlane: return "{w}: polar coordinates only in the XY plane (G17)";
     case GcodeError::kPolarNotMotion:
@@ -183,7 +186,8 @@ const char* gcode_error_template(GcodeError e) {
              "the time estimate counts it as 1000000 mm/min";
     case GcodeError::kWarnFastSpindle: return "{w}: spindle speed above 1000000 rpm, taken as written";
     case GcodeError::kWarnProbe:
-      return "{w}: probe moves are simulated to their end points; the machine stops where the probe touches";
+      return "{w}: without a stock a probe move runs to its end point (dexmill run stops each where it touches the "
+             "stock)";
     case GcodeError::kWarnTapPlane:
       return "{w} in G18/G19: LinuxCNC 2.9 taps to a point with the plane's axes swapped (its "
              "convert_cycle_g74_g84); simulated as it moves";

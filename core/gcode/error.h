@@ -112,6 +112,10 @@ enum class GcodeError : uint16_t {
   kCompArcAfterExit = 94,
   kCompQueueFull = 95,
   kCompInternal = 96,
+  // probes that touch the simulated stock (core/interp/interp.h ProbeSensor)
+  kProbeAlreadyTripped = 97,
+  kProbeNotTripped = 98,
+  kProbeNoContact = 99,
   // -- recognised but not supported (100..139)
   kUnsupportedOword = 100,
   kUnsupportedParameter = 101,

@@ -350,6 +350,7 @@ void Interp::reset() {
   }
   records_ = 0;
   moves_ = 0;
+  probe_moves_ = 0;
   any_code_ = false;
   any_failed_ = false;
   suspect_ = 0;

@@ -65,6 +65,18 @@ class ToolTable {
   ~ToolTable() = default;
 };
 
+// Where a probe move (G38.2-G38.5) stops, asked of whoever has the stock
+// (core/sim/simulation.h; the interpreter alone has none): the tool from
+// `from` towards `to` (record frame: machine, tip), motion 382..385.
+enum class ProbeSense : uint8_t { kTripped, kNoContact, kAlreadyTripped };
+class ProbeSensor {
+ public:
+  virtual ProbeSense sense(const PointNm& from, const PointNm& to, int motion, PointNm* stop) = 0;
+
+ protected:
+  ~ProbeSensor() = default;
+};
+
 struct InterpOptions {
   bool inch = false;                  // units before any G20/G21
   // The caller chose `inch` (a --units option): a program that sets no
@@ -100,6 +112,9 @@ struct InterpOptions {
   // nm) and the tool in the spindle, as a previous program on the same
   // stock left them (core/stock/stock_file.h). Otherwise the program
   // starts at the origin with tool 0, as LinuxCNC's interpreter does.
+  // Probe moves stop where this says (null: at their end point, with a
+  // warning, as a preview that has no stock must).
+  ProbeSensor* probe = nullptr;
   bool start_given = false;
   PointNm start_pos{0, 0, 0};
   int32_t start_tool = 0;
@@ -143,7 +158,7 @@ struct InterpState {
   int64_t cycle_p_ms;       // last P (dwell) of G74/G82/G84/G86/G88/G89
   int64_t cycle_ijk_nm[3];  // last I, J, K of G87 as written (nm)
   PointNm probe_prog;       // the last probe move's end, program frame at the time (#5061-#5063)
-  bool probed;              // a probe move was made (#5070)
+  bool probed;              // a probe move tripped (#5070)
   CompState comp;           // cutter radius compensation (cutter_comp.h); pos is the compensated point
   bool ended;               // after M2/M30 or a closing %
   bool percent_open;        // a first % line was seen
@@ -180,6 +195,8 @@ class Interp {
   // if with no endif, a call of a subroutine never found), *diag filled in
   // (when not null).
   GcodeError end_of_input(uint32_t last_line, GcodeDiag* diag = nullptr);
+  // Probe moves (G38.2-G38.5) read so far.
+  uint32_t probe_moves() const { return probe_moves_; }
 
   // The source the lines come from (InterpOptions::source), for a driver
   // that opens it after the interpreter was made.
@@ -227,6 +244,7 @@ class Interp {
   InterpState state_;
   uint64_t records_ = 0;
   uint64_t moves_ = 0;        // moves that go somewhere (for the no-motion warning)
+  uint32_t probe_moves_ = 0;  // G38.2-G38.5 blocks read (a front end without a stock says so)
   bool any_code_ = false;     // a line held code (an error counts)
   bool any_failed_ = false;   // a block failed
   uint16_t suspect_ = 0;      // facets of the state that may not be what the program meant (Facet)

@@ -64,11 +64,26 @@ GcodeError BlockRunner::run_probe(int motion) {
   if (nx.inverse_time) return fail(GcodeError::kFeedZero, col, w);
   if ((e = run_straight(motion, false)) != GcodeError::kOk) return e;
   if (plan.target == cur.pos) return fail(GcodeError::kProbeTooClose, col, w);
+  ++in.probe_moves_;
+  bool tripped = true;
+  if (ProbeSensor* sensor = in.options_.probe) {
+    // The stock says where the probe trips (G38.2/G38.3 on touching,
+    // G38.4/G38.5 on leaving), as LinuxCNC's motion controller reports it.
+    const PointNm at{cur.pos.x_nm + cur.stray.x_nm, cur.pos.y_nm + cur.stray.y_nm, cur.pos.z_nm + cur.stray.z_nm};
+    PointNm stop{0, 0, 0};
+    const ProbeSense r = sensor->sense(machine_of(cur, at), machine_of(nx, plan.target), motion, &stop);
+    const bool toward = motion == 382 || motion == 383, must = motion == 382 || motion == 384;
+    if (r == ProbeSense::kAlreadyTripped)
+      return fail(toward ? GcodeError::kProbeAlreadyTripped : GcodeError::kProbeNotTripped, col, w);
+    if (r == ProbeSense::kNoContact && must) return fail(GcodeError::kProbeNoContact, col, w);
+    tripped = r == ProbeSense::kTripped;
+    if (tripped) nx.pos = plan.target = frame_of_machine(nx, stop);  // the machine is where it stopped
+  }
   // #5061-#5070: where the probe stopped, in the coordinates in force, and
-  // that it touched; here the end point (interp_params.cpp).
+  // whether it tripped (interp_params.cpp); without a sensor, the end point.
   for (int ax = 0; ax < 3; ++ax) axis_ref(nx.probe_prog, ax) = axis_val(plan.target, ax) - offset(ax);
-  nx.probed = true;
-  warn_once(kOnceProbe, GcodeError::kWarnProbe, col, w);
+  nx.probed = tripped;
+  if (!in.options_.probe) warn_once(kOnceProbe, GcodeError::kWarnProbe, col, w);
   return GcodeError::kOk;
 }
 

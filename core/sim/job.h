@@ -114,6 +114,10 @@ struct SimJob {
   // and number, the provenance's tool order and the chain's programs.
   // Null: a fresh stock from the plan.
   const StockMeta* resume = nullptr;
+  // Probe moves (G38.2-G38.5) stop where the tool, or a ball tip of this
+  // diameter (> 0), trips on the stock as cut so far (core/cut/probe.h).
+  // 0: the tool in the spindle.
+  int64_t probe_tip_nm = 0;
 
   // Stopping: at the first record of line stop_line or later (a program cut
   // up to its first bad block: 0, none), and at the end of a line that

@@ -25,6 +25,7 @@ void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem
   while (runner.step() && !bad_tool_line) {
   }
   lines = runner.lines();
+  probes = interp.probe_moves();
   io_error = runner.io_error();
   interp_ = nullptr;
   also_ = nullptr;

@@ -63,6 +63,7 @@ class ProgramScan final : public CanonSink {
   uint32_t bad_tool_line = 0;  // the first M6 of a T the library lacks (0: none), and its number
   int32_t bad_tool = 0;
   uint32_t lines = 0;          // lines read
+  uint32_t probes = 0;         // probe moves (G38.2-G38.5): the cut, with the stock, says where they stop
   bool io_error = false;
 
   // The smallest diameter among the tools (0 with none).

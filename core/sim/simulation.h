@@ -128,7 +128,7 @@ constexpr int kSimDiagsMax = 16;
 // A simulation of m-bit heights H (core/grid/grid.h); Simulation is the
 // build's (core/config.h H).
 template <class H>
-class SimulationT final : public CanonSink {
+class SimulationT final : public CanonSink, public ProbeSensor {
  public:
   // Bytes of memory a simulation of `job` needs (0 with *why set when the
   // job cannot be simulated: a tool too large, fixtures off the lattice...).
@@ -227,6 +227,11 @@ class SimulationT final : public CanonSink {
 
   // CanonSink: the interpreter's records (queued, cut in order).
   void emit(const CanonRecord& r) override;
+  // ProbeSensor: where a probe move trips on the stock as cut so far (the
+  // one place the interpreter waits for the cut: the records before the
+  // probe are cut, the deferred end cap shown, in the memory the run has;
+  // nothing is kept).
+  ProbeSense sense(const PointNm& from, const PointNm& to, int motion, PointNm* stop) override;
 
   // The layout's (sim_create.cpp): where each part lives in the block, and
   // a record queued with the interpreter's state when it was made.

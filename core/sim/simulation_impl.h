@@ -13,6 +13,7 @@
 #include "core/grid/volume.h"
 #include "core/sim/carver.h"
 #include "core/sim/simulation.h"
+#include "core/cut/probe.h"
 #include "core/tool/cutter.h"
 
 namespace dexmill {
@@ -215,6 +216,7 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
               [&]() {
                 InterpOptions o = sim_interp_options(job, &single_, m.program);
                 o.warnings = &msgs_;  // counted, then the job's
+                o.probe = this;       // probe moves stop on the stock
                 return o;
               }()),
       runner_(&chunks_, &interp_, &msgs_, true),
@@ -486,6 +488,28 @@ SimState SimulationT<H>::step(const SimBudget& budget) {
     }
     ++lines;
     if (queue_n_ == 0 && line_end_stops()) return state_;
+  }
+}
+
+template <class H>
+ProbeSense SimulationT<H>::sense(const PointNm& from, const PointNm& to, int motion, PointNm* stop) {
+  while (queue_n_ > 0 && !finished_) {  // (a probe line is read with the queue empty: step's order)
+    const Queued q = queue_[queue_head_];
+    queue_head_ = (queue_head_ + 1) % queue_cap_;
+    --queue_n_;
+    process(q);
+  }
+  sync();
+  ToolProfile tip = profile_;
+  if (job_.probe_tip_nm > 0) {
+    tip.kind = ToolKind::kBall;
+    tip.radius_nm = job_.probe_tip_nm / 2;
+    tip.corner_nm = tip.radius_nm;
+  }
+  switch (probe_move(grid_, tip, from, to, motion == 382 || motion == 383, stop)) {
+    case ProbeResult::kTripped: return ProbeSense::kTripped;
+    case ProbeResult::kAlreadyTripped: return ProbeSense::kAlreadyTripped;
+    default: return ProbeSense::kNoContact;
   }
 }
 

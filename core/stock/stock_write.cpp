@@ -15,7 +15,8 @@ class Out {
     if (n_ == sizeof buf_) flush();
   }
   void uint_le(uint64_t v, int bytes) {
-    for (int i = 0; i < bytes; ++i) byte(static_cast<uint8_t>(v >> (8 * i)));
+    if (n_ + static_cast<size_t>(bytes) > sizeof buf_) flush();  // a value never straddles a flush
+    for (int i = 0; i < bytes; ++i) buf_[n_++] = static_cast<uint8_t>(v >> (8 * i));
   }
   // The CRC of what was written since the last crc_restart.
   void crc_restart() {

@@ -199,6 +199,10 @@ void GcodeNotes::message(uint32_t line, int kind, const char* text) {
   if (print_) std::fprintf(stderr, "%s:%u: %s: %s\n", file_, line, k, text);
 }
 
+void GcodeNotes::print_kept() const {
+  for (const Note& n : kept) std::fprintf(stderr, "%s:%u: %s: %s\n", file_, n.line, n.kind, n.text.c_str());
+}
+
 std::unique_ptr<GcodeMemory> gcode_memory() { return std::unique_ptr<GcodeMemory>(new GcodeMemory()); }
 
 }  // namespace dexmill

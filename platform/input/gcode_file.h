@@ -178,6 +178,8 @@ class GcodeNotes final : public GcodeMessageSink {
  public:
   explicit GcodeNotes(const char* file_name, bool print = true) : file_(file_name), print_(print) {}
   void message(uint32_t line, int kind, const char* text) override;
+  // Prints the notes kept (made with print false: printed once known to be right).
+  void print_kept() const;
   struct Note {
     uint32_t line;
     const char* kind;  // "debug", "print", "message"

@@ -29,12 +29,35 @@
 #include "tools/run/run_assess.h"
 #include "tools/run/run_material.h"
 #include "tools/run/run_safety.h"
+#include "tools/run/run_scan.h"
 #include "tools/run/run_setup.h"
 #include "tools/run/run_views.h"
 
 namespace dexmill {
 namespace cli {
 namespace {
+
+// The errors only the cut finds, in a program that probes: a probe that
+// trips where it starts or reaches its end untripped (G38.2, G38.4), as
+// LinuxCNC's motion controller ends the program there. The others the
+// first pass reported already.
+class ProbeErrors final : public GcodeMessages {
+ public:
+  ProbeErrors(const std::string& file, bool print, std::vector<ReportDiag>* out) : msgs_(file, print), out_(out) {}
+  void error(const GcodeDiag& d) override {
+    if (d.code != GcodeError::kProbeNoContact && d.code != GcodeError::kProbeAlreadyTripped &&
+        d.code != GcodeError::kProbeNotTripped)
+      return;
+    msgs_.error(d);
+    out_->push_back(msgs_.error_list.back());
+  }
+  void warning(const GcodeDiag&) override {}
+  void set_file(const char* name) override { msgs_.set_file(name); }
+
+ private:
+  RunMessages msgs_;
+  std::vector<ReportDiag>* out_;
+};
 
 // One run: the engine set up (tools/run/run_setup.h), and its views.
 struct Run {
@@ -118,6 +141,8 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   in.set_subroutine_path(o.job.read.subroutine_path);
   in.set_guard(su.guard);
   sim.read_from(&in);
+  ProbeErrors probe_errors(su.shown_name, su.print, &su.probe_errors);
+  if (su.cut_notes) sim.forward_messages(&probe_errors);
   SimBudget line;
   line.lines = 1;
   Progress progress(stderr, !o.view.quiet && !v.live());
@@ -215,6 +240,16 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   rep.instances = sim.mill().stats().instances;
   rep.dexel_updates = sim.mill().stats().dexel_updates;
   rep.removed_lsb_dexels = sim.removed_lsb();
+  if (su.cut_notes) {  // a program that probes: the cut's messages and probe errors
+    rep.messages.clear();
+    for (const GcodeNotes::Note& n : su.cut_notes->kept)
+      if (rep.messages.size() < 100) rep.messages.push_back(RunReport::Message{n.line, n.kind, n.text});
+    for (const ReportDiag& d : su.probe_errors) rep.errors.push_back(d);
+    if (!su.probe_errors.empty() && rep.stopped_reason.empty()) {
+      rep.stopped_reason = "error";
+      rep.stopped_line = su.probe_errors.front().line;
+    }
+  }
   chain_to_report(sim, su.shown_name, &rep);
   if (const GougeWatch* w = sim.gouges()) {
     const double t0 = clock_now_s();
@@ -287,7 +322,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     if (std::fflush(stdout) != 0 || std::ferror(stdout))
       return fail(kExitIo, "cannot print the summary on standard output: %s", std::strerror(errno));
   }
-  if (su.job.stop_line) return kExitInput;
+  if (su.job.stop_line || !su.probe_errors.empty()) return kExitInput;
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
   if (!o.view.quiet && su.demo)

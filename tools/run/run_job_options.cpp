@@ -119,6 +119,14 @@ const Option<Job> kJob[] = {
      "part turned over about its box's X or Y axis), rotate-90|180|270 (about Z, counterclockwise), "
      "offset=X,Y,Z (mm, whole dexels and height steps); joined by '+', repeatable, in order",
      setup},
+    {"--probe", "DIA",
+     "the ball tip, mm across, a probe move (G38.2-G38.5) carries; each stops where it touches (or leaves) the "
+     "stock as cut so far, and #5061-#5063, #5070 say where (default: the tool in the spindle)",
+     [](Job* o, const char* v) -> int {
+       if (!parse_scaled(v, kNmPerMm, &o->probe_tip_nm) || o->probe_tip_nm < 1000 || o->probe_tip_nm > 100 * kNmPerMm)
+         return fail(kExitUsage, "--probe needs a tip diameter from 0.001 to 100 mm, not '%s'", v);
+       return kExitOk;
+     }},
     {"--grid", "NXxNY",
      "dexel resolution: the most dexels each way, keeping the stock's shape (default: a 32nd of the smallest "
      "tool, 256 to 1024 dexels across the longer side)",

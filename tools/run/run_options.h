@@ -60,6 +60,7 @@ struct JobOptions {
   int64_t stock_nm[6] = {};      // X0 Y0 Z0 X1 Y1 Z1, machine mm -> nm, X0 < X1 ...
   std::string stock_stl;         // --stock FILE.stl: a pre-machined blank (have_stock false)
   std::string stock_file;        // --stock FILE.dxstock: a saved stock, continued (core/stock/stock_file.h)
+  int64_t probe_tip_nm = 0;      // --probe DIA: a G38 move's ball tip (0: the tool in the spindle)
   std::vector<StockSetup> setups;  // --setup T (repeatable): turned into this program's fixturing, in order
   std::vector<std::string> setup_texts;  // as given, for messages
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default

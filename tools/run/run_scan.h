@@ -30,7 +30,12 @@ class RunMessages final : public GcodeMessages {
   RunMessages(const std::string& file, bool print) : file_(file), print_(print) {}
   void set_file(const char* name) override { file_ = name; }
   void error(const GcodeDiag& d) override;
-  void warning(const GcodeDiag& d) override { warning_text(d.line, d.col, gcode_diag_message(d)); }
+  void warning(const GcodeDiag& d) override {
+    // `run` stops probes on the stock (the cut, core/sim/simulation.h):
+    // the interpreter's word that it cannot is not the run's.
+    if (d.code == GcodeError::kWarnProbe) return;
+    warning_text(d.line, d.col, gcode_diag_message(d));
+  }
   // An error found outside the interpreter (a tool the table lacks).
   void error_text(uint32_t line, uint32_t col, const std::string& msg);
   // A warning found outside it (a tool guessed), counted with the rest.

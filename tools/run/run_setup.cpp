@@ -306,6 +306,7 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     j.provenance = true;
     j.provenance_lines = j.provenance_programs = true;
   }
+  j.probe_tip_nm = o.job.probe_tip_nm;
   j.stop_at_gouge = o.job.stop_at_gouge;
   j.stop_at_collision = o.job.stop_at_collision;
   SimSetup why;
@@ -347,7 +348,9 @@ int first_pass(const RunOptions& o, RunSetup* run) {
   rep.rapid_nm_per_min = o.job.rapid_nm_per_min;
   rep.accel_nm_per_s2 = o.job.accel_nm_per_s2;
   RunMessages msgs(run->shown_name, run->print);
-  GcodeNotes notes(run->shown_name.c_str(), run->print);
+  // The program's messages are printed after the pass, from this one
+  // unless it probes: then the cut's, where each probe stopped on the stock.
+  GcodeNotes notes(run->shown_name.c_str(), false);
   SimJob scan_job = run->job;
   scan_job.notes = &notes;
   run->scan.reset(new ProgramScan(scan_job));
@@ -358,6 +361,12 @@ int first_pass(const RunOptions& o, RunSetup* run) {
   if (const int code = scan_pass(in, run->scan.get(), notes, run->want_path ? &run->path : nullptr, &msgs, &rep))
     return code;
   rep.timing.emplace_back("scan", clock_now_s() - t0);
+  if (run->scan->probes == 0) {
+    if (run->print) notes.print_kept();
+  } else {
+    run->cut_notes.reset(new GcodeNotes(run->shown_name.c_str(), run->print));
+    run->job.notes = run->cut_notes.get();
+  }
   run->job.tool = run->scan->tools[0];  // a comment's, when it gives the tool before any M6
   run->scan_errors = msgs.errors();
   run->scan_warnings = msgs.warnings();

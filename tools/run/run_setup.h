@@ -20,6 +20,7 @@
 #include "core/sim/simulation.h"
 #include "display/overlay/backplot.h"
 #include "platform/input/file_guard.h"
+#include "platform/input/gcode_file.h"
 #include "platform/os/memory.h"
 #include "platform/input/program_input.h"
 #include "platform/report/run_report.h"
@@ -51,6 +52,10 @@ struct RunSetup {
   SimJob job;
   RunReport rep;
   std::unique_ptr<ProgramScan> scan;
+  // A program that probes: its messages from the cut (where each probe
+  // stopped on the stock), and the probe errors only the cut finds.
+  std::unique_ptr<GcodeNotes> cut_notes;
+  std::vector<ReportDiag> probe_errors;
   uint32_t scan_errors = 0, scan_warnings = 0;
   std::vector<PathSegment> path;
   bool want_path = false;        // the backplot: for --path-overlay, and a live view (its p key)
