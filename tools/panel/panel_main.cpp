@@ -18,6 +18,9 @@
 #include "core/assess/assess.h"
 #include "core/safety/safety.h"
 #include "core/sim/simulation.h"
+#include "core/sim/stock_state.h"
+#include "core/stock/stock_file.h"
+#include "core/stock/stock_transform.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
 #include "core/design/design.h"
@@ -518,6 +521,97 @@ bool api_preview(golden::Out& out, uint64_t* steps_out, ThumbCost* thumbs) {
   return state == DM_DONE && p.errors == 0 && thumbs_ok;
 }
 
+// ==== TWO SIDES: a stock kept between two programs, flipped ===================
+// What a panel at the machine does for a second side: the first side's
+// stock saved (to a buffer standing for its flash or SD card, through the
+// stock file's writer), read back in 512-byte pieces into a new simulation,
+// turned over about X (core/stock/stock_transform.h), and the second side
+// cut on it. Host and board must agree on every bit.
+const char kSide1[] =
+    "G21 G90 G17 G94\nT1 M6\nS12000 M3\nG0 X12 Y10 Z25\nG1 Z17 F400\nG1 X36 F900\nY22\nX12\nY10\nG0 Z25\n"
+    "G98 G81 X6 Y6 Z-1 R22 F300\nX42\nG80\nM30\n";
+const char kSide2[] =
+    "G21 G90 G17 G94\nT2 M6\nS12000 M3\nG0 X4 Y20 Z25\nG1 Z18 F400\nG1 X44 F900\nY28\nX4\nY20\nG0 Z25\nM30\n";
+constexpr size_t kStockFileMax = kStockHeaderBytes + 4 * kNx * kNy + 4 * kNy + kStockTrailerBytes;
+alignas(4) unsigned char g_stock_flash[kStockFileMax];
+size_t g_stock_flash_n = 0;
+
+bool to_flash(void*, const uint8_t* p, size_t n) {
+  if (g_stock_flash_n + n > sizeof g_stock_flash) return false;
+  memcpy(g_stock_flash + g_stock_flash_n, p, n);
+  g_stock_flash_n += n;
+  return true;
+}
+
+Simulation* cut_text(const SimJob& job, const char* text) {
+  Simulation* sim = sim_create(job, g_sim_mem, sizeof g_sim_mem);
+  if (!sim) return nullptr;
+  sim->feed(text, strlen(text));
+  sim->close_input();
+  while (sim->step(SimBudget()) == SimState::kReady) {
+  }
+  return sim;
+}
+
+bool two_sides(golden::Out& out, const PanelLibrary& lib, uint64_t* cost_save, uint64_t* cost_load) {
+  SimJob side1 = panel_job(lib);
+  Simulation* sim = cut_text(side1, kSide1);
+  if (!sim || sim->errors() != 0) return false;
+  StockMeta m;
+  if (sim_stock_meta(*sim, "side1", &m) != StockStateError::kOk) return false;
+  const uint64_t t0 = golden::board_instructions();
+  g_stock_flash_n = 0;
+  const StockError we = stock_write(m, sim->stock_columns(m.layers), to_flash, nullptr);
+  *cost_save = golden::board_instructions() - t0;
+  out.str("panel side1").kx("hash", grid_hash(sim->grid())).kv("removed_lsb", static_cast<int64_t>(sim->removed_lsb()));
+  out.kv("stock_bytes", static_cast<int64_t>(g_stock_flash_n)).kv("write", static_cast<int64_t>(we)).end();
+  sim_destroy(sim);
+  if (we != StockError::kOk) return false;
+  // The second side: the saved stock read from "flash", turned over about X.
+  static StockReader reader;  // 4.6 KB: static, not on the board's stack
+  reader = StockReader();
+  size_t at = 0, used = 0;
+  StockError re = reader.feed(g_stock_flash, g_stock_flash_n, &used);  // stops at the header's end
+  at += used;
+  if (re != StockError::kOk || !reader.header_done()) return false;
+  StockMeta turned = reader.meta();
+  StockSetup flip;
+  flip.flip_x = true;
+  if (stock_setup_meta(flip, &turned) != StockSetupError::kOk) return false;
+  SimJob side2 = panel_job(lib);
+  side2.plan = sim_plan_of_stock(turned);
+  side2.resume = &turned;
+  sim = sim_create(side2, g_sim_mem, sizeof g_sim_mem);
+  if (!sim) return false;
+  const uint64_t t1 = golden::board_instructions();
+  StockMeta as_read = reader.meta();
+  if (!reader.bind(sim->stock_columns(as_read.layers))) return false;
+  while (at < g_stock_flash_n && re == StockError::kOk) {  // as from an SD card, a sector at a time
+    const size_t piece = g_stock_flash_n - at < 512 ? g_stock_flash_n - at : 512;
+    re = reader.feed(g_stock_flash + at, piece, &used);
+    at += used;
+  }
+  if (re == StockError::kOk) re = reader.finish();
+  const StockSetupError se = stock_apply_setup(flip, &as_read, sim->stock_columns(as_read.layers), nullptr, 0);
+  *cost_load = golden::board_instructions() - t1;
+  out.str("panel side2 stock").kv("read", static_cast<int64_t>(re)).kv("flip", static_cast<int64_t>(se));
+  out.kx("hash", grid_hash(sim->grid())).end();
+  if (re != StockError::kOk || se != StockSetupError::kOk) return false;
+  sim->feed(kSide2, strlen(kSide2));
+  sim->close_input();
+  while (sim->step(SimBudget()) == SimState::kReady) {
+  }
+  StockMeta chain;
+  const bool ok_chain = sim_stock_meta(*sim, "side2", &chain) == StockStateError::kOk;
+  out.str("panel side2").kv("errors", static_cast<int64_t>(sim->errors())).kx("hash", grid_hash(sim->grid()));
+  out.kv("removed_lsb", static_cast<int64_t>(sim->removed_lsb()));
+  out.kv("chain_programs", ok_chain ? chain.nprograms : -1);
+  out.kv("chain_removed_lsb", ok_chain ? static_cast<int64_t>(chain.removed_lsb_dexels) : -1).end();
+  const bool good = sim->errors() == 0 && ok_chain;
+  sim_destroy(sim);
+  return good;
+}
+
 void info_instructions(golden::Out& out, const char* what, uint64_t n, uint64_t per) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n));
   if (per) out.kv("per_dexel_update_x100", static_cast<int64_t>(n * 100u / per));
@@ -583,6 +677,8 @@ int main(int, char**) {
   ThumbCost thumbs;
   const bool api = marbled && api_preview(out, &api_steps, &thumbs);
   const uint64_t t9 = golden::board_instructions();
+  uint64_t save_cost = 0, load_cost = 0;
+  const bool sides = api && two_sides(out, lib, &save_cost, &load_cost);
 
   if (t3 != 0) {
     out.str("info clock: ").str(golden::board_clock_name()).end();
@@ -601,6 +697,8 @@ int main(int, char**) {
     info_instructions(out, "thumbnail(240x136) aliased", thumbs.aliased, 0);
     info_instructions(out, "thumbnail(240x136) anti-aliased", thumbs.antialiased, 0);
     out.str("info api steps").kv("n", static_cast<int64_t>(api_steps)).end();
+    info_instructions(out, "stock saved to flash (192x128, 16-bit)", save_cost, 0);
+    info_instructions(out, "stock read back in 512-byte pieces and flipped", load_cost, 0);
   }
-  return (errors == 0 && drawn && assessed && overlaid && checked && marbled && api) ? 0 : 1;
+  return (errors == 0 && drawn && assessed && overlaid && checked && marbled && api && sides) ? 0 : 1;
 }
