@@ -120,7 +120,6 @@ TEST(run_usage_errors_exit_2) {
       {"pocket.ngc --view top --azimuth 30", "dexmill: error: give --view or --azimuth/--elevation"},
       {"pocket.ngc --elevation 95", "dexmill: error: --elevation needs degrees"},
       {"pocket.ngc --image", "dexmill: error: --image needs a value"},
-      {"pocket.ngc arcs_inch.ngc", "dexmill: error: more than one input file"},
       {"pocket.ngc --pitch 0.0001", "dexmill: error: the grid would be"},
   };
   for (const Case& c : cases) {

@@ -243,3 +243,23 @@ TEST(run_setup_refuses_what_would_resample) {
   CHECK_EQ(run("%/none.ngc -q --tool flat:3 --stock %/s1.dxstock --heightmap %/as_cut.pgm").code, 0);
   CHECK(slurp(tmp_dir() + "/back.pgm") == slurp(tmp_dir() + "/as_cut.pgm"));
 }
+
+TEST(run_programs_in_order_on_one_stock) {
+  if (skip()) return;
+  // Two programs and a flip in one command: the same as saving the stock
+  // after the first and starting the second from it.
+  write_tmp("c1.ngc", "G21 G90\nG0 X5 Y5 Z5\nG1 Z-2 F300\nG1 X25 F600\nG0 Z5\nG0 X10 Y15\nG1 Z-11 F200\nG0 Z5\nM30\n");
+  write_tmp("c2.ngc", "G21 G90\nG0 X3 Y3 Z5\nG1 Z-1 F300\nG1 Y17 F600\nG0 Z5\nM30\n");
+  const std::string stock = " --tool flat:3 --stock 0,0,-10,30,20,0 --pitch 0.25 -q";
+  CHECK_EQ(run("%/c1.ngc" + stock + " --setup flip-x %/c2.ngc --heightmap %/chain.pgm --report %/chain.json").code, 0);
+  CHECK_EQ(run("%/c1.ngc" + stock + " --save-stock %/c1.dxstock").code, 0);
+  CHECK_EQ(run("%/c2.ngc -q --tool flat:3 --stock %/c1.dxstock --setup flip-x --heightmap %/steps.pgm").code, 0);
+  CHECK(slurp(tmp_dir() + "/chain.pgm") == slurp(tmp_dir() + "/steps.pgm"));
+  const std::string chain = chain_of(slurp(tmp_dir() + "/chain.json"));
+  CHECK(has(chain, "c1.ngc\", \"removed_mm3\""));
+  CHECK(has(chain, "c2.ngc\", \"removed_mm3\""));
+  // A setup before the first program turns nothing saved: refused.
+  const Result r = run("--setup flip-y %/c1.ngc" + stock + " %/c2.ngc");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "--setup turns a saved stock"));
+}

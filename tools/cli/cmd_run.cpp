@@ -4,6 +4,7 @@
 #include "platform/input/file_guard.h"
 #include "tools/cli/cli.h"
 #include "tools/cli/option_help.h"
+#include "tools/run/run_chain.h"
 #include "tools/run/run_demo.h"
 #include "tools/run/run_job.h"
 #include "tools/run/run_option_table.h"
@@ -19,6 +20,7 @@ int cmd_run(int argc, char** argv) {
   if (code != kExitOk || help) return code;
   FileGuard guard;  // every file the run reads, writes or removes (platform/input/file_guard.h)
   if (!o.job.demo.empty()) return run_demo(o, &guard);
+  if (!o.job.chain.empty()) return run_chain(o);
   return run_job(o, &guard);
 }
 

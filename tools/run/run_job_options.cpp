@@ -74,6 +74,7 @@ int setup(Job* o, const char* v) {
   if (!any) return fail(kExitUsage, "--setup needs a setup (flip-x, flip-y, rotate-90|180|270, offset=X,Y,Z)");
   s.quarter_turns %= 4;
   o->setups.push_back(s);
+  o->setup_program.push_back(o->operands_seen);
   o->setup_texts.push_back(v);
   return kExitOk;
 }

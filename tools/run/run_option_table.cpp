@@ -16,7 +16,9 @@ const CommandText kRunText = {
     "Simulates milling a G-code program into a block of stock and writes what you ask\n"
     "for. With no FILE it reads standard input when that is a file or a pipe\n"
     "(`dexmill run < prog.nc`), and runs the built-in demo on a terminal (writes\n"
-    "out/demo.ngc, out/final.ppm and out/frames/; anywhere: --demo pocket).\n",
+    "out/demo.ngc, out/final.ppm and out/frames/; anywhere: --demo pocket). Several\n"
+    "FILEs are cut in order on one stock (dexmill run A.nc --setup flip-x B.nc): the\n"
+    "outputs are the last one's.\n",
     "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, p shows\n"
     "the toolpath, r resets the view, q quits. Exit status: 0 ok, 1 input errors (the cut\n"
     "goes up to the first), 2 usage, 3 I/O, 4 a check asked for failed (--stop-at,\n"
@@ -38,7 +40,13 @@ OptionTable<RunOptions> make_table() {
   t.sections.push_back(section<RunOptions>("Files written", run_output_options(), out_part));
   t.sections.push_back(section<RunOptions>("How it is shown", run_view_options(), view_part));
   t.sections.push_back(section<RunOptions>("Live (--window, --fbdev)", run_live_options(), view_part));
-  t.operand = run_operand;
+  // run takes several programs, cut in order on one stock (run_chain.h).
+  t.operand = [](RunOptions* o, const char* arg, int index) -> int {
+    ++o->job.operands_seen;
+    if (index == 0) return take_file(&o->job.file, arg, 0);
+    o->job.chain.push_back(arg);
+    return kExitOk;
+  };
   return t;
 }
 

@@ -63,6 +63,12 @@ struct JobOptions {
   int64_t probe_tip_nm = 0;      // --probe DIA: a G38 move's ball tip (0: the tool in the spindle)
   std::vector<StockSetup> setups;  // --setup T (repeatable): turned into this program's fixturing, in order
   std::vector<std::string> setup_texts;  // as given, for messages
+  // `dexmill run A.nc [--setup T] B.nc ...`: the programs after the first,
+  // run in order on one stock (tools/run/run_chain.h); each --setup is
+  // for the program after it (setup_program: how many came before it).
+  std::vector<std::string> chain;
+  std::vector<int> setup_program;
+  int operands_seen = 0;
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   std::string tool_text = "flat:6";

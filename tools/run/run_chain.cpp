@@ -1,0 +1,73 @@
+// tools/run/run_chain.h: a chain of programs on one stock.
+#include "tools/run/run_chain.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "tools/cli/cli.h"
+#include "tools/run/run_job.h"
+
+namespace dexmill {
+namespace cli {
+namespace {
+
+// The stock between programs k and k + 1: the temporary folder's, named for
+// this process (removed when the chain ends, however it ends).
+std::string link_path(size_t k) {
+  const char* dir = std::getenv("TMPDIR");
+  return std::string(dir && *dir ? dir : "/tmp") + "/dexmill-chain-" + std::to_string(static_cast<long>(getpid())) +
+         "-" + std::to_string(k) + ".dxstock";
+}
+
+struct Links {
+  std::vector<std::string> paths;
+  ~Links() {
+    for (const std::string& p : paths) std::remove(p.c_str());
+  }
+};
+
+}  // namespace
+
+int run_chain(const RunOptions& o) {
+  const size_t n = 1 + o.job.chain.size();
+  Links links;
+  for (size_t k = 0; k < n; ++k) {
+    RunOptions one = o;
+    one.job.chain.clear();
+    one.job.file = k == 0 ? o.job.file : o.job.chain[k - 1];
+    one.job.setups.clear();
+    one.job.setup_texts.clear();
+    one.job.setup_program.clear();
+    for (size_t s = 0; s < o.job.setups.size(); ++s)
+      if (o.job.setup_program[s] == static_cast<int>(k)) {
+        one.job.setups.push_back(o.job.setups[s]);
+        one.job.setup_texts.push_back(o.job.setup_texts[s]);
+      }
+    if (k > 0) {  // the stock the program before left
+      one.job.stock_file = links.paths.back();
+      one.job.have_stock = false;
+      one.job.stock_stl.clear();
+      one.job.grid_nx = one.job.grid_ny = 0;
+      one.job.pitch_nm = 0;
+    }
+    if (k + 1 < n) {  // only its stock, for the next
+      one.out = OutputOptions{};
+      one.out.print_summary = false;
+      one.view.window = false;
+      one.view.fbdev.clear();
+      links.paths.push_back(link_path(k));
+      one.out.save_stock = links.paths.back();
+    }
+    FileGuard guard;  // each program's files (the stock between two is a new name)
+    const int code = run_job(one, &guard);
+    if (code != kExitOk) return code;
+  }
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace dexmill
