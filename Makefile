@@ -330,7 +330,7 @@ panel-w3:
 # What it finds (crash-*, timeout-*, oom-*) lands in build/fuzz/found/T;
 # kept in tests/fuzz/regress/T, `make test` replays it.
 SECONDS ?= 60
-FUZZ_TARGETS := pipeline tool_table stl pgm material
+FUZZ_TARGETS := pipeline tool_table stl pgm material stock
 FUZZ_TARGET ?= pipeline
 FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
             -fno-sanitize-recover=all
@@ -348,6 +348,7 @@ FUZZ_MAXLEN_tool_table := 4096
 FUZZ_MAXLEN_stl := 8192
 FUZZ_MAXLEN_pgm := 4096
 FUZZ_MAXLEN_material := 4096
+FUZZ_MAXLEN_stock := 8192
 FUZZ_DICT_pipeline := tests/fuzz/gcode.dict
 FUZZ_DICT_tool_table := tests/fuzz/tool_table.dict
 FUZZ_DICT_stl := tests/fuzz/stl.dict
@@ -357,6 +358,7 @@ FUZZ_OPTS_tool_table := -malloc_limit_mb=64
 FUZZ_OPTS_stl := -malloc_limit_mb=64
 FUZZ_OPTS_pgm := -malloc_limit_mb=64
 FUZZ_OPTS_material := -malloc_limit_mb=64
+FUZZ_OPTS_stock := -malloc_limit_mb=128
 .PHONY: fuzz fuzz-all
 # Objects reached through the build/fuzz/fuzz_% pattern are kept, not
 # deleted as intermediates.

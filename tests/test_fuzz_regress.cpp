@@ -14,6 +14,7 @@
 #include "tests/fuzz/fuzz_pgm.cpp"
 #include "tests/fuzz/fuzz_pipeline.cpp"
 #include "tests/fuzz/fuzz_stl.cpp"
+#include "tests/fuzz/fuzz_stock.cpp"
 #include "tests/fuzz/fuzz_tool_table.cpp"
 #include "tests/runner.h"
 
@@ -48,7 +49,8 @@ const Target kTargets[] = {{"pipeline", fuzz_pipeline::fuzz_pipeline},
                            {"tool_table", fuzz_tool_table::fuzz_tool_table},
                            {"stl", fuzz_stl::fuzz_stl},
                            {"pgm", fuzz_pgm::fuzz_pgm},
-                           {"material", fuzz_material::fuzz_material}};
+                           {"material", fuzz_material::fuzz_material},
+                           {"stock", fuzz_stock::fuzz_stock}};
 
 }  // namespace
 

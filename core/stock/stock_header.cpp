@@ -37,6 +37,11 @@ struct Get {
   int64_t i64() { return static_cast<int64_t>(u(8)); }
   uint8_t u8() { return static_cast<uint8_t>(u(1)); }
   int8_t s8() { return static_cast<int8_t>(u8()); }
+  // Padding the writer leaves zero: anything else is not a file it wrote.
+  bool pad_ok = true;
+  void pad(int n) {
+    if (u(n) != 0) pad_ok = false;
+  }
   void name(char* s) {
     for (int i = 0; i < kStockNameBytes; ++i) s[i] = static_cast<char>(p[at++]);
   }
@@ -112,7 +117,8 @@ void get_body(Get* r, StockMeta* m) {
   const uint8_t flags = r->u8();
   m->bottoms_zero = (flags & 1) != 0;
   m->have_position = (flags & 2) != 0;
-  (void)r->u8();
+  if (flags & ~3) r->pad_ok = false;
+  r->pad(1);
   m->tile_rows = static_cast<uint32_t>(r->u(4));
   m->geo.nx = r->i32();
   m->geo.ny = r->i32();
@@ -133,7 +139,7 @@ void get_body(Get* r, StockMeta* m) {
   m->sim_us = r->i64();
   m->moves = r->u(8);
   for (int k = 0; k < 9; ++k) m->frame.turn[k] = r->s8();
-  (void)r->u(3);
+  r->pad(3);
   for (int k = 0; k < 3; ++k) m->frame.offset_half_nm[k] = r->i64();
   r->name(m->material);
   m->material_hash = r->u(8);
@@ -152,7 +158,7 @@ void get_body(Get* r, StockMeta* m) {
     g.sim_us = r->i64();
     g.moves = r->u(8);
     for (int e = 0; e < 9; ++e) g.setup[e] = r->s8();
-    (void)r->u(3);
+    r->pad(3);
     for (int e = 0; e < 3; ++e) g.setup_offset_nm[e] = r->i64();
   }
 }
@@ -287,8 +293,8 @@ StockError stock_header_decode(const uint8_t in[kStockHeaderBytes], StockMeta* m
   if (crc.u(4) != crc32_update(0, in, kStockHeaderBytes - 4)) return StockError::kHeaderCrc;
   *m = StockMeta{};
   get_body(&r, m);
-  if (r.at != kStockHeaderBytes - 4) {
-    *detail = "header layout";
+  if (r.at != kStockHeaderBytes - 4 || !r.pad_ok) {
+    *detail = "header padding";
     return StockError::kHeaderValue;
   }
   return stock_meta_check(*m, detail);
