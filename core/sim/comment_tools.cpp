@@ -189,7 +189,8 @@ LineReader::Read CommentTap::next(const char** text, size_t* len, uint32_t* line
   const LineReader::Read r = in_->next(text, len, line_no);
   if (r == LineReader::Read::kLine && in_->file_index() == 0 && *line_no > last_line_) {
     last_line_ = *line_no;
-    tools_->line(*text, *len, *line_no);
+    if (tools_) tools_->line(*text, *len, *line_no);
+    if (also_) also_->line(*text, *len, *line_no);
   }
   return r;
 }

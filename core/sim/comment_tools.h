@@ -126,9 +126,18 @@ class CommentTools {
 // The program's lines to a CommentTools as they are first read (a loop
 // that reads a line again, and subroutine files, are not shown), the rest
 // passed through to the input underneath.
+// Lines a tap shows besides the tools' (the scan's (WORKPIECE,...) comments).
+class LineWatcher {
+ public:
+  virtual void line(const char* text, size_t n, uint32_t line_no) = 0;
+
+ protected:
+  ~LineWatcher() = default;
+};
+
 class CommentTap final : public LineInput {
  public:
-  CommentTap(LineInput* in, CommentTools* tools) : in_(in), tools_(tools) {}
+  CommentTap(LineInput* in, CommentTools* tools, LineWatcher* also = nullptr) : in_(in), tools_(tools), also_(also) {}
   LineReader::Read next(const char** text, size_t* len, uint32_t* line_no) override;
   uint16_t file_index() const override { return in_->file_index(); }
   const char* name() const override { return in_->name(); }
@@ -142,6 +151,7 @@ class CommentTap final : public LineInput {
  private:
   LineInput* in_;
   CommentTools* tools_;
+  LineWatcher* also_;
   uint32_t last_line_ = 0;
 };
 

@@ -20,8 +20,8 @@ void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem
   if (!job_.warnings) opt.warnings = messages;
   Interp interp(this, opt);
   interp_ = &interp;
-  CommentTap tap(in, choice_ ? &choice_->comments() : nullptr);
-  GcodeRunner runner(choice_ ? static_cast<LineInput*>(&tap) : in, &interp, messages, true);
+  CommentTap tap(in, choice_ ? &choice_->comments() : nullptr, this);
+  GcodeRunner runner(&tap, &interp, messages, true);
   while (runner.step() && !bad_tool_line) {
   }
   lines = runner.lines();
@@ -39,6 +39,32 @@ void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem
     (void)choice_->tool(numbers[k], &tools[k]);
     max_radius_nm = max_of(max_radius_nm, tools[k].diameter_nm / 2);
   }
+}
+
+void ProgramScan::line(const char* text, size_t n, uint32_t line_no) {
+  WorkpieceBox b;
+  const char* why = nullptr;
+  const InterpState& s = interp_->state();
+  if (!workpiece_comment(text, n, s.inch, &b, &why)) {
+    if (why && !workpiece_bad) {
+      workpiece_bad = why;
+      workpiece_bad_line = line_no;
+    }
+    return;
+  }
+  // In the coordinate system where it stands (as LinuxCNC's preview draws it).
+  const PointNm& o = s.work_offset[s.coord_system];
+  const PointNm lo{b.lo.x_nm + o.x_nm + s.g92.x_nm, b.lo.y_nm + o.y_nm + s.g92.y_nm, b.lo.z_nm + o.z_nm + s.g92.z_nm};
+  const PointNm hi{b.hi.x_nm + o.x_nm + s.g92.x_nm, b.hi.y_nm + o.y_nm + s.g92.y_nm, b.hi.z_nm + o.z_nm + s.g92.z_nm};
+  if (!have_workpiece) {
+    workpiece = StockBox{lo, hi};
+    workpiece_kind = b.kind;
+    workpiece_line = line_no;
+    have_workpiece = true;
+    return;
+  }
+  workpiece.lo = PointNm{min_of(workpiece.lo.x_nm, lo.x_nm), min_of(workpiece.lo.y_nm, lo.y_nm), min_of(workpiece.lo.z_nm, lo.z_nm)};
+  workpiece.hi = PointNm{max_of(workpiece.hi.x_nm, hi.x_nm), max_of(workpiece.hi.y_nm, hi.y_nm), max_of(workpiece.hi.z_nm, hi.z_nm)};
 }
 
 void ProgramScan::emit(const CanonRecord& r) {

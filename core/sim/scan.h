@@ -17,6 +17,8 @@
 #include "core/interp/interp.h"
 #include "core/canon/summary.h"
 #include "core/sim/job.h"
+#include "core/sim/comment_tools.h"
+#include "core/sim/workpiece_comment.h"
 #include "core/sim/tool_choice.h"
 #include "core/tool/tool.h"
 
@@ -27,7 +29,7 @@ namespace dexmill {
 // not sized for.
 constexpr int kScanToolsMax = 128;
 
-class ProgramScan final : public CanonSink {
+class ProgramScan final : public CanonSink, public LineWatcher {
  public:
   // The job's tool and library (null: every T is the tool), time model and
   // reading options (kept: a copy).
@@ -46,6 +48,8 @@ class ProgramScan final : public CanonSink {
   void set_tool_choice(ToolChoice* c) { choice_ = c; }
 
   void emit(const CanonRecord& r) override;
+  // LineWatcher: the program's (WORKPIECE,...) comments (core/sim/workpiece_comment.h).
+  void line(const char* text, size_t n, uint32_t line_no) override;
 
   MotionSummary summary;
   bool inch_moves = false, mm_moves = false;  // units the moves were written in
@@ -64,6 +68,15 @@ class ProgramScan final : public CanonSink {
   int32_t bad_tool = 0;
   uint32_t lines = 0;          // lines read
   uint32_t probes = 0;         // probe moves (G38.2-G38.5): the cut, with the stock, says where they stop
+  // The stock the program's (WORKPIECE,...) comments declare, in the record
+  // frame (the work offsets and G92 in force where each stands added; the
+  // union of them all), the first one's line, and the first one not read.
+  bool have_workpiece = false;
+  StockBox workpiece{};
+  WorkpieceKind workpiece_kind = WorkpieceKind::kNone;
+  uint32_t workpiece_line = 0;
+  uint32_t workpiece_bad_line = 0;
+  const char* workpiece_bad = nullptr;
   bool io_error = false;
 
   // The smallest diameter among the tools (0 with none).
