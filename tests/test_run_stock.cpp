@@ -263,3 +263,13 @@ TEST(run_programs_in_order_on_one_stock) {
   CHECK_EQ(r.code, 2);
   CHECK(has(r.err, "--setup turns a saved stock"));
 }
+
+TEST(run_saved_stock_says_when_its_material_changes) {
+  if (skip()) return;
+  write_tmp("m1.ngc", "G21 G90\nG0 X5 Y5 Z5\nG1 Z-1 F300\nG1 X20 F600\nG0 Z5\nM30\n");
+  CHECK_EQ(run("%/m1.ngc -q --tool flat:3 --stock 0,0,-5,30,20,0 --material wood --save-stock %/wood.dxstock").code, 0);
+  Result r = run("%/m1.ngc -q --tool flat:3 --stock %/wood.dxstock --material aluminium");
+  CHECK(has(r.err, "--material 'aluminium': the stock in"));
+  r = run("%/m1.ngc -q --tool flat:3 --stock %/wood.dxstock --material wood");
+  CHECK(lacks(r.err, "was cut with"));
+}

@@ -176,6 +176,13 @@ int open_saved_stock(const RunOptions& o, RunSetup* run) {
     return fail(kExitUsage, "%s: the stock already holds the %d programs a stock file remembers; it cannot be "
                 "saved again", o.job.stock_file.c_str(), kStockMaxPrograms);
   run->stock_file_meta = m;
+  // The material and design the stock was cut with, against this run's.
+  const std::pair<const char*, const std::string*> refs[] = {{"--material", &o.job.material}, {"--design", &o.job.design}};
+  const char* const kept[] = {m.material, m.design};
+  for (int k = 0; k < 2; ++k)
+    if (kept[k][0] && !refs[k].second->empty() && *refs[k].second != kept[k] && run->print)
+      std::fprintf(stderr, "dexmill: warning: %s '%s': the stock in '%s' was cut with %s '%s'\n", refs[k].first,
+                   refs[k].second->c_str(), o.job.stock_file.c_str(), refs[k].first, kept[k]);
   for (size_t k = 0; k < o.job.setups.size(); ++k) {
     PointNm nearest{0, 0, 0};
     const StockSetupError e = stock_setup_meta(o.job.setups[k], &run->stock_meta, &nearest);
