@@ -258,6 +258,10 @@ TEST(run_programs_in_order_on_one_stock) {
   const std::string chain = chain_of(slurp(tmp_dir() + "/chain.json"));
   CHECK(has(chain, "c1.ngc\", \"removed_mm3\""));
   CHECK(has(chain, "c2.ngc\", \"removed_mm3\""));
+  // An output of the last program never replaces an earlier one.
+  const std::string c1 = slurp(tmp_dir() + "/c1.ngc");
+  CHECK_EQ(run("%/c1.ngc" + stock + " %/c2.ngc --report %/c1.ngc").code, 2);
+  CHECK(slurp(tmp_dir() + "/c1.ngc") == c1);
   // A setup before the first program turns nothing saved: refused.
   const Result r = run("--setup flip-y %/c1.ngc" + stock + " %/c2.ngc");
   CHECK_EQ(r.code, 2);

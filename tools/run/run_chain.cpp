@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tools/cli/cli.h"
+#include "tools/run/guard_inputs.h"
 #include "tools/run/run_job.h"
 
 namespace dexmill {
@@ -62,7 +63,14 @@ int run_chain(const RunOptions& o) {
       links.paths.push_back(link_path(k));
       one.out.save_stock = links.paths.back();
     }
-    FileGuard guard;  // each program's files (the stock between two is a new name)
+    // Each program's files (the stock between two is a new name), and the
+    // chain's other programs: no output of the last may replace one.
+    FileGuard guard;
+    for (size_t p = 0; p < n; ++p)
+      if (p != k) {
+        const std::string& file = p == 0 ? o.job.file : o.job.chain[p - 1];
+        if (const int c = guard_status(guard, guard.register_input(file, FileGuard::kProgram))) return c;
+      }
     const int code = run_job(one, &guard);
     if (code != kExitOk) return code;
   }
