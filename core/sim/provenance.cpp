@@ -28,27 +28,6 @@ uint8_t current_class(ToolProvenance<H>* p, bool* listed) {
 }  // namespace
 
 template <class H>
-void provenance_init(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t first_tool, int32_t slots, uint8_t* cls,
-                     uint32_t* shadow, uint32_t* lines) {
-  p->grid = &g;
-  p->cls = cls;
-  p->shadow = shadow;
-  p->line = lines;
-  p->slots = slots < 1 ? 1 : (slots > 255 ? 255 : slots);
-  p->pending = GridRect::none();
-  p->ntools = 0;
-  p->unlisted = 0;
-  p->current = first_tool;
-  p->current_class = 0;
-  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
-  for (size_t k = 0; k < n; ++k) {
-    cls[k] = 0;
-    shadow[k] = g.top[k];
-    if (lines) lines[k] = 0;
-  }
-}
-
-template <class H>
 void provenance_resume(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t current, int32_t slots, uint8_t* cls,
                        uint32_t* shadow, uint32_t* lines, uint8_t* programs, bool have_classes, bool have_lines,
                        const int32_t* tools, int32_t ntools, int32_t unlisted, uint8_t program_index) {
@@ -75,6 +54,12 @@ void provenance_resume(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t curr
     if (lines && !have_lines) lines[k] = 0;
     if (p->program && !have_lines) p->program[k] = 0;
   }
+}
+
+template <class H>
+void provenance_init(ToolProvenance<H>* p, const DexelGrid<H>& g, int32_t first_tool, int32_t slots, uint8_t* cls,
+                     uint32_t* shadow, uint32_t* lines) {
+  provenance_resume(p, g, first_tool, slots, cls, shadow, lines, nullptr, false, false, nullptr, 0, 0, 0);
 }
 
 template <class H>

@@ -493,12 +493,9 @@ SimState SimulationT<H>::step(const SimBudget& budget) {
 
 template <class H>
 ProbeSense SimulationT<H>::sense(const PointNm& from, const PointNm& to, int motion, PointNm* stop) {
-  while (queue_n_ > 0 && !finished_) {  // (a probe line is read with the queue empty: step's order)
-    const Queued q = queue_[queue_head_];
-    queue_head_ = (queue_head_ + 1) % queue_cap_;
-    --queue_n_;
-    process(q);
-  }
+  // Every record before the probe is cut: step reads a line only with the
+  // queue empty, and the probe's own records come when its block commits.
+  // What is left is the last move's deferred end cap, shown as sync shows it.
   sync();
   ToolProfile tip = profile_;
   if (job_.probe_tip_nm > 0) {

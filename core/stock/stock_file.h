@@ -131,7 +131,11 @@ const char* stock_error_message(StockError e);
 constexpr size_t kStockHeaderBytes = 4624;
 constexpr size_t kStockTrailerBytes = 16;  // kStockTrailerMagic, then the file's length (8 bytes)
 inline constexpr uint8_t kStockTrailerMagic[8] = {'D', 'X', 'S', 'T', 'K', 'E', 'N', 'D'};
+// The file's first bytes: a text-mode transfer or a 7-bit channel breaks them visibly.
+inline constexpr uint8_t kStockMagic[8] = {0x89, 'D', 'X', 'S', 'T', 'K', '\r', '\n'};
 uint64_t stock_file_bytes(const StockMeta& m);
+// Bytes a column takes in a tile: its top and bottom, and the layers held.
+uint64_t stock_cell_bytes(const StockMeta& m);
 
 // The meta's header bytes, and the meta of header bytes (checked: magic,
 // byte order, version, CRC, then every field's range; *detail names the

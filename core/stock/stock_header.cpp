@@ -7,7 +7,6 @@
 namespace dexmill {
 namespace {
 
-constexpr uint8_t kMagic[8] = {0x89, 'D', 'X', 'S', 'T', 'K', '\r', '\n'};
 constexpr uint16_t kByteOrderMark = 0xFEFF;  // FF FE when written little-endian
 
 // One walk over the header: Put writes the fields, Get reads them.
@@ -216,12 +215,17 @@ void stock_name_set(char* field, const char* text) {
   for (int k = 0; k < n; ++k) field[k] = text[k];
 }
 
-uint64_t stock_file_bytes(const StockMeta& m) {
-  const uint64_t cells = static_cast<uint64_t>(m.geo.nx) * static_cast<uint64_t>(m.geo.ny);
+uint64_t stock_cell_bytes(const StockMeta& m) {
   uint64_t per_cell = 2 * static_cast<uint64_t>(m.height_bits / 8);
   if (m.layers & kStockLayerClass) per_cell += 1;
   if (m.layers & kStockLayerLine) per_cell += 4;
   if (m.layers & kStockLayerProgram) per_cell += 1;
+  return per_cell;
+}
+
+uint64_t stock_file_bytes(const StockMeta& m) {
+  const uint64_t cells = static_cast<uint64_t>(m.geo.nx) * static_cast<uint64_t>(m.geo.ny);
+  const uint64_t per_cell = stock_cell_bytes(m);
   const uint64_t tiles = m.tile_rows ? (static_cast<uint64_t>(m.geo.ny) + m.tile_rows - 1) / m.tile_rows : 0;
   return kStockHeaderBytes + cells * per_cell + 4 * tiles + kStockTrailerBytes;
 }
@@ -272,7 +276,7 @@ StockError stock_meta_check(const StockMeta& m, const char** detail) {
 
 void stock_header_encode(const StockMeta& m, uint8_t out[kStockHeaderBytes]) {
   Put w{out};
-  for (uint8_t b : kMagic) w.u8(b);
+  for (uint8_t b : kStockMagic) w.u8(b);
   w.u(kStockFileVersion, 2);
   w.u(kByteOrderMark, 2);
   w.u(kStockHeaderBytes, 4);
@@ -283,7 +287,7 @@ void stock_header_encode(const StockMeta& m, uint8_t out[kStockHeaderBytes]) {
 StockError stock_header_decode(const uint8_t in[kStockHeaderBytes], StockMeta* m, const char** detail) {
   *detail = "";
   for (int k = 0; k < 8; ++k)
-    if (in[k] != kMagic[k]) return StockError::kNotStock;
+    if (in[k] != kStockMagic[k]) return StockError::kNotStock;
   Get r{in, 8};
   const uint64_t version = r.u(2), mark = r.u(2), size = r.u(4);
   if (mark == 0xFFFE) return StockError::kByteOrder;

@@ -182,8 +182,7 @@ StockError StockReader::feed(const uint8_t* p, size_t n, size_t* used) {
           buf_[held_] = p[k++];
           // Say "not a stock file" at the first byte that is not the magic's.
           if (held_ < 8) {
-            static const uint8_t magic[8] = {0x89, 'D', 'X', 'S', 'T', 'K', '\r', '\n'};
-            if (buf_[held_] != magic[held_]) {
+            if (buf_[held_] != kStockMagic[held_]) {
               offset_ += held_;
               *used = k;
               return fail(StockError::kNotStock);
@@ -207,11 +206,8 @@ StockError StockReader::feed(const uint8_t* p, size_t n, size_t* used) {
           *used = k;
           return StockError::kOk;
         }
-        const uint64_t tile_total = static_cast<uint64_t>(rows_) * static_cast<uint64_t>(meta_.geo.nx) *
-                                    static_cast<uint64_t>(2 * (meta_.height_bits / 8) +
-                                                          ((meta_.layers & kStockLayerClass) ? 1 : 0) +
-                                                          ((meta_.layers & kStockLayerLine) ? 4 : 0) +
-                                                          ((meta_.layers & kStockLayerProgram) ? 1 : 0));
+        const uint64_t tile_total =
+            static_cast<uint64_t>(rows_) * static_cast<uint64_t>(meta_.geo.nx) * stock_cell_bytes(meta_);
         const uint64_t left = tile_total - tile_at_;
         const size_t take = static_cast<size_t>(n - k < left ? n - k : left);
         take_tile_bytes(p + k, take);

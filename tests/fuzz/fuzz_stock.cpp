@@ -20,44 +20,49 @@ struct Read {
   StockError error = StockError::kOk;
   uint64_t offset = 0;
   StockMeta meta;
-  std::vector<uint32_t> h32;
+  std::vector<uint32_t> h32;  // tops then bottoms, in the arrays of the meta's m
   std::vector<uint16_t> h16;
   std::vector<uint8_t> h8, cls, program;
   std::vector<uint32_t> line;
-  std::vector<uint32_t> top32, bottom32;  // the heights, whatever m
   bool complete = false;
 };
 
-StockColumns bind_columns(Read* r) {
-  const StockMeta& m = r->meta;
-  const size_t n = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
+// The columns of r's arrays (sized by bind_columns).
+StockColumns columns(Read* r) {
+  const size_t n = r->cls.size();
   StockColumns c;
-  if (m.height_bits == 8) {
-    r->h8.assign(2 * n, 0);
-    c.top = r->h8.data();
-    c.bottom = r->h8.data() + n;
-  } else if (m.height_bits == 16) {
-    r->h16.assign(2 * n, 0);
-    c.top = r->h16.data();
-    c.bottom = r->h16.data() + n;
-  } else {
-    r->h32.assign(2 * n, 0);
-    c.top = r->h32.data();
-    c.bottom = r->h32.data() + n;
+  switch (r->meta.height_bits) {
+    case 8: c.top = r->h8.data(), c.bottom = r->h8.data() + n; break;
+    case 16: c.top = r->h16.data(), c.bottom = r->h16.data() + n; break;
+    default: c.top = r->h32.data(), c.bottom = r->h32.data() + n; break;
   }
-  r->cls.assign(n, 0);
-  r->line.assign(n, 0);
-  r->program.assign(n, 0);
   c.cls = r->cls.data();
   c.line = r->line.data();
   c.program = r->program.data();
   return c;
 }
 
+// Arrays for the meta's grid, zeroed, and their columns.
+StockColumns bind_columns(Read* r) {
+  const size_t n = static_cast<size_t>(r->meta.geo.nx) * static_cast<size_t>(r->meta.geo.ny);
+  const int bits = r->meta.height_bits;
+  r->h8.assign(bits == 8 ? 2 * n : 0, 0);
+  r->h16.assign(bits == 16 ? 2 * n : 0, 0);
+  r->h32.assign(bits == 32 ? 2 * n : 0, 0);
+  r->cls.assign(n, 0);
+  r->line.assign(n, 0);
+  r->program.assign(n, 0);
+  return columns(r);
+}
+
+uint32_t height(const Read& r, size_t k) {
+  const int bits = r.meta.height_bits;
+  return bits == 8 ? r.h8[k] : bits == 16 ? r.h16[k] : r.h32[k];
+}
+
 Read read(const uint8_t* data, size_t size, size_t piece) {
   Read r;
   StockReader rd;
-  StockColumns cols;
   size_t at = 0;
   while (at < size) {
     size_t used = 0;
@@ -72,8 +77,7 @@ Read read(const uint8_t* data, size_t size, size_t piece) {
     if (rd.header_done() && !rd.bound()) {
       r.meta = rd.meta();
       if (static_cast<uint64_t>(r.meta.geo.nx) * static_cast<uint64_t>(r.meta.geo.ny) > (1u << 20)) return r;
-      cols = bind_columns(&r);
-      FUZZ_REQUIRE(rd.bind(cols));
+      FUZZ_REQUIRE(rd.bind(bind_columns(&r)));
     } else if (used == 0) {
       FUZZ_REQUIRE(false);  // no progress and no reason
     }
@@ -100,30 +104,14 @@ int fuzz_stock(const uint8_t* data, size_t size) {
   const StockMeta& m = whole.meta;
   const size_t n = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
   for (size_t k = 0; k < n; ++k) {
-    const uint32_t t = m.height_bits == 8 ? whole.h8[k] : m.height_bits == 16 ? whole.h16[k] : whole.h32[k];
-    const uint32_t b = m.height_bits == 8 ? whole.h8[n + k] : m.height_bits == 16 ? whole.h16[n + k] : whole.h32[n + k];
+    const uint32_t t = height(whole, k), b = height(whole, n + k);
     FUZZ_REQUIRE(b <= t);
     FUZZ_REQUIRE(static_cast<int64_t>(t) <= m.top_bound_lsb);
     if (m.layers & kStockLayerClass) FUZZ_REQUIRE(whole.cls[k] <= m.prov_slots);
   }
-  // Written again: the same bytes.
-  StockColumns cols;
-  Read again = whole;
-  cols = bind_columns(&again);
-  // (bind_columns cleared them: copy the read values back)
-  again.h8 = whole.h8;
-  again.h16 = whole.h16;
-  again.h32 = whole.h32;
-  again.cls = whole.cls;
-  again.line = whole.line;
-  again.program = whole.program;
-  cols.top = m.height_bits == 8 ? static_cast<void*>(again.h8.data()) : m.height_bits == 16 ? static_cast<void*>(again.h16.data()) : static_cast<void*>(again.h32.data());
-  cols.bottom = m.height_bits == 8 ? static_cast<void*>(again.h8.data() + n) : m.height_bits == 16 ? static_cast<void*>(again.h16.data() + n) : static_cast<void*>(again.h32.data() + n);
-  cols.cls = again.cls.data();
-  cols.line = again.line.data();
-  cols.program = again.program.data();
+  // Written again from what was read: the same bytes.
   std::vector<uint8_t> out;
-  FUZZ_REQUIRE(stock_write(m, cols, to_vector, &out) == StockError::kOk);
+  FUZZ_REQUIRE(stock_write(m, columns(&whole), to_vector, &out) == StockError::kOk);
   FUZZ_REQUIRE(out.size() == size);
   for (size_t k = 0; k < size; ++k) FUZZ_REQUIRE(out[k] == data[k]);
   return 0;

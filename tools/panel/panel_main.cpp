@@ -177,12 +177,12 @@ SimJob panel_job(const PanelLibrary& lib) {
   return j;
 }
 
-// Runs the program through a simulation of `job` in the static block
-// (null: the block is too small).
-Simulation* play_program(const SimJob& job) {
+// Runs a program (the demo's by default) through a simulation of `job` in
+// the static block (null: the block is too small).
+Simulation* play_program(const SimJob& job, const char* text = kProgram) {
   Simulation* sim = sim_create(job, g_sim_mem, sizeof g_sim_mem);
   if (!sim) return nullptr;
-  sim->feed(kProgram, strlen(kProgram));
+  sim->feed(text, strlen(text));
   sim->close_input();
   while (sim->step(SimBudget()) == SimState::kReady) {
   }
@@ -543,19 +543,9 @@ bool to_flash(void*, const uint8_t* p, size_t n) {
   return true;
 }
 
-Simulation* cut_text(const SimJob& job, const char* text) {
-  Simulation* sim = sim_create(job, g_sim_mem, sizeof g_sim_mem);
-  if (!sim) return nullptr;
-  sim->feed(text, strlen(text));
-  sim->close_input();
-  while (sim->step(SimBudget()) == SimState::kReady) {
-  }
-  return sim;
-}
-
 bool two_sides(golden::Out& out, const PanelLibrary& lib, uint64_t* cost_save, uint64_t* cost_load) {
   SimJob side1 = panel_job(lib);
-  Simulation* sim = cut_text(side1, kSide1);
+  Simulation* sim = play_program(side1, kSide1);
   if (!sim || sim->errors() != 0) return false;
   StockMeta m;
   if (sim_stock_meta(*sim, "side1", &m) != StockStateError::kOk) return false;

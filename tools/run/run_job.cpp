@@ -86,12 +86,16 @@ bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<heigh
   return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
 }
 
-// The chain of programs on a saved stock, this run's last (a run that
-// neither continues nor saves a stock has none).
-void chain_to_report(const Simulation& sim, const std::string& name, RunReport* rep) {
-  StockMeta m;
-  if (!sim.job().resume && !sim.job().provenance_programs) return;
-  if (sim_stock_meta(sim, name.c_str(), &m) != StockStateError::kOk) return;
+// The stock as the run leaves it, with the chain of programs on it, this
+// run's last (a run that neither continues nor saves a stock has none):
+// the report's chain and --save-stock's meta.
+void chain_of_run(RunSetup* su) {
+  const SimJob& j = su->sim->job();
+  if (!j.resume && !j.provenance_programs) return;
+  su->have_chain = sim_stock_meta(*su->sim, su->shown_name.c_str(), &su->chain) == StockStateError::kOk;
+}
+
+void chain_to_report(const StockMeta& m, RunReport* rep) {
   rep->have_chain = true;
   for (int k = 0; k < m.nprograms; ++k)
     rep->chain.push_back(RunReport::ChainProgram{m.programs[k].name, m.programs[k].removed_lsb_dexels,
@@ -191,10 +195,10 @@ int write_files(const RunOptions& o, Run* run) {
   if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
   if (!o.out.save_stock.empty()) {
-    StockMeta m;
-    if (sim_stock_meta(*su.sim, su.shown_name.c_str(), &m) != StockStateError::kOk)
+    if (!su.have_chain)
       return fail(kExitUsage, "--save-stock: the stock already holds the %d programs a stock file remembers",
                   kStockMaxPrograms);
+    StockMeta m = su.chain;
     // The stock's material and design, as the options name them (a later
     // run is told when it names others).
     if (!o.job.material.empty()) stock_name_set(m.material, o.job.material.c_str());
@@ -250,7 +254,8 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
       rep.stopped_line = su.probe_errors.front().line;
     }
   }
-  chain_to_report(sim, su.shown_name, &rep);
+  chain_of_run(&su);
+  if (su.have_chain) chain_to_report(su.chain, &rep);
   if (const GougeWatch* w = sim.gouges()) {
     const double t0 = clock_now_s();
     assess_design(*w, sim.grid(), &su.design);

@@ -15,6 +15,7 @@
 #include "platform/os/process.h"
 #include "platform/live/window.h"
 #include "platform/report/report_json.h"
+#include "tools/cam/feed_word.h"
 #include "tools/cli/cli.h"
 #include "tools/run/demo_program.h"
 #include "tools/run/guard_inputs.h"
@@ -139,14 +140,6 @@ void report_plan(RunSetup* run) {
   rep.lsb_nm = plan.geo.lsb_nm;
 }
 
-// Millimetres with no trailing zeros (0.5, not 0.500000).
-std::string short_mm(int64_t nm) {
-  std::string s = nm_to_mm_text(nm, 6);
-  while (!s.empty() && s.back() == '0') s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 // --stock FILE.dxstock: the saved stock's header read, before the first
 // pass (the program starts where the tool was left: job.resume); its
 // columns are read into the engine once it exists (start_engine).
@@ -188,8 +181,8 @@ int open_saved_stock(const RunOptions& o, RunSetup* run) {
     const StockSetupError e = stock_setup_meta(o.job.setups[k], &run->stock_meta, &nearest);
     if (e == StockSetupError::kOffsetNotExact)
       return fail(kExitUsage, "--setup '%s': %s; the nearest exact one is offset=%s,%s,%s", o.job.setup_texts[k].c_str(),
-                  stock_setup_message(e), short_mm(nearest.x_nm).c_str(), short_mm(nearest.y_nm).c_str(),
-                  short_mm(nearest.z_nm).c_str());
+                  stock_setup_message(e), decimal_text(Decimal{nearest.x_nm, 6}).c_str(),
+                  decimal_text(Decimal{nearest.y_nm, 6}).c_str(), decimal_text(Decimal{nearest.z_nm, 6}).c_str());
     if (e != StockSetupError::kOk)
       return fail(kExitUsage, "--setup '%s': %s", o.job.setup_texts[k].c_str(), stock_setup_message(e));
   }

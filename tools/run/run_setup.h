@@ -18,6 +18,7 @@
 
 #include "core/sim/scan.h"
 #include "core/sim/simulation.h"
+#include "core/sim/stock_state.h"
 #include "display/overlay/backplot.h"
 #include "platform/input/file_guard.h"
 #include "platform/input/gcode_file.h"
@@ -56,6 +57,9 @@ struct RunSetup {
   // stopped on the stock), and the probe errors only the cut finds.
   std::unique_ptr<GcodeNotes> cut_notes;
   std::vector<ReportDiag> probe_errors;
+  // The stock the run leaves and the chain on it (tools/run/run_job.cpp).
+  StockMeta chain;
+  bool have_chain = false;
   uint32_t scan_errors = 0, scan_warnings = 0;
   std::vector<PathSegment> path;
   bool want_path = false;        // the backplot: for --path-overlay, and a live view (its p key)
