@@ -62,7 +62,9 @@ std::string json_value(const std::string& text, const std::string& key) {
 }
 std::string chain_of(const std::string& report) {
   const size_t at = report.find("\"chain\": ");
-  return at == std::string::npos ? std::string() : report.substr(at, report.find('\n', at) - at);
+  // to its totals' line: "  ], \"removed_mm3\": ...}"
+  const size_t end = at == std::string::npos ? at : report.find("\n  ], ", at);
+  return at == std::string::npos ? std::string() : report.substr(at, report.find('\n', end + 1) - at);
 }
 
 }  // namespace
@@ -117,8 +119,8 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
           CHECK_EQ(json_value(chain.substr(total_at), "estimated_time_s"), json_value(whole, "estimated_time_s"));
           CHECK_EQ(json_value(chain.substr(total_at), "moves"), json_value(chain_of(whole), "moves"));
         }
-        CHECK(has(chain, "/a.ngc\", \"removed_mm3\""));
-        CHECK(has(chain, "/b.ngc\", \"removed_mm3\""));
+        CHECK(has(chain, "/a.ngc\", \"setup\": \"none\", \"removed_mm3\""));
+        CHECK(has(chain, "/b.ngc\", \"setup\": \"none\", \"removed_mm3\""));
         // Bottoms and tool classes too; each line names the same block of
         // the whole program (part two's lines are k - 1 further on there).
         const t::StockFileColumns s = t::read_stock_file(tmp_dir() + "/b.dxstock");
@@ -256,8 +258,8 @@ TEST(run_programs_in_order_on_one_stock) {
   CHECK_EQ(run("%/c2.ngc -q --tool flat:3 --stock %/c1.dxstock --setup flip-x --heightmap %/steps.pgm").code, 0);
   CHECK(slurp(tmp_dir() + "/chain.pgm") == slurp(tmp_dir() + "/steps.pgm"));
   const std::string chain = chain_of(slurp(tmp_dir() + "/chain.json"));
-  CHECK(has(chain, "c1.ngc\", \"removed_mm3\""));
-  CHECK(has(chain, "c2.ngc\", \"removed_mm3\""));
+  CHECK(has(chain, "c1.ngc\", \"setup\": \"none\", \"removed_mm3\""));
+  CHECK(has(chain, "c2.ngc\", \"setup\": \"flip-x\", \"removed_mm3\""));
   // An output of the last program never replaces an earlier one.
   const std::string c1 = slurp(tmp_dir() + "/c1.ngc");
   CHECK_EQ(run("%/c1.ngc" + stock + " %/c2.ngc --report %/c1.ngc").code, 2);

@@ -344,6 +344,8 @@ void Interp::reset() {
   // R_PLANE; a machine's RS274NGC_STARTUP_CODE may say G98.
   state_.retract_to_r = true;
   state_.comp.first_move = true;
+  if (options_.work_offsets)
+    for (int k = 0; k < 9; ++k) state_.work_offset[k] = options_.work_offsets[k];
   if (options_.start_given) {
     state_.pos = options_.start_pos;
     state_.tool = state_.selected_tool = options_.start_tool;

@@ -115,6 +115,9 @@ struct InterpOptions {
   // Probe moves stop where this says (null: at their end point, with a
   // warning, as a preview that has no stock must).
   ProbeSensor* probe = nullptr;
+  // The origins of G54..G59.3 (9 of them, machine nm) at the start, as a
+  // controller's parameter file (#5221...) gives them. Null: all 0.
+  const PointNm* work_offsets = nullptr;
   bool start_given = false;
   PointNm start_pos{0, 0, 0};
   int32_t start_tool = 0;

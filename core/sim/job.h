@@ -21,6 +21,7 @@
 #include "core/point.h"
 #include "core/sim/stock_plan.h"
 #include "core/stock/stock_file.h"
+#include "core/stock/stock_transform.h"
 #include "core/tool/tool.h"
 
 namespace dexmill {
@@ -114,6 +115,14 @@ struct SimJob {
   // and number, the provenance's tool order and the chain's programs.
   // Null: a fresh stock from the plan.
   const StockMeta* resume = nullptr;
+  // The setups that turned it into this program's fixturing
+  // (core/stock/stock_transform.h), for the chain's record of this program.
+  const StockSetup* setups = nullptr;
+  int32_t nsetups = 0;
+  // The coordinate systems' origins G54..G59.3 (9, machine nm) when the
+  // program starts, as a controller's parameter file holds them (a setup's
+  // work offsets). Null: all at the machine's origin.
+  const PointNm* work_offsets = nullptr;
   // Probe moves (G38.2-G38.5) stop where the tool, or a ball tip of this
   // diameter (> 0), trips on the stock as cut so far (core/cut/probe.h).
   // 0: the tool in the spindle.

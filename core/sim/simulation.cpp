@@ -26,6 +26,7 @@ InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, P
   o.messages = job.notes;
   o.default_feed_nm_per_min = job.default_feed_nm_per_min;
   o.max_blocks = job.max_blocks;
+  o.work_offsets = job.work_offsets;
   if (job.resume && job.resume->have_position) {
     o.start_given = true;
     o.start_pos = job.resume->position;

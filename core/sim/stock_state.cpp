@@ -2,6 +2,8 @@
 // stock into the meta it is saved with.
 #include "core/sim/stock_state.h"
 
+#include "core/stock/stock_transform.h"
+
 namespace dexmill {
 
 GridPlan sim_plan_of_stock(const StockMeta& m) {
@@ -55,7 +57,8 @@ StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, S
     for (int k = 0; k < was->nprograms; ++k) m.programs[k] = was->programs[k];
   }
   StockProgram& p = m.programs[m.nprograms++];
-  for (int e = 0; e < 3; ++e) p.setup[4 * e] = 1;  // no setup yet: as it was
+  for (int e = 0; e < 3; ++e) p.setup[4 * e] = 1;  // no setup: as it was
+  for (int32_t k = 0; k < job.nsetups; ++k) stock_setup_record(job.setups[k], p.setup, p.setup_offset_nm);
   stock_name_set(p.name, program);
   p.removed_lsb_dexels = removed;
   p.sim_us = us;

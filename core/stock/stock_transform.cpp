@@ -301,4 +301,52 @@ StockSetupError stock_apply_setup(const StockSetup& s, StockMeta* m, const Stock
   return StockSetupError::kOk;
 }
 
+namespace {
+
+// The setup's linear part: the flips first, then the quarter turns.
+Mat3 setup_matrix(const StockSetup& s) {
+  Mat3 m{{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+  if (s.flip_x) m = mul(step_matrix(Step::kFlipX), m);
+  if (s.flip_y) m = mul(step_matrix(Step::kFlipY), m);
+  for (int k = 0; k < ((s.quarter_turns % 4) + 4) % 4; ++k) m = mul(step_matrix(Step::kQuarter), m);
+  return m;
+}
+
+bool same(const Mat3& x, const Mat3& y) {
+  for (int k = 0; k < 9; ++k)
+    if (x.a[k] != y.a[k]) return false;
+  return true;
+}
+
+}  // namespace
+
+void stock_setup_record(const StockSetup& s, int8_t turn[9], int64_t offset_nm[3]) {
+  Mat3 t;
+  bool zero = true;
+  for (int k = 0; k < 9; ++k) zero = zero && turn[k] == 0;
+  for (int k = 0; k < 9; ++k) t.a[k] = zero ? static_cast<int8_t>(k % 4 == 0) : turn[k];
+  const Mat3 r = mul(setup_matrix(s), t);
+  for (int k = 0; k < 9; ++k) turn[k] = r.a[k];
+  offset_nm[0] += s.offset_nm.x_nm;
+  offset_nm[1] += s.offset_nm.y_nm;
+  offset_nm[2] += s.offset_nm.z_nm;
+}
+
+bool stock_setup_of_record(const int8_t turn[9], const int64_t offset_nm[3], StockSetup* out) {
+  Mat3 t;
+  for (int k = 0; k < 9; ++k) t.a[k] = turn[k];
+  StockSetup s;
+  s.offset_nm = PointNm{offset_nm[0], offset_nm[1], offset_nm[2]};
+  // The fewest words: flip-y alone before flip-x and a half turn.
+  const bool flips[2][2] = {{true, false}, {false, true}};
+  for (int q = 0; q < 4; ++q)
+    for (const auto& f : flips) {
+      s.flip_x = turn[8] < 0 && f[0];
+      s.flip_y = turn[8] < 0 && f[1];
+      s.quarter_turns = q;
+      if (same(setup_matrix(s), t)) return *out = s, true;
+    }
+  return false;
+}
+
 }  // namespace dexmill

@@ -67,6 +67,17 @@ size_t stock_setup_scratch_bytes(const StockMeta& m, const StockSetup& s);
 StockSetupError stock_apply_setup(const StockSetup& s, StockMeta* m, const StockColumns& c, void* scratch,
                                   size_t scratch_bytes, PointNm* nearest = nullptr);
 
+// What a program's setups did, as the chain records it (StockProgram's
+// setup and setup_offset_nm): the part turned about its box's centre by a
+// rotation or reflection, then moved. Every turn keeps the box's centre,
+// so setups in a row compose as the product of their turns and the sum of
+// their offsets. stock_setup_record starts from identity when *turn is all
+// zeros.
+void stock_setup_record(const StockSetup& s, int8_t turn[9], int64_t offset_nm[3]);
+// A recorded turn and offset as a setup (flip-x when the turn negates Z,
+// then the quarter turns); false when the turn is none a setup can make.
+bool stock_setup_of_record(const int8_t turn[9], const int64_t offset_nm[3], StockSetup* out);
+
 }  // namespace dexmill
 
 #endif

@@ -94,10 +94,21 @@ std::string chain_text(const RunReport& r) {
   std::string o = "  \"chain\": {\"programs\": [";
   for (size_t k = 0; k < r.chain.size(); ++k) {
     const RunReport::ChainProgram& p = r.chain[k];
-    o += std::string(k ? ", " : "") + "{\"file\": " + quoted(p.file) + ", \"removed_mm3\": " +
-         volume_mm3_text(p.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + ", \"estimated_time_s\": " +
-         seconds_of_us(p.estimated_us) + ", \"moves\": " + u64(p.moves) + "}";
+    o += std::string(k ? "," : "") + "\n    {\"file\": " + quoted(p.file) + ", \"setup\": " + quoted(p.setup) +
+         ", \"removed_mm3\": " + volume_mm3_text(p.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) +
+         ", \"estimated_time_s\": " + seconds_of_us(p.estimated_us) + ", \"moves\": " + u64(p.moves) +
+         ", \"findings\": ";
+    if (!p.have_findings) {
+      o += "null}";
+      continue;
+    }
+    o += "{\"total\": " + u64(p.findings_total) + ", \"kept\": [";
+    for (size_t f = 0; f < p.findings.size(); ++f)
+      o += std::string(f ? ",\n      " : "\n      ") + "{\"kind\": " + quoted(p.findings[f].kind) +
+           ", \"line\": " + u64(p.findings[f].line) + ", \"message\": " + quoted(p.findings[f].message) + "}";
+    o += "]}}";
   }
+  if (!r.chain.empty()) o += "\n  ";
   o += "], \"removed_mm3\": " + volume_mm3_text(r.chain_removed_lsb_dexels, r.lsb_nm, r.pitch_nm) +
        ", \"estimated_time_s\": " + seconds_of_us(r.chain_us) + ", \"moves\": " + u64(r.chain_moves) + "},\n";
   return o;

@@ -36,9 +36,20 @@ std::string report_summary_text(const RunReport& r) {
     std::snprintf(b, sizeof b, "grid     %d x %d dexels, pitch %s mm\n", r.nx, r.ny, nm_to_mm_text(r.pitch_nm, 4).c_str());
     o += b;
     o += "removed  " + volume_mm3_text(r.removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + " mm^3\n";
-    if (r.have_chain && r.chain.size() > 1)
+    if (r.have_chain && r.chain.size() > 1) {
       o += "chain    " + std::to_string(r.chain.size()) + " programs on this stock: removed " +
            volume_mm3_text(r.chain_removed_lsb_dexels, r.lsb_nm, r.pitch_nm) + " mm^3, time " + hms(r.chain_us) + "\n";
+      for (size_t k = 0; k < r.chain.size(); ++k) {  // each setup's share
+        const RunReport::ChainProgram& p = r.chain[k];
+        const std::string setup = p.setup != "none" ? "setup " + p.setup : k ? "setup unchanged" : "first setup";
+        std::snprintf(b, sizeof b, "  %2zu     %s, %s: removed %s mm^3, time %s", k + 1, p.file.c_str(),
+                      setup.c_str(), volume_mm3_text(p.removed_lsb_dexels, r.lsb_nm, r.pitch_nm).c_str(),
+                      hms(p.estimated_us).c_str());
+        o += b;
+        if (p.have_findings) o += ", " + std::to_string(p.findings_total) + " finding(s)";
+        o += "\n";
+      }
+    }
   }
   // What the estimate is: a lower bound without acceleration (no machine
   // reaches F at once), an upper one with --accel (every move from rest

@@ -80,6 +80,16 @@ struct ReportViolation {
   std::string material, message;
 };
 
+// A finding of a program of the chain: "error", "warning", "gouge",
+// "collision" (a safety check's kind in message) or "violation" (a
+// material's process rule), at its line.
+struct ReportFinding {
+  std::string kind;
+  uint32_t line = 0;
+  std::string message;
+};
+constexpr size_t kChainFindingsKept = 100;
+
 struct RunReport {
   std::string file;
   uint32_t lines = 0;
@@ -107,9 +117,15 @@ struct RunReport {
   // --save-stock), this run's last; totals over all of them.
   struct ChainProgram {
     std::string file;
-    uint64_t removed_lsb_dexels;
-    int64_t estimated_us;
-    uint64_t moves;
+    uint64_t removed_lsb_dexels = 0;
+    int64_t estimated_us = 0;
+    uint64_t moves = 0;
+    std::string setup;  // the setup before it, as --setup spells it ("none": as the stock was)
+    // What the run of this program found, at its lines (a chain run in one
+    // `dexmill run`; a program of an earlier run keeps none: have_findings false).
+    bool have_findings = false;
+    std::vector<ReportFinding> findings;  // the first kChainFindingsKept
+    uint64_t findings_total = 0;
   };
   bool have_chain = false;
   std::vector<ChainProgram> chain;

@@ -45,8 +45,15 @@ void usage(FILE* f) {
 
 }  // namespace
 
+namespace {
+std::string g_fail_place;  // FailPlace's; empty: "dexmill"
+}  // namespace
+
+FailPlace::FailPlace(const std::string& place) : was_(g_fail_place) { g_fail_place = place; }
+FailPlace::~FailPlace() { g_fail_place = was_; }
+
 int fail(int code, const char* fmt, ...) {
-  std::fprintf(stderr, "dexmill: error: ");
+  std::fprintf(stderr, "%s: error: ", g_fail_place.empty() ? "dexmill" : g_fail_place.c_str());
   va_list ap;
   va_start(ap, fmt);
   std::vfprintf(stderr, fmt, ap);

@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include <string>
 #include <vector>
 
 namespace dexmill {
@@ -38,6 +39,19 @@ std::vector<CommandDoc> command_docs();
 
 // `dexmill: error: MESSAGE` on stderr (printf-style); returns `code`.
 int fail(int code, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+
+// While one is alive, fail() begins "PLACE: error: " instead: an option
+// read from a file (tools/run/setups_file.h) names its FILE:LINE:COL.
+class FailPlace {
+ public:
+  explicit FailPlace(const std::string& place);
+  ~FailPlace();
+  FailPlace(const FailPlace&) = delete;
+  FailPlace& operator=(const FailPlace&) = delete;
+
+ private:
+  std::string was_;
+};
 
 }  // namespace cli
 }  // namespace dexmill

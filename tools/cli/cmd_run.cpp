@@ -20,7 +20,7 @@ int cmd_run(int argc, char** argv) {
   if (code != kExitOk || help) return code;
   FileGuard guard;  // every file the run reads, writes or removes (platform/input/file_guard.h)
   if (!o.job.demo.empty()) return run_demo(o, &guard);
-  if (!o.job.chain.empty()) return run_chain(o);
+  if (!o.job.chain.empty() || !o.job.steps.empty()) return run_chain(o);
   return run_job(o, &guard);
 }
 

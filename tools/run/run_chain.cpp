@@ -11,6 +11,7 @@
 #include "tools/cli/cli.h"
 #include "tools/run/guard_inputs.h"
 #include "tools/run/run_job.h"
+#include "tools/run/setups_file.h"
 
 namespace dexmill {
 namespace cli {
@@ -31,11 +32,21 @@ struct Links {
   }
 };
 
+// The setups before a program, as one: "none" when it has none.
+std::string setup_words(const JobOptions& j) {
+  if (j.setups.empty()) return "none";
+  std::string o;
+  for (size_t s = 0; s < j.setup_texts.size(); ++s) o += (s ? "+" : "") + j.setup_texts[s];
+  return o;
+}
+
 }  // namespace
 
 int run_chain(const RunOptions& o) {
   const size_t n = 1 + o.job.chain.size();
   Links links;
+  std::vector<std::vector<ReportFinding>> findings;  // each program's, for the last one's report
+  std::vector<uint64_t> totals;
   for (size_t k = 0; k < n; ++k) {
     RunOptions one = o;
     one.job.chain.clear();
@@ -48,6 +59,10 @@ int run_chain(const RunOptions& o) {
         one.job.setups.push_back(o.job.setups[s]);
         one.job.setup_texts.push_back(o.job.setup_texts[s]);
       }
+    if (k < o.job.steps.size())
+      if (const int code = apply_step(o.job.steps[k], &one)) return code;  // checked when the file was read
+    one.job.chain_findings = findings;
+    one.job.chain_findings_total = totals;
     if (k > 0) {  // the stock the program before left
       one.job.stock_file = links.paths.back();
       one.job.have_stock = false;
@@ -66,13 +81,20 @@ int run_chain(const RunOptions& o) {
     // Each program's files (the stock between two is a new name), and the
     // chain's other programs: no output of the last may replace one.
     FileGuard guard;
+    if (const int c = guard_status(guard, guard.register_input(o.job.setups_file, "--setups"))) return c;
     for (size_t p = 0; p < n; ++p)
       if (p != k) {
         const std::string& file = p == 0 ? o.job.file : o.job.chain[p - 1];
         if (const int c = guard_status(guard, guard.register_input(file, FileGuard::kProgram))) return c;
       }
-    const int code = run_job(one, &guard);
+    if (n > 1 && !one.view.quiet)
+      std::fprintf(stderr, "dexmill: program %zu of %zu, %s, setup %s\n", k + 1, n, one.job.file.c_str(),
+                   setup_words(one.job).c_str());
+    RunResult result;
+    const int code = run_job(one, &guard, &result);
     if (code != kExitOk) return code;
+    findings.push_back(result.findings);
+    totals.push_back(result.findings_total);
   }
   return kExitOk;
 }

@@ -32,6 +32,7 @@
 #include "tools/run/run_scan.h"
 #include "tools/run/run_setup.h"
 #include "tools/run/run_views.h"
+#include "tools/run/setup_text.h"
 
 namespace dexmill {
 namespace cli {
@@ -95,11 +96,60 @@ void chain_of_run(RunSetup* su) {
   su->have_chain = sim_stock_meta(*su->sim, su->shown_name.c_str(), &su->chain) == StockStateError::kOk;
 }
 
-void chain_to_report(const StockMeta& m, RunReport* rep) {
+// The report's findings at their lines: its errors, warnings, gouges,
+// safety findings and process rule breaks, the first kChainFindingsKept
+// kept; *total counts all of them.
+std::vector<ReportFinding> findings_of(const RunReport& r, uint64_t* total) {
+  std::vector<ReportFinding> f;
+  auto add = [&f](const char* kind, uint32_t line, const std::string& message) {
+    if (f.size() < kChainFindingsKept) f.push_back(ReportFinding{kind, line, message});
+  };
+  for (const ReportDiag& d : r.errors) add("error", d.line, d.message);
+  for (const ReportDiag& d : r.warnings) add("warning", d.line, d.message);
+  *total = r.errors.size() + r.warnings_total;
+  if (r.have_assessment) {
+    for (const ReportGouge& g : r.assessment.gouges)
+      add("gouge", g.line, nm_to_mm_text(g.depth_nm, 4) + " mm into the design at X" + nm_to_mm_text(g.at.x_nm, 3) +
+                               " Y" + nm_to_mm_text(g.at.y_nm, 3));
+    *total += r.assessment.gouges_total;
+  }
+  if (r.have_collisions) {
+    for (const SafetyEvent& e : r.collisions)
+      add("collision", e.line, std::string(safety_kind_name(e.kind)) + ", " + nm_to_mm_text(e.depth_nm, 4) + " mm");
+    *total += r.collisions_total;
+  }
+  if (r.have_materials) {
+    for (const ReportViolation& v : r.material_violations) add("violation", v.line, v.rule + ": " + v.message);
+    *total += r.material_violations_total;
+  }
+  return f;
+}
+
+// The chain's programs, with the findings of those run before this one in
+// the same `dexmill run` (the last ones before it: a saved stock may hold
+// earlier programs, whose findings are not kept) and this one's.
+void chain_to_report(const StockMeta& m, const JobOptions& j, RunReport* rep) {
   rep->have_chain = true;
-  for (int k = 0; k < m.nprograms; ++k)
-    rep->chain.push_back(RunReport::ChainProgram{m.programs[k].name, m.programs[k].removed_lsb_dexels,
-                                                 m.programs[k].sim_us, m.programs[k].moves});
+  const int carried = static_cast<int>(j.chain_findings.size());
+  for (int k = 0; k < m.nprograms; ++k) {
+    const StockProgram& p = m.programs[k];
+    RunReport::ChainProgram c;
+    c.file = p.name;
+    c.removed_lsb_dexels = p.removed_lsb_dexels;
+    c.estimated_us = p.sim_us;
+    c.moves = p.moves;
+    c.setup = recorded_setup_text(p.setup, p.setup_offset_nm);
+    const int before = k - (m.nprograms - 1 - carried);  // index into the carried findings
+    if (k == m.nprograms - 1) {
+      c.have_findings = true;
+      c.findings = findings_of(*rep, &c.findings_total);
+    } else if (before >= 0 && before < carried) {
+      c.have_findings = true;
+      c.findings = j.chain_findings[before];
+      c.findings_total = j.chain_findings_total[before];
+    }
+    rep->chain.push_back(c);
+  }
   rep->chain_removed_lsb_dexels = m.removed_lsb_dexels;
   rep->chain_us = m.sim_us;
   rep->chain_moves = m.moves;
@@ -254,8 +304,6 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
       rep.stopped_line = su.probe_errors.front().line;
     }
   }
-  chain_of_run(&su);
-  if (su.have_chain) chain_to_report(su.chain, &rep);
   if (const GougeWatch* w = sim.gouges()) {
     const double t0 = clock_now_s();
     assess_design(*w, sim.grid(), &su.design);
@@ -263,6 +311,8 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
     rep.assessment = su.design.report;
     rep.timing.emplace_back("assess", clock_now_s() - t0);
   }
+  chain_of_run(&su);
+  if (su.have_chain) chain_to_report(su.chain, o.job, &rep);
   const CutterPose pose{true, sim.mill().position()};
   if (v.live() && !user_quit && !v.live_view().last_frame(&sim.grid(), pose, v.status))
     return fail(kExitIo, "%s", v.live_view().error().c_str());
@@ -321,6 +371,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     result->gouged = sim.gouged();
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
+    result->findings = findings_of(su.rep, &result->findings_total);
   }
   if (run_prints_summary(o)) {
     std::fputs(report_summary_text(su.rep).c_str(), stdout);

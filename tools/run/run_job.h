@@ -33,6 +33,10 @@ struct RunResult {
   // among the materials that line's feed moves removed (kNoFeedLimit: none;
   // core/safety/material_limits.h); what `dexmill optimize` lowers feeds to.
   std::vector<int64_t> line_feed_limits;
+  // What it found, at its lines (the first kChainFindingsKept, and the
+  // count of all): a chain's next program reports them.
+  std::vector<ReportFinding> findings;
+  uint64_t findings_total = 0;
 };
 
 // Runs the job; returns the exit status (the man page's). Every file it

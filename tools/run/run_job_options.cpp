@@ -13,6 +13,7 @@
 #include "tools/cli/option_values.h"
 #include "tools/run/run_demo.h"
 #include "tools/run/run_option_table.h"
+#include "tools/run/setup_text.h"
 
 namespace dexmill {
 namespace cli {
@@ -40,39 +41,11 @@ int stock(Job* o, const char* v) {
   return kExitOk;
 }
 
-// --setup: flip-x, flip-y, rotate-90|180|270, offset=X,Y,Z (mm), several
-// joined by '+' or spaces, applied flips first, then the turn, then the
-// offset (core/stock/stock_transform.h).
+// --setup T (tools/run/setup_text.h), for the program after it.
 int setup(Job* o, const char* v) {
   StockSetup s;
-  std::string text(v);
-  for (char& ch : text)
-    if (ch == '+') ch = ' ';
-  size_t at = 0;
-  bool any = false;
-  while (at < text.size()) {
-    const size_t end = text.find(' ', at) == std::string::npos ? text.size() : text.find(' ', at);
-    const std::string word = text.substr(at, end - at);
-    at = end + 1;
-    if (word.empty()) continue;
-    any = true;
-    if (word == "flip-x") s.flip_x = !s.flip_x;
-    else if (word == "flip-y") s.flip_y = !s.flip_y;
-    else if (word == "rotate-90") s.quarter_turns += 1;
-    else if (word == "rotate-180") s.quarter_turns += 2;
-    else if (word == "rotate-270") s.quarter_turns += 3;
-    else if (word.compare(0, 7, "offset=") == 0) {
-      int64_t d[3];
-      if (!parse_mm_list(word.c_str() + 7, 3, d))
-        return fail(kExitUsage, "--setup offset= needs X,Y,Z in mm, not '%s'", word.c_str() + 7);
-      s.offset_nm = PointNm{s.offset_nm.x_nm + d[0], s.offset_nm.y_nm + d[1], s.offset_nm.z_nm + d[2]};
-    } else {
-      return fail(kExitUsage, "--setup takes flip-x, flip-y, rotate-90, rotate-180, rotate-270 and offset=X,Y,Z "
-                  "(joined by '+'), not '%s'", word.c_str());
-    }
-  }
-  if (!any) return fail(kExitUsage, "--setup needs a setup (flip-x, flip-y, rotate-90|180|270, offset=X,Y,Z)");
-  s.quarter_turns %= 4;
+  std::string why;
+  if (!setup_parse(v, &s, &why)) return fail(kExitUsage, "--setup '%s': %s", v, why.c_str());
   o->setups.push_back(s);
   o->setup_program.push_back(o->operands_seen);
   o->setup_texts.push_back(v);
@@ -120,6 +93,14 @@ const Option<Job> kJob[] = {
      "part turned over about its box's X or Y axis), rotate-90|180|270 (about Z, counterclockwise), "
      "offset=X,Y,Z (mm, whole dexels and height steps); joined by '+', repeatable, in order",
      setup},
+    {"--setups", "FILE",
+     "the programs of a job and their setups, one line a program: the program, then setup=T, tools=FILE, "
+     "design=FILE, fixture=BOX, table=Z, g54=X,Y,Z ... g59.3= (the coordinate systems' origins for that "
+     "setup); cut in order on one stock, each line's options over the command line's (give no FILE)",
+     [](Job* o, const char* v) -> int {
+       o->setups_file = v;
+       return kExitOk;
+     }},
     {"--probe", "DIA",
      "the ball tip, mm across, a probe move (G38.2-G38.5) carries; each stops where it touches (or leaves) the "
      "stock as cut so far, and #5061-#5063, #5070 say where (default: the tool in the spindle)",

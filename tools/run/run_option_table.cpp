@@ -5,6 +5,7 @@
 #include "tools/cli/cli.h"
 #include "tools/cli/option_parse.h"
 #include "tools/cli/option_values.h"
+#include "tools/run/setups_file.h"
 
 namespace dexmill {
 namespace cli {
@@ -62,6 +63,8 @@ int run_operand(RunOptions* o, const char* arg, int index) { return take_file(&o
 int parse_run_options(int argc, char** argv, RunOptions* o, bool* help) {
   const int code = parse_options(run_option_table(), argc, argv, o, help);
   if (code != kExitOk || *help) return code;
+  if (!o->job.setups_file.empty())
+    if (const int read = read_setups_file(o)) return read;
   if (const int chosen = choose_program(o, standard_input_is_terminal())) return chosen;
   return finish_run_options(o);
 }

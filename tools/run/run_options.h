@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/stock/stock_transform.h"
@@ -28,6 +29,7 @@
 #include "display/raster/camera.h"
 #include "platform/format/image_file.h"
 #include "platform/input/program_input.h"
+#include "platform/report/run_report.h"
 #include "tools/run/read_options.h"
 
 namespace dexmill {
@@ -69,6 +71,25 @@ struct JobOptions {
   std::vector<std::string> chain;
   std::vector<int> setup_program;
   int operands_seen = 0;
+  // --setups FILE (tools/run/setups_file.h): the programs, their setups
+  // and, per program, the options its line gives (steps[k] for program k;
+  // empty when none).
+  std::string setups_file;
+  struct Step {
+    std::string place;  // the line's FILE:LINE, for messages
+    std::vector<std::pair<std::string, std::string>> options;  // "--tools", FILE: applied over the command line's
+    bool have_work_offsets = false;
+    PointNm work_offsets[9] = {};  // G54..G59.3 origins, machine nm (unset ones 0)
+  };
+  std::vector<Step> steps;
+  // This program's work offsets (a step's): the coordinate systems' origins
+  // when it starts (core/sim/job.h SimJob::work_offsets).
+  bool have_work_offsets = false;
+  PointNm work_offsets[9] = {};
+  // A chain run in one `dexmill run`: what each program before this one
+  // found (its report's findings), for this one's report.
+  std::vector<std::vector<ReportFinding>> chain_findings;
+  std::vector<uint64_t> chain_findings_total;
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   std::string tool_text = "flat:6";

@@ -124,6 +124,9 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   j.max_blocks = o.job.read.max_blocks;
   j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
   j.time.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  j.setups = o.job.setups.empty() ? nullptr : o.job.setups.data();
+  j.nsetups = static_cast<int32_t>(o.job.setups.size());
+  j.work_offsets = o.job.have_work_offsets ? o.job.work_offsets : nullptr;
   return kExitOk;
 }
 
