@@ -133,3 +133,34 @@ TEST(run_setups_file_errors_have_their_place) {
   CHECK_EQ(run("--setups %/e.setups" + kStock + " --report %/e.setups").code, 2);
   CHECK(slurp(tmp_dir() + "/e.setups") == before);
 }
+
+TEST(run_setup_materials_follow_the_part) {
+  if (skip()) return;
+  // Beech on aluminium, glued at mid height: a pocket 2 mm into the top
+  // takes beech; turned over, the same pocket takes aluminium (the old
+  // bottom is the new top), and turned over twice (a half turn), beech.
+  write_tmp("air.ngc", "G21 G90\nG0 X5 Y5 Z5\nM30\n");
+  write_tmp("pocket.ngc", "G21 G90\nG0 X6 Y6 Z5\nG1 Z-2 F300\nG1 X24 F600\nG0 Z5\nM30\n");
+  const std::string m = " --tool flat:3 -q --material wood-on-aluminium";
+  CHECK_EQ(run("%/air.ngc --stock 0,0,-10,30,20,0 --pitch 0.25" + m + " --save-stock %/glued.dxstock").code, 0);
+  auto removed = [](const std::string& report, const char* name) {
+    const size_t at = report.find(std::string("{\"name\": \"") + name + "\"");
+    if (at == std::string::npos) return std::string("?");
+    const size_t v = report.find("\"removed_mm3\": ", at) + 15;
+    return report.substr(v, report.find_first_of(",}", v) - v);
+  };
+  CHECK_EQ(run("%/pocket.ngc --stock %/glued.dxstock" + m + " --report %/up.json").code, 0);
+  CHECK_EQ(run("%/pocket.ngc --stock %/glued.dxstock --setup flip-x" + m + " --report %/down.json").code, 0);
+  CHECK_EQ(run("%/pocket.ngc --stock %/glued.dxstock --setup flip-x+flip-y" + m + " --report %/back.json").code, 0);
+  const std::string up = slurp(tmp_dir() + "/up.json"), down = slurp(tmp_dir() + "/down.json"),
+                    back = slurp(tmp_dir() + "/back.json");
+  CHECK(removed(up, "beech") != "0.000" && removed(up, "aluminium") == "0.000");
+  CHECK(removed(down, "aluminium") == removed(up, "beech") && removed(down, "beech") == "0.000");
+  CHECK(removed(back, "beech") == removed(up, "beech") && removed(back, "aluminium") == "0.000");
+  // The picture of the turned part is aluminium on top.
+  CHECK_EQ(run("%/air.ngc --stock %/glued.dxstock --setup flip-x" + m + " --view top --image %/down.ppm").code, 0);
+  CHECK_EQ(run("%/air.ngc --stock 0,0,-10,30,20,0 --tool flat:3 --pitch 0.25 -q --material aluminium --view top "
+               "--image %/alu.ppm").code, 0);
+  CHECK_EQ(run("%/air.ngc --stock %/glued.dxstock" + m + " --view top --image %/beech.ppm").code, 0);
+  CHECK(slurp(tmp_dir() + "/down.ppm") != slurp(tmp_dir() + "/beech.ppm"));
+}

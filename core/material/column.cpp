@@ -36,15 +36,22 @@ void collect(const StockComposition& c, int64_t z_lo, int64_t z_hi, Cuts* cuts) 
 uint32_t composition_column(const StockComposition& c, int64_t x_nm, int64_t y_nm, int64_t z_lo_nm, int64_t z_hi_nm,
                             int64_t lengths_nm[kCompositionMaxMaterials]) {
   for (int32_t i = 0; i < kCompositionMaxMaterials; ++i) lengths_nm[i] = 0;
-  const int64_t lo = clamp(z_lo_nm, -kCoordLimitNm, kCoordLimitNm), hi = clamp(z_hi_nm, -kCoordLimitNm, kCoordLimitNm);
+  int64_t lo = clamp(z_lo_nm, -kCoordLimitNm, kCoordLimitNm), hi = clamp(z_hi_nm, -kCoordLimitNm, kCoordLimitNm);
   if (lo >= hi || c.material_count == 0) return 0;
+  // The column in the part (the frame keeps Z an axis: a column stays one,
+  // perhaps upside down, its lengths the same).
+  const PointNm a = composition_part_point(c, PointNm{x_nm, y_nm, lo}), b = composition_part_point(c, PointNm{x_nm, y_nm, hi});
+  x_nm = a.x_nm;
+  y_nm = a.y_nm;
+  lo = min_of(a.z_nm, b.z_nm);
+  hi = max_of(a.z_nm, b.z_nm);
   Cuts cuts;
   collect(c, lo, hi, &cuts);
   uint32_t mask = 0;
   for (int32_t i = 0; i < cuts.n; ++i) {
     const int64_t end = i + 1 < cuts.n ? cuts.z[i + 1] : hi;
     if (end == cuts.z[i]) continue;  // a bound shared by two layers or inserts: one lookup
-    const uint8_t m = composition_material_at(c, x_nm, y_nm, cuts.z[i]);
+    const uint8_t m = composition_material_in_part(c, PointNm{x_nm, y_nm, cuts.z[i]});
     lengths_nm[m] += end - cuts.z[i];
     mask |= static_cast<uint32_t>(1) << m;
   }

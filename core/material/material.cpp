@@ -89,7 +89,23 @@ Status composition_set_default(StockComposition* c, uint8_t material) {
   return Status::kOk;
 }
 
+Status composition_set_frame(StockComposition* c, const PartFrame& f) {
+  if (!part_frame_keeps_z(f)) return Status::kBadArgument;
+  c->frame = f;
+  c->framed = !part_frame_is_identity(f);
+  return Status::kOk;
+}
+
+PointNm composition_part_point(const StockComposition& c, const PointNm& machine) {
+  return c.framed ? part_frame_to_part(c.frame, machine) : machine;
+}
+
 uint8_t composition_material_at(const StockComposition& c, int64_t x_nm, int64_t y_nm, int64_t z_nm) {
+  return composition_material_in_part(c, composition_part_point(c, PointNm{x_nm, y_nm, z_nm}));
+}
+
+uint8_t composition_material_in_part(const StockComposition& c, const PointNm& part) {
+  const int64_t x_nm = part.x_nm, y_nm = part.y_nm, z_nm = part.z_nm;
   for (int32_t i = c.insert_count - 1; i >= 0; --i) {  // later inserts win
     const CompositionInsert& s = c.inserts[i];
     if (s.shape == InsertShape::kBox ? in_box(s.box, x_nm, y_nm, z_nm) : in_cylinder(s, x_nm, y_nm, z_nm))
@@ -102,7 +118,8 @@ uint8_t composition_material_at(const StockComposition& c, int64_t x_nm, int64_t
 
 Rgb8 composition_colour_at(const StockComposition& c, PointNm p) {
   if (c.material_count == 0) return Texture{}.plain;
-  return texture_colour(c.materials[composition_material_at(c, p.x_nm, p.y_nm, p.z_nm)].texture, p);
+  const PointNm q = composition_part_point(c, p);
+  return texture_colour(c.materials[composition_material_in_part(c, q)].texture, q);
 }
 
 }  // namespace dexmill

@@ -14,6 +14,7 @@
 
 #include "core/material/colour.h"
 #include "core/material/texture.h"
+#include "core/math/part_frame.h"
 #include "core/point.h"
 #include "core/status.h"
 
@@ -75,6 +76,11 @@ struct StockComposition {
   CompositionInsert inserts[kCompositionMaxInserts] = {};
   int32_t insert_count = 0;
   uint8_t default_material = 0;
+  // Layers, inserts and textures are the part's (core/math/part_frame.h):
+  // once a setup has turned the part, a machine point is met at its part
+  // point, so the materials follow the part. Unframed: the machine's.
+  bool framed = false;
+  PartFrame frame = part_frame_identity();
 };
 
 // Empties c (no materials, layers or inserts; default material 0).
@@ -90,9 +96,18 @@ Status composition_add_cylinder(StockComposition* c, int64_t centre_x_nm, int64_
                                 int64_t z_lo_nm, int64_t z_hi_nm, uint8_t material);
 Status composition_set_default(StockComposition* c, uint8_t material);
 
+// Where the part is now (a setup's frame: core/stock/stock_file.h
+// StockMeta::frame). kBadArgument, nothing changed, for a turn that does
+// not keep Z an axis of its own (no setup makes one).
+Status composition_set_frame(StockComposition* c, const PartFrame& f);
+// The part point of a machine point (itself when unframed).
+PointNm composition_part_point(const StockComposition& c, const PointNm& machine);
+
 // The index of the material at (x, y, z), machine coordinates, nm: always
 // below material_count when the composition has a material (0 otherwise).
 uint8_t composition_material_at(const StockComposition& c, int64_t x_nm, int64_t y_nm, int64_t z_nm);
+// The same at a point of the part's frame.
+uint8_t composition_material_in_part(const StockComposition& c, const PointNm& part);
 // The colour there: the texture of the material there (grey when empty).
 Rgb8 composition_colour_at(const StockComposition& c, PointNm p);
 

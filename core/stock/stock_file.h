@@ -20,6 +20,7 @@
 #include <stdint.h>
 
 #include "core/grid/grid.h"
+#include "core/math/part_frame.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -47,16 +48,11 @@ struct StockProgram {
   int64_t setup_offset_nm[3];   // and its move
 };
 
-// Where the part's own frame is, seen from the current setup: a part point
-// 2 p_part = turn * 2 p_machine + offset (turn row-major, entries -1, 0, 1;
-// a rotation or reflection; offset in half nanometres, since a box's
-// centre, which setups turn about, may fall on half a nanometre).
-// Materials and design parts live in the part's frame (core/stock/README.md).
-struct StockFrame {
-  int8_t turn[9];
-  int64_t offset_half_nm[3];
-};
-StockFrame stock_frame_identity();
+// Where the part's own frame is, seen from the current setup
+// (core/math/part_frame.h): materials and design parts live in the part's
+// frame (core/stock/README.md).
+using StockFrame = PartFrame;
+inline StockFrame stock_frame_identity() { return part_frame_identity(); }
 
 // Everything of a stock but its columns.
 struct StockMeta {

@@ -199,12 +199,6 @@ bool point_ok(const PointNm& p) {
 
 }  // namespace
 
-StockFrame stock_frame_identity() {
-  StockFrame f{};
-  f.turn[0] = f.turn[4] = f.turn[8] = 1;
-  return f;
-}
-
 void stock_name_set(char* field, const char* text) {
   for (int k = 0; k < kStockNameBytes; ++k) field[k] = 0;
   int n = 0;

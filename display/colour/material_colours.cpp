@@ -38,8 +38,9 @@ template <class H>
 uint32_t colour_at(const void* ctx, int32_t i, int32_t j, uint32_t h) {
   const MaterialColours<H>* m = static_cast<const MaterialColours<H>*>(ctx);
   const DexelGrid<H>& g = *m->grid;
-  const PointNm p{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, slab_z_nm(g, h)};
-  const uint8_t k = composition_material_at(*m->comp, p.x_nm, p.y_nm, p.z_nm);
+  // The part's point: a part turned over by a setup keeps its materials.
+  const PointNm p = composition_part_point(*m->comp, PointNm{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, slab_z_nm(g, h)});
+  const uint8_t k = composition_material_in_part(*m->comp, p);
   const Rgb8 c = texture_colour(m->comp->materials[k].texture, p);
   return static_cast<uint32_t>(c.r) << 16 | static_cast<uint32_t>(c.g) << 8 | c.b;
 }
@@ -76,8 +77,10 @@ void classify(void* ctx, GridRect r, uint8_t* cls) {
   for (int32_t j = j0; j < j1; ++j)
     for (int32_t i = i0; i < i1; ++i) {
       const size_t at = g.index(i, j);
-      const int64_t z = slab_z_nm(g, g.top[at]);
-      const uint8_t k = composition_material_at(*m->comp, g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, z);
+      const PointNm p =
+          composition_part_point(*m->comp, PointNm{g.x0_nm + i * g.pitch_nm, g.y0_nm + j * g.pitch_nm, slab_z_nm(g, g.top[at])});
+      const int64_t z = p.z_nm;
+      const uint8_t k = composition_material_in_part(*m->comp, p);
       int32_t c = m->first_class[k];
       const Texture& t = m->comp->materials[k].texture;
       if (t.kind == TextureKind::kLayers)  // its band: boundaries at or under z

@@ -301,8 +301,16 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   j.checks = safety_checks(o.job.checks);
   sim_checks_for_tools(&j.checks, scan.tools, scan.ntools);
   if (!o.job.material.empty()) {
-    const BoxNm box{run->plan.stock.lo, run->plan.stock.hi};
+    // In the part's frame (a saved stock's: its setups turned the part),
+    // over the part's box: the materials follow the part.
+    const PartFrame frame = j.resume ? j.resume->frame : part_frame_identity();
+    const PointNm a = part_frame_to_part(frame, run->plan.stock.lo), b = part_frame_to_part(frame, run->plan.stock.hi);
+    const BoxNm box{PointNm{min_of(a.x_nm, b.x_nm), min_of(a.y_nm, b.y_nm), min_of(a.z_nm, b.z_nm)},
+                    PointNm{max_of(a.x_nm, b.x_nm), max_of(a.y_nm, b.y_nm), max_of(a.z_nm, b.z_nm)}};
     if (const int code = material_start(&run->material, o.job.material, box)) return code;
+    if (composition_set_frame(run->material.comp.get(), frame) != Status::kOk)
+      return fail(kExitInput, "%s: the stock's part frame turns Z over into X or Y; its materials cannot follow it",
+                  o.job.stock_file.c_str());
     j.material = run->material.comp.get();
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
     j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
