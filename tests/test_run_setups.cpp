@@ -164,3 +164,46 @@ TEST(run_setup_materials_follow_the_part) {
   CHECK_EQ(run("%/air.ngc --stock %/glued.dxstock" + m + " --view top --image %/beech.ppm").code, 0);
   CHECK(slurp(tmp_dir() + "/down.ppm") != slurp(tmp_dir() + "/beech.ppm"));
 }
+
+namespace {
+
+// A rectangle at height z as two facets of an ASCII STL.
+std::string facet_rect(double x0, double y0, double x1, double y1, double z) {
+  char b[600];
+  std::snprintf(b, sizeof b,
+                "facet normal 0 0 1\nouter loop\nvertex %g %g %g\nvertex %g %g %g\nvertex %g %g %g\nendloop\nendfacet\n"
+                "facet normal 0 0 1\nouter loop\nvertex %g %g %g\nvertex %g %g %g\nvertex %g %g %g\nendloop\nendfacet\n",
+                x0, y0, z, x1, y0, z, x1, y1, z, x0, y0, z, x1, y1, z, x0, y1, z);
+  return b;
+}
+
+}  // namespace
+
+TEST(run_setup_design_is_compared_in_the_part_frame) {
+  if (skip()) return;
+  // The design: a 30 x 20 x 10 block with a pocket 2 mm up into its bottom
+  // at X5..25 Y3..9 (the part's frame, as first set up). Turned over about
+  // X, that pocket faces up at Y11..17: a second side cutting it there
+  // cuts no design; cutting at Y3..9, where the part is now solid, gouges.
+  std::string stl = "solid part\n" + facet_rect(0, 0, 30, 20, 0) + facet_rect(5, 3, 25, 9, -8) +
+                    facet_rect(0, 0, 30, 3, -10) + facet_rect(0, 9, 30, 20, -10) + facet_rect(0, 3, 5, 9, -10) +
+                    facet_rect(25, 3, 30, 9, -10) + "endsolid part\n";
+  write_tmp("part.stl", stl.c_str());
+  write_tmp("air.ngc", "G21 G90\nG0 X5 Y5 Z5\nM30\n");
+  write_tmp("right.ngc", "G21 G90\nG0 X7 Y13 Z5\nG1 Z-2 F300\nG1 X23 F600\nG1 Y15\nG1 X7\nG0 Z5\nM30\n");
+  write_tmp("wrong.ngc", "G21 G90\nG0 X7 Y5 Z5\nG1 Z-2 F300\nG1 X23 F600\nG1 Y7\nG1 X7\nG0 Z5\nM30\n");
+  CHECK_EQ(run("%/air.ngc --stock 0,0,-10,30,20,0 --pitch 0.25 --tool flat:3 -q --save-stock %/blank.dxstock").code, 0);
+  const std::string side2 = " --stock %/blank.dxstock --setup flip-x --tool flat:3 -q --design %/part.stl";
+  CHECK_EQ(run("%/right.ngc" + side2 + " --report %/right.json").code, 0);
+  CHECK_EQ(run("%/wrong.ngc" + side2 + " --report %/wrong.json").code, 0);
+  const std::string right = assessment_of(slurp(tmp_dir() + "/right.json")),
+                    wrong = assessment_of(slurp(tmp_dir() + "/wrong.json"));
+  CHECK(has(right, "\"gouges_total\": 0}"));
+  CHECK(lacks(wrong, "\"gouges_total\": 0}"));
+  // A height-field design has no other side to face.
+  write_file(tmp_dir() + "/top.pgm", std::string("P5 2 2 255\n") + std::string(4, '\xff'));
+  const Result r = run("%/right.ngc --stock %/blank.dxstock --setup flip-x --tool flat:3 -q --design %/top.pgm "
+                       "--design-z -10,0");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "upside down; give the design as an STL mesh"));
+}

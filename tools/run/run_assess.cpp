@@ -14,8 +14,47 @@
 namespace dexmill {
 namespace cli {
 
-int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d) {
+namespace {
+
+// A height-field design (the demo's, a built-in part, a PGM) is the part's
+// top only: a setup that turned the part over faces its other side, which
+// only a mesh describes; a PGM is stretched over the stock's box, which a
+// quarter turn would have to turn with it.
+int heights_in_frame(const JobOptions& o, const PartFrame& f) {
+  if (f.turn[8] < 0)
+    return fail(kExitUsage, "--design %s gives the part's top only: this setup has the part upside down; give the "
+                "design as an STL mesh", o.design.c_str());
+  if (o.design_pgm && (f.turn[0] != 1 || f.turn[4] != 1))
+    return fail(kExitUsage, "--design %s is stretched over the stock's box: under a quarter turn give the design as "
+                "an STL mesh", o.design.c_str());
+  return kExitOk;
+}
+
+// The tolerance boxes, the part's XY, in this setup's machine XY.
+std::vector<ToleranceBox> boxes_in_frame(const std::vector<ToleranceBox>& given, const PartFrame& f) {
+  std::vector<ToleranceBox> out;
+  for (const ToleranceBox& b : given) {
+    const PointNm p = part_frame_to_machine(f, PointNm{b.x0_nm, b.y0_nm, 0});
+    const PointNm q = part_frame_to_machine(f, PointNm{b.x1_nm, b.y1_nm, 0});
+    out.push_back(ToleranceBox{min_of(p.x_nm, q.x_nm), min_of(p.y_nm, q.y_nm), max_of(p.x_nm, q.x_nm),
+                               max_of(p.y_nm, q.y_nm), b.tol_nm});
+  }
+  return out;
+}
+
+}  // namespace
+
+int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d,
+                const PartFrame& frame) {
   d->file = program;
+  const bool framed = !part_frame_is_identity(frame);
+  if (framed && (o.demo_design || o.builtin || o.design_pgm))
+    if (const int code = heights_in_frame(o, frame)) return code;
+  // A column's axis in the part, and a part height back on the machine's Z.
+  auto part_xy = [&frame](int64_t x, int64_t y) { return part_frame_to_part(frame, PointNm{x, y, 0}); };
+  auto machine_z = [&frame](const PointNm& part_xy_point, int64_t z_part) {
+    return part_frame_to_machine(frame, PointNm{part_xy_point.x_nm, part_xy_point.y_nm, z_part}).z_nm;
+  };
   const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
   d->tops.assign(cells, kNoDesign);
   if (!ok(design_init(&d->grid, plan.geo, d->tops.data(), cells)))
@@ -24,8 +63,9 @@ int load_design(const JobOptions& o, const GridPlan& plan, const std::string& pr
   // Only the stock's columns count (not the grid's ring of holes).
   d->opt.region = GridRect{1, 1, plan.stock_nx + 1, plan.stock_ny + 1};
   d->opt.tol_nm = o.tolerance_nm;
-  d->opt.boxes = o.tolerance_boxes.data();
-  d->opt.nboxes = o.tolerance_boxes.size();
+  d->boxes = boxes_in_frame(o.tolerance_boxes, frame);
+  d->opt.boxes = d->boxes.data();
+  d->opt.nboxes = d->boxes.size();
   d->report.file = o.design;
   d->report.kind = o.demo_design ? "demo" : o.builtin ? "builtin" : o.design_pgm ? "pgm" : "stl";
   d->report.tolerance_nm = o.tolerance_nm;
@@ -35,10 +75,12 @@ int load_design(const JobOptions& o, const GridPlan& plan, const std::string& pr
     // The demo's part, sampled on every dexel axis (um).
     for (int32_t j = 0; j < plan.geo.ny; ++j)
       for (int32_t i = 0; i < plan.geo.nx; ++i) {
-        const int64_t x = plan.geo.x0_nm + i * plan.geo.pitch_nm, y = plan.geo.y0_nm + j * plan.geo.pitch_nm;
+        const PointNm p = part_xy(plan.geo.x0_nm + i * plan.geo.pitch_nm, plan.geo.y0_nm + j * plan.geo.pitch_nm);
         int32_t z_um;
-        if (demo_design_top_um(static_cast<int32_t>(div_round(x, 1000)), static_cast<int32_t>(div_round(y, 1000)), &z_um))
-          d->tops[d->grid.index(i, j)] = static_cast<int32_t>(div_round(z_um * int64_t{1000} - plan.geo.z0_nm, plan.geo.lsb_nm));
+        if (demo_design_top_um(static_cast<int32_t>(div_round(p.x_nm, 1000)), static_cast<int32_t>(div_round(p.y_nm, 1000)),
+                               &z_um))
+          d->tops[d->grid.index(i, j)] =
+              static_cast<int32_t>(div_round(machine_z(p, z_um * int64_t{1000}) - plan.geo.z0_nm, plan.geo.lsb_nm));
       }
   } else if (o.builtin) {
     // A built-in part (core/design/builtin.h): its height over each axis
@@ -47,10 +89,11 @@ int load_design(const JobOptions& o, const GridPlan& plan, const std::string& pr
     const BuiltinDesign& b = *o.builtin;
     for (int32_t j = 0; j < plan.geo.ny; ++j)
       for (int32_t i = 0; i < plan.geo.nx; ++i) {
-        const int64_t x = plan.geo.x0_nm + i * plan.geo.pitch_nm, y = plan.geo.y0_nm + j * plan.geo.pitch_nm;
+        const PointNm p = part_xy(plan.geo.x0_nm + i * plan.geo.pitch_nm, plan.geo.y0_nm + j * plan.geo.pitch_nm);
+        const int64_t x = p.x_nm, y = p.y_nm;
         if (x < 0 || y < 0 || x > (b.nx - 1) * b.pitch_nm || y > (b.ny - 1) * b.pitch_nm) continue;
         // Heights from the block's bottom; the block's top is at Z0.
-        const int64_t z = b.height_nm(x, y) - b.stock_height_nm;
+        const int64_t z = machine_z(p, b.height_nm(x, y) - b.stock_height_nm);
         d->tops[d->grid.index(i, j)] = static_cast<int32_t>(div_round(z - plan.geo.z0_nm, plan.geo.lsb_nm));
       }
   } else if (o.design_pgm) {
@@ -63,15 +106,21 @@ int load_design(const JobOptions& o, const GridPlan& plan, const std::string& pr
     // Stretched over the stock as given (not the grid's rounding up).
     const HeightImage h{img.samples.data(), img.width, img.height, img.maxval};
     const StockBox& s = plan.stock;
-    if (!ok(design_from_image(&d->grid, h, s.lo.x_nm, s.lo.y_nm, s.hi.x_nm, s.hi.y_nm, o.design_z_nm[0], o.design_z_nm[1])))
+    // (A saved stock moved by an offset: the box moved with it; the heights move too.)
+    const PointNm at{0, 0, 0};
+    if (!ok(design_from_image(&d->grid, h, s.lo.x_nm, s.lo.y_nm, s.hi.x_nm, s.hi.y_nm, machine_z(at, o.design_z_nm[0]),
+                              machine_z(at, o.design_z_nm[1]))))
       return fail(kExitUsage, "--design-z lies more than %.2f m from the stock's bottom",
                   static_cast<double>(kDesignRangeNm) * 1e-9);
   } else {
     const PointNm off{o.design_offset_nm[0], o.design_offset_nm[1], o.design_offset_nm[2]};
     StlReadInfo info;
     const StlRead r = stl_read(o.design, off,
-                               [d](const PointNm* v, std::string* m) {
-                                 if (ok(design_add_triangle(&d->grid, TriangleNm{{v[0], v[1], v[2]}}))) return true;
+                               [d, &frame](const PointNm* v, std::string* m) {
+                                 // Turned with the part (exact: a setup's turn permutes and negates axes).
+                                 const TriangleNm t{{part_frame_to_machine(frame, v[0]), part_frame_to_machine(frame, v[1]),
+                                                     part_frame_to_machine(frame, v[2])}};
+                                 if (ok(design_add_triangle(&d->grid, t))) return true;
                                  *m = "vertex more than 1.07 m from the stock's corner (see --design-offset)";
                                  return false;
                                },

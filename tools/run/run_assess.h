@@ -34,11 +34,17 @@ struct RunDesign {
   std::string file;           // the program, for the warnings
   size_t printed = 0;         // events whose warning is out
   std::vector<PointNm> marks; // where the kept gouges are (deepest column, on the design's surface), for the frames
+  std::vector<ToleranceBox> boxes;  // --tolerance-box, in this setup's machine XY
 };
 
 // Reads o.design onto the grid of `plan`. Returns kExitOk, or the exit code
-// after printing the error (input errors: the file's own message).
-int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d);
+// after printing the error (input errors: the file's own message). The
+// design, its offset and the tolerance boxes are the part's, as it was
+// first set up: `frame` says where a saved stock's setups have put the
+// part since (core/math/part_frame.h), and the design is turned with it, so
+// that each setup is compared with the design's side it faces.
+int load_design(const JobOptions& o, const GridPlan& plan, const std::string& program, RunDesign* d,
+                const PartFrame& frame = part_frame_identity());
 
 // The error view (paper §2.5.1, figure 10) of grid g against the design:
 // d->colours and d->legend for the outputs to draw with.

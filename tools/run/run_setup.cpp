@@ -294,7 +294,9 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   j.tools = run->tools.data();
   j.ntools = static_cast<int>(run->tools.size());
   if (!o.job.design.empty()) {  // before the cut: a bad file costs no simulation
-    if (const int code = load_design(o.job, run->plan, run->shown_name, &run->design)) return code;
+    if (const int code = load_design(o.job, run->plan, run->shown_name, &run->design,
+                                     j.resume ? j.resume->frame : part_frame_identity()))
+      return code;
     j.design = &run->design.grid;
     j.assess = run->design.opt;
   }
