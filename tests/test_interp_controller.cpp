@@ -53,6 +53,10 @@ TEST(controller_probe_moves) {
   CHECK_EQ(run("G21\nG38.2 Z-5", &rec, &d), GcodeError::kFeedZero);
   CHECK_EQ(run("G21 G93\nG38.2 Z-5 F1", &rec, &d), GcodeError::kFeedZero);
   CHECK_EQ(run("G21 F10\nG38.2 X0", &rec, &d), GcodeError::kProbeTooClose);
+  // LinuxCNC's convert_probe: not with cutter radius compensation on.
+  CHECK_EQ(run("G21 F10\nG41.1 D2\nG0 X5\nG38.2 Z-5", &rec, &d), GcodeError::kCompForbidden);
+  CHECK_EQ(d.line, 4u);
+  CHECK_EQ(run("G21 F10\nG41.1 D2\nG0 X5\nG40\nG0 X8\nG38.2 Z-5", &rec, &d), GcodeError::kOk);
   CHECK_EQ(run("G21 F10\nG38.2 Z-0.00001", &rec, &d), GcodeError::kOk);
   CHECK_EQ(run("G21 F10\nG38.2 Z-5 R1", &rec, &d), GcodeError::kWordUnused);
 }
