@@ -131,6 +131,13 @@ TEST(run_probes_touch_the_simulated_stock) {
   CHECK(has(r.err, "probe.ngc:16: debug:  missed 0.000000"));
   CHECK(lacks(r.err, "warning"));
   CHECK(has(slurp(tmp_dir() + "/probe.json"), "\"text\": \" floor -3.000000\""));
+  // The time and the bounds are where the probes stopped, not their ends:
+  // down 5 mm at F60 onto the top is 5 s, never the 25 s to Z-20.
+  write_tmp("timed.ngc", "G21 G90 G94\nG0 X10 Y10 Z5\nG38.2 Z-20 F60\nG0 Z5\nM30\n");
+  CHECK_EQ(run("%/timed.ngc -q --tool flat:3 --stock 0,0,-10,30,20,0 --pitch 0.25 --report %/timed.json").code, 0);
+  const std::string timed = slurp(tmp_dir() + "/timed.json");
+  CHECK(has(timed, "\"feed_s\": 5.000"));
+  CHECK(has(timed, "\"bounds_mm\": {\"min\": [0.0000, 0.0000, 0.0000]"));
   // A probe tip of its own: a 2 mm ball on the 3 mm slot's floor edge.
   r = run("%/probe.ngc --tool flat:3 --probe 2 --stock 0,0,-10,30,20,0 --pitch 0.25");
   CHECK_EQ(r.code, 0);
@@ -147,7 +154,7 @@ TEST(run_probes_touch_the_simulated_stock) {
   r = run("%/zero.ngc --tool flat:3 --stock 0,0,-10,30,20,0 --pitch 0.25");
   CHECK_EQ(r.code, 0);
   CHECK(has(r.err, "zero.ngc:8: debug:  second 0.000000"));
-    // On a flipped part: side one drills a hole through; after flip-x the
+  // On a flipped part: side one drills a hole through; after flip-x the
   // probe over the hole's mirrored place goes down through it and misses
   // (G38.3), while beside it the new top is the old bottom, at Z0.
   write_tmp("drill.ngc", "G21 G90\nG0 X10 Y5 Z5\nG1 Z-11 F200\nG0 Z5\nM30\n");

@@ -294,7 +294,8 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   rep.instances = sim.mill().stats().instances;
   rep.dexel_updates = sim.mill().stats().dexel_updates;
   rep.removed_lsb_dexels = sim.removed_lsb();
-  if (su.cut_notes) {  // a program that probes: the cut's messages and probe errors
+  if (su.cut_notes) {  // a program that probes: the cut's messages, probe errors, moves and time
+    motion_to_report(sim.time(), &rep);
     rep.messages.clear();
     for (const GcodeNotes::Note& n : su.cut_notes->kept)
       if (rep.messages.size() < 100) rep.messages.push_back(RunReport::Message{n.line, n.kind, n.text});

@@ -85,12 +85,7 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
   if (in.choice) report_tools(s, *in.choice, in.shown_name, msgs, rep);
   rep->lines = s.lines;
   if (s.inch_moves || s.mm_moves) rep->units = s.inch_moves ? (s.mm_moves ? "mixed" : "inch") : "mm";
-  const MotionSummary& sum = s.summary;
-  rep->rapid = sum.count(CanonKind::kTraverse);
-  rep->feed = sum.count(CanonKind::kFeed);
-  rep->arc = sum.count(CanonKind::kArc);
-  rep->dwell = sum.count(CanonKind::kDwell);
-  rep->tool_change = sum.count(CanonKind::kToolChange);
+  motion_to_report(s.summary, rep);
   rep->errors = msgs->error_list;
   msgs->finish();
   rep->warnings = msgs->warning_list();
@@ -103,6 +98,15 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
       tool_spec_format(s.tools[k], spec, sizeof spec);
       rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec, "", 0, ""});
     }
+  return kExitOk;
+}
+
+void motion_to_report(const MotionSummary& sum, RunReport* rep) {
+  rep->rapid = sum.count(CanonKind::kTraverse);
+  rep->feed = sum.count(CanonKind::kFeed);
+  rep->arc = sum.count(CanonKind::kArc);
+  rep->dwell = sum.count(CanonKind::kDwell);
+  rep->tool_change = sum.count(CanonKind::kToolChange);
   rep->estimated_us = sum.estimated_time_us();
   rep->feed_us = sum.feed_time_us();
   rep->rapid_us = sum.rapid_time_us();
@@ -110,7 +114,6 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
   rep->have_bounds = sum.motion_box().valid;
   rep->bounds_lo = sum.motion_box().lo;
   rep->bounds_hi = sum.motion_box().hi;
-  return kExitOk;
 }
 
 }  // namespace cli

@@ -72,6 +72,11 @@ struct ScanInput {
 int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, std::vector<PathSegment>* path,
               RunMessages* msgs, RunReport* rep);
 
+// The report's motion counts, time estimate and bounds from a summary:
+// the scan's, or, for a program that probes, the cut's (where each probe
+// stopped on the stock).
+void motion_to_report(const MotionSummary& sum, RunReport* rep);
+
 }  // namespace cli
 }  // namespace dexmill
 
