@@ -2,7 +2,7 @@
 // core/sim/stock_state.h): a program split in two at a move, its second
 // part run on the first part's saved stock, gives the whole run's
 // heightmap, bottoms, tool classes, error view and totals, for every tool
-// shape in both modes at several split points; and a bad stock file is an
+// shape in both modes at every move; and a bad stock file is an
 // error with its place, never a stock.
 #include <algorithm>
 #include <cstdint>
@@ -75,7 +75,10 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
   write_file(tmp_dir() + "/floor.pgm", std::string("P5\n2 2\n255\n") + std::string(4, '\0'));
   const char* const tools[] = {"ball:3", "flat:3", "bull:4:1", "vbit:6:90"};
   const char* const modes[] = {"sweep", "stamp"};
-  const int splits[] = {5, 9, 14};  // the last line of part one
+  // The last line of part one: after every move of the program (lines 3
+  // to 18: rapids, plunges, ramps, lines, arcs, a drill cycle).
+  std::vector<int> splits;
+  for (int k = 3; k < kNLines; ++k) splits.push_back(k);
   int compared = 0;
   for (const char* tool : tools)
     for (const char* mode : modes) {
@@ -99,15 +102,11 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
                              "--save-stock %/b.dxstock --error-image %/b_err.ppm" + design);
         CHECK_EQ(b.code, 0);
         CHECK(slurp(tmp_dir() + "/whole_err.ppm") == slurp(tmp_dir() + "/b_err.ppm"));
-        // The tops are the whole run's except in one case: split at the
-        // bull nose's plunge in sweep mode, two columns exactly on the rim
-        // of the tool standing at the joint come out 4 LSB (0.8 um) deeper.
-        // The whole run cuts that joint as a chain (the next move's start
-        // cap), the split as a standing tool (a stock's end), and on the
-        // rim the torus is vertical, so the two computations' rounding of
-        // the distance shows in the height. Pinned as it is, so that a fix
-        // (the same distance in both) shows here.
-        const bool rim_case = std::string(tool) == "bull:4:1" && std::string(mode) == "sweep" && k == 14;
+        // Every top is the whole run's, the bull nose's rim included: a
+        // cap's distance is the grid frame's exact one, as the tool
+        // standing at the joint has it (core/cut/sweep_piece.h
+        // general_row), so the split's standing tool and the whole run's
+        // next move agree even where the torus stands vertical.
         const std::string part2 = slurp(tmp_dir() + "/b.json");
         const std::string chain = chain_of(part2);
         // The chain's totals are the whole run's (the last "removed_mm3" of
@@ -115,7 +114,7 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
         const size_t total_at = chain.rfind("\"removed_mm3\": ");
         CHECK(total_at != std::string::npos);
         if (total_at != std::string::npos) {
-          if (!rim_case) CHECK_EQ(json_value(chain.substr(total_at), "removed_mm3"), json_value(whole, "removed_mm3"));
+          CHECK_EQ(json_value(chain.substr(total_at), "removed_mm3"), json_value(whole, "removed_mm3"));
           CHECK_EQ(json_value(chain.substr(total_at), "estimated_time_s"), json_value(whole, "estimated_time_s"));
           CHECK_EQ(json_value(chain.substr(total_at), "moves"), json_value(chain_of(whole), "moves"));
         }
@@ -132,9 +131,9 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
             ++differ;
             worst = std::max(worst, std::abs(static_cast<int>(s.top[c]) - static_cast<int>(w.top[c])));
           }
-        CHECK_EQ(differ, rim_case ? 2 : 0);
-        CHECK_EQ(worst, rim_case ? 4 : 0);
-        if (!rim_case) CHECK(slurp(tmp_dir() + "/whole.pgm") == slurp(tmp_dir() + "/b.pgm"));
+        CHECK_EQ(differ, 0);
+        CHECK_EQ(worst, 0);
+        CHECK(slurp(tmp_dir() + "/whole.pgm") == slurp(tmp_dir() + "/b.pgm"));
         CHECK(s.bottom == w.bottom);
         CHECK(s.cls == w.cls);
         CHECK_EQ(s.meta.nprograms, 2);
@@ -143,11 +142,11 @@ TEST(run_split_at_a_move_equals_the_whole_run) {
           const uint32_t whole_line = s.program[c] == 1 ? s.line[c] + static_cast<uint32_t>(k) - 1 : s.line[c];
           if (s.line[c] == 0 ? w.line[c] != 0 : whole_line != w.line[c]) ++mismatched;
         }
-        CHECK_EQ(mismatched, rim_case ? 2u : 0u);  // the rim's two columns: cut last by another line
+        CHECK_EQ(mismatched, 0u);
         ++compared;
       }
     }
-  CHECK_EQ(compared, 4 * 2 * 3);
+  CHECK_EQ(compared, 4 * 2 * (kNLines - 3));
 }
 
 TEST(run_saved_stock_carries_the_tool_position) {

@@ -212,8 +212,11 @@ bool setup_piece(const SweepTool& t, int64_t za_v, int64_t zb_v, int64_t dx_u, i
 //   caps  >= za + S(u) - m w + (w^2 + v2) g / (2R) - 2
 //         >= za + S(u) + v2 g / (2R) - R m^2 / (2 g) - 2 (minimum over w),
 // and both are >= S(u) + sweep_bowl_v(v2) + *floor_v with
-// *floor_v = za - max(R (K - 1) g, R m^2 / (2 g)) - 3, each product rounded
-// up; a saturated product only lowers the floor. K < 1 (rounding) needs no
+// *floor_v = za - max(R (K - 1) g, R m^2 / (2 g)) - 3 - 3 (g + 1), each
+// product rounded up; a saturated product only lowers the floor. The last
+// term: a cap's r^2 is the grid frame's exact one (general_row), within
+// 4R + 10 U^2 of w^2 + v2 from the walked u and v (each within 1 U), so its
+// paraboloid term within 3 g of the one above (R >= 8 U). K < 1 (rounding) needs no
 // term: then R (1 - K) >= (1 - K) v2 / (2R). False: no floor (not a ball, a
 // plunge, or one too far down to matter).
 bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
@@ -228,7 +231,7 @@ bool ball_floor_of(const SweepTool& t, const SweepLine& lp, int64_t* floor_v) {
   const int64_t drop = max_of(drop_flank, drop_caps);
   // 2^40 LSB down, beyond any top: no floor worth testing, and no overflow.
   if (drop > (static_cast<int64_t>(1) << 48)) return false;
-  *floor_v = lp.za_v - drop - 3;
+  *floor_v = lp.za_v - drop - 3 - 3 * ((t.v_per_u_q32 >> 32) + 1);
   return true;
 }
 
@@ -678,6 +681,7 @@ struct PieceRows : PieceCut<H> {
   int64_t p, p_u, reach2, r_q30;
   int64_t i_first, i_last, j_first, j_last;
   int64_t dx0_u;  // column i_first - origin, U
+  int64_t end_dx_u, end_dy_u;  // the end b - origin, U (the end cap's centre)
   WRange wr;
   int64_t u_min_q30, u_max_q30;  // the along-track range of columns the caps leave (u_min_of)
   bool collinear, along_x, walk;
@@ -755,6 +759,8 @@ __attribute__((always_inline)) inline bool piece_frame(DexelGrid<H>* g, const Sw
   // A plunge is the tool at its lower end (the shaft covers the rest).
   s->o = a;
   if (lp.plunge && zb_v < za_v) s->o = b;
+  s->end_dx_u = (b.x_nm - s->o.x_nm) * kSweepUnitsPerNm;
+  s->end_dy_u = (b.y_nm - s->o.y_nm) * kSweepUnitsPerNm;
   s->ct_plunge_lsb = (max_of(za_v, zb_v) + t.len_v) >> kSweepVBits;
   SweepColumns box;
   if (!sweep_columns(*g, t, min_of(a.x_nm, b.x_nm), max_of(a.x_nm, b.x_nm), min_of(a.y_nm, b.y_nm),
@@ -981,7 +987,20 @@ __attribute__((always_inline)) inline bool general_row(const PieceRows<H>& s, in
         if (!s.caps.end) continue;
         w = u - len;
       }
-      const int64_t r2 = static_cast<int64_t>(w) * w + v2;
+      // A cap's distance from its centre is the grid frame's, exactly, as
+      // the tool standing there has it (plunge_row, cut_tool_at): u and v
+      // are walked in the piece's turned frame and rounded, and on a bull
+      // nose's rim, where the torus stands vertical, 1 U off in r moves the
+      // height by sqrt(2 rc U), so a cap and the standing tool would
+      // differ there (a run split at that joint would not be the whole).
+      int64_t r2;
+      if (side == 0) {
+        r2 = static_cast<int64_t>(w) * w + v2;
+      } else {
+        const int64_t dx = s.dx0_u + (i - s.i_first) * s.p_u - (side > 0 ? s.end_dx_u : 0);
+        const int64_t dy = dy_row_u - (side > 0 ? s.end_dy_u : 0);
+        r2 = dx * dx + dy * dy;
+      }
       if (r2 > s.reach2) continue;
       const int64_t h_v = side == 0 && s.ball ? lp.za_v + slope_v(u) + ball_flank_v(t, lp, rho)
                                               : lp.za_v + slope_v(u - w) + sweep_profile_v(t, min_of(r2, t.r2_u));
