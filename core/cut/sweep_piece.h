@@ -997,9 +997,11 @@ __attribute__((always_inline)) inline bool general_row(const PieceRows<H>& s, in
       if (side == 0) {
         r2 = static_cast<int64_t>(w) * w + v2;
       } else {
-        const int64_t dx = s.dx0_u + (i - s.i_first) * s.p_u - (side > 0 ? s.end_dx_u : 0);
-        const int64_t dy = dy_row_u - (side > 0 ? s.end_dy_u : 0);
-        r2 = dx * dx + dy * dy;
+        // (Offsets from either end are below 2^31 U, sweep.h: in 32-bit
+        // words one 32 x 32 -> 64-bit multiply each.)
+        const I dx = static_cast<I>(s.dx0_u + (i - s.i_first) * s.p_u - (side > 0 ? s.end_dx_u : 0));
+        const I dy = static_cast<I>(dy_row_u - (side > 0 ? s.end_dy_u : 0));
+        r2 = static_cast<int64_t>(dx) * dx + static_cast<int64_t>(dy) * dy;
       }
       if (r2 > s.reach2) continue;
       const int64_t h_v = side == 0 && s.ball ? lp.za_v + slope_v(u) + ball_flank_v(t, lp, rho)
