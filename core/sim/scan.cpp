@@ -45,12 +45,16 @@ void ProgramScan::line(const char* text, size_t n, uint32_t line_no) {
   WorkpieceBox b;
   const char* why = nullptr;
   const InterpState& s = interp_->state();
+  bool blk = false;
   if (!workpiece_comment(text, n, s.inch, &b, &why)) {
+    const bool workpiece_form = why != nullptr;
+    if (!why) blk = blk_form_comment(text, n, s.inch, &blk_, &b, &why);
     if (why && !workpiece_bad) {
       workpiece_bad = why;
       workpiece_bad_line = line_no;
+      workpiece_bad_form = workpiece_form ? "(WORKPIECE,...)" : "(BLK FORM ...)";
     }
-    return;
+    if (!blk) return;
   }
   // In the coordinate system where it stands (as LinuxCNC's preview draws it).
   const PointNm& o = s.work_offset[s.coord_system];
@@ -60,6 +64,7 @@ void ProgramScan::line(const char* text, size_t n, uint32_t line_no) {
     workpiece = StockBox{lo, hi};
     workpiece_kind = b.kind;
     workpiece_line = line_no;
+    blk_form = blk;
     have_workpiece = true;
     return;
   }

@@ -18,6 +18,7 @@
 #include "core/canon/summary.h"
 #include "core/sim/job.h"
 #include "core/sim/comment_tools.h"
+#include "core/sim/blk_form_comment.h"
 #include "core/sim/workpiece_comment.h"
 #include "core/sim/tool_choice.h"
 #include "core/tool/tool.h"
@@ -48,7 +49,8 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   void set_tool_choice(ToolChoice* c) { choice_ = c; }
 
   void emit(const CanonRecord& r) override;
-  // LineWatcher: the program's (WORKPIECE,...) comments (core/sim/workpiece_comment.h).
+  // LineWatcher: the program's (WORKPIECE,...) comments (core/sim/workpiece_comment.h)
+  // and (BLK FORM ...) pairs (core/sim/blk_form_comment.h).
   void line(const char* text, size_t n, uint32_t line_no) override;
 
   MotionSummary summary;
@@ -68,7 +70,7 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   int32_t bad_tool = 0;
   uint32_t lines = 0;          // lines read
   uint32_t probes = 0;         // probe moves (G38.2-G38.5): the cut, with the stock, says where they stop
-  // The stock the program's (WORKPIECE,...) comments declare, in the record
+  // The stock the program's (WORKPIECE,...) or BLK FORM comments declare, in the record
   // frame (the work offsets and G92 in force where each stands added; the
   // union of them all), the first one's line, and the first one not read.
   bool have_workpiece = false;
@@ -77,12 +79,15 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   uint32_t workpiece_line = 0;
   uint32_t workpiece_bad_line = 0;
   const char* workpiece_bad = nullptr;
+  const char* workpiece_bad_form = "(WORKPIECE,...)";  // or "(BLK FORM ...)"
+  bool blk_form = false;       // the stock is a BLK FORM's (else WORKPIECE's)
   bool io_error = false;
 
   // The smallest diameter among the tools (0 with none).
   int64_t smallest_diameter_nm() const;
 
  private:
+  BlkForm blk_{};  // a BLK FORM 0.1 waiting for its 0.2
   SimJob job_;
   SingleToolLibrary single_;
   const ToolLibrary* lib_;

@@ -231,14 +231,16 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     rep.stock_source = "demo";
   } else if (scan.have_workpiece) {  // the program's (WORKPIECE,...) comment, as LinuxCNC's preview reads it
     stock = scan.workpiece;
-    rep.stock_source = scan.workpiece_kind == WorkpieceKind::kBox ? "workpiece comment" : "workpiece comment's box";
+    rep.stock_source = scan.blk_form                                 ? "BLK FORM comments"
+                       : scan.workpiece_kind == WorkpieceKind::kBox ? "workpiece comment"
+                                                                    : "workpiece comment's box";
   } else {
     stock = default_stock(scan.summary, scan.max_radius_nm);
     rep.stock_source = "program";
   }
   if (scan.workpiece_bad && run->print)
-    std::fprintf(stderr, "%s:%u: warning: a (WORKPIECE,...) comment not read: %s\n", run->shown_name.c_str(),
-                 scan.workpiece_bad_line, scan.workpiece_bad);
+    std::fprintf(stderr, "%s:%u: warning: a %s comment not read: %s\n", run->shown_name.c_str(),
+                 scan.workpiece_bad_line, scan.workpiece_bad_form, scan.workpiece_bad);
   int64_t pitch_nm = o.job.pitch_nm;
   if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
   std::string err;
