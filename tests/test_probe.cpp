@@ -97,6 +97,24 @@ TEST(probe_along_z_stops_at_the_contact_height) {
   CHECK(worst_nm <= 2.0);  // profile_height_r2_nm rounds within 1 nm; the oracle's sqrt within 1e-6 nm
 }
 
+TEST(probe_thinner_than_the_cells_touches_its_cell) {
+  // A 0.1 mm tip on a 0.25 mm grid, between four axes (none within its
+  // radius): it touches the column of the cell it is in, at its tip, and
+  // never goes through the stock.
+  Grid grid(9);
+  const ToolProfile prof = tool_profile(tool_of(ToolKind::kFlat, 0.1, 0, 0));
+  const PointNm from{-1000000 + 10 * 250000 + 110000, -2000000 + 7 * 250000 + 120000, 5000000};
+  PointNm stop{0, 0, 0};
+  CHECK_EQ(probe_move(grid.g, prof, from, PointNm{from.x_nm, from.y_nm, -20000000}, true, &stop), ProbeResult::kTripped);
+  const size_t cell = grid.g.index(10, 7);  // the nearest axis: (10, 7)
+  CHECK_EQ(stop.z_nm, grid.g.z0_nm + grid.top[cell] * grid.g.lsb_nm);
+  // Nearer the next axis, the next column.
+  const PointNm near_next{from.x_nm + 30000, from.y_nm, from.z_nm};
+  CHECK_EQ(probe_move(grid.g, prof, near_next, PointNm{near_next.x_nm, near_next.y_nm, -20000000}, true, &stop),
+           ProbeResult::kTripped);
+  CHECK_EQ(stop.z_nm, grid.g.z0_nm + grid.top[grid.g.index(11, 7)] * grid.g.lsb_nm);
+}
+
 TEST(probe_across_stops_at_first_contact_and_outside_the_stock) {
   Grid grid(5);
   // A wall: columns with i >= 40 at 9 mm above z0, the rest at 2 mm.

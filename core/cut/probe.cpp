@@ -27,17 +27,30 @@ int64_t probe_depth_nm(const DexelGrid<H>& g, const ToolProfile& tool, const Poi
   const int64_t j1 = min_of<int64_t>(g.ny - 1, div_floor(p.y_nm + r - g.y0_nm, pitch));
   const uint64_t r2 = static_cast<uint64_t>(r) * static_cast<uint64_t>(r);
   int64_t best = INT64_MIN;
+  bool any_axis = false;
   for (int64_t j = j0; j <= j1; ++j) {
     const int64_t dy = g.y0_nm + j * pitch - p.y_nm;
     for (int64_t i = i0; i <= i1; ++i) {
       const int64_t dx = g.x0_nm + i * pitch - p.x_nm;
       const uint64_t d2 = static_cast<uint64_t>(dx * dx) + static_cast<uint64_t>(dy * dy);
       if (d2 > r2) continue;
+      any_axis = true;
       const size_t k = g.index(static_cast<int32_t>(i), static_cast<int32_t>(j));
       if (g.top[k] == 0 && g.bottom[k] == 0) continue;  // a hole: no material
       const int64_t top_z = g.z0_nm + static_cast<int64_t>(g.top[k]) * g.lsb_nm;
       best = max_of(best, top_z - (p.z_nm + profile_height_r2_nm(tool, d2)));
     }
+  }
+  if (!any_axis) {
+    // A tip narrower than the cells with no axis under it (a PCB probe on a
+    // coarse grid) touches the column of the cell it is in: the grid holds
+    // nothing finer, and a probe must not pass through the stock between
+    // two axes.
+    const int64_t i = div_round(p.x_nm - g.x0_nm, pitch), j = div_round(p.y_nm - g.y0_nm, pitch);
+    if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) return best;
+    const size_t k = g.index(static_cast<int32_t>(i), static_cast<int32_t>(j));
+    if (g.top[k] == 0 && g.bottom[k] == 0) return best;
+    best = g.z0_nm + static_cast<int64_t>(g.top[k]) * g.lsb_nm - p.z_nm;
   }
   return best;
 }

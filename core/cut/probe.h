@@ -34,7 +34,9 @@ enum class ProbeResult : uint8_t {
 
 // How far a tool with its tip at p is into material: the largest, over the
 // columns under it, of top - (p.z + height(r)), nm (> 0: into it; INT64_MIN
-// when no column with material is under it).
+// when no column with material is under it). A tool so thin that no
+// column's axis is under it is measured on the column of the cell its tip
+// is in (the nearest axis), at its tip.
 template <class H>
 int64_t probe_depth_nm(const DexelGrid<H>& g, const ToolProfile& tool, const PointNm& p);
 

@@ -109,4 +109,18 @@ done
 lcnc_part=""
 [ $have_rs274 = 1 ] && lcnc_part=" ($refused_lcnc of them by LinuxCNC's rs274 too, at the same line)"
 echo "corpus-check: $ok OK ($ok_feed with --default-feed), $refused refused with an error$lcnc_part, $bad bad"
+# pcb2gcode's auto-levelling program probes 102 points of the board before
+# it mills: on a stock under all of them (the board, X-290..-115 Y-95..-20
+# mm) every probe must touch its top (a 0.2 mm tip between the grid's axes
+# included) and the program run to its end.
+al="$corpus/pcb2gcode/example_board_al_custom_tiled_back.ngc"
+if [ -f "$al" ]; then
+  if "$dexmill" run "$al" --tool flat:0.2 --stock -290,-95,-1.6,-115,-20,0 -q --report "$tmp/al.json" 2>"$tmp/al.err" &&
+     grep -q '"errors": \[\]' "$tmp/al.json"; then
+    echo "OK       pcb2gcode auto-levelling: 102 probes touch the board, the program runs to its end"
+  else
+    echo "BAD      pcb2gcode auto-levelling: $(head -c 300 "$tmp/al.err")"
+    bad=$((bad + 1))
+  fi
+fi
 [ $bad -eq 0 ]
