@@ -35,6 +35,7 @@ allowed() {
     core/material) echo "core/math";;  # noise, textures, materials: maths only
     core/safety) echo "core/canon core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; a material's limits
     core/stock) echo "core/grid core/math";;  # the stock file: a stock between runs
+    core/engage) echo "core/grid core/tool core/math";;  # what the cutting edge meets: engagement, chip, load
     core/sim) echo "core/stock core/safety core/assess core/material core/cut core/design core/canon core/interp core/gcode core/grid core/tool core/math";;  # the engine: a run's stages and observers, tied together once
     display/raster) echo "core/math";;  # the frame, spans, clipping, the camera
     display/colour) echo "display/raster core/sim core/stock core/assess core/design core/grid core/material core/math";;  # a cell's colour by mode (tool colours: the provenance)
