@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/engage/engage.h"
+#include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -132,4 +133,32 @@ TEST(engage_chip_thins_with_the_arc) {
   CHECK(std::fabs(c.mean_nm - fz * (std::cos(a) - std::cos(b)) / (b - a)) <= 2 + 1e-8 * fz);
   CHECK(c.max_nm < fz * 0.65 && c.max_nm > fz * 0.55);  // chip thinning: about 0.6 fz
   CHECK_EQ(engage_chip(EngageAt{}, fz).max_nm, 0);
+}
+
+TEST(run_engagement_csv_and_report) {
+  using namespace run_cli;
+  if (skip()) return;
+  // A full slot at 1200 mm/min, 10000 rpm (2 flutes: 0.06 mm a tooth),
+  // then a pass 2.4 mm over on its climb side: 2.4 mm wide, 78 degrees
+  // (the plunge and the step over stand outside the stock, in air).
+  write_tmp("eng.ngc", "G21 G90 G94\nS10000 M3\nG0 X-5 Y10 Z5\nG1 Z-2 F300\nG1 X35 F1200\nG1 Y12.4\nG1 X-5\nG0 Z5\nM30\n");
+  CHECK_EQ(run("%/eng.ngc -q --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --engagement-csv %/eng.csv "
+               "--report %/eng.json").code,
+           0);
+  const std::string csv = slurp(tmp_dir() + "/eng.csv");
+  CHECK(has(csv, "line,time_s,depth_mm,width_mm,angle_deg,mrr_mm3_per_min,chip_max_mm,chip_mean_mm,force_n,power_w,"
+                 "feed_mm_per_min\n"));
+  CHECK(has(csv, "\n5,3.547,2.0000,6.0000,180.00,"));
+  CHECK(has(csv, ",0.06000,0.03820,,,1200.0\n"));
+  CHECK(has(csv, "\n7,5.667,2.0000,2.3763,78.00,"));
+  CHECK(has(csv, "\n4,1.547,0.0000,0.0000,0.00,0.0,"));  // the plunge: no front to meet
+  const std::string rep = slurp(tmp_dir() + "/eng.json");
+  CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"max_angle\": {\"deg\": 180.00, \"line\": 5}"));
+  CHECK(has(rep, "\"max_width\": {\"mm\": 6.0000, \"line\": 5}"));
+  CHECK(has(rep, "{\"option\": \"--engagement-csv\""));
+  // Off, nothing is measured.
+  CHECK_EQ(run("%/eng.ngc -q --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --report %/off.json").code, 0);
+  CHECK(lacks(slurp(tmp_dir() + "/off.json"), "\"engagement\""));
+  // The CSV never replaces the program.
+  CHECK_EQ(run("%/eng.ngc -q --tool flat:6 --stock 0,0,-10,30,20,0 --engagement-csv %/eng.ngc").code, 2);
 }

@@ -14,11 +14,12 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
   // Inner rings only where the surface rises with r: none for a flat, the
   // corner's for a bull nose (beyond its flat radius R - rc).
   const int64_t inner_end = t.kind == ToolKind::kFlat ? R : t.kind == ToolKind::kBullNose ? R - e.profile.corner_nm : 0;
-  const int64_t step = max_of(max_of(pitch_nm / 2, R / kEngageMaxRings), int64_t{1});
+  const int64_t step = max_of(max_of(pitch_nm, R / kEngageMaxRings), int64_t{1});
   e.nrings = 0;
   for (int64_t r = R; e.nrings < kEngageMaxRings && (r == R || r > inner_end); r -= step) {
     e.ring_r_nm[e.nrings] = r;
     e.ring_h_nm[e.nrings] = profile_height_nm(e.profile, r);
+    e.ring_cells_q16[e.nrings] = muldiv_round(r, int64_t{1} << 16, max_of<int64_t>(pitch_nm, 1));
     ++e.nrings;
   }
   for (int k = 0; k <= kEngageSteps; ++k) {
@@ -28,27 +29,36 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
   }
 }
 
-template <class H>
-void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
+namespace {
+
+// top(cell): the column's top in LSB, or a negative for no material.
+template <class Top>
+void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, EngageAt* out) {
   EngageAt r;
   // phi = 0 on the entry side: left of the feed (clockwise spindle), or right.
   const int64_t sx = clockwise ? -ey_q30 : ey_q30, sy = clockwise ? ex_q30 : -ex_q30;
   int64_t cross_lo = INT64_MAX, cross_hi = INT64_MIN;
   int first = -1, last = -1;
+  // The tool's axis in the grid's pitches, q16: the samples' columns are
+  // offsets from it (the rings' radii in pitches, turned), no division.
+  const int64_t ci_q16 = muldiv_floor(at.x_nm - g.x0_nm, int64_t{1} << 16, g.pitch_nm);
+  const int64_t cj_q16 = muldiv_floor(at.y_nm - g.y0_nm, int64_t{1} << 16, g.pitch_nm);
+  constexpr int64_t kHalf = int64_t{1} << 15, kFar = int64_t{1} << 48;
   for (int k = 0; k <= kEngageSteps; ++k) {
     // The sample's direction: side * cos(phi) + feed * sin(phi), q30.
     const int64_t ux = (sx * t.cos_q30[k] + ex_q30 * t.sin_q30[k]) >> 30;
     const int64_t uy = (sy * t.cos_q30[k] + ey_q30 * t.sin_q30[k]) >> 30;
     bool hit = false;
     for (int ring = 0; ring < t.nrings && !hit; ++ring) {  // the outermost that bears material
-      const int64_t rr = t.ring_r_nm[ring];
-      const int64_t qx = at.x_nm + mul_shift(rr, ux, 30), qy = at.y_nm + mul_shift(rr, uy, 30);
-      const int64_t i = div_round(qx - g.x0_nm, g.pitch_nm), j = div_round(qy - g.y0_nm, g.pitch_nm);
+      const int64_t rr = t.ring_r_nm[ring], rc = t.ring_cells_q16[ring];
+      // (Clamped to 2^32 pitches, q16: a ring wider than any grid lands off it.)
+      const int64_t i = (ci_q16 + clamp(mul_shift(rc, ux, 30), -kFar, kFar) + kHalf) >> 16;
+      const int64_t j = (cj_q16 + clamp(mul_shift(rc, uy, 30), -kFar, kFar) + kHalf) >> 16;
       if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) continue;
-      const size_t c = g.index(static_cast<int32_t>(i), static_cast<int32_t>(j));
-      if (g.top[c] == 0 && g.bottom[c] == 0) continue;
-      const int64_t top = g.z0_nm + static_cast<int64_t>(g.top[c]) * g.lsb_nm;
+      const int64_t lsb = top_of(static_cast<size_t>(j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i));
+      if (lsb < 0) continue;
+      const int64_t top = g.z0_nm + lsb * g.lsb_nm;
       const int64_t surface = at.z_nm + t.ring_h_nm[ring];
       if (top <= surface + g.lsb_nm) continue;
       hit = true;
@@ -68,6 +78,24 @@ void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, in
     r.ae_nm = cross_hi - cross_lo;
   }
   *out = r;
+}
+
+}  // namespace
+
+template <class H>
+void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
+               bool clockwise, EngageAt* out) {
+  const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+  engage_on(
+      geo, [&g](size_t c) { return g.top[c] == 0 && g.bottom[c] == 0 ? int64_t{-1} : static_cast<int64_t>(g.top[c]); },
+      t, at, ex_q30, ey_q30, clockwise, out);
+}
+
+void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
+                    int64_t ex_q30, int64_t ey_q30, bool clockwise, EngageAt* out) {
+  engage_on(
+      geo, [tops](size_t c) { return tops[c] == 0 ? int64_t{-1} : static_cast<int64_t>(tops[c]); }, t, at, ex_q30,
+      ey_q30, clockwise, out);
 }
 
 EngageChip engage_chip(const EngageAt& e, int64_t fz_nm) {

@@ -19,8 +19,8 @@
 // stock before the move is the stock the edge meets there. The samples:
 // rings of radius r about the axis, every kEngageStepBam of phi, on the
 // periphery and, where the lower surface rises with r (a ball, a bull
-// nose's corner, a V-bit), rings inward a step of half a pitch apart (at
-// most kEngageMaxRings); a sample bears material when the column under it
+// nose's corner, a V-bit), rings inward a pitch apart (at most
+// kEngageMaxRings); a sample bears material when the column under it
 // (the nearest axis) has its top more than one LSB above the surface there
 // (tip + height(r)). At each phi the outermost ring that bears material
 // counts. (A flat's or a bull's flat inner rings are inside what the move
@@ -31,7 +31,7 @@
 // and exit), the radial width a_e (the engaged samples' spread across the
 // feed direction), the axial depth a_p (the highest material above the tip
 // among them, at most the flute length). Error: the angles within half a
-// step (0.5 degree) plus the grid's pitch seen from the ring (pitch / r
+// step (1 degree) plus the grid's pitch seen from the ring (pitch / r
 // radians); a_e within a pitch and a ring step; a_p within an LSB.
 #ifndef DEXMILL_CORE_ENGAGE_ENGAGE_H
 #define DEXMILL_CORE_ENGAGE_ENGAGE_H
@@ -44,8 +44,8 @@
 
 namespace dexmill {
 
-constexpr int kEngageSteps = 180;                              // phi from 0 to a half turn, both ends included
-constexpr uint32_t kEngageStepBam = 0x80000000u / kEngageSteps;  // one degree, binary angle
+constexpr int kEngageSteps = 90;                               // phi from 0 to a half turn, both ends included
+constexpr uint32_t kEngageStepBam = 0x80000000u / kEngageSteps;  // two degrees, binary angle
 constexpr int kEngageMaxRings = 64;
 
 // A tool prepared for engagement on a grid: its profile, its flute length,
@@ -57,6 +57,7 @@ struct EngageTool {
   int32_t nrings = 0;
   int64_t ring_r_nm[kEngageMaxRings] = {};
   int64_t ring_h_nm[kEngageMaxRings] = {};
+  int64_t ring_cells_q16[kEngageMaxRings] = {};  // r in the grid's pitches, q16 (the samples' offsets without a division)
   // cos and sin of each step's phi, q30 (phi_k = k * kEngageStepBam).
   int32_t cos_q30[kEngageSteps + 1] = {};
   int32_t sin_q30[kEngageSteps + 1] = {};
@@ -77,6 +78,10 @@ struct EngageAt {
 template <class H>
 void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, EngageAt* out);
+// The same on tops alone (nx * ny of geo, LSB; 0: no material): a shadow
+// of the stock before the move (core/engage/engage_meter.h).
+void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
+                    int64_t ex_q30, int64_t ey_q30, bool clockwise, EngageAt* out);
 
 // The uncut chip's thickness over the engaged arc for a feed per tooth
 // f_z: the largest, f_z sin(phi) at the phi nearest a quarter turn, and

@@ -14,6 +14,7 @@
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
 #include "core/design/design.h"
+#include "core/engage/engage_meter.h"
 #include "core/gcode/error.h"
 #include "core/material/material.h"
 #include "core/interp/interp.h"
@@ -97,6 +98,11 @@ struct SimJob {
   const DesignGrid* design = nullptr;   // the gouge watch against this part (null: off); its geometry is plan.geo's
   AssessOptions assess{};               // its tolerances and the columns assessed
   const StockComposition* material = nullptr;  // the process rules of the stock's materials (null: off)
+  // Engagement (core/engage/engage_meter.h): every feed move's load,
+  // measured on the stock before it cuts, given to engage_sink when set
+  // and summed up (Simulation::engagement()). Off: nothing is sampled.
+  bool engagement = false;
+  EngageSink* engage_sink = nullptr;
   size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
   // The process rules' findings of lines 0..n-1 told apart exactly (3 bytes
   // a line; core/safety/material_limits.h): the program's line count + 1. 0: only

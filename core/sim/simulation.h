@@ -218,6 +218,7 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   const SafetyWatch* safety() const { return safety_on_ ? &safety_ : nullptr; }
   const GougeWatch* gouges() const { return job_.design ? &gouges_ : nullptr; }
   const ProcessWatch* process() const { return job_.material ? &process_ : nullptr; }
+  const EngageSummary* engagement() const { return job_.engagement ? &engage_sum_ : nullptr; }
   const ToolProvenance<H>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
   bool gouged() const { return gouged_; }
   // Records (and the finish) whose gouge check found a gouge: a front end
@@ -292,6 +293,9 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   uint32_t* process_shadow_;
   int64_t* line_feed_limits_;
   uint8_t* process_seen_;
+  EngageMeter engage_;
+  EngageSummary engage_sum_;
+  uint32_t* engage_shadow_;
   ToolProvenance<H> prov_;
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;

@@ -43,6 +43,7 @@ struct SimulationT<H>::Memory {
   uint32_t* fixture_top = nullptr;
   uint32_t* fixture_bottom = nullptr;
   uint32_t* process_shadow = nullptr;
+  uint32_t* engage_shadow = nullptr;
   int64_t* line_feed = nullptr;
   uint8_t* process_seen = nullptr;  // the findings counted per line (core/safety/material_limits.h)
   uint8_t* seen = nullptr;
@@ -157,6 +158,7 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
     mem.line_feed = c.take<int64_t>(job.line_feed_lines);
     mem.process_seen = c.take<uint8_t>(process_seen_bytes(job.process_lines));
   }
+  if (job.engagement) mem.engage_shadow = c.take<uint32_t>(cells);
   if (job.design) {
     mem.seen_bytes = gouge_watch_seen_bytes(g.nx, g.ny);
     mem.seen = c.take<uint8_t>(mem.seen_bytes);
@@ -232,6 +234,7 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       process_shadow_(m.process_shadow),
       line_feed_limits_(m.line_feed),
       process_seen_(m.process_seen),
+      engage_shadow_(m.engage_shadow),
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
       prov_lines_(m.prov_lines),
@@ -287,6 +290,7 @@ void SimulationT<H>::start() {
     if (job_.line_feed_lines) process_watch_track_lines(&process_, line_feed_limits_, job_.line_feed_lines);
     if (job_.process_lines) process_watch_track_findings(&process_, process_seen_, job_.process_lines);
   }
+  if (job_.engagement) (void)engage_meter_init(&engage_, grid_, engage_shadow_, cells);
   if (safety_on_) {
     (void)safety_watch_init(&safety_, grid_, safety_shadow_, cells, safety_tiles_, safety_tile_words_);
     const SimChecks& c = job_.checks;
@@ -325,6 +329,7 @@ void SimulationT<H>::load_tool(const Tool& t) {
   profile_ = tool_profile(t);
   tool_body_build(t, &body_);
   if (safety_on_ && started_) safety_watch_set_tool(&safety_, profile_);
+  if (job_.engagement) engage_meter_set_tool(&engage_, t, grid_.pitch_nm);
 }
 
 template <class H>
@@ -356,6 +361,8 @@ void SimulationT<H>::process(const Queued& q) {
     have_origin_ = last_move_line_ != 0;
   }
   const Status before = mill_.status();
+  // Engagement: the stock before this record cuts it (M4 turns the other way).
+  if (job_.engagement) engage_meter_before(&engage_, grid_, r, q.spindle_dir >= 0, q.spindle_rpm);
   mill_.emit(r);
   if (job_.provenance) {
     const ProvenanceOrigin po{origin_.line, origin_.end, origin_.tool};
@@ -384,8 +391,16 @@ void SimulationT<H>::process(const Queued& q) {
     last_move_line_ = r.line;
   }
   const int64_t t_before = time_.estimated_time_us();
-  if (job_.time_estimate || job_.material) time_.emit(r);
+  if (job_.time_estimate || job_.material || job_.engagement) time_.emit(r);
   if (job_.material) check_process(q, move, time_.estimated_time_us() - t_before);
+  if (job_.engagement) {
+    EngageMove mv;
+    engage_meter_after(&engage_, grid_, grid_.dirty, &mv);
+    mv.time_us = time_.estimated_time_us() - t_before;
+    mv.end_us = time_.estimated_time_us();
+    engage_summary_add(&engage_sum_, mv);
+    if (mv.feed && job_.engage_sink) job_.engage_sink->move(mv);
+  }
   status_.line = r.line;
   status_.pos = mill_.position();
   if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) status_.feed_nm_per_min = r.feed_nm_per_min;

@@ -326,6 +326,17 @@ std::string report_json_text(const RunReport& r) {
   o += r.have_assessment ? assessment_text(r) : std::string("  \"assessment\": null,\n");
   o += r.have_collisions ? collisions_text(r) : std::string("  \"collisions\": null,\n");
   o += r.have_materials ? materials_text(r) : std::string("  \"materials\": null,\n");
+  if (r.have_engagement) {
+    const ReportEngagement& e = r.engagement;
+    char b[160];
+    std::snprintf(b, sizeof b, "{\"deg\": %.2f, \"line\": %u}", e.angle_deg, e.angle_line);
+    const std::string angle = b;
+    std::snprintf(b, sizeof b, "{\"mm3_per_min\": %.1f, \"line\": %u}", e.mrr_mm3_per_min, e.mrr_line);
+    o += "  \"engagement\": {\"moves\": " + u64(e.moves) + ", \"engaged\": " + u64(e.engaged) + ", \"max_angle\": " + angle +
+         ", \"max_width\": {\"mm\": " + nm_to_mm_text(e.width_nm, 4) + ", \"line\": " + u64(e.width_line) +
+         "}, \"max_depth\": {\"mm\": " + nm_to_mm_text(e.depth_nm, 4) + ", \"line\": " + u64(e.depth_line) +
+         "}, \"max_mrr\": " + b + "},\n";
+  }
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

@@ -90,6 +90,18 @@ struct ReportFinding {
 };
 constexpr size_t kChainFindingsKept = 100;
 
+// What the engagement measured (--engagement-csv): the program's largest,
+// each with the line of the first move that reached it.
+struct ReportEngagement {
+  uint64_t moves = 0, engaged = 0;  // feed moves measured, and those that met material
+  double angle_deg = 0;
+  uint32_t angle_line = 0;
+  int64_t width_nm = 0, depth_nm = 0;
+  uint32_t width_line = 0, depth_line = 0;
+  double mrr_mm3_per_min = 0;
+  uint32_t mrr_line = 0;
+};
+
 struct RunReport {
   std::string file;
   uint32_t lines = 0;
@@ -154,6 +166,8 @@ struct RunReport {
   std::vector<ReportMaterial> materials;
   std::vector<ReportViolation> material_violations;  // as kept
   uint64_t material_violations_total = 0;
+  bool have_engagement = false;
+  ReportEngagement engagement;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
   // The run that wrote the report and what else it wrote (platform/os/output_set.h:
   // the report is published last).

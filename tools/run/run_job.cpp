@@ -244,6 +244,7 @@ int write_files(const RunOptions& o, Run* run) {
   const double t_files = clock_now_s();
   if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
+  if (su.engage_csv && !su.engage_csv->commit()) return fail(kExitIo, "%s", su.engage_csv->error());
   if (!o.out.save_stock.empty()) {
     if (!su.have_chain)
       return fail(kExitUsage, "--save-stock: the stock already holds the %d programs a stock file remembers",
@@ -275,7 +276,8 @@ void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, 
   if (!o.out.frames_dir.empty()) rep->outputs.push_back(ReportOutput{"--frames", o.out.frames_dir, -1, v.frames_written()});
   const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
                                                              {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
-                                                             {"--save-stock", &o.out.save_stock}};
+                                                             {"--save-stock", &o.out.save_stock},
+                                                             {"--engagement-csv", &o.out.engagement_csv}};
   for (const auto& f : files)
     if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
 }
@@ -312,6 +314,7 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
     rep.assessment = su.design.report;
     rep.timing.emplace_back("assess", clock_now_s() - t0);
   }
+  if (const EngageSummary* e = sim.engagement()) engage_to_report(*e, sim.grid().lsb_nm, sim.grid().pitch_nm, &rep);
   chain_of_run(&su);
   if (su.have_chain) chain_to_report(su.chain, o.job, &rep);
   const CutterPose pose{true, sim.mill().position()};
@@ -338,6 +341,7 @@ int check_standard_output(const RunOptions& o) {
   const std::pair<const char*, const std::string*> outs[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
                                                             {"--save-stock", &o.out.save_stock},
+                                                            {"--engagement-csv", &o.out.engagement_csv},
                                                             {"--report", &o.out.report}};
   for (const auto& out : outs)
     if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());

@@ -138,6 +138,7 @@ struct OutputOptions {
   int64_t every = 0;             // --every; 0: about 100 frames over the program
   std::string heightmap, stl, report;
   std::string save_stock;        // --save-stock FILE.dxstock: the final stock, to continue from
+  std::string engagement_csv;    // --engagement-csv FILE: each feed move's load (tools/run/run_engage.h)
   // With none of the files above: the summary on stdout (`check
   // --simulate` and `optimize` run a job for its findings, without it).
   bool print_summary = true;

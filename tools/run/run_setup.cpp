@@ -319,6 +319,12 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
     j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
+  if (!o.out.engagement_csv.empty()) {  // each feed move's load, into its file as the cut goes
+    run->engage_csv.reset(new EngageCsv(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm, 2));
+    if (!run->engage_csv->open(o.out.engagement_csv)) return fail(kExitIo, "%s", run->engage_csv->error());
+    j.engagement = true;
+    j.engage_sink = run->engage_csv.get();
+  }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
   // A stock saved, or continued with its provenance: which tool, line and

@@ -29,6 +29,7 @@
 #include "platform/format/tool_table.h"
 #include "tools/run/run_assess.h"
 #include "tools/run/run_material.h"
+#include "tools/run/run_engage.h"
 #include "tools/run/run_options.h"
 #include "tools/run/run_outputs.h"
 
@@ -53,6 +54,7 @@ struct RunSetup {
   SimJob job;
   RunReport rep;
   std::unique_ptr<ProgramScan> scan;
+  std::unique_ptr<EngageCsv> engage_csv;  // --engagement-csv: the engine's sink for each move's load
   // A program that probes: its messages from the cut (where each probe
   // stopped on the stock), and the probe errors only the cut finds.
   std::unique_ptr<GcodeNotes> cut_notes;

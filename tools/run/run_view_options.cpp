@@ -49,6 +49,11 @@ const Option<Out> kOutputs[] = {
        if (!has_extension(v, ".dxstock")) return fail(kExitUsage, "--save-stock needs a FILE.dxstock, not '%s'", v);
        return o->save_stock = v, kExitOk;
      }},
+    {"--engagement-csv", "FILE",
+     "each feed move's load, measured on the stock before it cuts: line, time, depth, width and angle of "
+     "engagement, removal rate, chip thickness, force, power, feed (one row a move; the report gains the "
+     "largest of each and their lines)",
+     [](Out* o, const char* v) -> int { return o->engagement_csv = v, kExitOk; }},
     {"--report", "FILE.json", "summary: program, errors, stock, grid, tools, volume, time",
      [](Out* o, const char* v) -> int { return o->report = v, kExitOk; }},
 };

@@ -1,0 +1,165 @@
+// core/engage/engage_meter.h: each record's engagement and removal.
+#include "core/engage/engage_meter.h"
+
+#include "core/canon/arc_chords.h"
+#include "core/math/fixed.h"
+#include "core/math/wide.h"
+
+namespace dexmill {
+namespace {
+
+// The horizontal unit direction of a -> b, q30 (false: no horizontal motion).
+bool direction_q30(const PointNm& a, const PointNm& b, int64_t* ex, int64_t* ey) {
+  const int64_t dx = b.x_nm - a.x_nm, dy = b.y_nm - a.y_nm;
+  if (dx == 0 && dy == 0) return false;
+  const int64_t l = hypot_floor(dx, dy);
+  if (l == 0) return false;
+  *ex = muldiv_round(dx, int64_t{1} << 30, l);
+  *ey = muldiv_round(dy, int64_t{1} << 30, l);
+  return true;
+}
+
+// One sample: the tool at p feeding along (ex, ey).
+void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t ex, int64_t ey, bool clockwise) {
+  EngageMove& mv = m->move;
+  if (mv.samples >= static_cast<uint32_t>(kEngageMaxSamples)) return;
+  EngageAt e;
+  engage_at_tops(g, m->shadow, m->tool, p, ex, ey, clockwise, &e);
+  ++mv.samples;
+  mv.ae_max_nm = max_of(mv.ae_max_nm, e.ae_nm);
+  mv.ap_max_nm = max_of(mv.ap_max_nm, e.ap_nm);
+  if (e.engaged && (!mv.worst.engaged || e.angle_bam() > mv.worst.angle_bam())) {
+    mv.worst = e;
+    mv.worst_at = p;
+  }
+}
+
+// The straight piece a -> b of a path sampled every step_nm (horizontal
+// length) from its start: *carry_nm is how far past the last sample the
+// piece begins (the path's start: step_nm, so that it is sampled); `last`:
+// the path's end is sampled too.
+void sample_piece(EngageMeter* m, const GridGeometry& g, const PointNm& a, const PointNm& b, bool clockwise,
+                  int64_t step_nm, int64_t* carry_nm, bool last) {
+  int64_t ex, ey;
+  if (!direction_q30(a, b, &ex, &ey)) return;  // a plunge: no front to meet
+  const int64_t len = hypot_floor(b.x_nm - a.x_nm, b.y_nm - a.y_nm);
+  auto at = [&](int64_t t) {
+    return PointNm{a.x_nm + muldiv_round(b.x_nm - a.x_nm, t, len), a.y_nm + muldiv_round(b.y_nm - a.y_nm, t, len),
+                   a.z_nm + muldiv_round(b.z_nm - a.z_nm, t, len)};
+  };
+  int64_t t = step_nm - *carry_nm;  // the next sample's distance from a
+  if (t < 0) t = 0;
+  int64_t sampled = -1;
+  for (; t <= len; t += step_nm) {
+    sample(m, g, at(t), ex, ey, clockwise);
+    sampled = t;
+  }
+  if (last && sampled != len) sample(m, g, b, ex, ey, clockwise), sampled = len;
+  *carry_nm = sampled >= 0 ? len - sampled : *carry_nm + len;
+}
+
+}  // namespace
+
+template <class H>
+Status engage_meter_init(EngageMeter* m, const DexelGrid<H>& g, uint32_t* shadow, size_t shadow_words) {
+  const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
+  if (!shadow || shadow_words < n) return Status::kBufferTooSmall;
+  for (size_t k = 0; k < n; ++k) shadow[k] = g.top[k];
+  m->shadow = shadow;
+  return Status::kOk;
+}
+
+void engage_meter_set_tool(EngageMeter* m, const Tool& t, int64_t pitch_nm) {
+  engage_tool_init(t, pitch_nm, &m->tool);
+  m->spacing_nm = max_of(pitch_nm, m->tool.profile.radius_nm / 4);
+}
+
+template <class H>
+void engage_meter_before(EngageMeter* m, const DexelGrid<H>&, const CanonRecord& r, bool clockwise,
+                         int32_t spindle_rpm) {
+  m->move = EngageMove{};
+  EngageMove& mv = m->move;
+  mv.line = r.line;
+  mv.spindle_rpm = spindle_rpm;
+  mv.feed = r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
+  mv.feed_nm_per_min = r.feed_nm_per_min;
+  m->record = r;
+  m->clockwise = clockwise;
+}
+
+namespace {
+
+// The record's path sampled on the shadow (the tops before it).
+void sample_path(EngageMeter* m, const GridGeometry& g) {
+  const CanonRecord& r = m->record;
+  if (r.kind == CanonKind::kFeed) {
+    const int64_t len = hypot_floor(r.end.x_nm - r.start.x_nm, r.end.y_nm - r.start.y_nm);
+    int64_t carry = max_of(m->spacing_nm, div_ceil(len, kEngageMaxSamples - 1));
+    sample_piece(m, g, r.start, r.end, m->clockwise, carry, &carry, true);
+    return;
+  }
+  ArcChords chords;
+  chords.init(r, max_of<int64_t>(g.pitch_nm / 4, 1));
+  // At most kEngageMaxSamples over the arc: its length in the plane is at
+  // most 2 pi r_max a turn (7 r_max per turn, rounded up).
+  PointNm a = r.start, b;
+  const int64_t turns = max_of<int64_t>(1, r.arc.turns < 0 ? -static_cast<int64_t>(r.arc.turns) : r.arc.turns);
+  const int64_t step = max_of(m->spacing_nm, div_ceil(chords.radius_max() * 7 * turns, kEngageMaxSamples - 1));
+  int64_t carry = step;
+  for (uint32_t k = 0; chords.next(&b); ++k) {
+    sample_piece(m, g, a, b, m->clockwise, step, &carry, k + 1 == chords.count());
+    a = b;
+  }
+}
+
+}  // namespace
+
+template <class H>
+void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out) {
+  // What it removed (the shadow still the tops before it) ...
+  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
+  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
+  uint64_t removed = 0;
+  for (int32_t j = j0; j < j1; ++j) {
+    const size_t row = g.index(0, j);
+    for (int32_t i = i0; i < i1; ++i) {
+      const uint32_t was = m->shadow[row + static_cast<size_t>(i)], now = g.top[row + static_cast<size_t>(i)];
+      if (now < was) removed += was - now;
+    }
+  }
+  m->move.removed_lsb = removed;
+  // ... then, for a feed move that removed something, where it met
+  // material, on the stock before it; a move in air meets none.
+  if (m->move.feed && removed > 0)
+    sample_path(m, GridGeometry{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm});
+  // The shadow follows the grid.
+  for (int32_t j = j0; j < j1; ++j) {
+    const size_t row = g.index(0, j);
+    for (int32_t i = i0; i < i1; ++i) m->shadow[row + static_cast<size_t>(i)] = g.top[row + static_cast<size_t>(i)];
+  }
+  *out = m->move;
+}
+
+void engage_summary_add(EngageSummary* s, const EngageMove& m) {
+  if (!m.feed) return;
+  ++s->moves;
+  if (!m.worst.engaged && m.removed_lsb == 0) return;
+  ++s->engaged;
+  if (m.worst.angle_bam() > s->angle.worst.angle_bam()) s->angle = m;
+  if (m.ae_max_nm > s->ae.ae_max_nm) s->ae = m;
+  if (m.ap_max_nm > s->ap.ap_max_nm) s->ap = m;
+  // removed / time above the best's: removed * best.time > best.removed * time.
+  const U128 mine = mul_wide_u64(m.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(s->rate.time_us, 1)));
+  const U128 best = mul_wide_u64(s->rate.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(m.time_us, 1)));
+  if (m.removed_lsb > 0 && u128_less(best, mine)) s->rate = m;
+}
+
+#define DEXMILL_ENGAGE_METER_INSTANTIATE(H)                                                                \
+  template Status engage_meter_init<H>(EngageMeter*, const DexelGrid<H>&, uint32_t*, size_t);           \
+  template void engage_meter_before<H>(EngageMeter*, const DexelGrid<H>&, const CanonRecord&, bool, int32_t); \
+  template void engage_meter_after<H>(EngageMeter*, const DexelGrid<H>&, GridRect, EngageMove*);
+DEXMILL_ENGAGE_METER_INSTANTIATE(uint8_t)
+DEXMILL_ENGAGE_METER_INSTANTIATE(uint16_t)
+DEXMILL_ENGAGE_METER_INSTANTIATE(uint32_t)
+
+}  // namespace dexmill
