@@ -156,6 +156,14 @@ TEST(run_engagement_csv_and_report) {
   CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"max_angle\": {\"deg\": 180.00, \"line\": 5}"));
   CHECK(has(rep, "\"max_width\": {\"mm\": 6.0000, \"line\": 5}"));
   CHECK(has(rep, "{\"option\": \"--engagement-csv\""));
+  // Three flutes: 0.04 mm a tooth; unsaid, two are assumed, and said.
+  const Result three = run("%/eng.ngc -q --tool flat:6,flutes=3 --stock 0,0,-10,30,20,0 --pitch 0.12 --engagement-csv "
+                           "%/eng3.csv");
+  CHECK(has(slurp(tmp_dir() + "/eng3.csv"), ",0.04000,0.02547,,,1200.0\n"));
+  CHECK(lacks(three.err, "flutes"));
+  const Result two = run("%/eng.ngc --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --engagement-csv %/eng2.csv");
+  CHECK(has(two.err, "warning: the chip per tooth takes 2 flutes for flat:6"));
+  CHECK(has(rep, "\"max_chip\": {\"mm\": 0.06000, \"line\": 5}"));
   // Off, nothing is measured.
   CHECK_EQ(run("%/eng.ngc -q --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --report %/off.json").code, 0);
   CHECK(lacks(slurp(tmp_dir() + "/off.json"), "\"engagement\""));

@@ -103,3 +103,20 @@ TEST(tool_spec_holder) {
   CHECK_EQ(parse("drill:6,foo", &t), ToolSpecError::kUnknownShape);
   CHECK(std::strlen(tool_spec_message(ToolSpecError::kBadHolder)) > 10);
 }
+
+TEST(tool_spec_flutes) {
+  // flutes=N: the edges a chip per tooth divides the feed among; written back.
+  Tool t;
+  CHECK_EQ(parse("flat:6,flutes=3", &t), ToolSpecError::kOk);
+  CHECK_EQ(t.flutes, 3);
+  CHECK(fmt(t) == "flat:6,flutes=3");
+  CHECK_EQ(parse("bull:10:1.5,len=25,flutes=12,nocentre", &t), ToolSpecError::kOk);
+  CHECK(fmt(t) == "bull:10:1.5,len=25,nocentre,flutes=12");
+  CHECK_EQ(parse("flat:6", &t), ToolSpecError::kOk);
+  CHECK_EQ(t.flutes, 0);  // not given: kToolFlutesAssumed is taken, and said
+  CHECK_EQ(parse("flat:6,flutes=0", &t), ToolSpecError::kOutOfRange);
+  CHECK_EQ(parse("flat:6,flutes=65", &t), ToolSpecError::kOutOfRange);
+  CHECK_EQ(parse("flat:6,flutes=2.5", &t), ToolSpecError::kBadNumber);
+  CHECK_EQ(parse("flat:6,flutes=", &t), ToolSpecError::kBadNumber);
+  CHECK_EQ(parse("flat:6,flutes=1000", &t), ToolSpecError::kOutOfRange);
+}

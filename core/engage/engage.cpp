@@ -10,6 +10,7 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
   EngageTool& e = *out;
   e.profile = tool_profile(t);
   e.flute_nm = t.flute_length_nm > 0 ? t.flute_length_nm : t.length_nm;
+  e.flutes = t.flutes > 0 ? t.flutes : kToolFlutesAssumed;
   const int64_t R = e.profile.radius_nm;
   // Inner rings only where the surface rises with r: none for a flat, the
   // corner's for a bull nose (beyond its flat radius R - rc).

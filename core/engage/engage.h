@@ -54,6 +54,7 @@ constexpr int kEngageMaxRings = 64;
 struct EngageTool {
   ToolProfile profile{};
   int64_t flute_nm = 0;  // cutting length above the tip
+  int32_t flutes = kToolFlutesAssumed;  // the tool's, or the assumed count
   int32_t nrings = 0;
   int64_t ring_r_nm[kEngageMaxRings] = {};
   int64_t ring_h_nm[kEngageMaxRings] = {};

@@ -130,8 +130,13 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
   m->move.removed_lsb = removed;
   // ... then, for a feed move that removed something, where it met
   // material, on the stock before it; a move in air meets none.
-  if (m->move.feed && removed > 0)
+  EngageMove& mv = m->move;
+  if (mv.feed && removed > 0) {
     sample_path(m, GridGeometry{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm});
+    if (mv.spindle_rpm > 0)
+      mv.fz_nm = div_round(mv.feed_nm_per_min, static_cast<int64_t>(mv.spindle_rpm) * m->tool.flutes);
+    mv.chip = engage_chip(mv.worst, mv.fz_nm);
+  }
   // The shadow follows the grid.
   for (int32_t j = j0; j < j1; ++j) {
     const size_t row = g.index(0, j);
@@ -148,6 +153,7 @@ void engage_summary_add(EngageSummary* s, const EngageMove& m) {
   if (m.worst.angle_bam() > s->angle.worst.angle_bam()) s->angle = m;
   if (m.ae_max_nm > s->ae.ae_max_nm) s->ae = m;
   if (m.ap_max_nm > s->ap.ap_max_nm) s->ap = m;
+  if (m.chip.max_nm > s->chip.chip.max_nm) s->chip = m;
   // removed / time above the best's: removed * best.time > best.removed * time.
   const U128 mine = mul_wide_u64(m.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(s->rate.time_us, 1)));
   const U128 best = mul_wide_u64(s->rate.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(m.time_us, 1)));

@@ -37,6 +37,10 @@ struct EngageMove {
   int32_t spindle_rpm = 0;
   int64_t time_us = 0;        // the record's estimated time (the simulation's time model)
   int64_t end_us = 0;         // the program's estimated time at its end
+  // The uncut chip at the widest sample, from the feed per tooth F / (S z)
+  // (0 without a spindle speed).
+  int64_t fz_nm = 0;
+  EngageChip chip;
 };
 
 // Where a front end takes each move's measurements (a CSV, a plot).
@@ -53,7 +57,7 @@ class EngageSink {
 // reached it, and how many feed moves were measured and engaged.
 struct EngageSummary {
   uint64_t moves = 0, engaged = 0;
-  EngageMove angle, ae, ap, rate;
+  EngageMove angle, ae, ap, rate, chip;
 };
 void engage_summary_add(EngageSummary* s, const EngageMove& m);
 

@@ -64,7 +64,7 @@ const char* tool_spec_message(ToolSpecError e) {
     case ToolSpecError::kBadNumber: return "tool sizes must be positive numbers (mm, degrees)";
     case ToolSpecError::kFieldCount: return "wrong number of fields (ball:D, flat:D, bull:D:R, vbit:D:ANGLE)";
     case ToolSpecError::kBadOption:
-      return "after the shape: len=L, stick=S, shank=D, holder=DxH[,DxH...] or nocentre";
+      return "after the shape: len=L, stick=S, shank=D, holder=DxH[,DxH...], flutes=N or nocentre";
     case ToolSpecError::kBadHolder:
       return "a holder is up to 4 pieces DxH (a cylinder) or D1-D2xH (a cone), mm";
     case ToolSpecError::kOutOfRange:
@@ -132,6 +132,17 @@ ToolSpecError parse_options(const char* s, size_t n, Tool* t) {
     const char* v = o + eq + 1;
     const size_t vn = on - eq - 1;
     int64_t* field = nullptr;
+    if (same_word(o, eq, "flutes")) {  // a whole count
+      int64_t count = 0;
+      if (vn == 0 || vn > 3) return vn == 0 ? ToolSpecError::kBadNumber : ToolSpecError::kOutOfRange;
+      for (size_t m = 0; m < vn; ++m) {
+        if (v[m] < '0' || v[m] > '9') return ToolSpecError::kBadNumber;
+        count = count * 10 + (v[m] - '0');
+      }
+      if (count < 1 || count > kToolFlutesMax) return ToolSpecError::kOutOfRange;
+      t->flutes = static_cast<int32_t>(count);
+      continue;
+    }
     if (same_word(o, eq, "len")) field = &t->flute_length_nm;
     else if (same_word(o, eq, "stick")) field = &t->stick_out_nm;
     else if (same_word(o, eq, "shank")) field = &t->shank_diameter_nm;
@@ -246,6 +257,13 @@ size_t tool_spec_format(const Tool& t, char* buf, size_t n) {
     at = put_millis(buf, at, n, h.height_nm);
   }
   if (!t.centre_cutting) at = put_text(buf, at, n, ",nocentre");
+  if (t.flutes) {
+    char num[16];
+    int k = 0;
+    for (int32_t v = t.flutes; v > 0; v /= 10) num[k++] = static_cast<char>('0' + v % 10);
+    at = put_text(buf, at, n, ",flutes=");
+    while (k > 0 && at + 1 < n) buf[at++] = num[--k];
+  }
   buf[at] = 0;
   return at;
 }

@@ -9,6 +9,8 @@
 //                   D1-D2xH from D1 at its bottom to D2 at its top; at most
 //                   kHolderSegmentsMax pieces
 //     nocentre      (or nocenter) the tool cannot plunge straight down
+//     flutes=N      its cutting edges (1 to kToolFlutesMax), for the chip
+//                   per tooth (core/engage/engage.h); 2 when not given
 //
 // Lengths in millimetres, ANGLE (the V-bit's included angle) in degrees;
 // decimals as G-code writes them (read exactly, core/math/decimal.h).

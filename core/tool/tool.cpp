@@ -23,6 +23,7 @@ Status tool_check(const Tool& t) {
     default:
       return Status::kBadArgument;
   }
+  if (t.flutes < 0 || t.flutes > kToolFlutesMax) return Status::kBadArgument;
   if (t.length_nm > kToolLengthMaxNm || t.flute_length_nm < 0 || t.flute_length_nm > t.length_nm) return Status::kBadArgument;
   if (t.shank_diameter_nm < 0 || t.shank_diameter_nm > kMetre || t.holder_segments < 0 ||
       t.holder_segments > kHolderSegmentsMax)

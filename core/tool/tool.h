@@ -44,6 +44,7 @@ struct Tool {
   int64_t stick_out_nm = 0;       // stick-out as given (0: the default rule, core/tool/spec.h)
   int64_t shank_diameter_nm = 0;  // above the flutes (0: the cutting diameter)
   bool centre_cutting = true;     // false: must not plunge straight down into material
+  int32_t flutes = 0;             // cutting edges, 1..kToolFlutesMax, for the chip per tooth (0: not given; 2 assumed)
   int32_t holder_segments = 0;
   HolderSegment holder[kHolderSegmentsMax] = {};
 };
@@ -66,6 +67,8 @@ struct Tool {
 constexpr int64_t kToolDiameterMinNm = 1000;
 constexpr int64_t kToolDiameterMaxNm = 1000000000;
 constexpr int64_t kToolLengthMaxNm = 10000000000;
+constexpr int32_t kToolFlutesMax = 64;
+constexpr int32_t kToolFlutesAssumed = 2;  // what a tool that does not say is taken to have (said by the front end)
 constexpr int32_t kVBitAngleMinMdeg = 1000;
 constexpr int32_t kVBitAngleMaxMdeg = 179999;
 Status tool_check(const Tool& t);

@@ -335,7 +335,8 @@ std::string report_json_text(const RunReport& r) {
     o += "  \"engagement\": {\"moves\": " + u64(e.moves) + ", \"engaged\": " + u64(e.engaged) + ", \"max_angle\": " + angle +
          ", \"max_width\": {\"mm\": " + nm_to_mm_text(e.width_nm, 4) + ", \"line\": " + u64(e.width_line) +
          "}, \"max_depth\": {\"mm\": " + nm_to_mm_text(e.depth_nm, 4) + ", \"line\": " + u64(e.depth_line) +
-         "}, \"max_mrr\": " + b + "},\n";
+         "}, \"max_mrr\": " + b + ", \"max_chip\": {\"mm\": " + nm_to_mm_text(e.chip_nm, 5) + ", \"line\": " +
+         u64(e.chip_line) + "}},\n";
   }
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {

@@ -100,6 +100,8 @@ struct ReportEngagement {
   uint32_t width_line = 0, depth_line = 0;
   double mrr_mm3_per_min = 0;
   uint32_t mrr_line = 0;
+  int64_t chip_nm = 0;  // the thickest uncut chip
+  uint32_t chip_line = 0;
 };
 
 struct RunReport {

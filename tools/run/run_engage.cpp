@@ -40,9 +40,7 @@ bool EngageCsv::open(const std::string& path) {
 }
 
 void EngageCsv::move(const EngageMove& m) {
-  // The feed per tooth: F / (rpm * flutes), nm (no spindle speed: no chip).
-  const int64_t per_rev = m.spindle_rpm > 0 ? div_round(m.feed_nm_per_min, m.spindle_rpm) : 0;
-  const EngageChip chip = engage_chip(m.worst, flutes_ > 0 ? div_round(per_rev, flutes_) : 0);
+  const EngageChip& chip = m.chip;
   std::string row = std::to_string(m.line) + ",";
   put_fixed(&row, div_round(m.end_us, 1000), 3);              // s
   put_fixed(&row, div_round(m.ap_max_nm, 100), 4);            // mm
@@ -70,6 +68,8 @@ void engage_to_report(const EngageSummary& s, int64_t lsb_nm, int64_t pitch_nm, 
   e.depth_line = s.ap.line;
   e.mrr_mm3_per_min = engage_mrr_mm3_per_min(s.rate, lsb_nm, pitch_nm);
   e.mrr_line = s.rate.line;
+  e.chip_nm = s.chip.chip.max_nm;
+  e.chip_line = s.chip.line;
 }
 
 }  // namespace cli

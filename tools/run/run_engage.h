@@ -5,7 +5,7 @@
 // angle at the move's worst sample (the widest arc); the removal rate from
 // the move's exact removed volume over its time; the chip from the feed
 // per tooth (F over the spindle speed and the flutes, 2 unless the tool
-// says); force and power empty until the material gives its cutting
+// says: core/engage/engage_meter.h); force and power empty until the material gives its cutting
 // coefficients. Written beside the run's other files (committed with them).
 #ifndef DEXMILL_TOOLS_RUN_RUN_ENGAGE_H
 #define DEXMILL_TOOLS_RUN_RUN_ENGAGE_H
@@ -21,7 +21,7 @@ namespace cli {
 
 class EngageCsv final : public EngageSink {
  public:
-  EngageCsv(int64_t lsb_nm, int64_t pitch_nm, int32_t flutes) : lsb_nm_(lsb_nm), pitch_nm_(pitch_nm), flutes_(flutes) {}
+  EngageCsv(int64_t lsb_nm, int64_t pitch_nm) : lsb_nm_(lsb_nm), pitch_nm_(pitch_nm) {}
   bool open(const std::string& path);
   void move(const EngageMove& m) override;
   bool commit() { return file_.commit(); }
@@ -30,7 +30,6 @@ class EngageCsv final : public EngageSink {
  private:
   OutputFile file_;
   int64_t lsb_nm_, pitch_nm_;
-  int32_t flutes_;
 };
 
 // A move's removal rate, mm^3/min (0 for a move of no time).

@@ -320,10 +320,17 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
   if (!o.out.engagement_csv.empty()) {  // each feed move's load, into its file as the cut goes
-    run->engage_csv.reset(new EngageCsv(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm, 2));
+    run->engage_csv.reset(new EngageCsv(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm));
     if (!run->engage_csv->open(o.out.engagement_csv)) return fail(kExitIo, "%s", run->engage_csv->error());
     j.engagement = true;
     j.engage_sink = run->engage_csv.get();
+    for (int k = 0; k < scan.ntools && run->print; ++k)  // said once a tool: the chip per tooth rests on it
+      if (scan.tools[k].flutes == 0 && (k == 0 ? scan.cuts[0] : true)) {
+        char spec[kToolSpecTextMax];
+        tool_spec_format(scan.tools[k], spec, sizeof spec);
+        std::fprintf(stderr, "dexmill: warning: the chip per tooth takes %d flutes for %s, which does not say (give "
+                     "flutes=N in its spec)\n", kToolFlutesAssumed, spec);
+      }
   }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
