@@ -118,7 +118,9 @@ TEST(engage_chip_thins_with_the_arc) {
   const Block full([](double, double) { return true; });
   const Tool flat = tool(ToolKind::kFlat, 6);
   const int64_t fz = 50000;  // 0.05 mm a tooth
-  EngageChip c = engage_chip(at(full, flat, 20, 12, -2), fz);
+  EngageTool et;
+  engage_tool_init(flat, kPitch, &et);
+  EngageChip c = engage_chip(et, at(full, flat, 20, 12, -2), fz);
   CHECK(std::llabs(c.max_nm - fz) <= 2);
   // The slot's mean: fz (cos 0 - cos 180) / pi = 2 fz / pi.
   CHECK(std::fabs(c.mean_nm - 2 * fz / M_PI) <= 3);
@@ -127,12 +129,12 @@ TEST(engage_chip_thins_with_the_arc) {
   const double edge = 12 - 2.4;
   const Block right([edge](double, double y) { return y <= edge + 1e-9; });
   const EngageAt e = at(right, flat, 20, 12, -2);
-  c = engage_chip(e, fz);
+  c = engage_chip(et, e, fz);
   const double a = e.entry_bam * (2 * M_PI / 4294967296.0), b = e.exit_bam * (2 * M_PI / 4294967296.0);
   CHECK(std::fabs(c.max_nm - fz * std::sin(a)) <= 2 + 1e-8 * fz);
   CHECK(std::fabs(c.mean_nm - fz * (std::cos(a) - std::cos(b)) / (b - a)) <= 2 + 1e-8 * fz);
   CHECK(c.max_nm < fz * 0.65 && c.max_nm > fz * 0.55);  // chip thinning: about 0.6 fz
-  CHECK_EQ(engage_chip(EngageAt{}, fz).max_nm, 0);
+  CHECK_EQ(engage_chip(et, EngageAt{}, fz).max_nm, 0);
 }
 
 TEST(run_engagement_csv_and_report) {

@@ -17,10 +17,12 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
   const int64_t inner_end = t.kind == ToolKind::kFlat ? R : t.kind == ToolKind::kBullNose ? R - e.profile.corner_nm : 0;
   const int64_t step = max_of(max_of(pitch_nm, R / kEngageMaxRings), int64_t{1});
   e.nrings = 0;
+  e.cells_narrow = true;
   for (int64_t r = R; e.nrings < kEngageMaxRings && (r == R || r > inner_end); r -= step) {
     e.ring_r_nm[e.nrings] = r;
     e.ring_h_nm[e.nrings] = profile_height_nm(e.profile, r);
     e.ring_cells_q16[e.nrings] = muldiv_round(r, int64_t{1} << 16, max_of<int64_t>(pitch_nm, 1));
+    if (e.ring_cells_q16[e.nrings] >= (int64_t{1} << 31)) e.cells_narrow = false;
     ++e.nrings;
   }
   for (int k = 0; k <= kEngageSteps; ++k) {
@@ -33,7 +35,7 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
 namespace {
 
 // top(cell): the column's top in LSB, or a negative for no material.
-template <class Top>
+template <bool kNarrow, class Top>
 void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, EngageAt* out) {
   EngageAt r;
@@ -53,9 +55,12 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
     bool hit = false;
     for (int ring = 0; ring < t.nrings && !hit; ++ring) {  // the outermost that bears material
       const int64_t rr = t.ring_r_nm[ring], rc = t.ring_cells_q16[ring];
-      // (Clamped to 2^32 pitches, q16: a ring wider than any grid lands off it.)
-      const int64_t i = (ci_q16 + clamp(mul_shift(rc, ux, 30), -kFar, kFar) + kHalf) >> 16;
-      const int64_t j = (cj_q16 + clamp(mul_shift(rc, uy, 30), -kFar, kFar) + kHalf) >> 16;
+      // rc < 2^31 and |u| <= 2^30 + 2: the product fits; a ring of 2^15
+      // pitches and more (a tool far wider than its grid) takes the
+      // clamped path, and lands off any grid.
+      const int64_t di = kNarrow ? (rc * ux) >> 30 : clamp(mul_shift(rc, ux, 30), -kFar, kFar);
+      const int64_t dj = kNarrow ? (rc * uy) >> 30 : clamp(mul_shift(rc, uy, 30), -kFar, kFar);
+      const int64_t i = (ci_q16 + di + kHalf) >> 16, j = (cj_q16 + dj + kHalf) >> 16;
       if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) continue;
       const int64_t lsb = top_of(static_cast<size_t>(j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i));
       if (lsb < 0) continue;
@@ -87,31 +92,34 @@ template <class H>
 void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, EngageAt* out) {
   const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
-  engage_on(
-      geo, [&g](size_t c) { return g.top[c] == 0 && g.bottom[c] == 0 ? int64_t{-1} : static_cast<int64_t>(g.top[c]); },
-      t, at, ex_q30, ey_q30, clockwise, out);
+  auto top = [&g](size_t c) { return g.top[c] == 0 && g.bottom[c] == 0 ? int64_t{-1} : static_cast<int64_t>(g.top[c]); };
+  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
+  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
 }
 
 void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
                     int64_t ex_q30, int64_t ey_q30, bool clockwise, EngageAt* out) {
-  engage_on(
-      geo, [tops](size_t c) { return tops[c] == 0 ? int64_t{-1} : static_cast<int64_t>(tops[c]); }, t, at, ex_q30,
-      ey_q30, clockwise, out);
+  auto top = [tops](size_t c) { return tops[c] == 0 ? int64_t{-1} : static_cast<int64_t>(tops[c]); };
+  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
+  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
 }
 
-EngageChip engage_chip(const EngageAt& e, int64_t fz_nm) {
+EngageChip engage_chip(const EngageTool& t, const EngageAt& e, int64_t fz_nm) {
   EngageChip c;
   if (!e.engaged || fz_nm <= 0) return c;
-  const uint32_t quarter = 0x40000000u;
-  const uint32_t nearest = e.entry_bam > quarter ? e.entry_bam : e.exit_bam < quarter ? e.exit_bam : quarter;
-  c.max_nm = mul_shift(fz_nm, sincos_bam(nearest).sin_q30, 30);
+  // The arc's ends are samples' angles: the tool's tables hold their sines
+  // and cosines (a quarter turn is step kEngageSteps / 2).
+  const int entry = static_cast<int>(e.entry_bam / kEngageStepBam), exit = static_cast<int>(e.exit_bam / kEngageStepBam);
+  const int quarter = kEngageSteps / 2;
+  const int nearest = entry > quarter ? entry : exit < quarter ? exit : quarter;
+  c.max_nm = mul_shift(fz_nm, t.sin_q30[nearest], 30);
   const uint32_t span = e.exit_bam - e.entry_bam;
   if (span == 0) {
     c.mean_nm = c.max_nm;  // one sample: the chip there
     return c;
   }
   // (cos(entry) - cos(exit)) / span, span in radians: 2^32 bam = 2 pi.
-  const int64_t dcos_q30 = static_cast<int64_t>(sincos_bam(e.entry_bam).cos_q30) - sincos_bam(e.exit_bam).cos_q30;
+  const int64_t dcos_q30 = static_cast<int64_t>(t.cos_q30[entry]) - t.cos_q30[exit];
   // span_rad_q30 = span * 2 pi / 2^32 * 2^30 = span * pi / 2.
   const int64_t span_rad_q30 = muldiv_round(static_cast<int64_t>(span), 3373259426LL, int64_t{1} << 31);  // pi * 2^30
   c.mean_nm = muldiv_round(fz_nm, dcos_q30, span_rad_q30);

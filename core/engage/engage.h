@@ -59,6 +59,7 @@ struct EngageTool {
   int64_t ring_r_nm[kEngageMaxRings] = {};
   int64_t ring_h_nm[kEngageMaxRings] = {};
   int64_t ring_cells_q16[kEngageMaxRings] = {};  // r in the grid's pitches, q16 (the samples' offsets without a division)
+  bool cells_narrow = true;  // every ring_cells_q16 below 2^31: an offset is one 64-bit product
   // cos and sin of each step's phi, q30 (phi_k = k * kEngageStepBam).
   int32_t cos_q30[kEngageSteps + 1] = {};
   int32_t sin_q30[kEngageSteps + 1] = {};
@@ -91,7 +92,7 @@ void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageT
 struct EngageChip {
   int64_t max_nm = 0, mean_nm = 0;
 };
-EngageChip engage_chip(const EngageAt& e, int64_t fz_nm);
+EngageChip engage_chip(const EngageTool& t, const EngageAt& e, int64_t fz_nm);
 
 }  // namespace dexmill
 

@@ -71,7 +71,7 @@ Status engage_meter_init(EngageMeter* m, const DexelGrid<H>& g, uint32_t* shadow
 
 void engage_meter_set_tool(EngageMeter* m, const Tool& t, int64_t pitch_nm) {
   engage_tool_init(t, pitch_nm, &m->tool);
-  m->spacing_nm = max_of(pitch_nm, m->tool.profile.radius_nm / 4);
+  m->spacing_nm = max_of(pitch_nm, m->tool.profile.radius_nm / 2);
 }
 
 template <class H>
@@ -119,12 +119,17 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
   // What it removed (the shadow still the tops before it) ...
   const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
   const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
+  // (A record that is not a feed move is never sampled: the shadow
+  // follows the grid in the same pass.)
+  const bool keep = !m->move.feed;
   uint64_t removed = 0;
   for (int32_t j = j0; j < j1; ++j) {
     const size_t row = g.index(0, j);
     for (int32_t i = i0; i < i1; ++i) {
-      const uint32_t was = m->shadow[row + static_cast<size_t>(i)], now = g.top[row + static_cast<size_t>(i)];
+      uint32_t& was = m->shadow[row + static_cast<size_t>(i)];
+      const uint32_t now = g.top[row + static_cast<size_t>(i)];
       if (now < was) removed += was - now;
+      if (keep) was = now;
     }
   }
   m->move.removed_lsb = removed;
@@ -135,10 +140,10 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
     sample_path(m, GridGeometry{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm});
     if (mv.spindle_rpm > 0)
       mv.fz_nm = div_round(mv.feed_nm_per_min, static_cast<int64_t>(mv.spindle_rpm) * m->tool.flutes);
-    mv.chip = engage_chip(mv.worst, mv.fz_nm);
+    mv.chip = engage_chip(m->tool, mv.worst, mv.fz_nm);
   }
   // The shadow follows the grid.
-  for (int32_t j = j0; j < j1; ++j) {
+  for (int32_t j = j0; j < j1 && !keep; ++j) {
     const size_t row = g.index(0, j);
     for (int32_t i = i0; i < i1; ++i) m->shadow[row + static_cast<size_t>(i)] = g.top[row + static_cast<size_t>(i)];
   }

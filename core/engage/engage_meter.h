@@ -1,7 +1,7 @@
 // The load of every move, measured as the simulation cuts it (core/engage/README.md):
 // a feed move's path is sampled (core/engage/engage.h) on the stock before
 // it (a shadow of the tops, read once the move is cut) at
-// a spacing of max(pitch, R / 4), at most kEngageMaxSamples samples a
+// a spacing of max(pitch, R / 2), at most kEngageMaxSamples samples a
 // move (a longer move's samples are its length over that apart), arcs
 // along chords of a quarter-pitch sagitta; after it is cut, the volume it
 // removed is read off a shadow of the tops (exact at grid precision: the
