@@ -2,23 +2,14 @@
 #include "core/sim/blk_form_comment.h"
 
 #include "core/math/decimal.h"
+#include "core/sim/comment_words.h"
 
 namespace dexmill {
 namespace {
 
-char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
-
-bool starts(const char* s, size_t n, size_t at, const char* word) {
-  for (size_t k = 0; word[k]; ++k)
-    if (at + k >= n || upper(s[at + k]) != word[k]) return false;
-  return true;
-}
-
 void blanks(const char* s, size_t n, size_t* at) {
   while (*at < n && (s[*at] == ' ' || s[*at] == '\t')) ++*at;
 }
-
-constexpr int64_t kMaxNm = 10LL * 1000 * 1000000;  // 10 m, the interpreter's range
 
 // The X, Y and Z words up to the closing parenthesis: each once, an I
 // before the letter marking an increment (allowed only when `incremental`).
@@ -29,9 +20,9 @@ const char* coordinates(const char* s, size_t n, size_t* at, bool inch, bool inc
     if (*at >= n) return "no closing parenthesis";
     if (s[*at] == ')') break;
     bool i = false;
-    if (upper(s[*at]) == 'I') i = true, ++*at;
+    if (comment_upper(s[*at]) == 'I') i = true, ++*at;
     if (i && !incremental) return "an increment (I) in the MIN point";
-    const char c = *at < n ? upper(s[*at]) : 0;
+    const char c = *at < n ? comment_upper(s[*at]) : 0;
     const int axis = c == 'X' ? 0 : c == 'Y' ? 1 : c == 'Z' ? 2 : -1;
     if (axis < 0) return "a word that is not X, Y or Z";
     if (has[axis]) return "an axis given twice";
@@ -39,7 +30,7 @@ const char* coordinates(const char* s, size_t n, size_t* at, bool inch, bool inc
     Decimal d;
     if (decimal_parse(s, n, at, &d) != DecimalParse::kOk) return "a value that is not a number";
     nm[axis] = decimal_to_nm(d, inch);
-    if (nm[axis] < -kMaxNm || nm[axis] > kMaxNm) return "a value beyond 10 m";
+    if (nm[axis] < -kCommentMaxNm || nm[axis] > kCommentMaxNm) return "a value beyond 10 m";
     has[axis] = true;
     inc[axis] = i;
   }
@@ -52,19 +43,19 @@ const char* coordinates(const char* s, size_t n, size_t* at, bool inch, bool inc
 bool blk_form_comment(const char* s, size_t n, bool inch, BlkForm* st, WorkpieceBox* out, const char** why) {
   *why = nullptr;
   size_t at = 0;
-  while (at < n && !(s[at] == '(' && starts(s, n, at + 1, "BLK FORM "))) ++at;
+  while (at < n && !(s[at] == '(' && comment_starts(s, n, at + 1, "BLK FORM "))) ++at;
   if (at == n) return false;
   at += 10;
   blanks(s, n, &at);
   const bool form_end = at + 3 >= n || s[at + 3] == ' ' || s[at + 3] == '\t';
-  const bool min = form_end && starts(s, n, at, "0.1"), max = form_end && starts(s, n, at, "0.2");
+  const bool min = form_end && comment_starts(s, n, at, "0.1"), max = form_end && comment_starts(s, n, at, "0.2");
   if (!min && !max) return *why = "a BLK FORM other than 0.1 and 0.2 (a box)", false;
   at += 3;
   int64_t nm[3] = {0, 0, 0};
   bool inc[3] = {false, false, false};
   if (min) {
     blanks(s, n, &at);
-    const char axis = at < n ? upper(s[at]) : 0;
+    const char axis = at < n ? comment_upper(s[at]) : 0;
     if (axis != 'X' && axis != 'Y' && axis != 'Z') return *why = "a BLK FORM 0.1 without its spindle axis", false;
     if (axis != 'Z') return *why = "a BLK FORM along X or Y (a 3-axis stock stands along Z)", false;
     ++at;

@@ -3,19 +3,10 @@
 
 #include "core/math/decimal.h"
 #include "core/math/fixed.h"
+#include "core/sim/comment_words.h"
 
 namespace dexmill {
 namespace {
-
-char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
-
-// Whether s[at, n) starts with word (upper case), case-insensitively.
-bool starts(const char* s, size_t n, size_t at, const char* word) {
-  size_t k = 0;
-  for (; word[k]; ++k)
-    if (at + k >= n || upper(s[at + k]) != word[k]) return false;
-  return true;
-}
 
 struct Fields {
   bool has[9] = {};
@@ -25,30 +16,29 @@ struct Fields {
 // The keys, in the order of Fields' slots.
 const char* const kKeys[] = {"XMIN", "YMIN", "ZMIN", "XMAX", "YMAX", "ZMAX", "INNER_DIAMETER", "DIAMETER", "X"};
 constexpr int kInner = 6, kDia = 7, kX = 8;  // Y is read into kX's neighbour below
-constexpr int64_t kMaxNm = 10LL * 1000 * 1000000;  // 10 m, the interpreter's range
 
 }  // namespace
 
 bool workpiece_comment(const char* s, size_t n, bool inch, WorkpieceBox* out, const char** why) {
   *why = nullptr;
   size_t at = 0;
-  while (at < n && !(s[at] == '(' && starts(s, n, at + 1, "WORKPIECE,"))) ++at;
+  while (at < n && !(s[at] == '(' && comment_starts(s, n, at + 1, "WORKPIECE,"))) ++at;
   if (at == n) return false;
   at += 11;
   WorkpieceKind kind;
-  if (starts(s, n, at, "BOX")) kind = WorkpieceKind::kBox, at += 3;
-  else if (starts(s, n, at, "CYLINDER")) kind = WorkpieceKind::kCylinder, at += 8;
-  else if (starts(s, n, at, "TUBE")) kind = WorkpieceKind::kTube, at += 4;
+  if (comment_starts(s, n, at, "BOX")) kind = WorkpieceKind::kBox, at += 3;
+  else if (comment_starts(s, n, at, "CYLINDER")) kind = WorkpieceKind::kCylinder, at += 8;
+  else if (comment_starts(s, n, at, "TUBE")) kind = WorkpieceKind::kTube, at += 4;
   else return *why = "not BOX, CYLINDER or TUBE", false;
   Fields f;
   bool has_y = false;
   int64_t y_nm = 0;
   while (at < n && s[at] == ',') {
     ++at;
-    if (starts(s, n, at, "AXIS=")) {
+    if (comment_starts(s, n, at, "AXIS=")) {
       at += 5;
       if (at >= n) return *why = "AXIS= without an axis", false;
-      f.axis = upper(s[at++]);
+      f.axis = comment_upper(s[at++]);
       if (f.axis != 'X' && f.axis != 'Y' && f.axis != 'Z') return *why = "AXIS is not X, Y or Z", false;
       continue;
     }
@@ -57,16 +47,16 @@ bool workpiece_comment(const char* s, size_t n, bool inch, WorkpieceBox* out, co
     for (int k = 0; k < 9 && key < 0; ++k) {
       len = 0;
       while (kKeys[k][len]) ++len;
-      if (starts(s, n, at, kKeys[k]) && at + len < n && s[at + len] == '=') key = k;
+      if (comment_starts(s, n, at, kKeys[k]) && at + len < n && s[at + len] == '=') key = k;
     }
     bool is_y = false;
-    if (key < 0 && starts(s, n, at, "Y=")) is_y = true, len = 1;
+    if (key < 0 && comment_starts(s, n, at, "Y=")) is_y = true, len = 1;
     if (key < 0 && !is_y) return *why = "an unknown key", false;
     at += len + 1;
     Decimal d;
     if (decimal_parse(s, n, &at, &d) != DecimalParse::kOk) return *why = "a value that is not a number", false;
     const int64_t v = decimal_to_nm(d, inch);
-    if (v < -kMaxNm || v > kMaxNm) return *why = "a value beyond 10 m", false;
+    if (v < -kCommentMaxNm || v > kCommentMaxNm) return *why = "a value beyond 10 m", false;
     if (is_y) has_y = true, y_nm = v;
     else f.has[key] = true, f.nm[key] = v;
   }

@@ -89,6 +89,11 @@ struct ReportFinding {
   std::string message;
 };
 constexpr size_t kChainFindingsKept = 100;
+// A program's findings: the first kChainFindingsKept, and the count of all.
+struct ProgramFindings {
+  std::vector<ReportFinding> kept;
+  uint64_t total = 0;
+};
 
 // What the engagement measured (--engagement-csv): the program's largest,
 // each with the line of the first move that reached it.

@@ -45,8 +45,7 @@ std::string setup_words(const JobOptions& j) {
 int run_chain(const RunOptions& o) {
   const size_t n = 1 + o.job.chain.size();
   Links links;
-  std::vector<std::vector<ReportFinding>> findings;  // each program's, for the last one's report
-  std::vector<uint64_t> totals;
+  std::vector<ProgramFindings> findings;  // each program's, for the last one's report
   for (size_t k = 0; k < n; ++k) {
     RunOptions one = o;
     one.job.chain.clear();
@@ -62,7 +61,6 @@ int run_chain(const RunOptions& o) {
     if (k < o.job.steps.size())
       if (const int code = apply_step(o.job.steps[k], &one)) return code;  // checked when the file was read
     one.job.chain_findings = findings;
-    one.job.chain_findings_total = totals;
     if (k > 0) {  // the stock the program before left
       one.job.stock_file = links.paths.back();
       one.job.have_stock = false;
@@ -94,7 +92,6 @@ int run_chain(const RunOptions& o) {
     const int code = run_job(one, &guard, &result);
     if (code != kExitOk) return code;
     findings.push_back(result.findings);
-    totals.push_back(result.findings_total);
   }
   return kExitOk;
 }

@@ -98,31 +98,32 @@ void chain_of_run(RunSetup* su) {
 
 // The report's findings at their lines: its errors, warnings, gouges,
 // safety findings and process rule breaks, the first kChainFindingsKept
-// kept; *total counts all of them.
-std::vector<ReportFinding> findings_of(const RunReport& r, uint64_t* total) {
-  std::vector<ReportFinding> f;
+// kept, and the count of all of them.
+ProgramFindings findings_of(const RunReport& r) {
+  ProgramFindings out;
+  std::vector<ReportFinding>& f = out.kept;
   auto add = [&f](const char* kind, uint32_t line, const std::string& message) {
     if (f.size() < kChainFindingsKept) f.push_back(ReportFinding{kind, line, message});
   };
   for (const ReportDiag& d : r.errors) add("error", d.line, d.message);
   for (const ReportDiag& d : r.warnings) add("warning", d.line, d.message);
-  *total = r.errors.size() + r.warnings_total;
+  out.total = r.errors.size() + r.warnings_total;
   if (r.have_assessment) {
     for (const ReportGouge& g : r.assessment.gouges)
       add("gouge", g.line, nm_to_mm_text(g.depth_nm, 4) + " mm into the design at X" + nm_to_mm_text(g.at.x_nm, 3) +
                                " Y" + nm_to_mm_text(g.at.y_nm, 3));
-    *total += r.assessment.gouges_total;
+    out.total += r.assessment.gouges_total;
   }
   if (r.have_collisions) {
     for (const SafetyEvent& e : r.collisions)
       add("collision", e.line, std::string(safety_kind_name(e.kind)) + ", " + nm_to_mm_text(e.depth_nm, 4) + " mm");
-    *total += r.collisions_total;
+    out.total += r.collisions_total;
   }
   if (r.have_materials) {
     for (const ReportViolation& v : r.material_violations) add("violation", v.line, v.rule + ": " + v.message);
-    *total += r.material_violations_total;
+    out.total += r.material_violations_total;
   }
-  return f;
+  return out;
 }
 
 // The chain's programs, with the findings of those run before this one in
@@ -142,11 +143,13 @@ void chain_to_report(const StockMeta& m, const JobOptions& j, RunReport* rep) {
     const int before = k - (m.nprograms - 1 - carried);  // index into the carried findings
     if (k == m.nprograms - 1) {
       c.have_findings = true;
-      c.findings = findings_of(*rep, &c.findings_total);
+      const ProgramFindings f = findings_of(*rep);
+      c.findings = f.kept;
+      c.findings_total = f.total;
     } else if (before >= 0 && before < carried) {
       c.have_findings = true;
-      c.findings = j.chain_findings[before];
-      c.findings_total = j.chain_findings_total[before];
+      c.findings = j.chain_findings[before].kept;
+      c.findings_total = j.chain_findings[before].total;
     }
     rep->chain.push_back(c);
   }
@@ -376,7 +379,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     result->gouged = sim.gouged();
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
-    result->findings = findings_of(su.rep, &result->findings_total);
+    result->findings = findings_of(su.rep);
   }
   if (run_prints_summary(o)) {
     std::fputs(report_summary_text(su.rep).c_str(), stdout);

@@ -35,8 +35,7 @@ struct RunResult {
   std::vector<int64_t> line_feed_limits;
   // What it found, at its lines (the first kChainFindingsKept, and the
   // count of all): a chain's next program reports them.
-  std::vector<ReportFinding> findings;
-  uint64_t findings_total = 0;
+  ProgramFindings findings;
 };
 
 // Runs the job; returns the exit status (the man page's). Every file it

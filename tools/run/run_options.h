@@ -88,8 +88,7 @@ struct JobOptions {
   PointNm work_offsets[9] = {};
   // A chain run in one `dexmill run`: what each program before this one
   // found (its report's findings), for this one's report.
-  std::vector<std::vector<ReportFinding>> chain_findings;
-  std::vector<uint64_t> chain_findings_total;
+  std::vector<ProgramFindings> chain_findings;
   int32_t grid_nx = 0, grid_ny = 0;  // --grid; 0: from the pitch or the default
   int64_t pitch_nm = 0;          // --pitch; 0: from --grid or 256 across
   std::string tool_text = "flat:6";
