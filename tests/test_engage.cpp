@@ -137,6 +137,38 @@ TEST(engage_chip_thins_with_the_arc) {
   CHECK_EQ(engage_chip(et, EngageAt{}, fz).max_nm, 0);
 }
 
+// The chip's cross-section across the feed against the analytic: a flat's
+// a_p x a_e (full slot, 50 % and 10 % immersion), a ball's circular
+// segment at a shallow depth. Within 1 % plus a pitch's strip of the depth
+// on either edge (the grid places the edge within a pitch).
+TEST(engage_cross_section_is_the_chip_area) {
+  const Block full([](double, double) { return true; });
+  const double pitch_mm = kPitch * 1e-6;
+  double worst_rel = 0;
+  auto near = [&](double got_um2, double want_mm2, double depth_mm) {
+    const double got = got_um2 * 1e-6, slack = 0.01 * want_mm2 + 2 * pitch_mm * depth_mm;
+    worst_rel = std::max(worst_rel, std::fabs(got - want_mm2) / want_mm2);
+    return std::fabs(got - want_mm2) <= slack;
+  };
+  const Tool flat = tool(ToolKind::kFlat, 6);
+  CHECK(near(at(full, flat, 20, 12, -2).area_um2, 2 * 6, 2));
+  for (double frac : {0.5, 0.1}) {
+    const double ae = frac * 6, edge = 12 - (3 - ae);
+    const Block right([edge](double, double y) { return y <= edge + 1e-9; });
+    CHECK(near(at(right, flat, 20, 12, -2).area_um2, 2 * ae, 2));
+  }
+  // A ball slot d deep: the segment of the circle of radius R below the top.
+  for (double d : {0.5, 1.5, 3.0}) {
+    const double R = 3, h = d, seg = R * R * std::acos((R - h) / R) - (R - h) * std::sqrt(2 * R * h - h * h);
+    CHECK(near(at(full, tool(ToolKind::kBall, 6), 20, 12, -d).area_um2, seg, d));
+  }
+  // The flute length caps it: a 1 mm flute in a 2 mm slot cuts 1 x 6.
+  Tool shortf = flat;
+  shortf.flute_length_nm = 1000000;
+  CHECK(near(at(full, shortf, 20, 12, -2).area_um2, 6, 1));
+  std::printf("  engage: cross-section within %.2f %% of the analytic\n", 100 * worst_rel);
+}
+
 TEST(run_engagement_csv_and_report) {
   using namespace run_cli;
   if (skip()) return;
@@ -149,23 +181,23 @@ TEST(run_engagement_csv_and_report) {
            0);
   const std::string csv = slurp(tmp_dir() + "/eng.csv");
   CHECK(has(csv, "line,time_s,depth_mm,width_mm,angle_deg,mrr_mm3_per_min,chip_max_mm,chip_mean_mm,force_n,power_w,"
-                 "feed_mm_per_min\n"));
+                 "feed_mm_per_min,torque_n_m,tool,removed_mm3\n"));
   CHECK(has(csv, "\n5,3.547,2.0000,6.0000,180.00,"));
-  CHECK(has(csv, ",0.06000,0.03820,,,1200.0\n"));
+  CHECK(has(csv, ",0.06000,0.03820,,,1200.0,,0,"));
   CHECK(has(csv, "\n7,5.667,2.0000,2.3763,78.00,"));
   CHECK(has(csv, "\n4,1.547,0.0000,0.0000,0.00,0.0,"));  // the plunge: no front to meet
   const std::string rep = slurp(tmp_dir() + "/eng.json");
-  CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"max_angle\": {\"deg\": 180.00, \"line\": 5}"));
-  CHECK(has(rep, "\"max_width\": {\"mm\": 6.0000, \"line\": 5}"));
+  CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"max_angle\": {\"deg\": 180.00, \"line\": 5, \"at\": \""));
+  CHECK(has(rep, "\"max_width\": {\"mm\": 6.0000, \"line\": 5, \"at\": \""));
   CHECK(has(rep, "{\"option\": \"--engagement-csv\""));
   // Three flutes: 0.04 mm a tooth; unsaid, two are assumed, and said.
   const Result three = run("%/eng.ngc -q --tool flat:6,flutes=3 --stock 0,0,-10,30,20,0 --pitch 0.12 --engagement-csv "
                            "%/eng3.csv");
-  CHECK(has(slurp(tmp_dir() + "/eng3.csv"), ",0.04000,0.02547,,,1200.0\n"));
+  CHECK(has(slurp(tmp_dir() + "/eng3.csv"), ",0.04000,0.02547,,,1200.0,"));
   CHECK(lacks(three.err, "flutes"));
   const Result two = run("%/eng.ngc --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --engagement-csv %/eng2.csv");
   CHECK(has(two.err, "warning: the chip per tooth takes 2 flutes for flat:6"));
-  CHECK(has(rep, "\"max_chip\": {\"mm\": 0.06000, \"line\": 5}"));
+  CHECK(has(rep, "\"max_chip\": {\"mm\": 0.06000, \"line\": 5, \"at\": \""));
   // Off, nothing is measured.
   CHECK_EQ(run("%/eng.ngc -q --tool flat:6 --stock 0,0,-10,30,20,0 --pitch 0.12 --report %/off.json").code, 0);
   CHECK(lacks(slurp(tmp_dir() + "/off.json"), "\"engagement\""));

@@ -23,6 +23,7 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
     e.ring_h_nm[e.nrings] = profile_height_nm(e.profile, r);
     e.ring_cells_q16[e.nrings] = muldiv_round(r, int64_t{1} << 16, max_of<int64_t>(pitch_nm, 1));
     if (e.ring_cells_q16[e.nrings] >= (int64_t{1} << 31)) e.cells_narrow = false;
+    e.ring_dphi_nm[e.nrings] = muldiv_round(r, 3373259426LL, int64_t{90} << 30);  // r pi / 90 (pi q30)
     ++e.nrings;
   }
   for (int k = 0; k <= kEngageSteps; ++k) {
@@ -35,13 +36,26 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
 namespace {
 
 // top(cell): the column's top in LSB, or a negative for no material.
+// The material a column holds where the tool already stood at `cap` (its
+// footprint cut to its lower surface there): top_nm at most that surface.
+int64_t below_cap(const GridGeometry& g, const EngageTool& t, const PointNm& cap, int64_t i, int64_t j, int64_t top_nm) {
+  const int64_t dx = g.x0_nm + i * g.pitch_nm - cap.x_nm, dy = g.y0_nm + j * g.pitch_nm - cap.y_nm;
+  const int64_t R = t.profile.radius_nm;
+  if (dx >= R || dx <= -R || dy >= R || dy <= -R) return top_nm;
+  const uint64_t r2 = static_cast<uint64_t>(dx * dx) + static_cast<uint64_t>(dy * dy);
+  if (r2 >= static_cast<uint64_t>(R) * static_cast<uint64_t>(R)) return top_nm;
+  return min_of(top_nm, cap.z_nm + profile_height_r2_nm(t.profile, r2));
+}
+
 template <bool kNarrow, class Top>
 void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
-               bool clockwise, EngageAt* out) {
+               bool clockwise, const PointNm* cap, EngageAt* out) {
   EngageAt r;
   // phi = 0 on the entry side: left of the feed (clockwise spindle), or right.
   const int64_t sx = clockwise ? -ey_q30 : ey_q30, sy = clockwise ? ex_q30 : -ex_q30;
   int64_t cross_lo = INT64_MAX, cross_hi = INT64_MIN;
+  int64_t area_nm2 = 0;
+  const bool flat = t.profile.kind == ToolKind::kFlat;
   int first = -1, last = -1;
   // The tool's axis in the grid's pitches, q16: the samples' columns are
   // offsets from it (the rings' radii in pitches, turned), no division.
@@ -64,7 +78,7 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
       if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) continue;
       const int64_t lsb = top_of(static_cast<size_t>(j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i));
       if (lsb < 0) continue;
-      const int64_t top = g.z0_nm + lsb * g.lsb_nm;
+      const int64_t top = cap ? below_cap(g, t, *cap, i, j, g.z0_nm + lsb * g.lsb_nm) : g.z0_nm + lsb * g.lsb_nm;
       const int64_t surface = at.z_nm + t.ring_h_nm[ring];
       if (top <= surface + g.lsb_nm) continue;
       hit = true;
@@ -72,6 +86,11 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
       const int64_t cross = mul_shift(rr, t.cos_q30[k], 30);  // across the feed, from the entry side
       cross_lo = min_of(cross_lo, cross);
       cross_hi = max_of(cross_hi, cross);
+      // The strip across the feed at y = cross: the material above the
+      // lower surface there (a flat's is its tip inside R).
+      const int64_t floor_nm = flat ? 0 : profile_height_nm(t.profile, cross < 0 ? -cross : cross);
+      const int64_t depth = min_of(top - at.z_nm, t.flute_nm) - floor_nm;
+      if (depth > 0) area_nm2 += depth * ((t.ring_dphi_nm[ring] * t.sin_q30[k]) >> 30);  // a tool under a metre: a term below 2^55
     }
     if (!hit) continue;
     if (first < 0) first = k;
@@ -82,6 +101,7 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
     r.entry_bam = static_cast<uint32_t>(first) * kEngageStepBam;
     r.exit_bam = static_cast<uint32_t>(last) * kEngageStepBam;
     r.ae_nm = cross_hi - cross_lo;
+    r.area_um2 = area_nm2 / 1000000;
   }
   *out = r;
 }
@@ -93,15 +113,15 @@ void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, in
                bool clockwise, EngageAt* out) {
   const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
   auto top = [&g](size_t c) { return g.top[c] == 0 && g.bottom[c] == 0 ? int64_t{-1} : static_cast<int64_t>(g.top[c]); };
-  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
-  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
+  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, nullptr, out);
+  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, nullptr, out);
 }
 
 void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
-                    int64_t ex_q30, int64_t ey_q30, bool clockwise, EngageAt* out) {
+                    int64_t ex_q30, int64_t ey_q30, bool clockwise, const PointNm* cap, EngageAt* out) {
   auto top = [tops](size_t c) { return tops[c] == 0 ? int64_t{-1} : static_cast<int64_t>(tops[c]); };
-  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
-  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, out);
+  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, cap, out);
+  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, cap, out);
 }
 
 EngageChip engage_chip(const EngageTool& t, const EngageAt& e, int64_t fz_nm) {

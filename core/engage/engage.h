@@ -30,9 +30,16 @@
 // What a position gives (EngageAt): the first and last engaged phi (entry
 // and exit), the radial width a_e (the engaged samples' spread across the
 // feed direction), the axial depth a_p (the highest material above the tip
-// among them, at most the flute length). Error: the angles within half a
-// step (1 degree) plus the grid's pitch seen from the ring (pitch / r
-// radians); a_e within a pitch and a ring step; a_p within an LSB.
+// among them, at most the flute length), and the chip's cross-section A
+// across the feed: at each engaged phi the material above the tool's
+// lower surface, min(top, tip + flutes) - (tip + height(|y|)) at y = r
+// cos(phi) across the feed, over a strip r sin(phi) dphi wide (the front's
+// arc element seen across the feed), summed; A times the feed is the
+// removal rate there. Error: the angles within half a step (1 degree) plus
+// the grid's pitch seen from the ring (pitch / r radians); a_e within a
+// pitch and a ring step; a_p within an LSB; A within 0.1 % of the
+// sampled sum's integral (2-degree strips) plus a pitch's strip of the
+// depth on either edge (core/engage/README.md).
 #ifndef DEXMILL_CORE_ENGAGE_ENGAGE_H
 #define DEXMILL_CORE_ENGAGE_ENGAGE_H
 
@@ -59,6 +66,7 @@ struct EngageTool {
   int64_t ring_r_nm[kEngageMaxRings] = {};
   int64_t ring_h_nm[kEngageMaxRings] = {};
   int64_t ring_cells_q16[kEngageMaxRings] = {};  // r in the grid's pitches, q16 (the samples' offsets without a division)
+  int64_t ring_dphi_nm[kEngageMaxRings] = {};    // r times a step (pi / 90): a strip's width over sin(phi)
   bool cells_narrow = true;  // every ring_cells_q16 below 2^31: an offset is one 64-bit product
   // cos and sin of each step's phi, q30 (phi_k = k * kEngageStepBam).
   int32_t cos_q30[kEngageSteps + 1] = {};
@@ -71,6 +79,7 @@ struct EngageAt {
   uint32_t entry_bam = 0, exit_bam = 0;  // phi of the first and last engaged samples
   int64_t ae_nm = 0;                     // radial width of cut
   int64_t ap_nm = 0;                     // axial depth of cut
+  int64_t area_um2 = 0;                  // the chip's cross-section across the feed
   uint32_t angle_bam() const { return engaged ? exit_bam - entry_bam : 0; }
 };
 
@@ -81,9 +90,12 @@ template <class H>
 void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, EngageAt* out);
 // The same on tops alone (nx * ny of geo, LSB; 0: no material): a shadow
-// of the stock before the move (core/engage/engage_meter.h).
+// of the stock before the move (core/engage/engage_meter.h). `cap` (or
+// null): where the tool stood at the move's start, its footprint there
+// already cut to its lower surface (the cut defers that end cap to the
+// next record, so the shadow may still show it: core/cut/mill.h).
 void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
-                    int64_t ex_q30, int64_t ey_q30, bool clockwise, EngageAt* out);
+                    int64_t ex_q30, int64_t ey_q30, bool clockwise, const PointNm* cap, EngageAt* out);
 
 // The uncut chip's thickness over the engaged arc for a feed per tooth
 // f_z: the largest, f_z sin(phi) at the phi nearest a quarter turn, and

@@ -24,10 +24,21 @@ void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t ex,
   EngageMove& mv = m->move;
   if (mv.samples >= static_cast<uint32_t>(kEngageMaxSamples)) return;
   EngageAt e;
-  engage_at_tops(g, m->shadow, m->tool, p, ex, ey, clockwise, &e);
+  // Within 2R of the start, a sample's ring reaches the footprint the tool
+  // left there.
+  const PointNm& s = m->record.start;
+  const int64_t reach = 2 * m->tool.profile.radius_nm;
+  const bool near = p.x_nm - s.x_nm < reach && s.x_nm - p.x_nm < reach && p.y_nm - s.y_nm < reach && s.y_nm - p.y_nm < reach;
+  engage_at_tops(g, m->shadow, m->tool, p, ex, ey, clockwise, near ? &s : nullptr, &e);
   ++mv.samples;
   mv.ae_max_nm = max_of(mv.ae_max_nm, e.ae_nm);
   mv.ap_max_nm = max_of(mv.ap_max_nm, e.ap_nm);
+  if (e.area_um2 > mv.area_um2) {
+    mv.area_um2 = e.area_um2;
+    mv.section = e;
+    const int64_t R = m->tool.profile.radius_nm;
+    mv.area_at = PointNm{p.x_nm + mul_shift(R, ex, 30), p.y_nm + mul_shift(R, ey, 30), p.z_nm + e.ap_nm / 2};
+  }
   if (e.engaged && (!mv.worst.engaged || e.angle_bam() > mv.worst.angle_bam())) {
     mv.worst = e;
     mv.worst_at = p;
@@ -141,6 +152,8 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
     if (mv.spindle_rpm > 0)
       mv.fz_nm = div_round(mv.feed_nm_per_min, static_cast<int64_t>(mv.spindle_rpm) * m->tool.flutes);
     mv.chip = engage_chip(m->tool, mv.worst, mv.fz_nm);
+    // um^2 x um/min; below 2^63 for a section under 10^10 um^2 (100 mm square) at 20 m/min.
+    mv.mrr_um3_per_min = sat_mul_i64(mv.area_um2, mv.feed_nm_per_min / 1000);
   }
   // The shadow follows the grid.
   for (int32_t j = j0; j < j1 && !keep; ++j) {
@@ -159,10 +172,9 @@ void engage_summary_add(EngageSummary* s, const EngageMove& m) {
   if (m.ae_max_nm > s->ae.ae_max_nm) s->ae = m;
   if (m.ap_max_nm > s->ap.ap_max_nm) s->ap = m;
   if (m.chip.max_nm > s->chip.chip.max_nm) s->chip = m;
-  // removed / time above the best's: removed * best.time > best.removed * time.
-  const U128 mine = mul_wide_u64(m.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(s->rate.time_us, 1)));
-  const U128 best = mul_wide_u64(s->rate.removed_lsb, static_cast<uint64_t>(max_of<int64_t>(m.time_us, 1)));
-  if (m.removed_lsb > 0 && u128_less(best, mine)) s->rate = m;
+  if (m.mrr_um3_per_min > s->rate.mrr_um3_per_min) s->rate = m;
+  if (m.has_load && m.force_mn > s->force.force_mn) s->force = m;
+  if (m.has_load && m.power_mw > s->power.power_mw) s->power = m;
 }
 
 #define DEXMILL_ENGAGE_METER_INSTANTIATE(H)                                                                \

@@ -32,6 +32,10 @@ struct EngageMove {
   EngageAt worst;             // the sample engaged over the widest arc (the first of equals)
   PointNm worst_at{0, 0, 0};  // its tip
   int64_t ae_max_nm = 0, ap_max_nm = 0;  // the largest of each over the samples
+  int64_t area_um2 = 0;       // the largest cross-section over the samples (engage.h EngageAt)
+  EngageAt section;           // that sample
+  PointNm area_at{0, 0, 0};   // where its edge met material: a radius ahead of its tip, half its depth up
+  int64_t mrr_um3_per_min = 0;  // that cross-section times the feed: the removal rate at its peak
   uint64_t removed_lsb = 0;   // what the record removed, LSB x dexels
   int64_t feed_nm_per_min = 0;
   int32_t spindle_rpm = 0;
@@ -41,6 +45,13 @@ struct EngageMove {
   // (0 without a spindle speed).
   int64_t fz_nm = 0;
   EngageChip chip;
+  int32_t tool = 0;           // the tool number in the spindle
+  // With the material's cutting coefficients (core/engage/engage_load.h;
+  // has_load false without them): the tooth's largest tangential force,
+  // and the spindle's torque and power at the largest cross-section.
+  bool has_load = false;
+  uint8_t material = 0;       // the material met there (an index of the run's composition)
+  int64_t force_mn = 0, torque_mn_m = 0, power_mw = 0;
 };
 
 // Where a front end takes each move's measurements (a CSV, a plot).
@@ -52,12 +63,13 @@ class EngageSink {
   ~EngageSink() = default;
 };
 
-// The program's largest: the widest arc, the widest cut, the deepest, and
-// the highest removal rate (removed over time), each the first move that
-// reached it, and how many feed moves were measured and engaged.
+// The program's largest: the widest arc, the widest cut, the deepest, the
+// highest removal rate (at the largest cross-section), the thickest chip,
+// the largest force and power, each the first move that reached it, and
+// how many feed moves were measured and engaged.
 struct EngageSummary {
   uint64_t moves = 0, engaged = 0;
-  EngageMove angle, ae, ap, rate, chip;
+  EngageMove angle, ae, ap, rate, chip, force, power;
 };
 void engage_summary_add(EngageSummary* s, const EngageMove& m);
 

@@ -31,6 +31,12 @@ struct MaterialProcess {
   bool coolant_allowed = true;                // false: M7/M8 while cutting it is a violation
   int64_t tolerance_nm = 50000;               // accuracy the region needs, 0.05 mm
   int32_t density_mg_per_cm3 = 1000;          // mass removed = volume x density (1000 = 1 g/cm^3)
+  // Cutting (core/engage/engage_load.h): Kienzle's specific cutting force
+  // kc1.1 and exponent mc (0: not known, no force or power), and the
+  // thickest chip a tooth may take (0: no limit; `--check load`).
+  int32_t kc11_n_per_mm2 = 0;
+  int32_t mc_ppm = 0;
+  int64_t max_chip_nm = 0;
 };
 
 struct Material {

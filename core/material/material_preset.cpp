@@ -26,6 +26,14 @@ MaterialProcess process(int64_t feed_mm_per_min, int32_t rpm_lo, int32_t rpm_hi,
   return p;
 }
 
+// Kienzle's coefficients and the thickest chip a tooth may take
+// (core/engage/engage_load.h); 0: not known (no force, power or limit).
+void cutting(Material* m, int32_t kc11_n_per_mm2, int32_t mc_ppm, int64_t max_chip_um) {
+  m->process.kc11_n_per_mm2 = kc11_n_per_mm2;
+  m->process.mc_ppm = mc_ppm;
+  m->process.max_chip_nm = max_chip_um * kNmPerUm;
+}
+
 Material named(const char* name) {
   Material m;
   (void)material_set_name(&m, name);  // the names below are all short enough
@@ -89,6 +97,9 @@ Material material_abs_laminate(BoxNm stock) {
   // Engraving laminate: 1500 mm/min, 8000-24000 rpm, coolant harmless,
   // 0.05 mm, ABS about 1.05 g/cm^3.
   m.process = process(1500, 8000, 24000, true, 50, 1050);
+  // No Kienzle coefficients we can source for ABS; a tooth's chip up to
+  // 0.2 mm (plastics melt on chips much thinner than that, not thicker).
+  cutting(&m, 0, 0, 200);
   return m;
 }
 
@@ -99,6 +110,8 @@ Material material_marble(BoxNm stock) {
   // Stone: slow feeds (600 mm/min), 3000-12000 rpm, wet cutting is the
   // rule, 0.05 mm, calcite marble 2.71 g/cm^3.
   m.process = process(600, 3000, 12000, true, 50, 2710);
+  // Stone is ground away, not cut as a chip: no Kienzle coefficients, no
+  // chip limit.
   return m;
 }
 
@@ -111,6 +124,12 @@ Material material_beech(BoxNm stock) {
   // Hardwood on a router: 3000 mm/min, 12000-24000 rpm, no coolant (paper
   // §2.6: wood soaks it up), 0.1 mm (wood moves), beech 0.72 g/cm^3.
   m.process = process(3000, 12000, 24000, false, 100, 720);
+  // An estimate, not a measured coefficient: across the grain, beech
+  // takes a tangential force of the order of 7.5 N per mm of edge at a
+  // 0.1 mm chip, rising steeply on thinner chips; kc1.1 = 25 N/mm^2 with
+  // mc = 0.5 gives that (trust it within a factor of 2). Router cutters
+  // take chips up to about 0.3 mm a tooth in hardwood.
+  cutting(&m, 25, 500000, 300);
   return m;
 }
 
@@ -121,6 +140,10 @@ Material material_bronze(BoxNm stock) {
   // Cast bearing bronze: 400 mm/min, 1500-8000 rpm, coolant allowed,
   // 0.02 mm (bearing faces, §2.6), 8.8 g/cm^3.
   m.process = process(400, 1500, 8000, true, 20, 8800);
+  // Sandvik Coromant's material table, ISO N3 (copper alloys: kc1 from
+  // about 550 N/mm^2 for leaded to 1350 for pure copper, mc 0.25): the
+  // bronzes' 700; a 6 mm carbide cutter's chip up to 0.05 mm a tooth.
+  cutting(&m, 700, 250000, 50);
   return m;
 }
 
@@ -132,6 +155,10 @@ Material material_aluminium(BoxNm stock) {
   // 6061-T6: 1500 mm/min, 6000-24000 rpm, coolant allowed, 0.02 mm,
   // 2.70 g/cm^3.
   m.process = process(1500, 6000, 24000, true, 20, 2700);
+  // Sandvik Coromant's material table, ISO N1.2 (wrought aluminium, aged):
+  // kc1 = 650 N/mm^2, mc = 0.25; a 6 mm carbide cutter's chip up to 0.06 mm
+  // a tooth.
+  cutting(&m, 650, 250000, 60);
   return m;
 }
 
@@ -141,6 +168,7 @@ Material material_granite(BoxNm stock) {
   m.texture.kind = TextureKind::kGranite;
   // Hard stone: 300 mm/min, 2000-8000 rpm, wet, 0.05 mm, 2.65 g/cm^3.
   m.process = process(300, 2000, 8000, true, 50, 2650);
+  // Ground away like marble: no Kienzle coefficients, no chip limit.
   return m;
 }
 

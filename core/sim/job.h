@@ -15,6 +15,7 @@
 #include "core/cut/mill.h"
 #include "core/design/design.h"
 #include "core/engage/engage_meter.h"
+#include "core/engage/engage_target.h"
 #include "core/gcode/error.h"
 #include "core/material/material.h"
 #include "core/interp/interp.h"
@@ -103,6 +104,16 @@ struct SimJob {
   // and summed up (Simulation::engagement()). Off: nothing is sampled.
   bool engagement = false;
   EngageSink* engage_sink = nullptr;
+  // Load limits (core/engage/load_watch.h; needs engagement): the chip
+  // against each material's max_chip_nm, the power against the spindle's
+  // (0: none). Force and power need `material`'s cutting coefficients.
+  bool load_check = false;
+  int64_t spindle_power_mw = 0;
+  // `dexmill optimize --target` (core/engage/engage_target.h; needs
+  // engagement and material): each line's feed for the target, lines
+  // 0 .. target_lines - 1 (Simulation::target_feeds()).
+  const EngageTarget* engage_target = nullptr;
+  size_t target_lines = 0;
   size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
   // The process rules' findings of lines 0..n-1 told apart exactly (3 bytes
   // a line; core/safety/material_limits.h): the program's line count + 1. 0: only

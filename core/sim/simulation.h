@@ -36,6 +36,9 @@
 #include "core/safety/safety.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
+#include "core/engage/engage_load.h"
+#include "core/engage/engage_target.h"
+#include "core/engage/load_watch.h"
 #include "core/gcode/messages.h"
 #include "core/grid/grid.h"
 #include "core/interp/interp.h"
@@ -219,6 +222,9 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   const GougeWatch* gouges() const { return job_.design ? &gouges_ : nullptr; }
   const ProcessWatch* process() const { return job_.material ? &process_ : nullptr; }
   const EngageSummary* engagement() const { return job_.engagement ? &engage_sum_ : nullptr; }
+  const LoadWatch* load() const { return job_.engagement && job_.load_check ? &load_ : nullptr; }
+  // engage_target's feed for each line (null without one).
+  const EngageLineFeeds* target_feeds() const { return target_lines_.n ? &target_lines_ : nullptr; }
   const ToolProvenance<H>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
   bool gouged() const { return gouged_; }
   // Records (and the finish) whose gouge check found a gouge: a front end
@@ -261,6 +267,7 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   };
 
   void process(const Queued& q);
+  void measure_load(EngageMove* mv);
   void check_process(const Queued& q, bool move, int64_t time_us);
   void load_tool(const Tool& t);
   void stop_with(SimStop why, uint32_t line);
@@ -295,7 +302,9 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   uint8_t* process_seen_;
   EngageMeter engage_;
   EngageSummary engage_sum_;
+  LoadWatch load_;
   uint32_t* engage_shadow_;
+  EngageLineFeeds target_lines_;
   ToolProvenance<H> prov_;
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;

@@ -45,6 +45,8 @@ struct SimulationT<H>::Memory {
   uint32_t* process_shadow = nullptr;
   uint32_t* engage_shadow = nullptr;
   int64_t* line_feed = nullptr;
+  int64_t* target_feed = nullptr;  // engage_target: each line's feed
+  uint8_t* target_kept = nullptr;
   uint8_t* process_seen = nullptr;  // the findings counted per line (core/safety/material_limits.h)
   uint8_t* seen = nullptr;
   size_t seen_bytes = 0;
@@ -159,6 +161,10 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
     mem.process_seen = c.take<uint8_t>(process_seen_bytes(job.process_lines));
   }
   if (job.engagement) mem.engage_shadow = c.take<uint32_t>(cells);
+  if (job.engagement && job.engage_target) {
+    mem.target_feed = c.take<int64_t>(job.target_lines);
+    mem.target_kept = c.take<uint8_t>(job.target_lines);
+  }
   if (job.design) {
     mem.seen_bytes = gouge_watch_seen_bytes(g.nx, g.ny);
     mem.seen = c.take<uint8_t>(mem.seen_bytes);
@@ -235,6 +241,7 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       line_feed_limits_(m.line_feed),
       process_seen_(m.process_seen),
       engage_shadow_(m.engage_shadow),
+      target_lines_{m.target_feed, m.target_kept, job.engage_target ? job.target_lines : 0},
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
       prov_lines_(m.prov_lines),
@@ -291,6 +298,8 @@ void SimulationT<H>::start() {
     if (job_.process_lines) process_watch_track_findings(&process_, process_seen_, job_.process_lines);
   }
   if (job_.engagement) (void)engage_meter_init(&engage_, grid_, engage_shadow_, cells);
+  load_.spindle_power_mw = job_.spindle_power_mw;
+  if (target_lines_.n) engage_line_feeds_clear(&target_lines_);
   if (safety_on_) {
     (void)safety_watch_init(&safety_, grid_, safety_shadow_, cells, safety_tiles_, safety_tile_words_);
     const SimChecks& c = job_.checks;
@@ -342,6 +351,32 @@ void SimulationT<H>::emit(const CanonRecord& r) {
   const InterpState& st = interp_.state();
   queue_[(queue_head_ + queue_n_) % queue_cap_] = Queued{r, st.spindle_dir, st.spindle_rpm, st.coolant};
   ++queue_n_;
+}
+
+// A measured move's tool, and with materials its load and limits: the
+// material its edge met (at its largest cross-section, else its widest
+// arc), that material's coefficients and chip limit.
+template <class H>
+void SimulationT<H>::measure_load(EngageMove* mv) {
+  mv->tool = status_.tool;
+  if (!mv->feed) return;
+  int64_t max_chip_nm = 0;
+  if (job_.material && job_.material->material_count > 0) {
+    const PointNm at = mv->area_um2 > 0 ? mv->area_at : mv->worst_at;
+    mv->material = composition_material_at(*job_.material, at.x_nm, at.y_nm, at.z_nm);
+    const MaterialProcess& p = job_.material->materials[mv->material].process;
+    CuttingCoefficients c;
+    c.kc11_n_per_mm2 = p.kc11_n_per_mm2;
+    c.mc_ppm = p.mc_ppm;
+    engage_load(engage_.tool, c, mv);
+    max_chip_nm = p.max_chip_nm;
+    if (target_lines_.n) {
+      EngageFeedWhy why;
+      const int64_t f = engage_target_feed(*job_.engage_target, *mv, c, max_chip_nm, p.max_feed_nm_per_min, &why);
+      engage_line_feeds_add(&target_lines_, mv->line, f, why);
+    }
+  }
+  if (job_.load_check) load_watch_check(&load_, *mv, max_chip_nm);
 }
 
 template <class H>
@@ -398,6 +433,7 @@ void SimulationT<H>::process(const Queued& q) {
     engage_meter_after(&engage_, grid_, grid_.dirty, &mv);
     mv.time_us = time_.estimated_time_us() - t_before;
     mv.end_us = time_.estimated_time_us();
+    measure_load(&mv);
     engage_summary_add(&engage_sum_, mv);
     if (mv.feed && job_.engage_sink) job_.engage_sink->move(mv);
   }

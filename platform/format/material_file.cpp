@@ -221,8 +221,35 @@ class Parser {
       p.density_mg_per_cm3 = static_cast<int32_t>(x);
       return true;
     }
+    bool known = false;
+    if (!cutting_option(v, key, val, vn, &p, &known)) return false;
+    if (known) return true;
     return fail(v, "unknown key '" + key.str() +
-                       "' (colour, vein, period, seed, max_feed, spindle, coolant, tolerance, density)");
+                       "' (colour, vein, period, seed, max_feed, spindle, coolant, tolerance, density, kc1.1, mc, "
+                       "max_chip)");
+  }
+
+  // The cutting keys (core/engage/engage_load.h): *known when key is one.
+  bool cutting_option(const Word& v, const Word& key, const char* val, std::size_t vn, MaterialProcess* p, bool* known) {
+    int64_t x = 0;
+    *known = true;
+    if (key.is("kc1.1") || key.is("kc11")) {
+      if (!number(val, vn, 1, 100000, &x) || x <= 0) return fail(v, "kc1.1 is a force in N/mm2, 1..100000");
+      p->kc11_n_per_mm2 = static_cast<int32_t>(x);
+      return true;
+    }
+    if (key.is("mc")) {
+      if (!number(val, vn, 1000000, 999999, &x) || x < 0) return fail(v, "mc is Kienzle's exponent, 0 <= mc < 1");
+      p->mc_ppm = static_cast<int32_t>(x);
+      return true;
+    }
+    if (key.is("max_chip")) {
+      if (!number(val, vn, 1000000, 100000000, &x) || x <= 0) return fail(v, "max_chip is a chip per tooth in mm, above 0 and at most 100");
+      p->max_chip_nm = x;
+      return true;
+    }
+    *known = false;
+    return true;
   }
 
   bool layer(const std::vector<Word>& w) {

@@ -18,6 +18,8 @@
 //        coolant=yes|no       whether M7/M8 may be on while cutting it
 //        tolerance=MM         the accuracy its faces need
 //        density=G/CM3        for the mass removed
+//        kc1.1=N/MM2, mc=X    Kienzle's cutting coefficients: force, torque, power
+//        max_chip=MM          the thickest chip a tooth may take (--check load)
 //   layer Z0 Z1 NAME                 Z0 <= z < Z1 is NAME
 //   box X0,Y0,Z0,X1,Y1,Z1 NAME       an insert (later ones win)
 //   cylinder X,Y,R,Z0,Z1 NAME        a vertical cylindrical insert

@@ -265,6 +265,35 @@ std::string materials_text(const RunReport& r) {
   return o + (r.material_violations.empty() ? "]},\n" : "\n    ]},\n");
 }
 
+// {"moves": N, "engaged": M, "max_angle": {"deg": 180.00, "line": 5, "at": "FILE:5"}, ...
+std::string engage_set_text(const ReportEngageSet& e, const std::string& file) {
+  std::string o = "\"moves\": " + u64(e.moves) + ", \"engaged\": " + u64(e.engaged);
+  for (const ReportEngageMax& m : e.maxima)
+    o += ", " + quoted(m.name) + ": {" + quoted(m.unit) + ": " + m.value + ", \"line\": " + u64(m.line) +
+         ", \"at\": " + (m.line ? quoted(file + ":" + std::to_string(m.line)) : std::string("null")) + "}";
+  return o;
+}
+
+std::string engagement_text(const RunReport& r) {
+  const ReportEngagement& e = r.engagement;
+  std::string o = "  \"engagement\": {" + engage_set_text(e.program, r.file) + ",\n    \"tools\": [";
+  for (std::size_t k = 0; k < e.tools.size(); ++k)
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"tool\": " + std::to_string(e.tools[k].first) + ", " +
+         engage_set_text(e.tools[k].second, r.file) + "}";
+  return o + (e.tools.empty() ? "]},\n" : "\n    ]},\n");
+}
+
+std::string load_text(const RunReport& r) {
+  const ReportLoad& l = r.load;
+  std::string o = "  \"load\": {\"spindle_power_w\": " +
+                  (l.spindle_power_mw ? nm_to_mm_text(l.spindle_power_mw * 1000, 3) : std::string("null")) +
+                  ", \"total\": " + u64(l.total) + ", \"findings\": [";
+  for (std::size_t k = 0; k < l.kept.size(); ++k)
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"rule\": " + quoted(l.kept[k].rule) + ", \"line\": " +
+         u64(l.kept[k].line) + ", \"message\": " + quoted(l.kept[k].message) + "}";
+  return o + (l.kept.empty() ? "]},\n" : "\n    ]},\n");
+}
+
 }  // namespace
 
 std::string report_json_text(const RunReport& r) {
@@ -326,18 +355,8 @@ std::string report_json_text(const RunReport& r) {
   o += r.have_assessment ? assessment_text(r) : std::string("  \"assessment\": null,\n");
   o += r.have_collisions ? collisions_text(r) : std::string("  \"collisions\": null,\n");
   o += r.have_materials ? materials_text(r) : std::string("  \"materials\": null,\n");
-  if (r.have_engagement) {
-    const ReportEngagement& e = r.engagement;
-    char b[160];
-    std::snprintf(b, sizeof b, "{\"deg\": %.2f, \"line\": %u}", e.angle_deg, e.angle_line);
-    const std::string angle = b;
-    std::snprintf(b, sizeof b, "{\"mm3_per_min\": %.1f, \"line\": %u}", e.mrr_mm3_per_min, e.mrr_line);
-    o += "  \"engagement\": {\"moves\": " + u64(e.moves) + ", \"engaged\": " + u64(e.engaged) + ", \"max_angle\": " + angle +
-         ", \"max_width\": {\"mm\": " + nm_to_mm_text(e.width_nm, 4) + ", \"line\": " + u64(e.width_line) +
-         "}, \"max_depth\": {\"mm\": " + nm_to_mm_text(e.depth_nm, 4) + ", \"line\": " + u64(e.depth_line) +
-         "}, \"max_mrr\": " + b + ", \"max_chip\": {\"mm\": " + nm_to_mm_text(e.chip_nm, 5) + ", \"line\": " +
-         u64(e.chip_line) + "}},\n";
-  }
+  if (r.have_engagement) o += engagement_text(r);
+  if (r.have_load) o += load_text(r);
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

@@ -95,18 +95,31 @@ struct ProgramFindings {
   uint64_t total = 0;
 };
 
-// What the engagement measured (--engagement-csv): the program's largest,
-// each with the line of the first move that reached it.
-struct ReportEngagement {
+// What the engagement measured (--engagement-csv, --load-plot, --check
+// load): the largest of each quantity, with the line of the first move
+// that reached it, for the program and for each tool.
+struct ReportEngageMax {
+  std::string name;   // "max_angle", "max_power", ...
+  std::string unit;   // its value's key: "deg", "w", ...
+  std::string value;  // as JSON writes it (fixed decimals)
+  uint32_t line = 0;
+};
+struct ReportEngageSet {
   uint64_t moves = 0, engaged = 0;  // feed moves measured, and those that met material
-  double angle_deg = 0;
-  uint32_t angle_line = 0;
-  int64_t width_nm = 0, depth_nm = 0;
-  uint32_t width_line = 0, depth_line = 0;
-  double mrr_mm3_per_min = 0;
-  uint32_t mrr_line = 0;
-  int64_t chip_nm = 0;  // the thickest uncut chip
-  uint32_t chip_line = 0;
+  std::vector<ReportEngageMax> maxima;
+};
+struct ReportEngagement {
+  ReportEngageSet program;
+  std::vector<std::pair<int32_t, ReportEngageSet>> tools;  // by tool number
+};
+struct ReportLoad {  // --check load's findings
+  int64_t spindle_power_mw = 0;  // 0: no power limit
+  uint64_t total = 0;
+  struct Finding {
+    uint32_t line;
+    std::string rule, message;
+  };
+  std::vector<Finding> kept;  // the first 100
 };
 
 struct RunReport {
@@ -175,6 +188,8 @@ struct RunReport {
   uint64_t material_violations_total = 0;
   bool have_engagement = false;
   ReportEngagement engagement;
+  bool have_load = false;
+  ReportLoad load;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
   // The run that wrote the report and what else it wrote (platform/os/output_set.h:
   // the report is published last).

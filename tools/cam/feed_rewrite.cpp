@@ -20,10 +20,17 @@ FeedEdit FeedRewriter::line(const FeedLine& l) {
   }
   const int64_t programmed = l.programmed_nm_per_min;
   e.lowered = l.limit_nm_per_min < programmed;
-  const int64_t want = e.lowered ? l.limit_nm_per_min : programmed;
-  const FeedNumber n = feed_number(want, l.inch, e.lowered ? (l.inch ? 4 : 3) : 6);
+  e.raised = l.retarget && l.limit_nm_per_min > programmed;
+  const int decimals = l.retarget ? (l.inch ? 2 : 0) : (l.inch ? 4 : 3);
+  FeedNumber n = feed_number(e.lowered || e.raised ? l.limit_nm_per_min : programmed, l.inch,
+                             e.lowered || e.raised ? decimals : 6);
+  if (e.raised && n.nm_per_min <= programmed) {  // no whole unit above it: as programmed
+    e.raised = false;
+    n = feed_number(programmed, l.inch, 6);
+  }
+  const int64_t want = e.lowered || e.raised ? l.limit_nm_per_min : programmed;
   if (l.has_f) {
-    if (e.lowered) {
+    if (e.lowered || e.raised) {
       e.kind = FeedEdit::Kind::kChange;
       e.number = n.text;
       e.feed_nm_per_min = n.nm_per_min;
@@ -45,7 +52,8 @@ FeedEdit FeedRewriter::line(const FeedLine& l) {
 FeedEdit FeedRewriter::inverse_time(const FeedLine& l) const {
   FeedEdit e;
   e.feed_nm_per_min = l.programmed_nm_per_min;
-  if (l.limit_nm_per_min >= l.programmed_nm_per_min) return e;
+  if (l.limit_nm_per_min == l.programmed_nm_per_min) return e;
+  if (l.limit_nm_per_min > l.programmed_nm_per_min && !l.retarget) return e;
   // F' = F x limit / rate at 6 decimals, rounded down (F <= 1e6 and rates
   // <= 2.54e13 nm/min: the products fit 128 bits).
   constexpr int kFrac = 6;
@@ -55,7 +63,8 @@ FeedEdit FeedRewriter::inverse_time(const FeedLine& l) const {
   if (scaled <= 0) return e;  // below 1e-6 per minute: left as it is (the caller warns)
   Decimal g{static_cast<int64_t>(scaled), kFrac};
   e.kind = FeedEdit::Kind::kChange;
-  e.lowered = true;
+  e.lowered = l.limit_nm_per_min < l.programmed_nm_per_min;
+  e.raised = !e.lowered;
   e.number = decimal_text(g);
   // The rate it gives, for the time estimate: rate x F' / F.
   e.feed_nm_per_min = static_cast<int64_t>(static_cast<__int128>(l.programmed_nm_per_min) * g.mant * pow10_i64(f.frac) /

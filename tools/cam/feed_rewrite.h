@@ -11,8 +11,10 @@
 //   feed is another (a lowered line came before) gets the programmed F
 //   back;
 // - every other line, and every other byte, stays as written.
+// With a target (FeedLine::retarget) the wanted feed may be above the
+// programmed one too: the same rule with "runs faster" beside "slower".
 // Inverse-time moves (G93: F is 1/minutes, every move's own, its rate the
-// move's length times F) over their limit get F scaled by limit / rate,
+// move's length times F) over their limit (or off their target) get F scaled by limit / rate,
 // rounded down at 6 decimals: the rate read back is at most the limit
 // (round(F' x length) <= limit x (F x length) / rate < limit + 1/2).
 //
@@ -40,6 +42,10 @@ struct FeedLine {
   Decimal inverse_f{0, 0};           // G93: the line's F as written
   int64_t programmed_nm_per_min = 0; // their feed as programmed (G94: one per line; G93: the move's rate)
   int64_t limit_nm_per_min = 0;      // the lowest max feed of what they removed (kNoFeedLimit: none)
+  // `--target`: limit_nm_per_min is the feed wanted, above or below the
+  // programmed one (core/engage/engage_target.h), written with whole
+  // mm/min (hundredths of inch/min), rounded down.
+  bool retarget = false;
   bool sets_feed = false;            // an F word, G93 or G94: the modal feed after it is the program's
   int64_t feed_after_nm_per_min = 0; // the modal feed after the line, as programmed
   bool has_f = false;                // the line has an F word
@@ -52,6 +58,7 @@ struct FeedEdit {
   std::string number;                // the F word's number text (kChange, kInsert)
   int64_t feed_nm_per_min = 0;       // the line's feed moves in the output (feeds)
   bool lowered = false;              // below the programmed feed
+  bool raised = false;               // above it (--target)
 };
 
 class FeedRewriter {

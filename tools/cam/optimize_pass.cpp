@@ -80,6 +80,10 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     fl.inverse_time = st.inverse_time;
     fl.programmed_nm_per_min = hi;
     fl.limit_nm_per_min = line < in.limits->size() ? (*in.limits)[line] : kNoFeedLimit;
+    if (in.targets && line < in.targets->size() && (*in.targets)[line] != INT64_MAX) {
+      fl.retarget = true;
+      fl.limit_nm_per_min = min_of(fl.limit_nm_per_min, (*in.targets)[line]);
+    }
     fl.feed_after_nm_per_min = st.feed_nm_per_min;
     fl.inch = st.inch;
     GcodeBlock b;
@@ -107,9 +111,11 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     if (s.text.empty()) return fail(kExitInput, "%s:%u: cannot place an F word in this line", in.shown_name.c_str(), line);
     out->splices.push_back(ProgramSplice{file.line_offset() + s.at, s.erase, s.text});
     ++out->lines_changed;
-    if (e.lowered) {
+    if (e.raised) {
+      ++out->lines_raised;
+    } else if (e.lowered) {
       ++out->lines_lowered;
-      ++out->lowered_to[fl.limit_nm_per_min];
+      if (!fl.retarget) ++out->lowered_to[fl.limit_nm_per_min];
     } else {
       ++out->lines_restored;
     }

@@ -24,6 +24,9 @@ struct OptimizeInput {
   bool inch = false;                         // --units inch
   const ToolTable* tools = nullptr;          // --tools (or --tool), for G43 H and G41 D as the cut had it
   const std::vector<int64_t>* limits = nullptr;  // per line, from the cut (RunResult::line_feed_limits, tools/run/run_job.h)
+  // --target: per line, the feed that meets it (RunResult::line_target_feeds;
+  // INT64_MAX: none), bounded by the limits above; null: lower to the limits.
+  const std::vector<int64_t>* targets = nullptr;
   MotionTimeModel time_model;
 };
 
@@ -38,6 +41,7 @@ struct OptimizeResult {
   uint32_t lines_changed = 0;
   uint32_t lines_lowered = 0;                // lines whose feed moves run slower
   uint32_t lines_restored = 0;               // lines given the programmed F back
+  uint32_t lines_raised = 0;                 // lines whose feed moves run faster (--target)
   std::map<int64_t, uint32_t> lowered_to;    // lowered lines by their limit, nm/min
   uint32_t left_over = 0;                    // lines left over a limit (warned): G93 with F too small to lower
   int64_t before_us = 0, after_us = 0;       // estimated time (core/canon/summary.h)

@@ -19,6 +19,9 @@
 #include "tools/cam/feed_word.h"
 #include "tools/run/guard_inputs.h"
 #include "tools/cam/optimize_pass.h"
+#include "core/safety/material_limits.h"
+#include "tools/cam/optimize_target.h"
+#include "tools/cli/option_values.h"
 #include "tools/run/run_job.h"
 #include "tools/cli/option_help.h"
 #include "tools/cli/option_parse.h"
@@ -34,11 +37,34 @@ constexpr std::size_t kMaxProgramBytes = std::size_t(1) << 30;
 struct OptimizeArgs {
   RunOptions run;
   std::string out = "-";
+  OptimizeTarget target;
+  bool have_min_feed = false, have_max_feed = false;
 };
+
+int feed_value(const char* name, const char* v, int64_t* nm_per_min) {
+  if (!parse_scaled(v, kNmPerMm, nm_per_min) || *nm_per_min <= 0 || *nm_per_min > kNoFeedLimit / 2)
+    return fail(kExitUsage, "%s needs a feed in mm/min above 0, not '%s'", name, v);
+  return kExitOk;
+}
 
 const Option<OptimizeArgs> kOptimizeOptions[] = {
     {"--output", "OUT", "write the program to OUT (replaced whole; it may be FILE itself) instead of standard output",
      [](OptimizeArgs* a, const char* v) -> int { return a->out = v, kExitOk; }, "-o", "a file (or - for standard output)"},
+    {"--target", "chip-load[=MM]|power W|mrr MM3/MIN",
+     "set each feed move's F by its measured load, raised in light cuts and lowered in heavy ones: the "
+     "thickest chip at MM (or each material's max_chip), the spindle power at W, or the removal rate; moves "
+     "in air get the highest feed, plunges keep theirs",
+     [](OptimizeArgs* a, const char* v) -> int { return parse_target(v, &a->target); }},
+    {"--min-feed", "MM/MIN", "with --target: the lowest feed it sets (10 unless given)",
+     [](OptimizeArgs* a, const char* v) -> int {
+       a->have_min_feed = true;
+       return feed_value("--min-feed", v, &a->target.target.min_feed_nm_per_min);
+     }},
+    {"--max-feed", "MM/MIN", "with --target: the machine's highest feed (without it, the material's max_feed)",
+     [](OptimizeArgs* a, const char* v) -> int {
+       a->have_max_feed = true;
+       return feed_value("--max-feed", v, &a->target.target.max_feed_nm_per_min);
+     }},
 };
 
 const CommandText kOptimizeText = {
@@ -54,7 +80,12 @@ const CommandText kOptimizeText = {
     "A line's moves share one F, so a canned cycle's line runs at its slowest hole's\n"
     "limit. Lowered feeds are written with at most 3 decimals (mm/min) or 4\n"
     "(inch/min, under G20), rounded down; an inverse-time move (G93) gets its F\n"
-    "scaled by limit / rate, with 6 decimals, rounded down.\n",
+    "scaled by limit / rate, with 6 decimals, rounded down.\n\n"
+    "With --target, each line's F is the feed that meets the target at its moves'\n"
+    "engagement, measured on the stock before them (the lowest of its moves'),\n"
+    "raised or lowered, at most --max-feed and the materials' max_feed, at least\n"
+    "--min-feed, in whole mm/min (hundredths of inch/min) rounded down. A line\n"
+    "whose moves removed nothing gets the highest feed; a plunge keeps its feed.\n",
     "Prints on standard error the lines changed and the estimated time before and\n"
     "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
     "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n",
@@ -102,14 +133,41 @@ void print_summary(const std::string& name, const OptimizeResult& r) {
                duration_text(r.after_us).c_str(), pct);
 }
 
+// What --target did: the lines raised and lowered, those whose moves
+// kept their feed (plunges, moves with no spindle speed or coefficients
+// to measure by), and the program's largest load it was measured at.
+void print_target_summary(const std::string& name, const OptimizeTarget& t, const RunResult& cut, const OptimizeResult& r) {
+  uint32_t kept = 0;
+  for (size_t k = 0; k < cut.line_target_kept.size(); ++k) kept += cut.line_target_kept[k];
+  std::fprintf(stderr, "%s: target %s: %u line(s) raised, %u lowered", name.c_str(), t.text.c_str(), r.lines_raised,
+               r.lines_lowered);
+  if (kept) std::fprintf(stderr, "; %u line(s) kept their feed (plunges, or moves the load cannot be measured on)", kept);
+  std::fputc('\n', stderr);
+  const EngageSummary& e = cut.engagement;
+  if (cut.have_engagement)
+    std::fprintf(stderr, "%s: before: thickest chip %.4f mm (line %u)%s\n", name.c_str(),
+                 static_cast<double>(e.chip.chip.max_nm) * 1e-6, e.chip.line,
+                 e.power.has_load ? (", largest power " + std::to_string((e.power.power_mw + 500) / 1000) + " W (line " +
+                                     std::to_string(e.power.line) + ")").c_str()
+                                  : "");
+  if (r.lines_raised == 0 && r.lines_lowered == 0)
+    std::fprintf(stderr, "%s: every feed move is already at the target or a limit: nothing to gain\n", name.c_str());
+}
+
 }  // namespace
 
 CommandDoc optimize_doc() { return command_doc(optimize_table()); }
 
 int cmd_optimize(int argc, char** argv) {
   OptimizeArgs a;
+  a.target.target.min_feed_nm_per_min = 10 * kNmPerMm;
+  a.target.target.max_feed_nm_per_min = kNoFeedLimit;
   bool help = false;
-  const int parsed = parse_options(optimize_table(), argc, argv, &a, &help);
+  std::vector<std::string> words = join_target_words(argc, argv);
+  std::vector<char*> args;
+  for (std::string& w : words) args.push_back(&w[0]);
+  args.push_back(nullptr);
+  const int parsed = parse_options(optimize_table(), static_cast<int>(words.size()), args.data(), &a, &help);
   if (help) print_help(optimize_doc(), stdout);
   if (parsed != kExitOk || help) return parsed;
   if (const int code = finish_run_options(&a.run)) return code;
@@ -141,6 +199,9 @@ int cmd_optimize(int argc, char** argv) {
   o.job.file = input.read_path();
   o.job.strict = true;  // a program with an error is not rewritten
   o.job.feed_limits = true;
+  if (a.target.given) o.job.engage_target = &a.target.target;
+  else if (a.have_min_feed || a.have_max_feed)
+    return fail(kExitUsage, "--min-feed and --max-feed bound --target's feeds: give --target");
   o.out.print_summary = false;
   o.view.material_warnings = false;
   RunResult cut_result;
@@ -166,6 +227,7 @@ int cmd_optimize(int argc, char** argv) {
   SingleToolLibrary single(o.job.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
   in.tools = o.job.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;
+  if (a.target.given) in.targets = &cut_result.line_target_feeds;
   in.time_model.rapid_nm_per_min = o.job.rapid_nm_per_min;
   in.time_model.accel_nm_per_s2 = o.job.accel_nm_per_s2;
   OptimizeResult res;
@@ -179,6 +241,7 @@ int cmd_optimize(int argc, char** argv) {
   char e[1300];
   if (!write_output(out_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
   print_summary(shown, res);
+  if (a.target.given) print_target_summary(shown, a.target, cut_result, res);
   return kExitOk;
 }
 

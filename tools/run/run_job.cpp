@@ -228,6 +228,10 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     if (o.view.material_warnings) material_print(su.material, *w, su.shown_name);
     material_to_report(su.material, *w, sim.grid(), &su.rep);
   }
+  if (const LoadWatch* w = sim.load()) {
+    if (o.view.material_warnings) load_print(*w, *su.material.comp, su.shown_name);
+    load_to_report(*w, *su.material.comp, &su.rep);
+  }
   if (sim.io_error()) return fail(in.refused() ? kExitUsage : kExitIo, "%s", in.error());
   if (!v.frame_error.empty()) return fail(kExitIo, "%s", v.frame_error.c_str());
   if (v.live_view().failed()) return fail(kExitIo, "%s", v.live_view().error().c_str());
@@ -247,7 +251,7 @@ int write_files(const RunOptions& o, Run* run) {
   const double t_files = clock_now_s();
   if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
-  if (su.engage_csv && !su.engage_csv->commit()) return fail(kExitIo, "%s", su.engage_csv->error());
+  if (su.engage && !su.engage->commit()) return fail(kExitIo, "%s", su.engage->error());
   if (!o.out.save_stock.empty()) {
     if (!su.have_chain)
       return fail(kExitUsage, "--save-stock: the stock already holds the %d programs a stock file remembers",
@@ -317,7 +321,7 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
     rep.assessment = su.design.report;
     rep.timing.emplace_back("assess", clock_now_s() - t0);
   }
-  if (const EngageSummary* e = sim.engagement()) engage_to_report(*e, sim.grid().lsb_nm, sim.grid().pitch_nm, &rep);
+  if (const EngageSummary* e = sim.engagement()) engage_to_report(*e, su.engage->tools(), su.shown_name, &rep);
   chain_of_run(&su);
   if (su.have_chain) chain_to_report(su.chain, o.job, &rep);
   const CutterPose pose{true, sim.mill().position()};
@@ -379,6 +383,14 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     result->gouged = sim.gouged();
     if (const ProcessWatch* w = sim.process())
       result->line_feed_limits.assign(w->line_feed_limit, w->line_feed_limit + w->line_feed_limits);
+    if (const EngageLineFeeds* t = sim.target_feeds()) {
+      result->line_target_feeds.assign(t->feed_nm_per_min, t->feed_nm_per_min + t->n);
+      result->line_target_kept.assign(t->kept, t->kept + t->n);
+    }
+    if (const EngageSummary* e = sim.engagement()) {
+      result->engagement = *e;
+      result->have_engagement = true;
+    }
     result->findings = findings_of(su.rep);
   }
   if (run_prints_summary(o)) {
@@ -389,6 +401,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
   if (su.job.stop_line || !su.probe_errors.empty()) return kExitInput;
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
+  if (o.job.fail_on_load && sim.load() && sim.load()->total > 0) return kExitCheck;
   if (!o.view.quiet && su.demo)
     std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
                  image_format_extension(o.out.frame_format));

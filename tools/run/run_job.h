@@ -33,6 +33,13 @@ struct RunResult {
   // among the materials that line's feed moves removed (kNoFeedLimit: none;
   // core/safety/material_limits.h); what `dexmill optimize` lowers feeds to.
   std::vector<int64_t> line_feed_limits;
+  // With JobOptions::engage_target: per line, the feed that meets it
+  // (INT64_MAX: no feed move measured), and whether a move of the line
+  // kept its programmed feed (a plunge, no spindle speed, ...).
+  std::vector<int64_t> line_target_feeds;
+  std::vector<uint8_t> line_target_kept;
+  EngageSummary engagement;  // the run's largest (with engagement measured)
+  bool have_engagement = false;
   // What it found, at its lines (the first kChainFindingsKept, and the
   // count of all): a chain's next program reports them.
   ProgramFindings findings;

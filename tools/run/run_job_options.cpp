@@ -215,8 +215,10 @@ int check(Job* o, const char* v) {
     else if (word == "holder") c.holder = true;
     else if (word == "plunge") c.plunge = true;
     else if (word == "all") c.all();
+    else if (word == "load") o->check_load = true;
     else
-      return fail(kExitUsage, "--check takes rapid, spindle, below, shank, holder, plunge or all (comma-separated), not '%s'",
+      return fail(kExitUsage,
+                  "--check takes rapid, spindle, below, shank, holder, plunge, all or load (comma-separated), not '%s'",
                   word.c_str());
     p = end ? end + 1 : p + word.size();
   }
@@ -245,8 +247,22 @@ const Option<Job> kChecks[] = {
      "safety checks: rapid (rapids that remove material), spindle (cutting with the spindle stopped), below "
      "(the tool below the stock), shank (the shank above the flutes touching material; len=), holder (the "
      "holder touching it; holder=), plunge (a nocentre tool plunging), or all; a tool that gives len=, holder= "
-     "or nocentre has its check on without asking",
+     "or nocentre has its check on without asking; load (not in all: needs --material) the chip against the "
+     "material's max_chip and the power against --spindle-power",
      check},
+    {"--spindle-power", "W",
+     "the spindle's power (watts): a move that needs more (Kienzle, the material's kc1.1 and mc) is a load "
+     "finding at its line (turns on --check load)",
+     [](Job* o, const char* v) -> int {
+       int64_t mw = 0;
+       if (!parse_scaled(v, 1000, &mw) || mw <= 0 || mw > int64_t{1} << 50)
+         return fail(kExitUsage, "--spindle-power needs the spindle's power in watts above 0, not '%s'", v);
+       o->spindle_power_mw = mw;
+       o->check_load = true;
+       return kExitOk;
+     }},
+    {"--fail-on-load", nullptr, "run to the end, exit 4 if a move broke a load limit (turns on --check load)",
+     [](Job* o, const char*) -> int { return o->fail_on_load = o->check_load = true, kExitOk; }},
     {"--table", "Z", "the table's Z (mm): the tool going below it is a finding",
      [](Job* o, const char* v) -> int {
        if (!parse_scaled(v, kNmPerMm, &o->checks.table_nm)) return fail(kExitUsage, "--table needs the table's Z in mm, not '%s'", v);

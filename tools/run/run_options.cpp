@@ -40,6 +40,9 @@ int settle_verdict(JobOptions* j) {
     j->stop_at_gouge = j->stop_at_gouge || !j->design.empty();
   }
   if ((j->stop_at_collision || j->fail_on_collision) && !j->checks.any()) j->checks.all();
+  if (j->check_load && j->material.empty())
+    return fail(kExitUsage, "--check load needs --material (the chip limit and the cutting coefficients are the "
+                            "material's)");
   if ((j->stop_at_gouge || j->fail_on_gouge) && j->design.empty())
     return fail(kExitUsage, "%s needs --design (the part a gouge goes into)",
                 j->stop_at_gouge ? "--stop-at gouge" : "--fail-on-gouge");

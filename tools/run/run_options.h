@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/engage/engage_target.h"
 #include "core/stock/stock_transform.h"
 #include "core/assess/assess.h"
 #include "core/cut/mill.h"
@@ -125,8 +126,14 @@ struct JobOptions {
   // by finish_run_options into the other two.
   bool stop_at_gouge = false, stop_at_collision = false, stop_at_any = false;
   bool fail_on_gouge = false, fail_on_collision = false;
+  // Load limits (core/engage/load_watch.h): --check load, --spindle-power
+  // W (mW here; implies the check), --fail-on-load (exit 4; implies it).
+  bool check_load = false, fail_on_load = false;
+  int64_t spindle_power_mw = 0;
   // `dexmill optimize`: each line's feed limit kept (tools/run/run_job.h RunResult).
   bool feed_limits = false;
+  // `dexmill optimize --target`: each line's feed for it (core/engage/engage_target.h).
+  const EngageTarget* engage_target = nullptr;
 };
 
 struct OutputOptions {

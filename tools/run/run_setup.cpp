@@ -319,11 +319,18 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
     j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
-  if (!o.out.engagement_csv.empty()) {  // each feed move's load, into its file as the cut goes
-    run->engage_csv.reset(new EngageCsv(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm));
-    if (!run->engage_csv->open(o.out.engagement_csv)) return fail(kExitIo, "%s", run->engage_csv->error());
+  if (!o.out.engagement_csv.empty() || o.job.check_load || o.job.engage_target) {  // each feed move's load, as the cut goes
+    run->engage.reset(new EngageRecorder(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm));
+    if (!o.out.engagement_csv.empty() && !run->engage->open_csv(o.out.engagement_csv))
+      return fail(kExitIo, "%s", run->engage->error());
     j.engagement = true;
-    j.engage_sink = run->engage_csv.get();
+    j.engage_sink = run->engage.get();
+    j.load_check = o.job.check_load;
+    j.spindle_power_mw = o.job.spindle_power_mw;
+    if (o.job.engage_target) {
+      j.engage_target = o.job.engage_target;
+      j.target_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+    }
     for (int k = 0; k < scan.ntools && run->print; ++k)  // said once a tool: the chip per tooth rests on it
       if (scan.tools[k].flutes == 0 && (k == 0 ? scan.cuts[0] : true)) {
         char spec[kToolSpecTextMax];
