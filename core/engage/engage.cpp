@@ -38,7 +38,7 @@ namespace {
 // top(cell): the column's top in LSB, or a negative for no material.
 // The material a column holds where the tool already stood at `cap` (its
 // footprint cut to its lower surface there): top_nm at most that surface.
-int64_t below_cap(const GridGeometry& g, const EngageTool& t, const PointNm& cap, int64_t i, int64_t j, int64_t top_nm) {
+inline int64_t below_cap(const GridGeometry& g, const EngageTool& t, const PointNm& cap, int64_t i, int64_t j, int64_t top_nm) {
   const int64_t dx = g.x0_nm + i * g.pitch_nm - cap.x_nm, dy = g.y0_nm + j * g.pitch_nm - cap.y_nm;
   const int64_t R = t.profile.radius_nm;
   if (dx >= R || dx <= -R || dy >= R || dy <= -R) return top_nm;
@@ -78,9 +78,13 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
       if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) continue;
       const int64_t lsb = top_of(static_cast<size_t>(j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i));
       if (lsb < 0) continue;
-      const int64_t top = cap ? below_cap(g, t, *cap, i, j, g.z0_nm + lsb * g.lsb_nm) : g.z0_nm + lsb * g.lsb_nm;
+      int64_t top = g.z0_nm + lsb * g.lsb_nm;
       const int64_t surface = at.z_nm + t.ring_h_nm[ring];
       if (top <= surface + g.lsb_nm) continue;
+      if (cap) {  // material in the shadow, but maybe inside the footprint left at the start
+        top = below_cap(g, t, *cap, i, j, top);
+        if (top <= surface + g.lsb_nm) continue;
+      }
       hit = true;
       r.ap_nm = max_of(r.ap_nm, min_of(top - at.z_nm, t.flute_nm));
       const int64_t cross = mul_shift(rr, t.cos_q30[k], 30);  // across the feed, from the entry side

@@ -35,9 +35,7 @@ void put_fixed(char* row, size_t* n, int64_t v, int decimals) {
 
 // The record's removed volume in mm^3 x 1000 (LSB x pitch^2, nm^3 / 10^15).
 int64_t removed_um3k(const EngageMove& m, int64_t lsb_nm, int64_t pitch_nm) {
-  const double nm3 = static_cast<double>(m.removed_lsb) * static_cast<double>(lsb_nm) * static_cast<double>(pitch_nm) *
-                     static_cast<double>(pitch_nm);
-  return static_cast<int64_t>(nm3 * 1e-15 + 0.5);
+  return muldiv_round(static_cast<int64_t>(m.removed_lsb) * lsb_nm, pitch_nm * pitch_nm, 1000000000000000LL);
 }
 
 }  // namespace
@@ -51,7 +49,11 @@ bool EngageRecorder::open_csv(const std::string& path) {
 }
 
 void EngageRecorder::move(const EngageMove& m) {
-  engage_summary_add(&tools_[m.tool], m);
+  if (!last_ || m.tool != last_tool_) {  // one map look-up a tool change, not a move
+    last_ = &tools_[m.tool];
+    last_tool_ = m.tool;
+  }
+  engage_summary_add(last_, m);
   any_load_ = any_load_ || m.has_load;
   if (plot_)
     moves_.push_back(PlotMove{static_cast<double>(m.end_us) * 1e-6, static_cast<double>(m.time_us) * 1e-6,

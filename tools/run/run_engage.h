@@ -53,6 +53,8 @@ class EngageRecorder final : public EngageSink {
   bool csv_ = false, plot_ = false, any_load_ = false;
   int64_t lsb_nm_, pitch_nm_;
   std::map<int32_t, EngageSummary> tools_;
+  EngageSummary* last_ = nullptr;  // tools_[last_tool_] (a map's elements stay put)
+  int32_t last_tool_ = 0;
   std::vector<PlotMove> moves_;
 };
 
