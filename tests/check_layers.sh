@@ -46,7 +46,7 @@ allowed() {
     platform/os) echo "";;  # the OS seam: below every other platform stage
     platform/format) echo "platform/os platform/mesh display/raster core/sim core/engage core/stock core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # files: images, STL, tool tables, materials
     platform/mesh) echo "display/surface core/grid core/math";;  # surface extraction for STL: hosted, so not in display/
-    platform/report) echo "platform/os core/sim core/engage core/stock core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # a run's result
+    platform/report) echo "platform/format platform/os display/overlay core/sim core/engage core/stock core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # a run's result
     platform/live) echo "platform/format platform/os display/raster";;  # screens: window, framebuffer, frame files; the progress bar
     platform/input) echo "platform/live platform/os core/sim core/engage core/stock core/safety core/assess core/cam core/cut core/canon core/interp core/gcode core/design core/grid core/tool core/math core/material";;  # the G-code file driver; the input guard knows the frames' names
     platform/api) echo "platform/format display/api display/raster";;  # the C header of the image files, over dexmill.h

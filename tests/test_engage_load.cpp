@@ -125,6 +125,11 @@ TEST(run_check_load) {
   CHECK(has(rep, "\"tools\": [\n      {\"tool\": "));
   const std::string csv = slurp(tmp_dir() + "/load.csv");
   CHECK(has(csv, "\n5,3.547,2.0000,6.0000,180.00,14398.5,0.06000,0.03820,157.6,352.8,1200.0,0.337,0,"));  // 351 W analytic
+  // The load plot: spindle power with the limit, the worst line marked.
+  CHECK_EQ(run(base + "--spindle-power 300 --load-plot %/load.svg").code, 0);
+  const std::string svg = slurp(tmp_dir() + "/load.svg");
+  CHECK(has(svg, "spindle power") && has(svg, "limit 300 W") && has(svg, "L5 max power"));
+  CHECK_EQ(run(base + "--load-plot %/load.pdf").code, 2);
   // Exit 4 with --fail-on-load; limits it stays within: no finding, exit 0.
   CHECK_EQ(run(base + "--spindle-power 300 --fail-on-load").code, 4);
   write_tmp("alu2.mat", "material alu plain kc1.1=650 mc=0.25 max_chip=0.07\n");

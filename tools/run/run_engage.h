@@ -21,6 +21,7 @@
 #include "core/engage/load_watch.h"
 #include "core/material/material.h"
 #include "platform/os/output_file.h"
+#include "platform/report/load_plot.h"
 #include "platform/report/run_report.h"
 
 namespace dexmill {
@@ -67,6 +68,11 @@ void load_print(const LoadWatch& w, const StockComposition& c, const std::string
 // "chip 0.0812 mm over aluminium's max_chip of 0.0600 mm a tooth" (without
 // the value: the same text for a run of moves, folded on standard error).
 std::string load_finding_text(const LoadFinding& f, const StockComposition& c, bool with_value);
+
+// --load-plot FILE.svg|.png (tools/run/run_load_plot.cpp), into its file
+// (false: *err says why).
+bool write_load_plot(const std::string& path, const EngageRecorder& r, const EngageSummary& s, const std::string& file,
+                     int64_t limit_mw, std::string* err);
 
 }  // namespace cli
 }  // namespace dexmill

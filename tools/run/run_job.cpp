@@ -252,6 +252,11 @@ int write_files(const RunOptions& o, Run* run) {
   if (!o.out.heightmap.empty() && !write_heightmap(o.out.heightmap.c_str(), su.formats.heightmap, su.sim->grid(), e, sizeof e))
     return fail(kExitIo, "%s", e);
   if (su.engage && !su.engage->commit()) return fail(kExitIo, "%s", su.engage->error());
+  if (!o.out.load_plot.empty()) {
+    std::string err;
+    if (!write_load_plot(o.out.load_plot, *su.engage, *su.sim->engagement(), su.shown_name, o.job.spindle_power_mw, &err))
+      return fail(kExitIo, "%s", err.c_str());
+  }
   if (!o.out.save_stock.empty()) {
     if (!su.have_chain)
       return fail(kExitUsage, "--save-stock: the stock already holds the %d programs a stock file remembers",
@@ -284,7 +289,8 @@ void list_outputs(const RunOptions& o, const OutputSet& set, const RunViews& v, 
   const std::pair<const char*, const std::string*> files[] = {{"--image", &o.out.image}, {"--error-image", &o.out.error_image},
                                                              {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
                                                              {"--save-stock", &o.out.save_stock},
-                                                             {"--engagement-csv", &o.out.engagement_csv}};
+                                                             {"--engagement-csv", &o.out.engagement_csv},
+                                                             {"--load-plot", &o.out.load_plot}};
   for (const auto& f : files)
     if (!f.second->empty()) rep->outputs.push_back(ReportOutput{f.first, *f.second, set.bytes_of(*f.second), 0});
 }
@@ -349,6 +355,7 @@ int check_standard_output(const RunOptions& o) {
                                                             {"--heightmap", &o.out.heightmap}, {"--stl", &o.out.stl},
                                                             {"--save-stock", &o.out.save_stock},
                                                             {"--engagement-csv", &o.out.engagement_csv},
+                                                            {"--load-plot", &o.out.load_plot},
                                                             {"--report", &o.out.report}};
   for (const auto& out : outs)
     if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());

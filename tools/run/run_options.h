@@ -145,6 +145,7 @@ struct OutputOptions {
   std::string heightmap, stl, report;
   std::string save_stock;        // --save-stock FILE.dxstock: the final stock, to continue from
   std::string engagement_csv;    // --engagement-csv FILE: each feed move's load (tools/run/run_engage.h)
+  std::string load_plot;         // --load-plot FILE.svg|FILE.png: load, removal rate and feed against time
   // With none of the files above: the summary on stdout (`check
   // --simulate` and `optimize` run a job for its findings, without it).
   bool print_summary = true;

@@ -54,6 +54,14 @@ const Option<Out> kOutputs[] = {
      "engagement, removal rate, chip thickness, force, power, feed (one row a move; the report gains the "
      "largest of each and their lines)",
      [](Out* o, const char* v) -> int { return o->engagement_csv = v, kExitOk; }},
+    {"--load-plot", "FILE.svg|FILE.png",
+     "the load (spindle power with the material's cutting coefficients, else the chip), removal rate and feed "
+     "against time, the tool changes and the worst moves marked (measures engagement)",
+     [](Out* o, const char* v) -> int {
+       if (!has_extension(v, ".svg") && !has_extension(v, ".png"))
+         return fail(kExitUsage, "--load-plot needs a FILE.svg or FILE.png, not '%s'", v);
+       return o->load_plot = v, kExitOk;
+     }},
     {"--report", "FILE.json", "summary: program, errors, stock, grid, tools, volume, time",
      [](Out* o, const char* v) -> int { return o->report = v, kExitOk; }},
 };
