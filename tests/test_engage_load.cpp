@@ -27,12 +27,11 @@ EngageMove slot_move(const EngageTool& t, double entry_deg, double ap_mm, double
   m.worst.ap_nm = static_cast<int64_t>(ap_mm * 1e6);
   m.worst.area_um2 = static_cast<int64_t>(area_mm2 * 1e6);
   m.section = m.worst;
-  m.area_um2 = m.worst.area_um2;
   m.feed_nm_per_min = static_cast<int64_t>(f * 1e6);
   m.spindle_rpm = rpm;
   m.fz_nm = m.feed_nm_per_min / (static_cast<int64_t>(rpm) * t.flutes);
   m.chip = engage_chip(t, m.worst, m.fz_nm);
-  m.mrr_um3_per_min = m.area_um2 * (m.feed_nm_per_min / 1000);
+  m.mrr_um3_per_min = m.section.area_um2 * (m.feed_nm_per_min / 1000);
   return m;
 }
 

@@ -3,8 +3,8 @@
 // its title, axis labels, marks and limit, the same bytes every time; a
 // million moves stay a small SVG; the PNG is decoded (tests/inflate_oracle.h)
 // to see the load drawn where the layout put it; no data draws bare axes.
-// The synthetic figure is left in /tmp/load_plot_test.svg and .png to be
-// looked at.
+// The synthetic figure is left in the tests' temporary folder
+// (load_plot_test.svg and .png) to be looked at.
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -12,6 +12,7 @@
 
 #include "platform/report/load_plot.h"
 #include "tests/inflate_oracle.h"
+#include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
 using namespace dexmill;
@@ -86,8 +87,8 @@ bool decode_png(const std::vector<uint8_t>& png, uint32_t* w, uint32_t* h, std::
   return true;
 }
 
-void save(const char* path, const void* p, size_t n) {
-  if (FILE* f = std::fopen(path, "wb")) {
+void save(const std::string& path, const void* p, size_t n) {
+  if (FILE* f = std::fopen(path.c_str(), "wb")) {
     std::fwrite(p, 1, n, f);
     std::fclose(f);
   }
@@ -98,7 +99,7 @@ void save(const char* path, const void* p, size_t n) {
 TEST(load_plot_svg_has_labels_marks_and_limit) {
   const LoadPlotData d = synthetic();
   const std::string svg = load_plot_svg(d, kW, kH);
-  save("/tmp/load_plot_test.svg", svg.data(), svg.size());
+  save(run_cli::tmp_dir() + "/load_plot_test.svg", svg.data(), svg.size());
   CHECK(contains(svg, "bracket.ngc — load, removal rate &amp; feed"));
   CHECK(contains(svg, ">spindle power [kW]<"));
   CHECK(contains(svg, ">removal rate [cm³/min]<"));
@@ -142,7 +143,7 @@ TEST(load_plot_png_draws_the_load_where_the_layout_puts_it) {
   const LoadPlotData d = synthetic();
   std::vector<uint8_t> png;
   load_plot_png(d, kW, kH, &png);
-  save("/tmp/load_plot_test.png", png.data(), png.size());
+  save(run_cli::tmp_dir() + "/load_plot_test.png", png.data(), png.size());
   static const uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   CHECK(png.size() > 33 && std::equal(kSignature, kSignature + 8, png.begin()));
   uint32_t w = 0, h = 0;

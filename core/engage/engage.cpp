@@ -35,7 +35,6 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
 
 namespace {
 
-// top(cell): the column's top in LSB, or a negative for no material.
 // The material a column holds where the tool already stood at `cap` (its
 // footprint cut to its lower surface there): top_nm at most that surface.
 inline int64_t below_cap(const GridGeometry& g, const EngageTool& t, const PointNm& cap, int64_t i, int64_t j, int64_t top_nm) {
@@ -47,6 +46,7 @@ inline int64_t below_cap(const GridGeometry& g, const EngageTool& t, const Point
   return min_of(top_nm, cap.z_nm + profile_height_r2_nm(t.profile, r2));
 }
 
+// top(cell): the column's top in LSB, or a negative for no material.
 template <bool kNarrow, class Top>
 void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, const PointNm* cap, EngageAt* out) {

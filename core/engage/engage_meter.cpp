@@ -33,8 +33,7 @@ void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t ex,
   ++mv.samples;
   mv.ae_max_nm = max_of(mv.ae_max_nm, e.ae_nm);
   mv.ap_max_nm = max_of(mv.ap_max_nm, e.ap_nm);
-  if (e.area_um2 > mv.area_um2) {
-    mv.area_um2 = e.area_um2;
+  if (e.area_um2 > mv.section.area_um2) {
     mv.section = e;
     const int64_t R = m->tool.profile.radius_nm;
     mv.area_at = PointNm{p.x_nm + mul_shift(R, ex, 30), p.y_nm + mul_shift(R, ey, 30), p.z_nm + e.ap_nm / 2};
@@ -153,7 +152,7 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
       mv.fz_nm = div_round(mv.feed_nm_per_min, static_cast<int64_t>(mv.spindle_rpm) * m->tool.flutes);
     mv.chip = engage_chip(m->tool, mv.worst, mv.fz_nm);
     // um^2 x um/min; below 2^63 for a section under 10^10 um^2 (100 mm square) at 20 m/min.
-    mv.mrr_um3_per_min = sat_mul_i64(mv.area_um2, mv.feed_nm_per_min / 1000);
+    mv.mrr_um3_per_min = sat_mul_i64(mv.section.area_um2, mv.feed_nm_per_min / 1000);
   }
   // The shadow follows the grid.
   for (int32_t j = j0; j < j1 && !keep; ++j) {

@@ -32,8 +32,7 @@ struct EngageMove {
   EngageAt worst;             // the sample engaged over the widest arc (the first of equals)
   PointNm worst_at{0, 0, 0};  // its tip
   int64_t ae_max_nm = 0, ap_max_nm = 0;  // the largest of each over the samples
-  int64_t area_um2 = 0;       // the largest cross-section over the samples (engage.h EngageAt)
-  EngageAt section;           // that sample
+  EngageAt section;           // the sample of the largest cross-section (engage.h EngageAt::area_um2)
   PointNm area_at{0, 0, 0};   // where its edge met material: a radius ahead of its tip, half its depth up
   int64_t mrr_um3_per_min = 0;  // that cross-section times the feed: the removal rate at its peak
   uint64_t removed_lsb = 0;   // what the record removed, LSB x dexels

@@ -52,8 +52,8 @@ int64_t engage_target_feed(const EngageTarget& t, const EngageMove& m, const Cut
                            int64_t max_chip_nm, int64_t material_max_feed_nm_per_min, EngageFeedWhy* why);
 
 // Each line's feed, the lowest of its moves' (caller memory, lines
-// 0 .. n - 1, INT64_MAX where none was set); why_kept counts a line's
-// moves that kept their feed.
+// 0 .. n - 1, INT64_MAX where none was set), and whether one of them kept
+// its programmed feed.
 struct EngageLineFeeds {
   int64_t* feed_nm_per_min = nullptr;
   uint8_t* kept = nullptr;  // 1: a move of the line kept its programmed feed (a plunge, ...)

@@ -362,7 +362,7 @@ void SimulationT<H>::measure_load(EngageMove* mv) {
   if (!mv->feed) return;
   int64_t max_chip_nm = 0;
   if (job_.material && job_.material->material_count > 0) {
-    const PointNm at = mv->area_um2 > 0 ? mv->area_at : mv->worst_at;
+    const PointNm at = mv->section.area_um2 > 0 ? mv->area_at : mv->worst_at;
     mv->material = composition_material_at(*job_.material, at.x_nm, at.y_nm, at.z_nm);
     const MaterialProcess& p = job_.material->materials[mv->material].process;
     CuttingCoefficients c;

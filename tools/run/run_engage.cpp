@@ -112,9 +112,7 @@ ReportEngageSet engage_set(const EngageSummary& s) {
 
 }  // namespace
 
-void engage_to_report(const EngageSummary& s, const std::map<int32_t, EngageSummary>& tools, const std::string& file,
-                      RunReport* rep) {
-  (void)file;
+void engage_to_report(const EngageSummary& s, const std::map<int32_t, EngageSummary>& tools, RunReport* rep) {
   rep->have_engagement = true;
   rep->engagement.program = engage_set(s);
   rep->engagement.tools.clear();

@@ -60,8 +60,7 @@ class EngageRecorder final : public EngageSink {
 };
 
 // The report's `engagement`: the program's and each tool's largest.
-void engage_to_report(const EngageSummary& s, const std::map<int32_t, EngageSummary>& tools, const std::string& file,
-                      RunReport* rep);
+void engage_to_report(const EngageSummary& s, const std::map<int32_t, EngageSummary>& tools, RunReport* rep);
 // The report's `load` findings, and their lines on standard error.
 void load_to_report(const LoadWatch& w, const StockComposition& c, RunReport* rep);
 void load_print(const LoadWatch& w, const StockComposition& c, const std::string& file);

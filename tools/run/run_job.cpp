@@ -327,7 +327,7 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
     rep.assessment = su.design.report;
     rep.timing.emplace_back("assess", clock_now_s() - t0);
   }
-  if (const EngageSummary* e = sim.engagement()) engage_to_report(*e, su.engage->tools(), su.shown_name, &rep);
+  if (const EngageSummary* e = sim.engagement()) engage_to_report(*e, su.engage->tools(), &rep);
   chain_of_run(&su);
   if (su.have_chain) chain_to_report(su.chain, o.job, &rep);
   const CutterPose pose{true, sim.mill().position()};
