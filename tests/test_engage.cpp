@@ -187,7 +187,7 @@ TEST(run_engagement_csv_and_report) {
   CHECK(has(csv, "\n7,5.667,2.0000,2.3763,78.00,"));
   CHECK(has(csv, "\n4,1.547,0.0000,0.0000,0.00,0.0,"));  // the plunge: no front to meet
   const std::string rep = slurp(tmp_dir() + "/eng.json");
-  CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"max_angle\": {\"deg\": 180.00, \"line\": 5, \"at\": \""));
+  CHECK(has(rep, "\"engagement\": {\"moves\": 4, \"engaged\": 2, \"no_spindle_speed\": 0, \"max_angle\": {\"deg\": 180.00, \"line\": 5, \"at\": \""));
   CHECK(has(rep, "\"max_width\": {\"mm\": 6.0000, \"line\": 5, \"at\": \""));
   CHECK(has(rep, "{\"option\": \"--engagement-csv\""));
   // Three flutes: 0.04 mm a tooth; unsaid, two are assumed, and said.

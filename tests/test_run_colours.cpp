@@ -107,7 +107,7 @@ TEST(colour_mode_usage_errors) {
   const std::string prog = write_tmp("usage.ngc", "G21 G90\nG0 X0 Y0 Z5\nM2\n");
   Result r = run(prog + " --color rainbow --report /dev/null");
   CHECK_EQ(r.code, 2);
-  CHECK(has(r.err, "--color must be plain, error, material, tool, slope or thin, not 'rainbow'"));
+  CHECK(has(r.err, "--color must be plain, error, material, tool, slope, thin or engagement, not 'rainbow'"));
   r = run(prog + " --color tool --thin 1 --report /dev/null");
   CHECK_EQ(r.code, 2);
   CHECK(has(r.err, "--thin is the limit of --color thin"));

@@ -2,6 +2,7 @@
 #include "core/engage/engage_meter.h"
 
 #include "core/canon/arc_chords.h"
+#include "core/grid/removals.h"
 #include "core/math/fixed.h"
 #include "core/math/wide.h"
 
@@ -76,6 +77,7 @@ Status engage_meter_init(EngageMeter* m, const DexelGrid<H>& g, uint32_t* shadow
   if (!shadow || shadow_words < n) return Status::kBufferTooSmall;
   for (size_t k = 0; k < n; ++k) shadow[k] = g.top[k];
   m->shadow = shadow;
+  m->pending = GridRect::none();
   return Status::kOk;
 }
 
@@ -125,21 +127,18 @@ void sample_path(EngageMeter* m, const GridGeometry& g) {
 }  // namespace
 
 template <class H>
-void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out) {
+void engage_meter_measure(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out) {
+  changed.include(m->pending);
   // What it removed (the shadow still the tops before it) ...
   const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
   const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
-  // (A record that is not a feed move is never sampled: the shadow
-  // follows the grid in the same pass.)
-  const bool keep = !m->move.feed;
   uint64_t removed = 0;
   for (int32_t j = j0; j < j1; ++j) {
     const size_t row = g.index(0, j);
     for (int32_t i = i0; i < i1; ++i) {
-      uint32_t& was = m->shadow[row + static_cast<size_t>(i)];
+      const uint32_t was = m->shadow[row + static_cast<size_t>(i)];
       const uint32_t now = g.top[row + static_cast<size_t>(i)];
       if (now < was) removed += was - now;
-      if (keep) was = now;
     }
   }
   m->move.removed_lsb = removed;
@@ -154,19 +153,34 @@ void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed,
     // um^2 x um/min; below 2^63 for a section under 10^10 um^2 (100 mm square) at 20 m/min.
     mv.mrr_um3_per_min = sat_mul_i64(mv.section.area_um2, mv.feed_nm_per_min / 1000);
   }
-  // The shadow follows the grid.
-  for (int32_t j = j0; j < j1 && !keep; ++j) {
-    const size_t row = g.index(0, j);
-    for (int32_t i = i0; i < i1; ++i) m->shadow[row + static_cast<size_t>(i)] = g.top[row + static_cast<size_t>(i)];
-  }
   *out = m->move;
 }
+
+template <class H>
+void engage_meter_commit(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, uint8_t* cls, uint8_t band) {
+  changed.include(m->pending);
+  m->pending = GridRect::none();
+  each_removal(m->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t, uint32_t now) {
+    if (!cls) return;
+    cls[g.index(i, j)] = band;
+    class_hole_walls(cls, g, i, j, now, band);
+  });
+}
+
+template <class H>
+void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out) {
+  engage_meter_measure(m, g, changed, out);
+  engage_meter_commit(m, g, changed, nullptr, 0);
+}
+
+void engage_meter_note(EngageMeter* m, GridRect changed) { m->pending.include(changed); }
 
 void engage_summary_add(EngageSummary* s, const EngageMove& m) {
   if (!m.feed) return;
   ++s->moves;
   if (!m.worst.engaged && m.removed_lsb == 0) return;
   ++s->engaged;
+  if (m.spindle_rpm <= 0) ++s->no_speed;
   if (m.worst.angle_bam() > s->angle.worst.angle_bam()) s->angle = m;
   if (m.ae_max_nm > s->ae.ae_max_nm) s->ae = m;
   if (m.ap_max_nm > s->ap.ap_max_nm) s->ap = m;
@@ -179,6 +193,8 @@ void engage_summary_add(EngageSummary* s, const EngageMove& m) {
 #define DEXMILL_ENGAGE_METER_INSTANTIATE(H)                                                                \
   template Status engage_meter_init<H>(EngageMeter*, const DexelGrid<H>&, uint32_t*, size_t);           \
   template void engage_meter_before<H>(EngageMeter*, const DexelGrid<H>&, const CanonRecord&, bool, int32_t); \
+  template void engage_meter_measure<H>(EngageMeter*, const DexelGrid<H>&, GridRect, EngageMove*);       \
+  template void engage_meter_commit<H>(EngageMeter*, const DexelGrid<H>&, GridRect, uint8_t*, uint8_t);  \
   template void engage_meter_after<H>(EngageMeter*, const DexelGrid<H>&, GridRect, EngageMove*);
 DEXMILL_ENGAGE_METER_INSTANTIATE(uint8_t)
 DEXMILL_ENGAGE_METER_INSTANTIATE(uint16_t)

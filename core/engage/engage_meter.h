@@ -65,9 +65,11 @@ class EngageSink {
 // The program's largest: the widest arc, the widest cut, the deepest, the
 // highest removal rate (at the largest cross-section), the thickest chip,
 // the largest force and power, each the first move that reached it, and
-// how many feed moves were measured and engaged.
+// how many feed moves were measured and engaged (and how many of those
+// had no spindle speed).
 struct EngageSummary {
   uint64_t moves = 0, engaged = 0;
+  uint64_t no_speed = 0;  // engaged moves with no spindle speed: their chip, force and power unmeasured
   EngageMove angle, ae, ap, rate, chip, force, power;
 };
 void engage_summary_add(EngageSummary* s, const EngageMove& m);
@@ -78,6 +80,7 @@ struct EngageMeter {
   int64_t spacing_nm = 0;
   EngageMove move;             // the record being measured
   CanonRecord record{};        // and the record itself, sampled once it is cut
+  GridRect pending = GridRect::none();  // changes between records (engage_meter_note), counted with the next
   bool clockwise = true;
 };
 
@@ -99,6 +102,19 @@ void engage_meter_before(EngageMeter* m, const DexelGrid<H>& g, const CanonRecor
 // holds the previous one's end cap and leaves out its own.)
 template <class H>
 void engage_meter_after(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out);
+// engage_meter_after in two steps, for a caller that colours the stock by
+// each move's load (core/engage/engage_band.h) once it has measured it:
+// measure (the shadow left as it was), then commit, which makes the
+// shadow follow the grid and, with cls (nx * ny bytes, caller memory),
+// gives `band` to every column the record lowered.
+// The grid changed between records (a front end's frame made the cut
+// flush a deferred end cap): the next record counts it as its own, as it
+// would without the frame, so that frames change no measurement.
+void engage_meter_note(EngageMeter* m, GridRect changed);
+template <class H>
+void engage_meter_measure(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, EngageMove* out);
+template <class H>
+void engage_meter_commit(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, uint8_t* cls, uint8_t band);
 
 }  // namespace dexmill
 

@@ -34,6 +34,23 @@ void each_removal(uint32_t* shadow, const DexelGrid<H>& g, GridRect changed, Fn 
   }
 }
 
+// A colour mode's classes (cls, nx * ny) when column (i, j), just given
+// class c, was cut through (now a hole): the hole's walls are the side
+// faces of the columns around it, which take their own column's class
+// (display/surface/mesh.cpp), so those no record lowered take c (a ring a
+// dexel wide on their tops too) and a drilled hole shows its cut rather
+// than uncut stock.
+template <class H>
+void class_hole_walls(uint8_t* cls, const DexelGrid<H>& g, int32_t i, int32_t j, uint32_t now, uint8_t c) {
+  if (now != 0 || g.bottom[g.index(i, j)] != 0) return;
+  const int32_t ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};
+  for (int n = 0; n < 4; ++n) {
+    if (!g.contains(ni[n], nj[n])) continue;
+    const size_t m = g.index(ni[n], nj[n]);
+    if (cls[m] == 0 && !g.is_hole(ni[n], nj[n])) cls[m] = c;
+  }
+}
+
 }  // namespace dexmill
 
 #endif

@@ -109,6 +109,14 @@ struct SimJob {
   // (0: none). Force and power need `material`'s cutting coefficients.
   bool load_check = false;
   int64_t spindle_power_mw = 0;
+  // The speed engagement takes where the spindle runs with no S word
+  // (a controller's default; 0: none, the chip per tooth unmeasured).
+  int32_t default_spindle_rpm = 0;
+  // `--color engagement` (core/engage/engage_band.h; needs engagement):
+  // the columns each record lowered take its move's load band, by the
+  // limits where the run knows one (spindle_power_mw, a material's
+  // max_chip_nm), else by the engagement angle (Simulation::engage_classes()).
+  bool engage_colours = false;
   // `dexmill optimize --target` (core/engage/engage_target.h; needs
   // engagement and material): each line's feed for the target, lines
   // 0 .. target_lines - 1 (Simulation::target_feeds()).

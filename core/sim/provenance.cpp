@@ -91,17 +91,7 @@ bool provenance_record(ToolProvenance<H>* p, GridRect changed, uint32_t line, co
       p->line[k] = prev && profile_explains_cut(*prev->tool, prev->end, x, y, z, g.lsb_nm) ? prev->line : line;
       if (p->program) p->program[k] = p->program_index;
     }
-    if (now != 0 || g.bottom[k] != 0) return;
-    // Cut through: the hole's walls are the side faces of the dexels
-    // around it, which take their own dexel's class (display/surface/mesh.cpp).
-    // Those no tool lowered take this one's (a ring a dexel wide on their
-    // tops too).
-    const int32_t ni[4] = {i - 1, i + 1, i, i}, nj[4] = {j, j, j - 1, j + 1};
-    for (int n = 0; n < 4; ++n) {
-      if (!g.contains(ni[n], nj[n])) continue;
-      const size_t m = g.index(ni[n], nj[n]);
-      if (cls[m] == 0 && !g.is_hole(ni[n], nj[n])) cls[m] = c;
-    }
+    class_hole_walls(cls, g, i, j, now, c);  // a cut through: its walls show this class
   });
   return listed;
 }

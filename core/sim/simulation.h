@@ -36,6 +36,7 @@
 #include "core/safety/safety.h"
 #include "core/config.h"
 #include "core/cut/mill.h"
+#include "core/engage/engage_band.h"
 #include "core/engage/engage_load.h"
 #include "core/engage/engage_target.h"
 #include "core/engage/load_watch.h"
@@ -223,6 +224,16 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   const ProcessWatch* process() const { return job_.material ? &process_ : nullptr; }
   const EngageSummary* engagement() const { return job_.engagement ? &engage_sum_ : nullptr; }
   const LoadWatch* load() const { return job_.engagement && job_.load_check ? &load_ : nullptr; }
+  // engage_colours: each column's load band, nx * ny (null when off).
+  uint8_t* engage_classes() const { return engage_cls_; }
+  // Whether its bands are by the load limits (the spindle's power, a
+  // material's largest chip), else by the engagement angle (engage_band.h).
+  bool engage_by_limits() const {
+    bool chip = false;
+    for (int32_t k = 0; job_.material && k < job_.material->material_count; ++k)
+      chip = chip || job_.material->materials[k].process.max_chip_nm > 0;
+    return job_.spindle_power_mw > 0 || chip;
+  }
   // engage_target's feed for each line (null without one).
   const EngageLineFeeds* target_feeds() const { return target_lines_.n ? &target_lines_ : nullptr; }
   const ToolProvenance<H>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
@@ -267,7 +278,7 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   };
 
   void process(const Queued& q);
-  void measure_load(EngageMove* mv);
+  int64_t measure_load(EngageMove* mv);
   void check_process(const Queued& q, bool move, int64_t time_us);
   void load_tool(const Tool& t);
   void stop_with(SimStop why, uint32_t line);
@@ -304,6 +315,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   EngageSummary engage_sum_;
   LoadWatch load_;
   uint32_t* engage_shadow_;
+  uint8_t* engage_cls_;      // engage_colours: the bands
+  uint8_t engage_band_ = 0;  // the band of the last measured move (a retract's deferred end cap takes it)
   EngageLineFeeds target_lines_;
   ToolProvenance<H> prov_;
   uint8_t* prov_cls_;

@@ -44,6 +44,7 @@ struct SimulationT<H>::Memory {
   uint32_t* fixture_bottom = nullptr;
   uint32_t* process_shadow = nullptr;
   uint32_t* engage_shadow = nullptr;
+  uint8_t* engage_cls = nullptr;
   int64_t* line_feed = nullptr;
   int64_t* target_feed = nullptr;  // engage_target: each line's feed
   uint8_t* target_kept = nullptr;
@@ -161,6 +162,7 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
     mem.process_seen = c.take<uint8_t>(process_seen_bytes(job.process_lines));
   }
   if (job.engagement) mem.engage_shadow = c.take<uint32_t>(cells);
+  if (job.engagement && job.engage_colours) mem.engage_cls = c.take<uint8_t>(cells);
   if (job.engagement && job.engage_target) {
     mem.target_feed = c.take<int64_t>(job.target_lines);
     mem.target_kept = c.take<uint8_t>(job.target_lines);
@@ -241,6 +243,7 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       line_feed_limits_(m.line_feed),
       process_seen_(m.process_seen),
       engage_shadow_(m.engage_shadow),
+      engage_cls_(m.engage_cls),
       target_lines_{m.target_feed, m.target_kept, job.engage_target ? job.target_lines : 0},
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
@@ -298,6 +301,8 @@ void SimulationT<H>::start() {
     if (job_.process_lines) process_watch_track_findings(&process_, process_seen_, job_.process_lines);
   }
   if (job_.engagement) (void)engage_meter_init(&engage_, grid_, engage_shadow_, cells);
+  for (size_t k = 0; engage_cls_ && k < cells; ++k) engage_cls_[k] = 0;  // uncut
+  engage_band_ = 0;
   load_.spindle_power_mw = job_.spindle_power_mw;
   if (target_lines_.n) engage_line_feeds_clear(&target_lines_);
   if (safety_on_) {
@@ -355,11 +360,12 @@ void SimulationT<H>::emit(const CanonRecord& r) {
 
 // A measured move's tool, and with materials its load and limits: the
 // material its edge met (at its largest cross-section, else its widest
-// arc), that material's coefficients and chip limit.
+// arc), that material's coefficients and chip limit. Returns that limit
+// (0: none).
 template <class H>
-void SimulationT<H>::measure_load(EngageMove* mv) {
+int64_t SimulationT<H>::measure_load(EngageMove* mv) {
   mv->tool = status_.tool;
-  if (!mv->feed) return;
+  if (!mv->feed) return 0;
   int64_t max_chip_nm = 0;
   if (job_.material && job_.material->material_count > 0) {
     const PointNm at = mv->section.area_um2 > 0 ? mv->area_at : mv->worst_at;
@@ -377,6 +383,7 @@ void SimulationT<H>::measure_load(EngageMove* mv) {
     }
   }
   if (job_.load_check) load_watch_check(&load_, *mv, max_chip_nm);
+  return max_chip_nm;
 }
 
 template <class H>
@@ -397,7 +404,10 @@ void SimulationT<H>::process(const Queued& q) {
   }
   const Status before = mill_.status();
   // Engagement: the stock before this record cuts it (M4 turns the other way).
-  if (job_.engagement) engage_meter_before(&engage_, grid_, r, q.spindle_dir >= 0, q.spindle_rpm);
+  if (job_.engagement) {
+    const int32_t rpm = q.spindle_rpm > 0 || q.spindle_dir == 0 ? q.spindle_rpm : job_.default_spindle_rpm;
+    engage_meter_before(&engage_, grid_, r, q.spindle_dir >= 0, rpm);
+  }
   mill_.emit(r);
   if (job_.provenance) {
     const ProvenanceOrigin po{origin_.line, origin_.end, origin_.tool};
@@ -430,10 +440,15 @@ void SimulationT<H>::process(const Queued& q) {
   if (job_.material) check_process(q, move, time_.estimated_time_us() - t_before);
   if (job_.engagement) {
     EngageMove mv;
-    engage_meter_after(&engage_, grid_, grid_.dirty, &mv);
+    engage_meter_measure(&engage_, grid_, grid_.dirty, &mv);
     mv.time_us = time_.estimated_time_us() - t_before;
     mv.end_us = time_.estimated_time_us();
-    measure_load(&mv);
+    const int64_t max_chip_nm = measure_load(&mv);
+    if (engage_cls_) {
+      const uint8_t band = engage_band(mv, engage_by_limits(), job_.spindle_power_mw, max_chip_nm);
+      if (band) engage_band_ = band;
+    }
+    engage_meter_commit(&engage_, grid_, grid_.dirty, engage_cls_, engage_band_);
     engage_summary_add(&engage_sum_, mv);
     if (mv.feed && job_.engage_sink) job_.engage_sink->move(mv);
   }
@@ -565,6 +580,7 @@ template <class H>
 void SimulationT<H>::sync() {
   mill_.flush();
   if (job_.provenance) provenance_note(&prov_, grid_.dirty);
+  if (job_.engagement) engage_meter_note(&engage_, grid_.dirty);
   if (observer_) observer_->changed(grid_.dirty);
   grid_.dirty = GridRect::none();
 }
@@ -577,6 +593,7 @@ void SimulationT<H>::finish() {
   if (state_ == SimState::kReady || state_ == SimState::kNeedInput) state_ = SimState::kDone;
   mill_.finish();
   if (job_.provenance) provenance_record(&prov_, grid_.dirty, last_move_line_, nullptr);
+  if (job_.engagement) engage_meter_commit(&engage_, grid_, grid_.dirty, engage_cls_, engage_band_);  // the last end cap
   if (job_.design &&
       gouge_watch_check(&gouges_, grid_, grid_.dirty, last_move_line_, mill_.position(), have_origin_ ? &origin_ : nullptr)) {
     gouged_ = true;

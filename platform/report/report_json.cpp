@@ -265,9 +265,10 @@ std::string materials_text(const RunReport& r) {
   return o + (r.material_violations.empty() ? "]},\n" : "\n    ]},\n");
 }
 
-// {"moves": N, "engaged": M, "max_angle": {"deg": 180.00, "line": 5, "at": "FILE:5"}, ...
+// {"moves": N, "engaged": M, "no_spindle_speed": K, "max_angle": {"deg": 180.00, "line": 5, "at": "FILE:5"}, ...
 std::string engage_set_text(const ReportEngageSet& e, const std::string& file) {
   std::string o = "\"moves\": " + u64(e.moves) + ", \"engaged\": " + u64(e.engaged);
+  o += ", \"no_spindle_speed\": " + u64(e.no_spindle_speed);
   for (const ReportEngageMax& m : e.maxima)
     o += ", " + quoted(m.name) + ": {" + quoted(m.unit) + ": " + m.value + ", \"line\": " + u64(m.line) +
          ", \"at\": " + (m.line ? quoted(file + ":" + std::to_string(m.line)) : std::string("null")) + "}";

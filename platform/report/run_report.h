@@ -106,6 +106,7 @@ struct ReportEngageMax {
 };
 struct ReportEngageSet {
   uint64_t moves = 0, engaged = 0;  // feed moves measured, and those that met material
+  uint64_t no_spindle_speed = 0;    // engaged with no spindle speed: no chip, force or power
   std::vector<ReportEngageMax> maxima;
 };
 struct ReportEngagement {

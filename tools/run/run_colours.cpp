@@ -1,4 +1,4 @@
-// The colour modes tool, slope and thin of `dexmill run`; see run_colours.h.
+// The colour modes tool, slope, thin and engagement of `dexmill run`; see run_colours.h.
 #include "tools/run/run_colours.h"
 
 #include <algorithm>
@@ -60,12 +60,13 @@ const SurfaceColours* RunColours::colours() const {
     case ViewOptions::Color::kTool: return &tool;
     case ViewOptions::Color::kSlope: return &slope.colours;
     case ViewOptions::Color::kThin: return &thin.colours;
+    case ViewOptions::Color::kEngagement: return &engagement;
     default: return nullptr;
   }
 }
 
 void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,
-                       const ToolProvenance<height_t>* prov) {
+                       const ToolProvenance<height_t>* prov, uint8_t* engage_cls, bool by_limits) {
   c->mode = o.view.color;
   if (!c->colours()) return;
   const size_t cells = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
@@ -86,6 +87,14 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
       for (int32_t k = 0; k < kSlopeBands; ++k) l.colour[k] = kSlopeBandColour[k];
       for (int32_t k = 0; k + 1 < kSlopeBands; ++k) l.labels[k] = std::to_string(kSlopeLimitDeg[k]);
       l.title = "DEG";
+      break;
+    case ViewOptions::Color::kEngagement:
+      engage_colours_init(&c->engagement, engage_cls, c->luts.data());
+      l.n = kEngageBands;
+      for (int32_t k = 0; k < kEngageBands; ++k) l.colour[k] = kEngageBandColour[k];
+      for (int32_t k = 0; k + 1 < kEngageBands; ++k)
+        l.labels[k] = std::to_string(by_limits ? kEngageBandLimitPct[k] : kEngageBandAngleDeg[k]);
+      l.title = by_limits ? "% OF LOAD LIMIT" : "DEG ENGAGED";
       break;
     default:  // thin: thinnest on the left
       thin_colours_init(&c->thin, g, o.view.thin_nm, c->cls.data(), c->luts.data());

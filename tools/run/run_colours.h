@@ -1,6 +1,6 @@
-// The colour modes `--color tool|slope|thin` of `dexmill run` (tools/README.md):
+// The colour modes `--color tool|slope|thin|engagement` of `dexmill run` (tools/README.md):
 // each mode's memory, its classes (display/colour/tool_colours.h,
-// slope_colours.h, thin_colours.h) and its legend. `material` and `error`
+// slope_colours.h, thin_colours.h, engage_colours.h) and its legend. `material` and `error`
 // are set up beside them in run_job (run_assess.h, display/colour/material_colours.h).
 #ifndef DEXMILL_TOOLS_RUN_RUN_COLOURS_H
 #define DEXMILL_TOOLS_RUN_RUN_COLOURS_H
@@ -14,6 +14,7 @@
 #include "core/sim/provenance.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/colour/engage_colours.h"
 #include "display/colour/slope_colours.h"
 #include "display/colour/thin_colours.h"
 #include "display/colour/tool_colours.h"
@@ -34,6 +35,7 @@ struct RunColours {
   const ToolProvenance<height_t>* prov = nullptr;  // tool: which tool cut each column
   int32_t legend_tools = 0;      // tool: prov->ntools when the legend was made
   SurfaceColours tool;
+  SurfaceColours engagement;
   SlopeColours<height_t> slope;
   ThinColours<height_t> thin;
   RenderOutput::Legend legend;
@@ -44,11 +46,13 @@ struct RunColours {
   const SurfaceColours* colours() const;
 };
 
-// Sets up o.view.color's mode over g (as stocked) when it is tool, slope or
-// thin; nothing otherwise (tool: over the simulation's provenance, prov).
+// Sets up o.view.color's mode over g (as stocked) when it is tool, slope,
+// thin or engagement; nothing otherwise (tool: over the simulation's
+// provenance, prov; engagement: over its load bands, engage_cls, named by
+// the limits or by the angle).
 // c must stay where it is while outputs use it.
 void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<height_t>& g, const ToolLibrary* lib,
-                       const ToolProvenance<height_t>* prov);
+                       const ToolProvenance<height_t>* prov, uint8_t* engage_cls, bool by_limits);
 
 // The tool mode after every record: the legend names a tool the record
 // listed for the first time.

@@ -92,6 +92,7 @@ ReportEngageSet engage_set(const EngageSummary& s) {
   ReportEngageSet e;
   e.moves = s.moves;
   e.engaged = s.engaged;
+  e.no_spindle_speed = s.no_speed;
   auto add = [&e](const char* name, const char* unit, const std::string& v, uint32_t line) {
     e.maxima.push_back(ReportEngageMax{name, unit, v, line});
   };

@@ -228,6 +228,10 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     if (o.view.material_warnings) material_print(su.material, *w, su.shown_name);
     material_to_report(su.material, *w, sim.grid(), &su.rep);
   }
+  if (const EngageSummary* e = sim.engagement(); e && e->no_speed && o.view.material_warnings)
+    std::fprintf(stderr, "%s: warning: %llu cutting moves ran with no spindle speed (no S word): their chip per tooth, "
+                 "force and power are not measured (give --default-spindle RPM)\n", su.shown_name.c_str(),
+                 static_cast<unsigned long long>(e->no_speed));
   if (const LoadWatch* w = sim.load()) {
     if (o.view.material_warnings) load_print(*w, *su.material.comp, su.shown_name);
     load_to_report(*w, *su.material.comp, &su.rep);

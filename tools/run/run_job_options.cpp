@@ -261,6 +261,16 @@ const Option<Job> kChecks[] = {
        o->check_load = true;
        return kExitOk;
      }},
+    {"--default-spindle", "RPM",
+     "the spindle speed where M3/M4 runs with no S word, as a controller's default: the chip per tooth, force "
+     "and power of engagement rest on it (default none: those moves' chip is not measured)",
+     [](Job* o, const char* v) -> int {
+       int64_t rpm = 0;
+       if (!parse_scaled(v, 1, &rpm) || rpm <= 0 || rpm > 1000000)
+         return fail(kExitUsage, "--default-spindle needs a speed in rpm from 1 to 1000000, not '%s'", v);
+       o->default_spindle_rpm = static_cast<int32_t>(rpm);
+       return kExitOk;
+     }},
     {"--fail-on-load", nullptr, "run to the end, exit 4 if a move broke a load limit (turns on --check load)",
      [](Job* o, const char*) -> int { return o->fail_on_load = o->check_load = true, kExitOk; }},
     {"--table", "Z", "the table's Z (mm): the tool going below it is a finding",

@@ -130,6 +130,7 @@ struct JobOptions {
   // W (mW here; implies the check), --fail-on-load (exit 4; implies it).
   bool check_load = false, fail_on_load = false;
   int64_t spindle_power_mw = 0;
+  int32_t default_spindle_rpm = 0;  // --default-spindle (0: none)
   // `dexmill optimize`: each line's feed limit kept (tools/run/run_job.h RunResult).
   bool feed_limits = false;
   // `dexmill optimize --target`: each line's feed for it (core/engage/engage_target.h).
@@ -158,7 +159,7 @@ struct ViewOptions {
   bool have_azimuth = false, have_elevation = false;
   int64_t azimuth_mdeg = 0, elevation_mdeg = 0;
   // --color; with --material and no --color, material; --thin alone, thin.
-  enum class Color : uint8_t { kPlain, kError, kMaterial, kTool, kSlope, kThin } color = Color::kPlain;
+  enum class Color : uint8_t { kPlain, kError, kMaterial, kTool, kSlope, kThin, kEngagement } color = Color::kPlain;
   bool have_color = false;
   int64_t thin_nm = kNmPerMm;    // --thin MM: --color thin highlights material thinner than this (1 mm)
   bool have_thin = false;

@@ -319,16 +319,19 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (o.job.feed_limits) j.line_feed_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
     j.process_lines = static_cast<size_t>(run->rep.lines) + 1;  // each finding once, lines 0 .. the last
   }
-  if (!o.out.engagement_csv.empty() || !o.out.load_plot.empty() || o.job.check_load ||
-      o.job.engage_target) {  // each feed move's load, as the cut goes
+  const bool engage_colours = o.view.color == ViewOptions::Color::kEngagement;
+  if (!o.out.engagement_csv.empty() || !o.out.load_plot.empty() || o.job.check_load || o.job.engage_target ||
+      engage_colours) {  // each feed move's load, as the cut goes
     run->engage.reset(new EngageRecorder(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm));
     if (!o.out.engagement_csv.empty() && !run->engage->open_csv(o.out.engagement_csv))
       return fail(kExitIo, "%s", run->engage->error());
     if (!o.out.load_plot.empty()) run->engage->keep_plot();
     j.engagement = true;
     j.engage_sink = run->engage.get();
+    j.engage_colours = engage_colours;
     j.load_check = o.job.check_load;
     j.spindle_power_mw = o.job.spindle_power_mw;
+    j.default_spindle_rpm = o.job.default_spindle_rpm;
     if (o.job.engage_target) {
       j.engage_target = o.job.engage_target;
       j.target_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last

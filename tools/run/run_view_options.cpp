@@ -83,7 +83,8 @@ int color(View* o, const char* v) {
   else if (!std::strcmp(v, "tool")) o->color = View::Color::kTool;
   else if (!std::strcmp(v, "slope")) o->color = View::Color::kSlope;
   else if (!std::strcmp(v, "thin")) o->color = View::Color::kThin;
-  else return fail(kExitUsage, "--color must be plain, error, material, tool, slope or thin, not '%s'", v);
+  else if (!std::strcmp(v, "engagement")) o->color = View::Color::kEngagement;
+  else return fail(kExitUsage, "--color must be plain, error, material, tool, slope, thin or engagement, not '%s'", v);
   o->have_color = true;
   return kExitOk;
 }
@@ -108,8 +109,10 @@ const Option<View> kView[] = {
     {"--color", "MODE",
      "what colours the surface: plain (one colour), error (cut - design in bands: white within tolerance, "
      "greens left, reds gouged), material (the material under each top; the default with --material), tool "
-     "(each tool's cut in its own colour, uncut stock grey), slope (flat, 5, 30, 60 degrees and over) or thin "
-     "(material thinner than --thin MM orange, than half of it red)",
+     "(each tool's cut in its own colour, uncut stock grey), slope (flat, 5, 30, 60 degrees and over), thin "
+     "(material thinner than --thin MM orange, than half of it red) or engagement (each cut by its move's load: "
+     "the engagement angle in 30-degree bands, or with a material's max_chip or --spindle-power the share of "
+     "those limits; plunges pale)",
      color},
     {"--thin", "MM", "the thickness --color thin highlights below (default 1); alone, it means --color thin",
      [](View* o, const char* v) -> int {

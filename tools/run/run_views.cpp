@@ -49,8 +49,9 @@ void RunViews::set_colours(const RunOptions& o, const Inputs& in) {
     for (RenderOutput* out : outputs_)
       if (out != error_out_.get()) out->set_colours(&material_colours_.colours);
   }
-  // --color tool|slope|thin.
-  run_colours_start(&colours_, o, grid, in.lib, sim_->provenance());
+  // --color tool|slope|thin|engagement.
+  run_colours_start(&colours_, o, grid, in.lib, sim_->provenance(), sim_->engage_classes(),
+                    sim_->engage_by_limits());
   if (const SurfaceColours* c = colours_.colours())
     for (RenderOutput* out : outputs_)
       if (out != error_out_.get()) {
