@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# check_layers.sh - the pipeline runs one way (README "Where things live",
-# core/README.md, habit 1): each stage folder of core/, display/, platform/ and
+# check_layers.sh - the pipeline runs one way (core/README.md "Where things
+# live" and habit 1): each stage folder of core/, display/, platform/ and
 # tools/ includes only the stages it is allowed to. `make test` runs it,
 # after its self-test; a new stage adds a row.
 #

@@ -179,3 +179,36 @@ TEST(optimize_target_sets_feeds_by_the_load) {
   CHECK_EQ(run_command("optimize %/tgt.ngc" + cut + " --target torque=3").code, 2);
   CHECK_EQ(run_command("optimize %/tgt.ngc" + cut + " --min-feed 100").code, 2);
 }
+
+TEST(default_spindle_speed_for_programs_without_one) {
+  using namespace run_cli;
+  if (skip()) return;
+  // The slot with no S word and no M3 (a router's spindle switched by
+  // hand), and its first feed move with no F in force.
+  write_tmp("nos.ngc", "G21 G90 G94\nG0 X-5 Y10 Z5\nG1 Z-2\nG1 X35 F1200\nG0 Z5\nM30\n");
+  const std::string cut = " --tool flat:6,flutes=2 --stock 0,0,-10,30,20,0 --pitch 0.12 --default-feed 300";
+  // Without a speed: measured but no chip, counted and said.
+  Result r = run("%/nos.ngc" + cut + " --engagement-csv %/nos.csv --report %/nos.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "warning: 1 cutting moves ran with no spindle speed (no S word, or no M3)"));
+  CHECK(has(slurp(tmp_dir() + "/nos.json"), "\"engaged\": 1, \"no_spindle_speed\": 1,"));
+  CHECK(has(slurp(tmp_dir() + "/nos.csv"), ",0.00000,0.00000,,,1200.0,"));
+  // --default-spindle 10000: the chip of the S10000 slot, 0.06 mm a tooth, and no warning.
+  r = run("%/nos.ngc" + cut + " --default-spindle 10000 --engagement-csv %/nos2.csv --report %/nos2.json");
+  CHECK_EQ(r.code, 0);
+  CHECK(lacks(r.err, "no spindle speed"));
+  CHECK(has(slurp(tmp_dir() + "/nos2.json"), "\"engaged\": 1, \"no_spindle_speed\": 0,"));
+  CHECK(has(slurp(tmp_dir() + "/nos2.csv"), ",0.06000,0.03820,,,1200.0,"));
+  // optimize reads the program as the cut did (--default-feed's F for the
+  // plunge) and halves the slot's feed for a 0.03 mm chip; without a
+  // speed it cannot say, and keeps it.
+  r = run_command("optimize %/nos.ngc" + cut + " --default-spindle 10000 --material aluminium --target chip-load=0.03 "
+                  "-o %/nos-opt.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(slurp(tmp_dir() + "/nos-opt.ngc"), "G1 X35 F600\n"));
+  r = run_command("optimize %/nos.ngc" + cut + " --material aluminium --target chip-load=0.03 -o %/nos-kept.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(slurp(tmp_dir() + "/nos-kept.ngc"), "G1 X35 F1200\n"));
+  CHECK_EQ(run("%/nos.ngc" + cut + " --default-spindle 0").code, 2);
+  CHECK_EQ(run("%/nos.ngc" + cut + " --default-spindle fast").code, 2);
+}

@@ -31,6 +31,12 @@ void engage_tool_init(const Tool& t, int64_t pitch_nm, EngageTool* out) {
     e.cos_q30[k] = sc.cos_q30;
     e.sin_q30[k] = sc.sin_q30;
   }
+  const bool flat = e.profile.kind == ToolKind::kFlat;
+  for (int ring = 0; ring < e.nrings; ++ring)
+    for (int k = 0; k <= kEngageSteps; ++k) {
+      const int64_t cross = mul_shift(e.ring_r_nm[ring], e.cos_q30[k], 30);
+      e.ring_floor_nm[ring][k] = flat ? 0 : static_cast<int32_t>(profile_height_nm(e.profile, cross < 0 ? -cross : cross));
+    }
 }
 
 namespace {
@@ -46,8 +52,8 @@ inline int64_t below_cap(const GridGeometry& g, const EngageTool& t, const Point
   return min_of(top_nm, cap.z_nm + profile_height_r2_nm(t.profile, r2));
 }
 
-// top(cell): the column's top in LSB, or a negative for no material.
-template <bool kNarrow, class Top>
+// top(cell): the column's top in LSB (0 or a negative: no material).
+template <bool kNarrow, bool kInside, class Top>
 void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30, int64_t ey_q30,
                bool clockwise, const PointNm* cap, EngageAt* out) {
   EngageAt r;
@@ -55,13 +61,18 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
   const int64_t sx = clockwise ? -ey_q30 : ey_q30, sy = clockwise ? ex_q30 : -ex_q30;
   int64_t cross_lo = INT64_MAX, cross_hi = INT64_MIN;
   int64_t area_nm2 = 0;
-  const bool flat = t.profile.kind == ToolKind::kFlat;
   int first = -1, last = -1;
   // The tool's axis in the grid's pitches, q16: the samples' columns are
   // offsets from it (the rings' radii in pitches, turned), no division.
   const int64_t ci_q16 = muldiv_floor(at.x_nm - g.x0_nm, int64_t{1} << 16, g.pitch_nm);
   const int64_t cj_q16 = muldiv_floor(at.y_nm - g.y0_nm, int64_t{1} << 16, g.pitch_nm);
   constexpr int64_t kHalf = int64_t{1} << 15, kFar = int64_t{1} << 48;
+  // A column bears material at a ring when its top is more than an LSB
+  // above the lower surface there: top_lsb above this threshold (at least
+  // 0, so that an empty column, top 0, never does).
+  int64_t above_lsb[kEngageMaxRings];
+  for (int ring = 0; ring < t.nrings; ++ring)
+    above_lsb[ring] = max_of(div_floor(at.z_nm + t.ring_h_nm[ring] + g.lsb_nm - g.z0_nm, g.lsb_nm), int64_t{0});
   for (int k = 0; k <= kEngageSteps; ++k) {
     // The sample's direction: side * cos(phi) + feed * sin(phi), q30.
     const int64_t ux = (sx * t.cos_q30[k] + ex_q30 * t.sin_q30[k]) >> 30;
@@ -75,15 +86,13 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
       const int64_t di = kNarrow ? (rc * ux) >> 30 : clamp(mul_shift(rc, ux, 30), -kFar, kFar);
       const int64_t dj = kNarrow ? (rc * uy) >> 30 : clamp(mul_shift(rc, uy, 30), -kFar, kFar);
       const int64_t i = (ci_q16 + di + kHalf) >> 16, j = (cj_q16 + dj + kHalf) >> 16;
-      if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) continue;
+      if (!kInside && (i < 0 || j < 0 || i >= g.nx || j >= g.ny)) continue;
       const int64_t lsb = top_of(static_cast<size_t>(j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i));
-      if (lsb < 0) continue;
+      if (lsb <= above_lsb[ring]) continue;
       int64_t top = g.z0_nm + lsb * g.lsb_nm;
-      const int64_t surface = at.z_nm + t.ring_h_nm[ring];
-      if (top <= surface + g.lsb_nm) continue;
       if (cap) {  // material in the shadow, but maybe inside the footprint left at the start
         top = below_cap(g, t, *cap, i, j, top);
-        if (top <= surface + g.lsb_nm) continue;
+        if (top <= at.z_nm + t.ring_h_nm[ring] + g.lsb_nm) continue;
       }
       hit = true;
       r.ap_nm = max_of(r.ap_nm, min_of(top - at.z_nm, t.flute_nm));
@@ -91,9 +100,8 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
       cross_lo = min_of(cross_lo, cross);
       cross_hi = max_of(cross_hi, cross);
       // The strip across the feed at y = cross: the material above the
-      // lower surface there (a flat's is its tip inside R).
-      const int64_t floor_nm = flat ? 0 : profile_height_nm(t.profile, cross < 0 ? -cross : cross);
-      const int64_t depth = min_of(top - at.z_nm, t.flute_nm) - floor_nm;
+      // lower surface there (a flat's is its tip inside R; ring_floor_nm).
+      const int64_t depth = min_of(top - at.z_nm, t.flute_nm) - t.ring_floor_nm[ring][k];
       if (depth > 0) area_nm2 += depth * ((t.ring_dphi_nm[ring] * t.sin_q30[k]) >> 30);  // a tool under a metre: a term below 2^55
     }
     if (!hit) continue;
@@ -110,6 +118,20 @@ void engage_on(const GridGeometry& g, Top top_of, const EngageTool& t, const Poi
   *out = r;
 }
 
+// Every ring's samples on the grid when the tool's disc, a pitch wider,
+// is inside it (the common case): no bounds test a sample.
+template <class Top>
+void engage_dispatch(const GridGeometry& g, Top top_of, const EngageTool& t, const PointNm& at, int64_t ex_q30,
+                     int64_t ey_q30, bool clockwise, const PointNm* cap, EngageAt* out) {
+  const int64_t reach = t.profile.radius_nm + 2 * g.pitch_nm;
+  const bool inside = t.cells_narrow && at.x_nm - reach >= g.x0_nm && at.y_nm - reach >= g.y0_nm &&
+                      at.x_nm + reach <= g.x0_nm + (g.nx - 1) * g.pitch_nm &&
+                      at.y_nm + reach <= g.y0_nm + (g.ny - 1) * g.pitch_nm;
+  if (inside) engage_on<true, true>(g, top_of, t, at, ex_q30, ey_q30, clockwise, cap, out);
+  else if (t.cells_narrow) engage_on<true, false>(g, top_of, t, at, ex_q30, ey_q30, clockwise, cap, out);
+  else engage_on<false, false>(g, top_of, t, at, ex_q30, ey_q30, clockwise, cap, out);
+}
+
 }  // namespace
 
 template <class H>
@@ -117,15 +139,13 @@ void engage_at(const DexelGrid<H>& g, const EngageTool& t, const PointNm& at, in
                bool clockwise, EngageAt* out) {
   const GridGeometry geo{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
   auto top = [&g](size_t c) { return g.top[c] == 0 && g.bottom[c] == 0 ? int64_t{-1} : static_cast<int64_t>(g.top[c]); };
-  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, nullptr, out);
-  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, nullptr, out);
+  engage_dispatch(geo, top, t, at, ex_q30, ey_q30, clockwise, nullptr, out);
 }
 
 void engage_at_tops(const GridGeometry& geo, const uint32_t* tops, const EngageTool& t, const PointNm& at,
                     int64_t ex_q30, int64_t ey_q30, bool clockwise, const PointNm* cap, EngageAt* out) {
-  auto top = [tops](size_t c) { return tops[c] == 0 ? int64_t{-1} : static_cast<int64_t>(tops[c]); };
-  if (t.cells_narrow) engage_on<true>(geo, top, t, at, ex_q30, ey_q30, clockwise, cap, out);
-  else engage_on<false>(geo, top, t, at, ex_q30, ey_q30, clockwise, cap, out);
+  auto top = [tops](size_t c) { return static_cast<int64_t>(tops[c]); };
+  engage_dispatch(geo, top, t, at, ex_q30, ey_q30, clockwise, cap, out);
 }
 
 EngageChip engage_chip(const EngageTool& t, const EngageAt& e, int64_t fz_nm) {

@@ -67,6 +67,11 @@ struct EngageTool {
   int64_t ring_h_nm[kEngageMaxRings] = {};
   int64_t ring_cells_q16[kEngageMaxRings] = {};  // r in the grid's pitches, q16 (the samples' offsets without a division)
   int64_t ring_dphi_nm[kEngageMaxRings] = {};    // r times a step (pi / 90): a strip's width over sin(phi)
+  // The lower surface's height under each ring's sample k across the feed
+  // (at |r cos(phi_k)|; 0 for a flat): the chip's strip there, looked up
+  // rather than a square root a sample (a radius of at most half a metre:
+  // it fits).
+  int32_t ring_floor_nm[kEngageMaxRings][kEngageSteps + 1] = {};
   bool cells_narrow = true;  // every ring_cells_q16 below 2^31: an offset is one 64-bit product
   // cos and sin of each step's phi, q30 (phi_k = k * kEngageStepBam).
   int32_t cos_q30[kEngageSteps + 1] = {};

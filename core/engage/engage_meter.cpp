@@ -160,11 +160,20 @@ template <class H>
 void engage_meter_commit(EngageMeter* m, const DexelGrid<H>& g, GridRect changed, uint8_t* cls, uint8_t band) {
   changed.include(m->pending);
   m->pending = GridRect::none();
-  each_removal(m->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t, uint32_t now) {
-    if (!cls) return;
-    cls[g.index(i, j)] = band;
-    class_hole_walls(cls, g, i, j, now, band);
-  });
+  if (cls) {
+    each_removal(m->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t, uint32_t now) {
+      cls[g.index(i, j)] = band;
+      class_hole_walls(cls, g, i, j, now, band);
+    });
+    return;
+  }
+  // Not colouring: the shadow follows the grid, a plain copy.
+  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
+  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
+  for (int32_t j = j0; j < j1; ++j) {
+    const size_t row = g.index(0, j);
+    for (int32_t i = i0; i < i1; ++i) m->shadow[row + static_cast<size_t>(i)] = g.top[row + static_cast<size_t>(i)];
+  }
 }
 
 template <class H>

@@ -109,8 +109,9 @@ struct SimJob {
   // (0: none). Force and power need `material`'s cutting coefficients.
   bool load_check = false;
   int64_t spindle_power_mw = 0;
-  // The speed engagement takes where the spindle runs with no S word
-  // (a controller's default; 0: none, the chip per tooth unmeasured).
+  // The speed engagement takes where the program gives none (no S word,
+  // or no M3 at all: a router's spindle switched by hand; 0: none, the
+  // chip per tooth unmeasured).
   int32_t default_spindle_rpm = 0;
   // `--color engagement` (core/engage/engage_band.h; needs engagement):
   // the columns each record lowered take its move's load band, by the

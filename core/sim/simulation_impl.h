@@ -405,7 +405,7 @@ void SimulationT<H>::process(const Queued& q) {
   const Status before = mill_.status();
   // Engagement: the stock before this record cuts it (M4 turns the other way).
   if (job_.engagement) {
-    const int32_t rpm = q.spindle_rpm > 0 || q.spindle_dir == 0 ? q.spindle_rpm : job_.default_spindle_rpm;
+    const int32_t rpm = q.spindle_rpm > 0 ? q.spindle_rpm : job_.default_spindle_rpm;
     engage_meter_before(&engage_, grid_, r, q.spindle_dir >= 0, rpm);
   }
   mill_.emit(r);

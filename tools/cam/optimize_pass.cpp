@@ -34,6 +34,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   const std::unique_ptr<GcodeMemory> memory = gcode_memory();
   InterpOptions opt;
   opt.inch = in.inch;
+  opt.default_feed_nm_per_min = in.default_feed_nm_per_min;
   opt.tools = in.tools;  // warnings were printed by the cut's reading
   memory->attach(&opt);
   LineRecords sink;

@@ -224,6 +224,7 @@ int cmd_optimize(int argc, char** argv) {
   in.read_path = input.read_path();
   in.shown_name = shown;
   in.inch = o.job.read.inch;
+  in.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
   SingleToolLibrary single(o.job.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
   in.tools = o.job.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;

@@ -229,7 +229,7 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     material_to_report(su.material, *w, sim.grid(), &su.rep);
   }
   if (const EngageSummary* e = sim.engagement(); e && e->no_speed && o.view.material_warnings)
-    std::fprintf(stderr, "%s: warning: %llu cutting moves ran with no spindle speed (no S word): their chip per tooth, "
+    std::fprintf(stderr, "%s: warning: %llu cutting moves ran with no spindle speed (no S word, or no M3): their chip per tooth, "
                  "force and power are not measured (give --default-spindle RPM)\n", su.shown_name.c_str(),
                  static_cast<unsigned long long>(e->no_speed));
   if (const LoadWatch* w = sim.load()) {

@@ -262,8 +262,8 @@ const Option<Job> kChecks[] = {
        return kExitOk;
      }},
     {"--default-spindle", "RPM",
-     "the spindle speed where M3/M4 runs with no S word, as a controller's default: the chip per tooth, force "
-     "and power of engagement rest on it (default none: those moves' chip is not measured)",
+     "the spindle speed where the program gives none (no S word, or no M3: a router's spindle switched by "
+     "hand): the chip per tooth, force and power of engagement rest on it (default none: not measured there)",
      [](Job* o, const char* v) -> int {
        int64_t rpm = 0;
        if (!parse_scaled(v, 1, &rpm) || rpm <= 0 || rpm > 1000000)
