@@ -154,16 +154,19 @@ TEST(optimize_target_sets_feeds_by_the_load) {
   // 1500 mm/min): the plunge and the step over are in air.
   write_tmp("tgt.ngc", "G21 G90 G94\nS10000 M3\nG0 X-5 Y10 Z5\nG1 Z-2 F300\nG1 X35 F1200\nG1 Y13.6\nG1 X-5\nG0 Z5\nM30\n");
   const std::string cut = " --tool flat:6,flutes=2 --stock 0,0,-10,30,20,0 --pitch 0.12 --material aluminium";
+  // One feed a line here (--split-lines 0; the pieces of a move whose load
+  // changes along it: test_engage_split.cpp).
+  const std::string whole = " --split-lines 0";
   // A 0.03 mm chip: the slot and the pass (both with a full 0.06 mm chip
   // at 1200) halved, the air moves at the highest feed.
-  Result r = run_command("optimize %/tgt.ngc" + cut + " --target chip-load=0.03 -o %/tgt-chip.ngc");
+  Result r = run_command("optimize %/tgt.ngc" + cut + whole + " --target chip-load=0.03 -o %/tgt-chip.ngc");
   CHECK_EQ(r.code, 0);
   const std::string chip = slurp(tmp_dir() + "/tgt-chip.ngc");
   CHECK(has(chip, "G1 Z-2 F1500\nG1 X35 F600\nG1 Y13.6 F1500\nG1 X-5 F600\n"));
   CHECK(has(r.err, "target chip-load 0.03 mm: 2 line(s) raised, 2 lowered"));
   // 250 W: the slot (353 W at 1200) lowered to 1200 (250/353)^(4/3) = 757;
   // the pass (207 W) would go to 1543, but the chip limit holds it at 1200.
-  r = run_command("optimize %/tgt.ngc" + cut + " --target power 250 --max-feed 3000 -o %/tgt-pow.ngc");
+  r = run_command("optimize %/tgt.ngc" + cut + whole + " --target power 250 --max-feed 3000 -o %/tgt-pow.ngc");
   CHECK_EQ(r.code, 0);
   CHECK(has(slurp(tmp_dir() + "/tgt-pow.ngc"), "G1 X35 F757\nG1 Y13.6 F1500\nG1 X-5 F1200\n"));
   // Re-simulated: the same stock, no move over the power or the chip.
@@ -172,7 +175,7 @@ TEST(optimize_target_sets_feeds_by_the_load) {
   CHECK_EQ(file_hash(tmp_dir() + "/after.pgm"), file_hash(tmp_dir() + "/before.pgm"));
   CHECK_EQ(run("%/tgt.ngc -q" + cut + " --spindle-power 250 --fail-on-load").code, 4);  // before, it was over
   // A removal rate: 7200 mm^3/min, half the slot's 14398 (the pass, 8573 at 1200, goes to 1007).
-  r = run_command("optimize %/tgt.ngc" + cut + " --target mrr=7200 -o %/tgt-mrr.ngc");
+  r = run_command("optimize %/tgt.ngc" + cut + whole + " --target mrr=7200 -o %/tgt-mrr.ngc");
   CHECK(has(slurp(tmp_dir() + "/tgt-mrr.ngc"), "G1 X35 F600\n"));
   // Bad forms are usage errors; --min-feed without --target too.
   CHECK_EQ(run_command("optimize %/tgt.ngc" + cut + " --target power").code, 2);

@@ -21,7 +21,8 @@ bool direction_q30(const PointNm& a, const PointNm& b, int64_t* ex, int64_t* ey)
 }
 
 // One sample: the tool at p feeding along (ex, ey).
-void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t ex, int64_t ey, bool clockwise) {
+void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t s_nm, int64_t ex, int64_t ey,
+            bool clockwise) {
   EngageMove& mv = m->move;
   if (mv.samples >= static_cast<uint32_t>(kEngageMaxSamples)) return;
   EngageAt e;
@@ -43,14 +44,17 @@ void sample(EngageMeter* m, const GridGeometry& g, const PointNm& p, int64_t ex,
     mv.worst = e;
     mv.worst_at = p;
   }
+  // A straight move's samples kept, for a split at its changes.
+  if (m->trace && m->record.kind == CanonKind::kFeed) m->trace[m->ntrace++] = EngageSample{s_nm, e};
 }
 
 // The straight piece a -> b of a path sampled every step_nm (horizontal
 // length) from its start: *carry_nm is how far past the last sample the
 // piece begins (the path's start: step_nm, so that it is sampled); `last`:
-// the path's end is sampled too.
+// the path's end is sampled too; *s_nm: the path's horizontal length
+// before the piece (and after it, on return).
 void sample_piece(EngageMeter* m, const GridGeometry& g, const PointNm& a, const PointNm& b, bool clockwise,
-                  int64_t step_nm, int64_t* carry_nm, bool last) {
+                  int64_t step_nm, int64_t* carry_nm, bool last, int64_t* s_nm) {
   int64_t ex, ey;
   if (!direction_q30(a, b, &ex, &ey)) return;  // a plunge: no front to meet
   const int64_t len = hypot_floor(b.x_nm - a.x_nm, b.y_nm - a.y_nm);
@@ -62,11 +66,12 @@ void sample_piece(EngageMeter* m, const GridGeometry& g, const PointNm& a, const
   if (t < 0) t = 0;
   int64_t sampled = -1;
   for (; t <= len; t += step_nm) {
-    sample(m, g, at(t), ex, ey, clockwise);
+    sample(m, g, at(t), *s_nm + t, ex, ey, clockwise);
     sampled = t;
   }
-  if (last && sampled != len) sample(m, g, b, ex, ey, clockwise), sampled = len;
+  if (last && sampled != len) sample(m, g, b, *s_nm + len, ex, ey, clockwise), sampled = len;
   *carry_nm = sampled >= 0 ? len - sampled : *carry_nm + len;
+  *s_nm += len;
 }
 
 }  // namespace
@@ -90,6 +95,7 @@ template <class H>
 void engage_meter_before(EngageMeter* m, const DexelGrid<H>&, const CanonRecord& r, bool clockwise,
                          int32_t spindle_rpm) {
   m->move = EngageMove{};
+  m->ntrace = 0;
   EngageMove& mv = m->move;
   mv.line = r.line;
   mv.spindle_rpm = spindle_rpm;
@@ -107,7 +113,8 @@ void sample_path(EngageMeter* m, const GridGeometry& g) {
   if (r.kind == CanonKind::kFeed) {
     const int64_t len = hypot_floor(r.end.x_nm - r.start.x_nm, r.end.y_nm - r.start.y_nm);
     int64_t carry = max_of(m->spacing_nm, div_ceil(len, kEngageMaxSamples - 1));
-    sample_piece(m, g, r.start, r.end, m->clockwise, carry, &carry, true);
+    int64_t s = 0;
+    sample_piece(m, g, r.start, r.end, m->clockwise, carry, &carry, true, &s);
     return;
   }
   ArcChords chords;
@@ -117,9 +124,9 @@ void sample_path(EngageMeter* m, const GridGeometry& g) {
   PointNm a = r.start, b;
   const int64_t turns = max_of<int64_t>(1, r.arc.turns < 0 ? -static_cast<int64_t>(r.arc.turns) : r.arc.turns);
   const int64_t step = max_of(m->spacing_nm, div_ceil(chords.radius_max() * 7 * turns, kEngageMaxSamples - 1));
-  int64_t carry = step;
+  int64_t carry = step, s = 0;
   for (uint32_t k = 0; chords.next(&b); ++k) {
-    sample_piece(m, g, a, b, m->clockwise, step, &carry, k + 1 == chords.count());
+    sample_piece(m, g, a, b, m->clockwise, step, &carry, k + 1 == chords.count(), &s);
     a = b;
   }
 }

@@ -74,6 +74,13 @@ struct EngageSummary {
 };
 void engage_summary_add(EngageSummary* s, const EngageMove& m);
 
+// One sample of a straight feed move: where along it (horizontal distance
+// from its start) and what it met.
+struct EngageSample {
+  int64_t s_nm = 0;
+  EngageAt at;
+};
+
 struct EngageMeter {
   EngageTool tool;
   uint32_t* shadow = nullptr;  // caller memory, nx * ny: the tops before the record
@@ -81,6 +88,11 @@ struct EngageMeter {
   EngageMove move;             // the record being measured
   CanonRecord record{};        // and the record itself, sampled once it is cut
   GridRect pending = GridRect::none();  // changes between records (engage_meter_note), counted with the next
+  // A straight feed move's samples, when kept (caller memory,
+  // kEngageMaxSamples of them; null: not kept): engage_split.h splits a
+  // move at their changes.
+  EngageSample* trace = nullptr;
+  uint32_t ntrace = 0;
   bool clockwise = true;
 };
 

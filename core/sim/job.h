@@ -15,6 +15,7 @@
 #include "core/cut/mill.h"
 #include "core/design/design.h"
 #include "core/engage/engage_meter.h"
+#include "core/engage/engage_split.h"
 #include "core/engage/engage_target.h"
 #include "core/gcode/error.h"
 #include "core/material/material.h"
@@ -123,6 +124,11 @@ struct SimJob {
   // 0 .. target_lines - 1 (Simulation::target_feeds()).
   const EngageTarget* engage_target = nullptr;
   size_t target_lines = 0;
+  // And straight moves split where the target's feed changes along them
+  // (core/engage/engage_split.h; max_segments 0: not split), at most
+  // split_pieces pieces in all (Simulation::target_splits()).
+  EngageSplitRule split_rule;
+  size_t split_pieces = 0;
   size_t line_feed_lines = 0;           // > 0: each line's lowest feed limit kept for lines 0..n-1 (`dexmill optimize`)
   // The process rules' findings of lines 0..n-1 told apart exactly (3 bytes
   // a line; core/safety/material_limits.h): the program's line count + 1. 0: only

@@ -236,6 +236,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   }
   // engage_target's feed for each line (null without one).
   const EngageLineFeeds* target_feeds() const { return target_lines_.n ? &target_lines_ : nullptr; }
+  // And the moves split where it changes along them (null when not splitting).
+  const EngageSplits* target_splits() const { return split_trace_ ? &splits_ : nullptr; }
   const ToolProvenance<H>* provenance() const { return job_.provenance ? &prov_ : nullptr; }
   bool gouged() const { return gouged_; }
   // Records (and the finish) whose gouge check found a gouge: a front end
@@ -279,6 +281,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
 
   void process(const Queued& q);
   int64_t measure_load(EngageMove* mv);
+  void split_move(const EngageMove& mv, const CuttingCoefficients& c, int64_t max_chip_nm, int64_t max_feed_nm_per_min,
+                  int64_t move_feed_nm_per_min);
   void check_process(const Queued& q, bool move, int64_t time_us);
   void load_tool(const Tool& t);
   void stop_with(SimStop why, uint32_t line);
@@ -318,6 +322,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   uint8_t* engage_cls_;      // engage_colours: the bands
   uint8_t engage_band_ = 0;  // the band of the last measured move (a retract's deferred end cap takes it)
   EngageLineFeeds target_lines_;
+  EngageSplits splits_;
+  EngageSample* split_trace_;
   ToolProvenance<H> prov_;
   uint8_t* prov_cls_;
   uint32_t* prov_shadow_;

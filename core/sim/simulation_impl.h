@@ -11,6 +11,7 @@
 
 #include "core/cut/sweep.h"
 #include "core/grid/volume.h"
+#include "core/math/wide.h"
 #include "core/sim/carver.h"
 #include "core/sim/simulation.h"
 #include "core/cut/probe.h"
@@ -47,6 +48,8 @@ struct SimulationT<H>::Memory {
   uint8_t* engage_cls = nullptr;
   int64_t* line_feed = nullptr;
   int64_t* target_feed = nullptr;  // engage_target: each line's feed
+  EngageSample* split_trace = nullptr;  // split_rule: a move's samples
+  EngageSplitPiece* split_pieces = nullptr;
   uint8_t* target_kept = nullptr;
   uint8_t* process_seen = nullptr;  // the findings counted per line (core/safety/material_limits.h)
   uint8_t* seen = nullptr;
@@ -166,6 +169,10 @@ size_t layout(const SimJob& job, char* base, typename SimulationT<H>::Memory* m,
   if (job.engagement && job.engage_target) {
     mem.target_feed = c.take<int64_t>(job.target_lines);
     mem.target_kept = c.take<uint8_t>(job.target_lines);
+    if (job.split_rule.max_segments > 1 && job.split_pieces) {
+      mem.split_trace = c.take<EngageSample>(kEngageMaxSamples);
+      mem.split_pieces = c.take<EngageSplitPiece>(job.split_pieces);
+    }
   }
   if (job.design) {
     mem.seen_bytes = gouge_watch_seen_bytes(g.nx, g.ny);
@@ -245,6 +252,8 @@ SimulationT<H>::SimulationT(const SimJob& job, const Memory& m)
       engage_shadow_(m.engage_shadow),
       engage_cls_(m.engage_cls),
       target_lines_{m.target_feed, m.target_kept, job.engage_target ? job.target_lines : 0},
+      splits_{m.split_pieces, m.split_pieces ? job.split_pieces : 0, 0, 0, 0},
+      split_trace_(m.split_trace),
       prov_cls_(m.prov_cls),
       prov_shadow_(m.prov_shadow),
       prov_lines_(m.prov_lines),
@@ -305,6 +314,9 @@ void SimulationT<H>::start() {
   engage_band_ = 0;
   load_.spindle_power_mw = job_.spindle_power_mw;
   if (target_lines_.n) engage_line_feeds_clear(&target_lines_);
+  splits_.n = 0;
+  splits_.moves = splits_.left = 0;
+  engage_.trace = split_trace_;
   if (safety_on_) {
     (void)safety_watch_init(&safety_, grid_, safety_shadow_, cells, safety_tiles_, safety_tile_words_);
     const SimChecks& c = job_.checks;
@@ -380,10 +392,32 @@ int64_t SimulationT<H>::measure_load(EngageMove* mv) {
       EngageFeedWhy why;
       const int64_t f = engage_target_feed(*job_.engage_target, *mv, c, max_chip_nm, p.max_feed_nm_per_min, &why);
       engage_line_feeds_add(&target_lines_, mv->line, f, why);
+      if (split_trace_ && engage_.ntrace > 1 && why == EngageFeedWhy::kTarget)
+        split_move(*mv, c, max_chip_nm, p.max_feed_nm_per_min, f);
     }
   }
   if (job_.load_check) load_watch_check(&load_, *mv, max_chip_nm);
   return max_chip_nm;
+}
+
+// A straight move's pieces at its load's changes (core/engage/engage_split.h):
+// each sample's feed for the target on the move's material.
+template <class H>
+void SimulationT<H>::split_move(const EngageMove& mv, const CuttingCoefficients& c, int64_t max_chip_nm,
+                                int64_t max_feed_nm_per_min, int64_t move_feed_nm_per_min) {
+  int64_t s[kEngageMaxSamples], f[kEngageMaxSamples];
+  const int32_t n = static_cast<int32_t>(engage_.ntrace);
+  for (int32_t k = 0; k < n; ++k) {
+    s[k] = split_trace_[k].s_nm;
+    f[k] = engage_sample_feed(*job_.engage_target, engage_.tool, mv, split_trace_[k].at, c, max_chip_nm,
+                              max_feed_nm_per_min, move_feed_nm_per_min);
+  }
+  const CanonRecord& r = engage_.record;
+  const int64_t len = hypot_floor(r.end.x_nm - r.start.x_nm, r.end.y_nm - r.start.y_nm);
+  EngageSegment seg[kEngageMaxSegments];
+  int32_t count = engage_split(s, f, n, len, job_.split_rule, seg);
+  if (count > 1) count = engage_split_snap(r.start, r.end, seg, count);
+  (void)engage_splits_add(&splits_, mv.line, seg, count);
 }
 
 template <class H>

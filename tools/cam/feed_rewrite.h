@@ -65,6 +65,12 @@ class FeedRewriter {
  public:
   // The next line's edit (lines in program order).
   FeedEdit line(const FeedLine& l);
+  // Lines put before the next one (a split move's pieces) left the
+  // output's modal feed at nm_per_min.
+  void modal_changed(int64_t nm_per_min) {
+    out_nm_per_min_ = nm_per_min;
+    out_unsure_ = false;
+  }
 
  private:
   FeedEdit inverse_time(const FeedLine& l) const;

@@ -10,6 +10,7 @@
 #include "tools/cli/cli.h"
 #include "tools/cam/feed_rewrite.h"
 #include "tools/cam/feed_word.h"
+#include "tools/cam/move_split.h"
 
 namespace dexmill {
 namespace cli {
@@ -41,6 +42,15 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   Interp interp(&sink, opt);
   MotionSummary before(in.time_model), after(in.time_model);
   FeedRewriter rewriter;
+  // Each split line's pieces: where they begin in in.splits, and how many.
+  std::map<uint32_t, std::pair<std::size_t, int32_t>> split_at;
+  if (in.splits)
+    for (std::size_t k = 0, first = 0; k < in.splits->size(); ++k) {
+      if ((*in.splits)[k].last) {
+        split_at[(*in.splits)[k].line] = {first, static_cast<int32_t>(k + 1 - first)};
+        first = k + 1;
+      }
+    }
   const char* text = nullptr;
   std::size_t len = 0;
   uint32_t line = 0;
@@ -50,6 +60,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     if (rd == GcodeFile::Read::kIoError) return fail(kExitIo, "%s", file.error());
     GcodeDiag diag{};
     sink.records.clear();
+    const InterpState state_before = interp.state();
     const GcodeError ge =
         rd == GcodeFile::Read::kLine ? interp.execute_line(text, len, line, &diag) : GcodeError::kLineTooLong;
     // A line a loop runs twice would want two feeds: the rewrite is per line.
@@ -89,11 +100,30 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     fl.inch = st.inch;
     GcodeBlock b;
     GcodeLineKind kind;
-    if (gcode_read_block(text, len, line, &b, &kind, &diag) == GcodeError::kOk && kind == GcodeLineKind::kBlock) {
+    const bool block = gcode_read_block(text, len, line, &b, &kind, &diag) == GcodeError::kOk && kind == GcodeLineKind::kBlock;
+    if (block) {
       fl.has_f = b.has_word('F');
       if (fl.has_f) fl.inverse_f = b.val('F');
       fl.sets_feed = fl.has_f || b.g[kGFeedMode] >= 0;
       fl.block_delete = b.block_delete;
+    }
+    // A long move with pieces: the lines before it, the line itself the last piece.
+    MoveSplit split;
+    const auto sp = split_at.find(line);
+    if (sp != split_at.end() && fl.feeds && fl.retarget) {
+      std::vector<EngageSegment> seg;
+      for (int32_t k = 0; k < sp->second.second; ++k) seg.push_back((*in.splits)[sp->second.first + static_cast<std::size_t>(k)].segment);
+      if (block && move_splittable(b, text, len, state_before, st, sink.records)) {
+        split = move_split(sink.records[0], seg.data(), static_cast<int32_t>(seg.size()), st.inch,
+                           in.crlf ? "\r\n" : "\n");
+        out->splices.push_back(ProgramSplice{file.line_offset(), 0, split.text});
+        rewriter.modal_changed(split.last_inserted_nm_per_min);
+        fl.limit_nm_per_min = seg.back().feed_nm_per_min;
+        ++out->moves_split;
+        out->lines_added += static_cast<uint32_t>(seg.size());
+      } else {
+        ++out->splits_kept_whole;
+      }
     }
     const FeedEdit e = rewriter.line(fl);
     if (fl.feeds && fl.inverse_time && fl.limit_nm_per_min < hi && e.kind == FeedEdit::Kind::kNone) {
@@ -105,6 +135,11 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     for (CanonRecord r : sink.records) {
       before.emit(r);
       if (is_feed(r)) r.feed_nm_per_min = e.feed_nm_per_min;
+      if (split.pieces.empty()) after.emit(r);
+    }
+    for (std::size_t k = 0; k < split.pieces.size(); ++k) {  // the pieces, the last at the line's own feed
+      CanonRecord r = split.pieces[k];
+      if (k + 1 == split.pieces.size()) r.feed_nm_per_min = e.feed_nm_per_min;
       after.emit(r);
     }
     if (e.kind == FeedEdit::Kind::kNone) continue;

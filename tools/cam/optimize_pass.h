@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/canon/summary.h"
+#include "core/engage/engage_split.h"
 #include "platform/format/tool_table.h"
 
 namespace dexmill {
@@ -28,6 +29,10 @@ struct OptimizeInput {
   // --target: per line, the feed that meets it (RunResult::line_target_feeds;
   // INT64_MAX: none), bounded by the limits above; null: lower to the limits.
   const std::vector<int64_t>* targets = nullptr;
+  // --target's pieces of long moves (RunResult::target_splits; null: none):
+  // a line that can be written in pieces (tools/cam/move_split.h) is.
+  const std::vector<EngageSplitPiece>* splits = nullptr;
+  bool crlf = false;  // the program's lines end in CR LF: so do the pieces'
   MotionTimeModel time_model;
 };
 
@@ -43,6 +48,8 @@ struct OptimizeResult {
   uint32_t lines_lowered = 0;                // lines whose feed moves run slower
   uint32_t lines_restored = 0;               // lines given the programmed F back
   uint32_t lines_raised = 0;                 // lines whose feed moves run faster (--target)
+  uint32_t moves_split = 0, lines_added = 0;  // moves written in pieces, and the lines that added
+  uint32_t splits_kept_whole = 0;            // moves with pieces whose line could not be split
   std::map<int64_t, uint32_t> lowered_to;    // lowered lines by their limit, nm/min
   uint32_t left_over = 0;                    // lines left over a limit (warned): G93 with F too small to lower
   int64_t before_us = 0, after_us = 0;       // estimated time (core/canon/summary.h)

@@ -5,6 +5,7 @@
 // Three passes: the cut exactly as `dexmill run` makes it (tools/run/run_job.h,
 // which gives each line's limit), the rewrite (tools/cam/optimize_pass.h), then
 // the output, written whole or not at all.
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -39,6 +40,9 @@ struct OptimizeArgs {
   std::string out = "-";
   OptimizeTarget target;
   bool have_min_feed = false, have_max_feed = false;
+  int64_t split_min_nm = 5 * kNmPerMm;  // --split-min
+  int64_t split_lines = 10000;          // --split-lines
+  bool have_split = false;
 };
 
 int feed_value(const char* name, const char* v, int64_t* nm_per_min) {
@@ -65,6 +69,23 @@ const Option<OptimizeArgs> kOptimizeOptions[] = {
        a->have_max_feed = true;
        return feed_value("--max-feed", v, &a->target.target.max_feed_nm_per_min);
      }},
+    {"--split-min", "MM",
+     "with --target: a straight move whose load changes along it is split into pieces (at most 8) at its "
+     "changes, none shorter than MM (default 5)",
+     [](OptimizeArgs* a, const char* v) -> int {
+       a->have_split = true;
+       if (!parse_scaled(v, kNmPerMm, &a->split_min_nm) || a->split_min_nm <= 0 || a->split_min_nm > 1000 * kNmPerMm)
+         return fail(kExitUsage, "--split-min needs a length in mm above 0 and at most 1000, not '%s'", v);
+       return kExitOk;
+     }},
+    {"--split-lines", "N",
+     "with --target: the most lines the pieces add to the program (default 10000; 0: no move is split)",
+     [](OptimizeArgs* a, const char* v) -> int {
+       a->have_split = true;
+       if (!parse_scaled(v, 1, &a->split_lines) || a->split_lines < 0 || a->split_lines > 100000000)
+         return fail(kExitUsage, "--split-lines needs a whole number from 0 to 100000000, not '%s'", v);
+       return kExitOk;
+     }},
 };
 
 const CommandText kOptimizeText = {
@@ -85,7 +106,11 @@ const CommandText kOptimizeText = {
     "engagement, measured on the stock before them (the lowest of its moves'),\n"
     "raised or lowered, at most --max-feed and the materials' max_feed, at least\n"
     "--min-feed, in whole mm/min (hundredths of inch/min) rounded down. A line\n"
-    "whose moves removed nothing gets the highest feed; a plunge keeps its feed.\n",
+    "whose moves removed nothing gets the highest feed; a plunge keeps its feed.\n"
+    "A straight move whose load changes along it (it leaves the stock, breaks into\n"
+    "a pocket) is written in pieces at its changes, before its own line: G91 G1\n"
+    "lines at their feeds, then G90 and the line as written (--split-min,\n"
+    "--split-lines).\n",
     "Prints on standard error the lines changed and the estimated time before and\n"
     "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
     "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n",
@@ -143,6 +168,13 @@ void print_target_summary(const std::string& name, const OptimizeTarget& t, cons
                r.lines_lowered);
   if (kept) std::fprintf(stderr, "; %u line(s) kept their feed (plunges, or moves the load cannot be measured on)", kept);
   std::fputc('\n', stderr);
+  if (r.moves_split || r.splits_kept_whole || cut.splits_left)
+    std::fprintf(stderr, "%s: %u long move(s) split where their load changes (%u line(s) added)%s\n", name.c_str(),
+                 r.moves_split, r.lines_added,
+                 r.splits_kept_whole || cut.splits_left
+                     ? ("; " + std::to_string(r.splits_kept_whole + cut.splits_left) +
+                        " left whole (a line with more than the move, or past --split-lines)").c_str()
+                     : "");
   const EngageSummary& e = cut.engagement;
   if (cut.have_engagement)
     std::fprintf(stderr, "%s: before: thickest chip %.4f mm (line %u)%s\n", name.c_str(),
@@ -199,9 +231,14 @@ int cmd_optimize(int argc, char** argv) {
   o.job.file = input.read_path();
   o.job.strict = true;  // a program with an error is not rewritten
   o.job.feed_limits = true;
-  if (a.target.given) o.job.engage_target = &a.target.target;
-  else if (a.have_min_feed || a.have_max_feed)
-    return fail(kExitUsage, "--min-feed and --max-feed bound --target's feeds: give --target");
+  if (a.target.given) {
+    o.job.engage_target = &a.target.target;
+    o.job.split_rule.min_segment_nm = a.split_min_nm;
+    o.job.split_rule.max_segments = a.split_lines > 0 ? kEngageMaxSegments : 0;
+    o.job.split_pieces = static_cast<size_t>(a.split_lines);
+  } else if (a.have_min_feed || a.have_max_feed || a.have_split) {
+    return fail(kExitUsage, "--min-feed, --max-feed, --split-min and --split-lines are --target's: give --target");
+  }
   o.out.print_summary = false;
   o.view.material_warnings = false;
   RunResult cut_result;
@@ -225,10 +262,17 @@ int cmd_optimize(int argc, char** argv) {
   in.shown_name = shown;
   in.inch = o.job.read.inch;
   in.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
+  {  // the first line's end says the program's
+    const auto nl = std::find(bytes.begin(), bytes.end(), static_cast<unsigned char>('\n'));
+    in.crlf = nl != bytes.begin() && nl != bytes.end() && *(nl - 1) == '\r';
+  }
   SingleToolLibrary single(o.job.tool);  // without a table: the --tool radius for G41/G42, as the cut had it
   in.tools = o.job.read.tools_file.empty() ? static_cast<const ToolTable*>(&single) : &table;
   in.limits = &limits;
-  if (a.target.given) in.targets = &cut_result.line_target_feeds;
+  if (a.target.given) {
+    in.targets = &cut_result.line_target_feeds;
+    in.splits = &cut_result.target_splits;
+  }
   in.time_model.rapid_nm_per_min = o.job.rapid_nm_per_min;
   in.time_model.accel_nm_per_s2 = o.job.accel_nm_per_s2;
   OptimizeResult res;

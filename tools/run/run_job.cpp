@@ -398,6 +398,10 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
       result->line_target_feeds.assign(t->feed_nm_per_min, t->feed_nm_per_min + t->n);
       result->line_target_kept.assign(t->kept, t->kept + t->n);
     }
+    if (const EngageSplits* t = sim.target_splits()) {
+      result->target_splits.assign(t->pieces, t->pieces + t->n);
+      result->splits_left = t->left;
+    }
     if (const EngageSummary* e = sim.engagement()) {
       result->engagement = *e;
       result->have_engagement = true;

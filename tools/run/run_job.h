@@ -38,6 +38,10 @@ struct RunResult {
   // kept its programmed feed (a plunge, no spindle speed, ...).
   std::vector<int64_t> line_target_feeds;
   std::vector<uint8_t> line_target_kept;
+  // With a split rule: the moves split, each its pieces in order (the
+  // last marked), and how many moves were left whole for want of room.
+  std::vector<EngageSplitPiece> target_splits;
+  uint64_t splits_left = 0;
   EngageSummary engagement;  // the run's largest (with engagement measured)
   bool have_engagement = false;
   // What it found, at its lines (the first kChainFindingsKept, and the

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/engage/engage_split.h"
 #include "core/engage/engage_target.h"
 #include "core/stock/stock_transform.h"
 #include "core/assess/assess.h"
@@ -135,6 +136,10 @@ struct JobOptions {
   bool feed_limits = false;
   // `dexmill optimize --target`: each line's feed for it (core/engage/engage_target.h).
   const EngageTarget* engage_target = nullptr;
+  // And its splits of long moves (core/engage/engage_split.h; max_segments
+  // 0: none), at most split_pieces pieces in all.
+  EngageSplitRule split_rule;
+  size_t split_pieces = 0;
 };
 
 struct OutputOptions {

@@ -335,6 +335,8 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     if (o.job.engage_target) {
       j.engage_target = o.job.engage_target;
       j.target_lines = static_cast<size_t>(run->rep.lines) + 1;  // lines 0 .. the last
+      j.split_rule = o.job.split_rule;
+      j.split_pieces = o.job.split_pieces;
     }
     for (int k = 0; k < scan.ntools && run->print; ++k)  // said once a tool: the chip per tooth rests on it
       if (scan.tools[k].flutes == 0 && (k == 0 ? scan.cuts[0] : true)) {

@@ -5,8 +5,9 @@
 # both programs simulated with --check load. One line a program: the
 # estimated cycle time before and after, the thickest chip and largest
 # power before and after, the load findings after (none may remain), the
-# highest feed written against the material's max_feed, and whether the
-# two heightmaps are byte-identical (they must be: only F words change).
+# highest feed written, the long moves split in pieces, and whether the
+# two heightmaps are byte-identical (they must be: the pieces lie on the
+# moves, within 1.3 nm).
 # Then the median time change. Exit 1 when a program's output breaks a
 # limit or cuts a different stock.
 #
@@ -45,7 +46,7 @@ seconds() { echo "$1" | awk -F: '{ s = 0; for (k = 1; k <= NF; ++k) s = s * 60 +
 
 bad=0 n=0
 changes=()
-printf '%-36s %9s %9s %7s  %-17s %-13s %4s %-15s %s\n' program before after change "chip mm (before>after)" "power W" finds "max feed" stock
+printf '%-36s %9s %9s %7s  %-17s %-13s %4s %-9s %5s %s\n' program before after change "chip mm (before>after)" "power W" finds "max feed" split stock
 while IFS='|' read -r name prog opts; do
   [ -f "$prog" ] || { echo "optimize-set: $prog missing, skipped"; continue; }
   w="$tmp/$n"; mkdir -p "$w"
@@ -56,6 +57,7 @@ while IFS='|' read -r name prog opts; do
   t0=$(echo "$line" | sed -E 's/.*estimated time ([0-9:.]+) before.*/\1/')
   t1=$(echo "$line" | sed -E 's/.* before, ([0-9:.]+) after.*/\1/')
   pct=$(echo "$line" | sed -E 's/.*after \(([-+0-9.]+)%\).*/\1/')
+  split=$(grep -m1 -oE '[0-9]+ long move\(s\) split' "$w/opt.err" | cut -d' ' -f1)
   for which in before after; do
     p=$prog; [ $which = after ] && p=$w/opt.nc
     # shellcheck disable=SC2086
@@ -67,10 +69,10 @@ while IFS='|' read -r name prog opts; do
   finds=$(grep -o '"load": {"spindle_power_w": [^,]*, "total": [0-9]*' "$w/after.json" | sed 's/.*: //')
   feed=$(grep -oE '[Ff] *[0-9.]+' "$w/opt.nc" | tr -d 'Ff ' | sort -g | tail -1)
   same=identical
-  cmp -s "$w/before.pgm" "$w/after.pgm" || { same=DIFFERENT; bad=1; }
+  cmp -s "$w/before.pgm" "$w/after.pgm" || { same="DIFFERENT($(cmp -l "$w/before.pgm" "$w/after.pgm" | wc -l)B)"; bad=1; }
   [ "${finds:-0}" = 0 ] || bad=1
-  printf '%-36s %9s %9s %6s%%  %-8s> %-8s %5s> %-6s %4s %-15s %s\n' "$name" "$t0" "$t1" "$pct" "${c0:--}" "${c1:--}" \
-    "${p0:--}" "${p1:--}" "${finds:-?}" "F$feed" "$same"
+  printf '%-36s %9s %9s %6s%%  %-8s> %-8s %5s> %-6s %4s %-9s %5s %s\n' "$name" "$t0" "$t1" "$pct" "${c0:--}" "${c1:--}" \
+    "${p0:--}" "${p1:--}" "${finds:-?}" "F$feed" "${split:-0}" "$same"
   changes+=("$pct")
   n=$((n + 1))
 done < <(set_list)
