@@ -15,8 +15,13 @@ bool differ(int64_t a, int64_t b) {
   return hi - lo > muldiv_floor(lo, kEngageSplitChangePpm, 1000000);
 }
 
+// A piece while the runs are found (16 bytes: a move's 128 on the stack).
+struct Run {
+  int64_t end_nm, feed_nm_per_min;
+};
+
 // Merges piece k with piece k + 1 (the lower feed).
-void merge(EngageSegment* seg, int32_t* count, int32_t k) {
+void merge(Run* seg, int32_t* count, int32_t k) {
   seg[k].end_nm = seg[k + 1].end_nm;
   seg[k].feed_nm_per_min = min_of(seg[k].feed_nm_per_min, seg[k + 1].feed_nm_per_min);
   for (int32_t j = k + 1; j + 1 < *count; ++j) seg[j] = seg[j + 1];
@@ -47,7 +52,7 @@ int32_t engage_split(const int64_t* s_nm, const int64_t* feed_nm_per_min, int32_
   // Runs of samples whose covered feeds stay within the change of the
   // run's lowest (a gradual fall stays one run at its lowest), a piece a
   // run.
-  EngageSegment seg[kEngageMaxSamples];
+  Run seg[kEngageMaxSamples];
   int32_t count = 0;
   int64_t run_lo = covered(feed_nm_per_min, n, 0);
   for (int32_t k = 1; k < n; ++k) {
@@ -56,13 +61,13 @@ int32_t engage_split(const int64_t* s_nm, const int64_t* feed_nm_per_min, int32_
       // Rising load (the next is slower): the slow piece starts at the
       // last light sample; falling: the slow one ends at the first light.
       const int64_t at = f < run_lo ? s_nm[k - 1] : s_nm[k];
-      seg[count++] = EngageSegment{at, run_lo};
+      seg[count++] = Run{at, run_lo};
       run_lo = f;
     } else {
       run_lo = min_of(run_lo, f);
     }
   }
-  seg[count++] = EngageSegment{length_nm, run_lo};
+  seg[count++] = Run{length_nm, run_lo};
   // No piece shorter than the minimum: the shortest merged into the
   // neighbour nearer its feed, until none is.
   for (;;) {
@@ -101,7 +106,7 @@ int32_t engage_split(const int64_t* s_nm, const int64_t* feed_nm_per_min, int32_
   int64_t whole = time_of(length_nm, lowest), split = 0;
   for (int32_t k = 0; k < count; ++k) split += time_of(seg[k].end_nm - (k ? seg[k - 1].end_nm : 0), seg[k].feed_nm_per_min);
   if (whole - split < muldiv_floor(whole, kEngageSplitGainPpm, 1000000)) return 1;
-  for (int32_t k = 0; k < count; ++k) out[k] = seg[k];
+  for (int32_t k = 0; k < count; ++k) out[k] = EngageSegment{seg[k].end_nm, seg[k].feed_nm_per_min, PointNm{0, 0, 0}};
   return count;
 }
 
