@@ -120,6 +120,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
         rewriter.modal_changed(split.last_inserted_nm_per_min);
         fl.limit_nm_per_min = seg.back().feed_nm_per_min;
         ++out->moves_split;
+        out->split_moves.emplace_back(line, sink.records[0]);
         out->lines_added += static_cast<uint32_t>(seg.size());
       } else {
         ++out->splits_kept_whole;

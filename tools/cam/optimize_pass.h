@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/canon/canon.h"
 #include "core/canon/summary.h"
 #include "core/engage/engage_split.h"
 #include "platform/format/tool_table.h"
@@ -50,6 +51,8 @@ struct OptimizeResult {
   uint32_t lines_raised = 0;                 // lines whose feed moves run faster (--target)
   uint32_t moves_split = 0, lines_added = 0;  // moves written in pieces, and the lines that added
   uint32_t splits_kept_whole = 0;            // moves with pieces whose line could not be split
+  std::vector<std::pair<uint32_t, CanonRecord>> split_moves;  // the moves written in pieces: line, record
+  uint32_t splits_undone = 0;                // undone after the output's check cut (cmd_optimize.cpp)
   std::map<int64_t, uint32_t> lowered_to;    // lowered lines by their limit, nm/min
   uint32_t left_over = 0;                    // lines left over a limit (warned): G93 with F too small to lower
   int64_t before_us = 0, after_us = 0;       // estimated time (core/canon/summary.h)

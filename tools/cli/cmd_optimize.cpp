@@ -5,14 +5,20 @@
 // Three passes: the cut exactly as `dexmill run` makes it (tools/run/run_job.h,
 // which gives each line's limit), the rewrite (tools/cam/optimize_pass.h), then
 // the output, written whole or not at all.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "platform/input/file_guard.h"
 #include "platform/os/output_file.h"
+#include "platform/os/temp_file.h"
 #include "platform/os/process.h"
 #include "platform/input/program_input.h"
 #include "platform/os/read_file.h"
@@ -110,7 +116,9 @@ const CommandText kOptimizeText = {
     "A straight move whose load changes along it (it leaves the stock, breaks into\n"
     "a pocket) is written in pieces at its changes, before its own line: G91 G1\n"
     "lines at their feeds, then G90 and the line as written (--split-min,\n"
-    "--split-lines).\n",
+    "--split-lines). The output is then cut again, and a split whose pieces leave\n"
+    "a dexel apart from the whole move's (the sweep's rounding) is undone: the\n"
+    "output cuts the same stock, byte for byte.\n",
     "Prints on standard error the lines changed and the estimated time before and\n"
     "after (--rapid, --accel as for run). Exit 0 ok, 1 input errors (the program, the\n"
     "material file, the tool table: nothing is written), 2 usage, 3 I/O.\n",
@@ -168,6 +176,9 @@ void print_target_summary(const std::string& name, const OptimizeTarget& t, cons
                r.lines_lowered);
   if (kept) std::fprintf(stderr, "; %u line(s) kept their feed (plunges, or moves the load cannot be measured on)", kept);
   std::fputc('\n', stderr);
+  if (r.splits_undone)
+    std::fprintf(stderr, "%s: %u split(s) undone where the pieces' sweep rounded a dexel apart from the whole move's: "
+                 "the output cuts the same stock\n", name.c_str(), r.splits_undone);
   if (r.moves_split || r.splits_kept_whole || cut.splits_left)
     std::fprintf(stderr, "%s: %u long move(s) split where their load changes (%u line(s) added)%s\n", name.c_str(),
                  r.moves_split, r.lines_added,
@@ -184,6 +195,64 @@ void print_target_summary(const std::string& name, const OptimizeTarget& t, cons
                                   : "");
   if (r.lines_raised == 0 && r.lines_lowered == 0)
     std::fprintf(stderr, "%s: every feed move is already at the target or a limit: nothing to gain\n", name.c_str());
+}
+
+// The horizontal distance from (x, y) to the segment a-b (a reach test).
+int64_t segment_distance_nm(const PointNm& a, const PointNm& b, int64_t x, int64_t y) {
+  const double dx = static_cast<double>(b.x_nm - a.x_nm), dy = static_cast<double>(b.y_nm - a.y_nm);
+  const double px = static_cast<double>(x - a.x_nm), py = static_cast<double>(y - a.y_nm);
+  const double l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::min(1.0, std::max(0.0, (px * dx + py * dy) / l2)) : 0.0;
+  return static_cast<int64_t>(std::hypot(px - t * dx, py - t * dy));
+}
+
+// Cuts `text` (the output) as the input was cut and lists the split lines
+// whose move reaches a dexel where the two stocks differ (every split
+// line when a difference is near none of them).
+int split_differences(const RunOptions& o, const std::string& text, const RunResult& before, const OptimizeResult& res,
+                      std::vector<uint32_t>* lines) {
+  LockedTemp t;
+  const char* dir = std::getenv("TMPDIR");
+  if (!make_locked_temp(dir && *dir ? dir : "/tmp", "dexmill-optimize-", 0600, &t))
+    return fail(kExitIo, "cannot make a temporary file to check the output: %s", std::strerror(errno));
+  struct Remove {
+    LockedTemp* t;
+    ~Remove() {
+      std::remove(t->path.c_str());
+      release_locked_temp(t);
+    }
+  } remove{&t};
+  const bool wrote = ::write(t.fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  if (::close(t.fd) != 0 || !wrote) return t.fd = -1, fail(kExitIo, "cannot write the output's check copy %s", t.path.c_str());
+  t.fd = -1;
+  RunOptions c = o;
+  c.job.file = t.path;
+  c.job.shown_name = "the output";
+  c.job.engage_target = nullptr;
+  c.job.feed_limits = false;
+  c.job.split_rule = EngageSplitRule();
+  c.job.keep_tops = c.job.silent = true;
+  FileGuard guard;
+  if (const int code = guard_status(guard, guard.register_input(c.job.file, FileGuard::kProgram))) return code;
+  RunResult after;
+  if (const int code = run_job(c, &guard, &after)) return code;
+  if (after.tops.size() != before.tops.size()) return fail(kExitIo, "the output's check cut another grid");
+  const GridGeometry& g = before.grid;
+  const int64_t reach = before.max_tool_radius_nm + 2 * g.pitch_nm;
+  bool any = false;
+  for (size_t k = 0; k < before.tops.size(); ++k) {
+    if (before.tops[k] == after.tops[k]) continue;
+    any = true;
+    const int64_t x = g.x0_nm + static_cast<int64_t>(k % static_cast<size_t>(g.nx)) * g.pitch_nm;
+    const int64_t y = g.y0_nm + static_cast<int64_t>(k / static_cast<size_t>(g.nx)) * g.pitch_nm;
+    for (const auto& m : res.split_moves)
+      if (segment_distance_nm(m.second.start, m.second.end, x, y) <= reach &&
+          std::find(lines->begin(), lines->end(), m.first) == lines->end())
+        lines->push_back(m.first);
+  }
+  if (any && lines->empty())
+    for (const auto& m : res.split_moves) lines->push_back(m.first);
+  return kExitOk;
 }
 
 }  // namespace
@@ -233,6 +302,7 @@ int cmd_optimize(int argc, char** argv) {
   o.job.feed_limits = true;
   if (a.target.given) {
     o.job.engage_target = &a.target.target;
+    o.job.keep_tops = true;  // the output's check compares its stock with this one
     o.job.split_rule.min_segment_nm = a.split_min_nm;
     o.job.split_rule.max_segments = a.split_lines > 0 ? kEngageMaxSegments : 0;
     o.job.split_pieces = static_cast<size_t>(a.split_lines);
@@ -282,7 +352,31 @@ int cmd_optimize(int argc, char** argv) {
   // one read into memory.
   if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
   const std::string program(bytes.begin(), bytes.end());
-  const std::string text = apply_splices(program, res.splices);
+  std::string text = apply_splices(program, res.splices);
+  // Split moves: the output cut again, and every split whose pieces the
+  // sweep rounded differently from the whole move (a dexel one LSB apart
+  // within its reach) undone, until the output cuts the input's stock
+  // exactly.
+  uint32_t undone = 0;
+  std::vector<EngageSplitPiece> kept_splits = cut_result.target_splits;
+  for (int round = 0; res.moves_split > 0; ++round) {
+    std::vector<uint32_t> lines;
+    const int v = split_differences(o, text, cut_result, res, &lines);
+    if (v != kExitOk) return v;
+    if (lines.empty()) break;
+    if (round == 2) lines.clear();  // still apart: no split at all
+    auto undo = [&](uint32_t line) { return lines.empty() || std::find(lines.begin(), lines.end(), line) != lines.end(); };
+    for (const auto& m : res.split_moves) undone += undo(m.first);
+    std::vector<EngageSplitPiece> next;
+    for (const EngageSplitPiece& p : kept_splits)
+      if (!undo(p.line)) next.push_back(p);
+    kept_splits.swap(next);
+    in.splits = &kept_splits;
+    res = OptimizeResult();
+    if (const int again = optimize_pass(in, &res)) return again;
+    text = apply_splices(program, res.splices);
+  }
+  res.splits_undone = undone;
   char e[1300];
   if (!write_output(out_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
   print_summary(shown, res);

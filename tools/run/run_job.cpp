@@ -377,6 +377,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
   su.guard = guard;
   su.rep.run_started = clock_utc_text();
   su.rep.run_pid = static_cast<long>(getpid());
+  su.print = !o.job.silent;
   if (const int code = run_setup(&o, &su)) {
     if (su.refused && !write_report(o, &run)) return kExitIo;  // --strict: the report of a program not cut
     return code;
@@ -397,6 +398,12 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
     if (const EngageLineFeeds* t = sim.target_feeds()) {
       result->line_target_feeds.assign(t->feed_nm_per_min, t->feed_nm_per_min + t->n);
       result->line_target_kept.assign(t->kept, t->kept + t->n);
+    }
+    if (o.job.keep_tops) {
+      const DexelGrid<height_t>& g = sim.grid();
+      result->tops.assign(g.top, g.top + static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny));
+      result->grid = GridGeometry{g.nx, g.ny, g.x0_nm, g.y0_nm, g.pitch_nm, g.z0_nm, g.lsb_nm};
+      for (const Tool& t : su.tools) result->max_tool_radius_nm = max_of(result->max_tool_radius_nm, t.diameter_nm / 2);
     }
     if (const EngageSplits* t = sim.target_splits()) {
       result->target_splits.assign(t->pieces, t->pieces + t->n);

@@ -42,6 +42,11 @@ struct RunResult {
   // last marked), and how many moves were left whole for want of room.
   std::vector<EngageSplitPiece> target_splits;
   uint64_t splits_left = 0;
+  // With JobOptions::keep_tops: the final tops (LSB, nx * ny) and where
+  // the grid is, and the largest tool radius the program uses.
+  std::vector<uint32_t> tops;
+  GridGeometry grid{};
+  int64_t max_tool_radius_nm = 0;
   EngageSummary engagement;  // the run's largest (with engagement measured)
   bool have_engagement = false;
   // What it found, at its lines (the first kChainFindingsKept, and the

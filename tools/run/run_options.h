@@ -140,6 +140,9 @@ struct JobOptions {
   // 0: none), at most split_pieces pieces in all.
   EngageSplitRule split_rule;
   size_t split_pieces = 0;
+  // `dexmill optimize`'s check of its output: the final tops kept in the
+  // result (RunResult::tops), and no diagnostic printed.
+  bool keep_tops = false, silent = false;
 };
 
 struct OutputOptions {
