@@ -71,6 +71,7 @@ MoveSplit move_split(const CanonRecord& r, const EngageSegment* seg, int32_t cou
     at = p;
   }
   out.text += std::string("G90") + eol;
+  out.last_feed_nm_per_min = seg[count - 1].feed_nm_per_min;
   CanonRecord last = r;
   last.start = at;
   out.pieces.push_back(last);

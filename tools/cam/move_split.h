@@ -34,6 +34,7 @@ struct MoveSplit {
   std::string text;                 // the lines before the move's, each ending in `eol`
   std::vector<CanonRecord> pieces;  // every piece as a record (the last: the move's line), for the time estimate
   int64_t last_inserted_nm_per_min = 0;  // the modal feed the move's line meets
+  int64_t last_feed_nm_per_min = 0;      // the last piece's (the move's line's) feed
 };
 
 // The pieces of r (a straight feed move, horizontal length > 0) at the

@@ -27,6 +27,32 @@ bool is_feed(const CanonRecord& r) { return r.kind == CanonKind::kFeed || r.kind
 
 std::string mm_per_min(int64_t nm_per_min) { return feed_number(nm_per_min, false, 0).text; }
 
+// Each split line's pieces: where they begin in the splits, and how many.
+using SplitIndex = std::map<uint32_t, std::pair<std::size_t, int32_t>>;
+SplitIndex split_index(const std::vector<EngageSplitPiece>* splits) {
+  SplitIndex at;
+  for (std::size_t k = 0, first = 0; splits && k < splits->size(); ++k)
+    if ((*splits)[k].last) {
+      at[(*splits)[k].line] = {first, static_cast<int32_t>(k + 1 - first)};
+      first = k + 1;
+    }
+  return at;
+}
+
+// The pieces of the line's move r (in.splits[first, first + count)), put
+// before the line, which starts at byte line_at.
+MoveSplit split_line(const OptimizeInput& in, std::pair<std::size_t, int32_t> pieces, const CanonRecord& r, bool inch,
+                     uint32_t line, uint64_t line_at, OptimizeResult* out) {
+  std::vector<EngageSegment> seg;
+  for (int32_t k = 0; k < pieces.second; ++k) seg.push_back((*in.splits)[pieces.first + static_cast<std::size_t>(k)].segment);
+  MoveSplit split = move_split(r, seg.data(), static_cast<int32_t>(seg.size()), inch, in.crlf ? "\r\n" : "\n");
+  out->splices.push_back(ProgramSplice{line_at, 0, split.text});
+  ++out->moves_split;
+  out->split_moves.emplace_back(line, r);
+  out->lines_added += static_cast<uint32_t>(seg.size());
+  return split;
+}
+
 }  // namespace
 
 int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
@@ -42,15 +68,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   Interp interp(&sink, opt);
   MotionSummary before(in.time_model), after(in.time_model);
   FeedRewriter rewriter;
-  // Each split line's pieces: where they begin in in.splits, and how many.
-  std::map<uint32_t, std::pair<std::size_t, int32_t>> split_at;
-  if (in.splits)
-    for (std::size_t k = 0, first = 0; k < in.splits->size(); ++k) {
-      if ((*in.splits)[k].last) {
-        split_at[(*in.splits)[k].line] = {first, static_cast<int32_t>(k + 1 - first)};
-        first = k + 1;
-      }
-    }
+  const SplitIndex split_at = split_index(in.splits);
   const char* text = nullptr;
   std::size_t len = 0;
   uint32_t line = 0;
@@ -111,17 +129,10 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
     MoveSplit split;
     const auto sp = split_at.find(line);
     if (sp != split_at.end() && fl.feeds && fl.retarget) {
-      std::vector<EngageSegment> seg;
-      for (int32_t k = 0; k < sp->second.second; ++k) seg.push_back((*in.splits)[sp->second.first + static_cast<std::size_t>(k)].segment);
       if (block && move_splittable(b, text, len, state_before, st, sink.records)) {
-        split = move_split(sink.records[0], seg.data(), static_cast<int32_t>(seg.size()), st.inch,
-                           in.crlf ? "\r\n" : "\n");
-        out->splices.push_back(ProgramSplice{file.line_offset(), 0, split.text});
+        split = split_line(in, sp->second, sink.records[0], st.inch, line, file.line_offset(), out);
         rewriter.modal_changed(split.last_inserted_nm_per_min);
-        fl.limit_nm_per_min = seg.back().feed_nm_per_min;
-        ++out->moves_split;
-        out->split_moves.emplace_back(line, sink.records[0]);
-        out->lines_added += static_cast<uint32_t>(seg.size());
+        fl.limit_nm_per_min = split.last_feed_nm_per_min;
       } else {
         ++out->splits_kept_whole;
       }

@@ -255,6 +255,34 @@ int split_differences(const RunOptions& o, const std::string& text, const RunRes
   return kExitOk;
 }
 
+// Split moves: the output cut again, and every split whose pieces the
+// sweep rounded differently from the whole move (a dexel one LSB apart
+// within its reach) undone, until the output cuts the input's stock
+// exactly (*splits, *res and *text the pass's again).
+int check_splits(const RunOptions& o, const RunResult& cut, const std::string& program, OptimizeInput* in,
+                 std::vector<EngageSplitPiece>* splits, OptimizeResult* res, std::string* text) {
+  uint32_t undone = 0;
+  for (int round = 0; res->moves_split > 0; ++round) {
+    std::vector<uint32_t> lines;
+    const int v = split_differences(o, *text, cut, *res, &lines);
+    if (v != kExitOk) return v;
+    if (lines.empty()) break;
+    if (round == 2) lines.clear();  // still apart: no split at all
+    auto undo = [&](uint32_t line) { return lines.empty() || std::find(lines.begin(), lines.end(), line) != lines.end(); };
+    for (const auto& m : res->split_moves) undone += undo(m.first);
+    std::vector<EngageSplitPiece> next;
+    for (const EngageSplitPiece& p : *splits)
+      if (!undo(p.line)) next.push_back(p);
+    splits->swap(next);
+    in->splits = splits;
+    *res = OptimizeResult();
+    if (const int again = optimize_pass(*in, res)) return again;
+    *text = apply_splices(program, res->splices);
+  }
+  res->splits_undone = undone;
+  return kExitOk;
+}
+
 }  // namespace
 
 CommandDoc optimize_doc() { return command_doc(optimize_table()); }
@@ -353,30 +381,8 @@ int cmd_optimize(int argc, char** argv) {
   if (!input.unchanged(&err)) return fail(kExitIo, "%s", err.c_str());
   const std::string program(bytes.begin(), bytes.end());
   std::string text = apply_splices(program, res.splices);
-  // Split moves: the output cut again, and every split whose pieces the
-  // sweep rounded differently from the whole move (a dexel one LSB apart
-  // within its reach) undone, until the output cuts the input's stock
-  // exactly.
-  uint32_t undone = 0;
   std::vector<EngageSplitPiece> kept_splits = cut_result.target_splits;
-  for (int round = 0; res.moves_split > 0; ++round) {
-    std::vector<uint32_t> lines;
-    const int v = split_differences(o, text, cut_result, res, &lines);
-    if (v != kExitOk) return v;
-    if (lines.empty()) break;
-    if (round == 2) lines.clear();  // still apart: no split at all
-    auto undo = [&](uint32_t line) { return lines.empty() || std::find(lines.begin(), lines.end(), line) != lines.end(); };
-    for (const auto& m : res.split_moves) undone += undo(m.first);
-    std::vector<EngageSplitPiece> next;
-    for (const EngageSplitPiece& p : kept_splits)
-      if (!undo(p.line)) next.push_back(p);
-    kept_splits.swap(next);
-    in.splits = &kept_splits;
-    res = OptimizeResult();
-    if (const int again = optimize_pass(in, &res)) return again;
-    text = apply_splices(program, res.splices);
-  }
-  res.splits_undone = undone;
+  if (const int code = check_splits(o, cut_result, program, &in, &kept_splits, &res, &text)) return code;
   char e[1300];
   if (!write_output(out_path.c_str(), text.data(), text.size(), e, sizeof e)) return fail(kExitIo, "%s", e);
   print_summary(shown, res);
