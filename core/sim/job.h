@@ -15,6 +15,7 @@
 #include "core/cut/mill.h"
 #include "core/design/design.h"
 #include "core/engage/engage_meter.h"
+#include "core/canon/machine.h"
 #include "core/engage/engage_split.h"
 #include "core/engage/engage_target.h"
 #include "core/gcode/error.h"
@@ -100,6 +101,10 @@ struct SimJob {
   const DesignGrid* design = nullptr;   // the gouge watch against this part (null: off); its geometry is plan.geo's
   AssessOptions assess{};               // its tolerances and the columns assessed
   const StockComposition* material = nullptr;  // the process rules of the stock's materials (null: off)
+  // The machine (core/canon/machine.h; null: none) and its soft limits as
+  // findings (core/safety/travel_watch.h; needs machine).
+  const MachineSpec* machine = nullptr;
+  bool travel_check = false;
   // Engagement (core/engage/engage_meter.h): every feed move's load,
   // measured on the stock before it cuts, given to engage_sink when set
   // and summed up (Simulation::engagement()). Off: nothing is sampled.

@@ -47,6 +47,7 @@
 #include "core/sim/chunk_input.h"
 #include "core/sim/gcode_runner.h"
 #include "core/sim/job.h"
+#include "core/safety/travel_watch.h"
 #include "core/sim/provenance.h"
 
 namespace dexmill {
@@ -224,6 +225,7 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   const ProcessWatch* process() const { return job_.material ? &process_ : nullptr; }
   const EngageSummary* engagement() const { return job_.engagement ? &engage_sum_ : nullptr; }
   const LoadWatch* load() const { return job_.engagement && job_.load_check ? &load_ : nullptr; }
+  const TravelWatch* travel() const { return travel_on_ ? &travel_ : nullptr; }
   // engage_colours: each column's load band, nx * ny (null when off).
   uint8_t* engage_classes() const { return engage_cls_; }
   // Whether its bands are by the load limits (the spindle's power, a
@@ -315,6 +317,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   uint32_t* process_shadow_;
   int64_t* line_feed_limits_;
   uint8_t* process_seen_;
+  TravelWatch travel_;
+  bool travel_on_ = false;
   EngageMeter engage_;
   EngageSummary engage_sum_;
   LoadWatch load_;

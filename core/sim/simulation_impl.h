@@ -313,6 +313,8 @@ void SimulationT<H>::start() {
   for (size_t k = 0; engage_cls_ && k < cells; ++k) engage_cls_[k] = 0;  // uncut
   engage_band_ = 0;
   load_.spindle_power_mw = job_.spindle_power_mw;
+  travel_on_ = job_.travel_check && job_.machine;
+  if (travel_on_) travel_watch_init(&travel_, *job_.machine);
   if (target_lines_.n) engage_line_feeds_clear(&target_lines_);
   splits_.n = 0;
   splits_.moves = splits_.left = 0;
@@ -452,6 +454,7 @@ void SimulationT<H>::process(const Queued& q) {
     gouged_ = true;
     ++gouge_finds_;
   }
+  if (travel_on_) (void)travel_watch_check(&travel_, r);
   const bool spindle_on = q.spindle_dir != 0;
   SafetyMove m{r.line, r.kind == CanonKind::kTraverse, spindle_on, moved_};
   if (safety_on_) {

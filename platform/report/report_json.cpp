@@ -295,6 +295,28 @@ std::string load_text(const RunReport& r) {
   return o + (l.kept.empty() ? "]},\n" : "\n    ]},\n");
 }
 
+// "machine": {"file": ..., "kind": ..., "travel_mm": {"x": [MIN, MAX] or null, ...},
+// "defaults": [...]}, then "travel": {"total": N, "findings": [...]} with --check travel.
+std::string machine_text(const RunReport& r) {
+  const ReportMachine& m = r.machine;
+  std::string o = "  \"machine\": {\"file\": " + quoted(m.file) + ", \"kind\": " + quoted(m.kind) + ", \"travel_mm\": {";
+  for (int a = 0; a < 3; ++a)
+    o += std::string(a ? ", " : "") + "\"" + "xyz"[a] + "\": " +
+         (m.limited[a] ? "[" + m.min_mm[a] + ", " + m.max_mm[a] + "]" : std::string("null"));
+  o += "}, \"defaults\": [";
+  for (std::size_t k = 0; k < m.said.size(); ++k) o += (k ? ", " : "") + quoted(m.said[k]);
+  o += "]},\n";
+  if (!m.have_travel) return o;
+  o += "  \"travel\": {\"total\": " + u64(m.travel_total) + ", \"findings\": [";
+  for (std::size_t k = 0; k < m.findings.size(); ++k) {
+    const ReportMachine::Finding& f = m.findings[k];
+    o += std::string(k ? ",\n      " : "\n      ") + "{\"line\": " + u64(f.line) + ", \"at\": " +
+         quoted(r.file + ":" + std::to_string(f.line)) + ", \"axis\": " + quoted(f.axis) + ", \"side\": " +
+         quoted(f.side) + ", \"by_mm\": " + f.by_mm + ", \"message\": " + quoted(f.message) + "}";
+  }
+  return o + (m.findings.empty() ? "]},\n" : "\n    ]},\n");
+}
+
 }  // namespace
 
 std::string report_json_text(const RunReport& r) {
@@ -358,6 +380,7 @@ std::string report_json_text(const RunReport& r) {
   o += r.have_materials ? materials_text(r) : std::string("  \"materials\": null,\n");
   if (r.have_engagement) o += engagement_text(r);
   if (r.have_load) o += load_text(r);
+  if (r.have_machine) o += machine_text(r);
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

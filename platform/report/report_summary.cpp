@@ -60,6 +60,19 @@ std::string report_summary_text(const RunReport& r) {
                                 nm_to_mm_text(r.accel_nm_per_s2, r.accel_nm_per_s2 % 1000000 ? 3 : 0) +
                                 " mm/s^2 (an upper bound: no blending)\n"
                           : std::string("no acceleration (a lower bound; --accel MM/S2 for a machine's)\n"));
+  if (r.have_machine) {  // the machine, what it gave and what the options kept
+    const ReportMachine& m = r.machine;
+    o += "machine  " + m.file + " (" + (m.kind == "grbl" ? "grbl" : "LinuxCNC") + "): travel";
+    for (int a = 0; a < 3; ++a)
+      o += std::string(" ") + "XYZ"[a] + (m.limited[a] ? m.min_mm[a] + ".." + m.max_mm[a] : std::string(" unlimited"));
+    o += "\n";
+    for (const std::string& d : m.said) o += "         " + d + "\n";
+    if (m.have_travel) {
+      std::snprintf(b, sizeof b, "travel   %" PRIu64 " move(s) past a soft limit%s\n", m.travel_total,
+                    m.travel_total ? " (on standard error)" : "");
+      o += b;
+    }
+  }
   if (r.have_assessment) {
     const ReportAssessment& a = r.assessment;
     std::snprintf(b, sizeof b, "design   %" PRIu64 " gouge(s)\n", static_cast<uint64_t>(a.gouges_total));

@@ -113,6 +113,19 @@ struct ReportEngagement {
   ReportEngageSet program;
   std::vector<std::pair<int32_t, ReportEngageSet>> tools;  // by tool number
 };
+struct ReportMachine {  // --machine: the machine, what it gave, and --check travel's findings
+  std::string file, kind;  // "linuxcnc", "grbl"
+  bool limited[3] = {false, false, false};
+  std::string min_mm[3], max_mm[3];  // as JSON writes them
+  std::vector<std::string> said;     // the defaults it gave, and the options that won
+  bool have_travel = false;
+  uint64_t travel_total = 0;
+  struct Finding {
+    uint32_t line;
+    std::string axis, side, by_mm, message;
+  };
+  std::vector<Finding> findings;  // the first 100
+};
 struct ReportLoad {  // --check load's findings
   int64_t spindle_power_mw = 0;  // 0: no power limit
   uint64_t total = 0;
@@ -191,6 +204,8 @@ struct RunReport {
   ReportEngagement engagement;
   bool have_load = false;
   ReportLoad load;
+  bool have_machine = false;
+  ReportMachine machine;
   std::vector<std::pair<std::string, double>> timing;  // stage name, seconds
   // The run that wrote the report and what else it wrote (platform/os/output_set.h:
   // the report is published last).

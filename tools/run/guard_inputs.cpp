@@ -25,6 +25,7 @@ int guard_job_inputs(const JobOptions& job, const std::string& program, FileGuar
     if (const int code = guard_status(*guard, guard->register_input(job.material, "--material"))) return code;
   if (!job.builtin && !job.demo_design)
     if (const int code = guard_status(*guard, guard->register_input(job.design, "--design"))) return code;
+  if (const int code = guard_status(*guard, guard->register_input(job.machine_file, "--machine"))) return code;
   if (const int code = guard_status(*guard, guard->register_input(job.stock_file, "--stock"))) return code;
   return guard_status(*guard, guard->register_input(job.stock_stl, "--stock"));
 }

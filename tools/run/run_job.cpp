@@ -232,6 +232,10 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
     std::fprintf(stderr, "%s: warning: %llu cutting moves ran with no spindle speed (no S word, or no M3): their chip per tooth, "
                  "force and power are not measured (give --default-spindle RPM)\n", su.shown_name.c_str(),
                  static_cast<unsigned long long>(e->no_speed));
+  if (!o.job.machine_file.empty()) {
+    if (const TravelWatch* w = sim.travel(); w && su.print) travel_print(*w, su.shown_name);
+    machine_to_report(su.machine, o.job.machine_file, sim.travel(), &su.rep);
+  }
   if (const LoadWatch* w = sim.load()) {
     if (o.view.material_warnings) load_print(*w, *su.material.comp, su.shown_name);
     load_to_report(*w, *su.material.comp, &su.rep);
@@ -424,6 +428,7 @@ int run_job(RunOptions o, FileGuard* guard, RunResult* result) {
   if (sim.gouged() && (o.job.stop_at_gouge || o.job.fail_on_gouge)) return kExitCheck;
   if (sim.collided() && (o.job.stop_at_collision || o.job.fail_on_collision)) return kExitCheck;
   if (o.job.fail_on_load && sim.load() && sim.load()->total > 0) return kExitCheck;
+  if (o.job.fail_on_travel && sim.travel() && sim.travel()->total > 0) return kExitCheck;
   if (!o.view.quiet && su.demo)
     std::fprintf(stderr, "dexmill: demo written to out/ (demo.ngc, final.ppm, error.ppm, frames/frame-*.%s)\n",
                  image_format_extension(o.out.frame_format));

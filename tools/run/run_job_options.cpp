@@ -141,11 +141,17 @@ const Option<Job> kJob[] = {
      "materials",
      [](Job* o, const char* v) -> int { return o->material = v, kExitOk; }},
     {"--rapid", "MM/MIN", "the machine's rapid rate, for the time estimate (default 5000)",
-     [](Job* o, const char* v) -> int { return machine_rate("--rapid", "rapid rate in mm/min", v, &o->rapid_nm_per_min); }},
+     [](Job* o, const char* v) -> int {
+       o->have_rapid = true;
+       return machine_rate("--rapid", "rapid rate in mm/min", v, &o->rapid_nm_per_min);
+     }},
     {"--accel", "MM/S2",
      "time estimate with every move speeding up from rest and slowing to rest at this acceleration (default: "
      "none)",
-     [](Job* o, const char* v) -> int { return machine_rate("--accel", "acceleration in mm/s2", v, &o->accel_nm_per_s2); }},
+     [](Job* o, const char* v) -> int {
+       o->have_accel = true;
+       return machine_rate("--accel", "acceleration in mm/s2", v, &o->accel_nm_per_s2);
+     }},
     {"--max-input", "MIB",
      "the most of a program that cannot be read twice (standard input, a pipe, a FIFO, a device), which is "
      "copied to $TMPDIR first; beyond it the run stops with an error (default 1024; a regular file has no "
@@ -216,10 +222,11 @@ int check(Job* o, const char* v) {
     else if (word == "plunge") c.plunge = true;
     else if (word == "all") c.all();
     else if (word == "load") o->check_load = true;
+    else if (word == "travel") o->check_travel = true;
     else
       return fail(kExitUsage,
-                  "--check takes rapid, spindle, below, shank, holder, plunge, all or load (comma-separated), not '%s'",
-                  word.c_str());
+                  "--check takes rapid, spindle, below, shank, holder, plunge, all, load or travel (comma-separated), "
+                  "not '%s'", word.c_str());
     p = end ? end + 1 : p + word.size();
   }
   return kExitOk;
@@ -271,6 +278,13 @@ const Option<Job> kChecks[] = {
        o->default_spindle_rpm = static_cast<int32_t>(rpm);
        return kExitOk;
      }},
+    {"--machine", "FILE",
+     "the machine: a LinuxCNC INI file or a grbl settings dump ($$, and what $# prints), told apart by content: "
+     "its soft limits (--check travel, on with it), its tool table, subroutine path, units, rapid rate and "
+     "acceleration where the options do not say, and its work offsets",
+     [](Job* o, const char* v) -> int { return o->machine_file = v, kExitOk; }},
+    {"--fail-on-travel", nullptr, "run to the end, exit 4 if a move left the machine's travel (needs --machine)",
+     [](Job* o, const char*) -> int { return o->fail_on_travel = o->check_travel = true, kExitOk; }},
     {"--fail-on-load", nullptr, "run to the end, exit 4 if a move broke a load limit (turns on --check load)",
      [](Job* o, const char*) -> int { return o->fail_on_load = o->check_load = true, kExitOk; }},
     {"--table", "Z", "the table's Z (mm): the tool going below it is a finding",

@@ -40,6 +40,9 @@ int settle_verdict(JobOptions* j) {
     j->stop_at_gouge = j->stop_at_gouge || !j->design.empty();
   }
   if ((j->stop_at_collision || j->fail_on_collision) && !j->checks.any()) j->checks.all();
+  if (j->check_travel && j->machine_file.empty())
+    return fail(kExitUsage, "--check travel and --fail-on-travel need --machine FILE (the machine's soft limits)");
+  if (!j->machine_file.empty()) j->check_travel = true;  // on with a machine
   if (j->check_load && j->material.empty())
     return fail(kExitUsage, "--check load needs --material (the chip limit and the cutting coefficients are the "
                             "material's)");

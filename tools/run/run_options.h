@@ -130,6 +130,11 @@ struct JobOptions {
   // Load limits (core/engage/load_watch.h): --check load, --spindle-power
   // W (mW here; implies the check), --fail-on-load (exit 4; implies it).
   bool check_load = false, fail_on_load = false;
+  // --machine FILE (tools/run/run_machine.h) and its travel check
+  // (--check travel: on with a machine), --fail-on-travel (exit 4).
+  std::string machine_file;
+  bool check_travel = false, fail_on_travel = false;
+  bool have_rapid = false, have_accel = false;  // --rapid, --accel given (a machine's do not override them)
   int64_t spindle_power_mw = 0;
   int32_t default_spindle_rpm = 0;  // --default-spindle (0: none)
   // `dexmill optimize`: each line's feed limit kept (tools/run/run_job.h RunResult).

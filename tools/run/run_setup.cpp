@@ -346,6 +346,10 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
                      "flutes=N in its spec)\n", kToolFlutesAssumed, spec);
       }
   }
+  if (!o.job.machine_file.empty()) {
+    j.machine = &run->machine.file.spec;
+    j.travel_check = o.job.check_travel;
+  }
   j.provenance = o.view.color == ViewOptions::Color::kTool;
   j.provenance_first_tool = kInitialToolNumber;
   // A stock saved, or continued with its provenance: which tool, line and
@@ -442,6 +446,7 @@ int remove_earlier_frames(const RunOptions& o, RunSetup* s) {
 }
 
 int run_setup(RunOptions* o, RunSetup* s) {
+  if (const int code = run_machine_load(o, &s->machine)) return code;  // its defaults before anything reads them
   if (const int code = prepare(o, s)) return code;
   if (const int code = load_tools(*o, s)) return code;
   if (const int code = open_saved_stock(*o, s)) return code;

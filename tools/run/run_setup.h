@@ -30,6 +30,7 @@
 #include "tools/run/run_assess.h"
 #include "tools/run/run_material.h"
 #include "tools/run/run_engage.h"
+#include "tools/run/run_machine.h"
 #include "tools/run/run_options.h"
 #include "tools/run/run_outputs.h"
 
@@ -37,6 +38,7 @@ namespace dexmill {
 namespace cli {
 
 struct RunSetup {
+  RunMachine machine;            // --machine: the machine and what it gave
   bool print = true;             // the program's diagnostics and messages on stderr (else only kept)
   bool demo = false;
   bool refused = false;          // --strict and an input error: nothing is cut (kExitInput)
