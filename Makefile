@@ -323,14 +323,14 @@ panel-w3:
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
 #   make fuzz SECONDS=N           the pipeline target N seconds (default 60)
-#   make fuzz FUZZ_TARGET=T ...   target T: pipeline, tool_table, stl, pgm or material
+#   make fuzz FUZZ_TARGET=T ...   target T: pipeline, tool_table, stl, pgm, material, stock or machine
 #   make fuzz-all SECONDS=N       every target, N seconds each, one after another
 # Target T is tests/fuzz/fuzz_T.cpp; it runs over its corpus
 # build/fuzz/corpus/T and its seeds tests/fuzz/seeds/T, with its dictionary.
 # What it finds (crash-*, timeout-*, oom-*) lands in build/fuzz/found/T;
 # kept in tests/fuzz/regress/T, `make test` replays it.
 SECONDS ?= 60
-FUZZ_TARGETS := pipeline tool_table stl pgm material stock
+FUZZ_TARGETS := pipeline tool_table stl pgm material stock machine
 FUZZ_TARGET ?= pipeline
 FUZZ_CXX := clang++ -std=c++17 -O1 -g -I. -fsanitize=fuzzer,address,undefined -fno-sanitize=vptr \
             -fno-sanitize-recover=all
@@ -339,7 +339,9 @@ FUZZ_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,$(CORE_SRC) $(DISPLAY_SRC))
 # linked into every target.
 FUZZ_HOST_OBJ := $(patsubst %.cpp,build/fuzz/obj/%.o,platform/format/tool_table.cpp platform/format/stl_read.cpp platform/format/pgm.cpp \
                    platform/os/read_file.cpp platform/os/output_file.cpp platform/os/temp_file.cpp platform/os/output_set.cpp \
-                   platform/os/process.cpp platform/format/material_file.cpp tools/run/run_path.cpp)
+                   platform/os/process.cpp platform/format/material_file.cpp platform/format/machine_file.cpp \
+                   platform/format/machine_ini.cpp platform/format/machine_grbl.cpp platform/format/machine_var.cpp \
+                   tools/run/run_path.cpp)
 # Per target: the longest input (the pipeline's seeds are whole programs,
 # binary STL seeds a hundred triangles), the dictionary, further options (a
 # reader must not be made to allocate hundreds of MB by a few KB of input).
@@ -349,6 +351,7 @@ FUZZ_MAXLEN_stl := 8192
 FUZZ_MAXLEN_pgm := 4096
 FUZZ_MAXLEN_material := 4096
 FUZZ_MAXLEN_stock := 8192
+FUZZ_MAXLEN_machine := 4096
 FUZZ_DICT_pipeline := tests/fuzz/gcode.dict
 FUZZ_DICT_tool_table := tests/fuzz/tool_table.dict
 FUZZ_DICT_stl := tests/fuzz/stl.dict
@@ -359,6 +362,7 @@ FUZZ_OPTS_stl := -malloc_limit_mb=64
 FUZZ_OPTS_pgm := -malloc_limit_mb=64
 FUZZ_OPTS_material := -malloc_limit_mb=64
 FUZZ_OPTS_stock := -malloc_limit_mb=128
+FUZZ_OPTS_machine := -malloc_limit_mb=64
 .PHONY: fuzz fuzz-all
 # Objects reached through the build/fuzz/fuzz_% pattern are kept, not
 # deleted as intermediates.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #define DEXMILL_FUZZ_REPLAY
+#include "tests/fuzz/fuzz_machine.cpp"
 #include "tests/fuzz/fuzz_material.cpp"
 #include "tests/fuzz/fuzz_pgm.cpp"
 #include "tests/fuzz/fuzz_pipeline.cpp"
@@ -50,7 +51,8 @@ const Target kTargets[] = {{"pipeline", fuzz_pipeline::fuzz_pipeline},
                            {"stl", fuzz_stl::fuzz_stl},
                            {"pgm", fuzz_pgm::fuzz_pgm},
                            {"material", fuzz_material::fuzz_material},
-                           {"stock", fuzz_stock::fuzz_stock}};
+                           {"stock", fuzz_stock::fuzz_stock},
+                           {"machine", fuzz_machine::fuzz_machine}};
 
 }  // namespace
 
