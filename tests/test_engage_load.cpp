@@ -215,3 +215,24 @@ TEST(default_spindle_speed_for_programs_without_one) {
   CHECK_EQ(run("%/nos.ngc" + cut + " --default-spindle 0").code, 2);
   CHECK_EQ(run("%/nos.ngc" + cut + " --default-spindle fast").code, 2);
 }
+
+TEST(optimize_leaves_an_f_it_cannot_change) {
+  using namespace run_cli;
+  if (skip()) return;
+  // The slot's F from a parameter: its line stays as written, said, and
+  // the rest is rewritten (the air move after it raised).
+  write_tmp("fpar.ngc", "G21 G90 G94\n#1=600\nS10000 M3\nG0 X-5 Y10 Z5\nG1 Z-2 F300\nG1 X35 F#1\nG1 Y13.6\nG0 Z5\nM30\n");
+  const std::string cut = " --tool flat:6,flutes=2 --stock 0,0,-10,30,20,0 --pitch 0.12 --material aluminium";
+  Result r = run_command("optimize %/fpar.ngc" + cut + " --target chip-load -o %/fpar-opt.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "fpar.ngc:6:1: warning: F here is not a number this rewrite can change: left as written (600 mm/min"));
+  const std::string out = slurp(tmp_dir() + "/fpar-opt.ngc");
+  CHECK(has(out, "\nG1 X35 F#1\n"));
+  CHECK(has(out, "\nG1 Z-2 F1500\n"));
+  // Lowered for a limit (F#1 = 3000 is over aluminium's max_feed): counted as left over.
+  write_tmp("fpar2.ngc", "G21 G90 G94\n#1=3000\nS10000 M3\nG0 X-5 Y10 Z5\nG1 Z-2 F300\nG1 X35 F#1\nG0 Z5\nM30\n");
+  r = run_command("optimize %/fpar2.ngc" + cut + " -o %/fpar2-opt.ngc");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "mm/min was wanted, a limit)"));
+  CHECK(has(r.err, "1 line(s) left over a limit"));
+}

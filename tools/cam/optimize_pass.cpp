@@ -27,6 +27,25 @@ bool is_feed(const CanonRecord& r) { return r.kind == CanonKind::kFeed || r.kind
 
 std::string mm_per_min(int64_t nm_per_min) { return feed_number(nm_per_min, false, 0).text; }
 
+// Where e's F goes in the line; an F written with a parameter or an
+// expression has no number to change: the line stays as written (said, and
+// counted when it was to be lowered), *e and the rewriter's modal feed
+// are the program's.
+FeedSplice placed_splice(const OptimizeInput& in, uint32_t line, const char* text, std::size_t len, const FeedLine& fl,
+                         FeedEdit* e, FeedRewriter* rewriter, OptimizeResult* out) {
+  if (e->kind == FeedEdit::Kind::kNone) return FeedSplice();
+  const FeedSplice s = feed_splice(text, len, *e);
+  if (!s.text.empty()) return s;
+  std::fprintf(stderr, "%s:%u:1: warning: F here is not a number this rewrite can change: left as written (%s mm/min "
+               "where %s mm/min was wanted%s)\n", in.shown_name.c_str(), line, mm_per_min(fl.programmed_nm_per_min).c_str(),
+               mm_per_min(e->feed_nm_per_min).c_str(), e->lowered ? ", a limit" : "");
+  if (e->lowered) ++out->left_over;
+  *e = FeedEdit();
+  e->feed_nm_per_min = fl.programmed_nm_per_min;
+  rewriter->modal_changed(fl.feed_after_nm_per_min);
+  return s;
+}
+
 // Each split line's pieces: where they begin in the splits, and how many.
 using SplitIndex = std::map<uint32_t, std::pair<std::size_t, int32_t>>;
 SplitIndex split_index(const std::vector<EngageSplitPiece>* splits) {
@@ -137,7 +156,8 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
         ++out->splits_kept_whole;
       }
     }
-    const FeedEdit e = rewriter.line(fl);
+    FeedEdit e = rewriter.line(fl);
+    const FeedSplice s = placed_splice(in, line, text, len, fl, &e, &rewriter, out);
     if (fl.feeds && fl.inverse_time && fl.limit_nm_per_min < hi && e.kind == FeedEdit::Kind::kNone) {
       std::fprintf(stderr, "%s:%u:1: warning: inverse-time feed (G93) left as written: %s mm/min where a material's limit is %s mm/min, "
                    "and F would be below 0.000001\n", in.shown_name.c_str(), line, mm_per_min(hi).c_str(),
@@ -155,8 +175,6 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
       after.emit(r);
     }
     if (e.kind == FeedEdit::Kind::kNone) continue;
-    const FeedSplice s = feed_splice(text, len, e);
-    if (s.text.empty()) return fail(kExitInput, "%s:%u: cannot place an F word in this line", in.shown_name.c_str(), line);
     out->splices.push_back(ProgramSplice{file.line_offset() + s.at, s.erase, s.text});
     ++out->lines_changed;
     if (e.raised) {
