@@ -26,6 +26,7 @@ const Command kCommands[] = {
     {"check", cmd_check, check_doc},
     {"bench", cmd_bench, bench_doc},
     {"optimize", cmd_optimize, optimize_doc},
+    {"measure", cmd_measure, measure_doc},
     {"zig", cmd_zig, zig_doc},
 };
 
@@ -36,7 +37,8 @@ void usage(FILE* f) {
                "  dexmill path FILE [--chord MM]     print the interpreted motion as a polyline\n"
                "  dexmill check FILE                 read and interpret a program, report errors only\n"
                "  dexmill bench [NAME...]            run benchmarks, one result line each\n"
-               "  dexmill optimize FILE --material M the program with feeds lowered to its materials' limits\n"
+               "  dexmill optimize FILE --material M the program with feeds set by its load or its materials' limits\n"
+               "  dexmill measure STOCK --at X,Y     the simulated part a run saved (--save-stock), at a point\n"
                "  dexmill zig DESIGN --stock ...     a zig-milling finishing program from a design part\n"
                "  dexmill --help | --version         (also `dexmill COMMAND --help`)\n\n"
                "Exit status: 0 success, 1 input errors, 2 usage error, 3 I/O error, 4 a check\n"

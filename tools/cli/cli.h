@@ -22,6 +22,7 @@ int cmd_path(int argc, char** argv);
 int cmd_check(int argc, char** argv);
 int cmd_bench(int argc, char** argv);
 int cmd_optimize(int argc, char** argv);
+int cmd_measure(int argc, char** argv);
 int cmd_zig(int argc, char** argv);
 
 // Each subcommand's help, from its option table (tools/cli/option_table.h).
@@ -31,6 +32,7 @@ CommandDoc path_doc();
 CommandDoc check_doc();
 CommandDoc bench_doc();
 CommandDoc optimize_doc();
+CommandDoc measure_doc();
 CommandDoc zig_doc();
 
 // Every subcommand's, in the order of `dexmill --help`: what
