@@ -149,7 +149,7 @@ class IniParser : public ReaderPlace {
       default: {
         Decimal d;
         int64_t ppm = 0;
-        if (!decimal_all(val, &d) || !scaled(d, 1000000, 1, kMaxFeedOverridePpm, &ppm))
+        if (!decimal_all(number_part(val), &d) || !scaled(d, 1000000, 1, kMaxFeedOverridePpm, &ppm))
           return fail(val.col, what + " is a ratio above 0 and at most 100 (1.2: 120 %), not " + quoted(val));
         f_.spec.max_feed_override_ppm = static_cast<int32_t>(ppm);
         return true;
@@ -163,7 +163,7 @@ class IniParser : public ReaderPlace {
     if (v.is_nocase("mm") || v.is_nocase("metric")) return *is_inch = false, true;
     if (v.is_nocase("in") || v.is_nocase("inch") || v.is_nocase("imperial")) return *is_inch = true, true;
     Decimal d;
-    if (!decimal_all(v, &d)) return false;
+    if (!decimal_all(number_part(v), &d)) return false;
     int64_t x = 0;
     if (scaled(d, 10000000, 9999000, 10001000, &x)) return *is_inch = false, true;
     if (scaled(d, 254000000, 9999000, 10001000, &x)) return *is_inch = true, true;
@@ -197,7 +197,7 @@ class IniParser : public ReaderPlace {
     const int64_t per = inch_ ? 25400000 : kNmPerMm;  // nm per unit
     MachineAxis& ax = f_.spec.axis[a];
     Decimal d;
-    const bool num = decimal_all(val, &d);
+    const bool num = decimal_all(number_part(val), &d);
     int64_t v = 0;
     switch (field) {
       case kMaxVelocity:

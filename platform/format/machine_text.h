@@ -76,6 +76,15 @@ inline bool decimal_all(const Span& w, Decimal* d) {
   return decimal_parse(w.s, w.n, &pos, d) == DecimalParse::kOk && pos == w.n;
 }
 
+// A numeric value without a comment after it (`25 # mm/s`: LinuxCNC reads
+// the number with strtod, which stops at the blank, so real INI files have
+// them).
+inline Span number_part(const Span& v) {
+  for (std::size_t i = 1; i < v.n; ++i)
+    if ((v.s[i] == '#' || v.s[i] == ';') && blank(v.s[i - 1])) return trim(Span{v.s, i, v.col});
+  return v;
+}
+
 // round(d * scale) within [lo, hi].
 inline bool scaled(Decimal d, int64_t scale, int64_t lo, int64_t hi, int64_t* out) {
   *out = decimal_scale(d, scale);
