@@ -181,4 +181,5 @@ TEST(optimize_splits_a_move_that_enters_the_stock) {
   CHECK_EQ(run_command("optimize %/split.ngc" + cut + " --split-min 2").code, 2);
   CHECK_EQ(run_command("optimize %/split.ngc" + cut + " --target chip-load --split-min 0").code, 2);
   CHECK_EQ(run_command("optimize %/split.ngc" + cut + " --target chip-load --split-lines -1").code, 2);
+  CHECK_EQ(run_command("optimize %/split.ngc" + cut + " --target chip-load --fail-on-load").code, 2);  // run's
 }

@@ -232,6 +232,7 @@ int split_differences(const RunOptions& o, const std::string& text, const RunRes
   c.job.feed_limits = false;
   c.job.split_rule = EngageSplitRule();
   c.job.keep_tops = c.job.silent = true;
+  c.job.fail_on_load = c.job.fail_on_travel = false;  // the check compares stocks; its findings are the input's
   FileGuard guard;
   if (const int code = guard_status(guard, guard.register_input(c.job.file, FileGuard::kProgram))) return code;
   RunResult after;
@@ -307,7 +308,8 @@ int cmd_optimize(int argc, char** argv) {
     return fail(kExitUsage, "optimize needs --material PRESET|FILE: the feeds are lowered to its materials' limits");
   if (run_draws(o) || !o.out.report.empty())
     return fail(kExitUsage, "optimize writes the program only (use dexmill run for images, models and reports)");
-  if (o.job.stop_at_gouge || o.job.stop_at_collision || o.job.fail_on_gouge || o.job.fail_on_collision)
+  if (o.job.stop_at_gouge || o.job.stop_at_collision || o.job.fail_on_gouge || o.job.fail_on_collision ||
+      o.job.fail_on_load || o.job.fail_on_travel)
     return fail(kExitUsage, "optimize cuts the whole program: --stop-at and --fail-on-* are run's");
   // The output may be the program (read whole before it is written), no
   // other input; the cut registers the rest (platform/input/file_guard.h).
