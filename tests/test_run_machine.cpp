@@ -106,3 +106,25 @@ TEST(run_machine_grbl_travel_and_offsets) {
   CHECK(has(rep, "\"kind\": \"grbl\", \"travel_mm\": {\"x\": [-300.000, 0.000], \"y\": [-200.000, 0.000], \"z\": [-80.000, 0.000]}"));
   CHECK(has(rep, "work offsets"));
 }
+
+TEST(run_machine_start_state_from_the_controller) {
+  if (skip()) return;
+  // LinuxCNC's parameter file: G55 in force (#5220 = 2), its X origin at
+  // 50, and a G92 of X5 kept (#5210 = 1): the program's X60 is machine
+  // X115, 15 past the 100 of MAX_LIMIT.
+  write_tmp("state.ini", (std::string(kIni) + "\n[RS274NGC]\nPARAMETER_FILE = state.var\n").c_str());
+  write_tmp("router.tbl", "T1 P1 D6 Z+20 ;flat:6\n");
+  write_tmp("state.var", "5210 1.0\n5211 5.0\n5212 0.0\n5213 0.0\n5220 2.0\n5241 50.0\n5242 0.0\n5243 0.0\n");
+  write_tmp("state.ngc", "G21 G90\nG0 X40 Y10 Z5\nG0 X60\nM30\n");
+  Result r = run("%/state.ngc --machine %/state.ini --tool flat:6 --stock 0,0,-10,90,50,0");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, "state.ngc:3:1: warning: travel: X 15.000 mm past the machine's MAX_LIMIT (machine X 115.000"));
+  CHECK(lacks(r.err, "state.ngc:2:"));  // X40 is machine X95
+  CHECK(has(r.out, "G55 in force (the machine's)"));
+  CHECK(has(r.out, "a G92 offset (the machine's)"));
+  // grbl's [TLO:30]: the tip at work Z-20 is machine Z10, 10 past grbl's 0.
+  write_tmp("tlo.txt", "$20=1\n$130=300.000\n$131=200.000\n$132=80.000\n[G54:-200.000,-100.000,0.000]\n[TLO:30.000]\n");
+  write_tmp("tlo2.ngc", "G21 G90\nG0 X5 Y5\nG0 Z-20\nM30\n");
+  r = run("%/tlo2.ngc -q --machine %/tlo.txt --tool flat:3 --stock -200,-100,-60,-150,-50,-40");
+  CHECK(has(r.err, "tlo2.ngc:3:1: warning: travel: Z 10.000 mm past the machine's 0 (grbl's home)"));
+}

@@ -121,3 +121,22 @@ TEST(travel_watch_unlimited_axes_and_the_cap) {
   CHECK_EQ(w.nkept, kTravelKept);
   CHECK_EQ(w.kept[kTravelKept - 1].line, static_cast<uint32_t>(kTravelKept + 2));
 }
+
+TEST(travel_watch_axes_count_from_their_first_move) {
+  // The program starts where the simulation puts it (its origin), not
+  // where the machine is: with a 30 mm offset that is Z 30 past a Z max of
+  // 0, but no move has moved Z yet. An XY move is no Z finding; the first
+  // Z move counts from wherever the machine was, so its end alone decides.
+  TravelWatch w;
+  travel_watch_init(&w, box());
+  CHECK(!travel_watch_check(&w, line(CanonKind::kTraverse, mm(0, 0, 0), mm(50, 10, 0), 2, 30 * kMm)));
+  CHECK(!travel_watch_check(&w, line(CanonKind::kTraverse, mm(50, 10, 0), mm(50, 10, -40), 3, 30 * kMm)));  // Z -10: in
+  CHECK(travel_watch_check(&w, line(CanonKind::kTraverse, mm(50, 10, -40), mm(50, 10, -20), 4, 30 * kMm)));  // Z 10: out
+  CHECK_EQ(w.kept[0].line, 4u);
+  CHECK_EQ(w.kept[0].excess_nm, 10 * kMm);
+  // A first Z move that ends outside is one too, however far out it began.
+  TravelWatch v;
+  travel_watch_init(&v, box());
+  CHECK(travel_watch_check(&v, line(CanonKind::kTraverse, mm(50, 10, 0), mm(50, 10, -20), 5, 30 * kMm)));
+  CHECK_EQ(v.kept[0].excess_nm, 10 * kMm);
+}

@@ -346,6 +346,9 @@ void Interp::reset() {
   state_.comp.first_move = true;
   if (options_.work_offsets)
     for (int k = 0; k < 9; ++k) state_.work_offset[k] = options_.work_offsets[k];
+  state_.coord_system = options_.start_coord_system < 9 ? options_.start_coord_system : 0;
+  state_.g92 = options_.start_g92;
+  state_.tlo_nm = options_.start_tlo_nm;
   if (options_.start_given) {
     state_.pos = options_.start_pos;
     state_.tool = state_.selected_tool = options_.start_tool;

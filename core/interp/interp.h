@@ -118,6 +118,13 @@ struct InterpOptions {
   // The origins of G54..G59.3 (9 of them, machine nm) at the start, as a
   // controller's parameter file (#5221...) gives them. Null: all 0.
   const PointNm* work_offsets = nullptr;
+  // And what else a controller holds when the program starts (LinuxCNC's
+  // #5220 and #5211-#5213 in its parameter file, grbl's $# TLO): the
+  // coordinate system in force (0 = G54), the G92 offset, a G43.1 tool
+  // length offset. Zero: none, as LinuxCNC's interpreter starts.
+  uint8_t start_coord_system = 0;
+  PointNm start_g92{0, 0, 0};
+  int64_t start_tlo_nm = 0;
   bool start_given = false;
   PointNm start_pos{0, 0, 0};
   int32_t start_tool = 0;

@@ -10,6 +10,9 @@ namespace {
 
 int64_t coord(const PointNm& p, int axis) { return axis == 0 ? p.x_nm : axis == 1 ? p.y_nm : p.z_nm; }
 
+// The axis an arc's plane is about (0 X, 1 Y, 2 Z).
+int plane_axis(Plane p) { return p == Plane::kXY ? 2 : p == Plane::kZX ? 1 : 0; }
+
 // How far each side of each axis the move went past, at its farthest.
 struct Excess {
   int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -76,6 +79,13 @@ bool travel_watch_check(TravelWatch* w, const CanonRecord& r) {
   // counts where the move goes farther past it than its start already
   // was (the move before it, which took it there, was the finding).
   Excess from, e;
+  bool first[3];
+  for (int a = 0; a < 3; ++a) {
+    const bool moves = coord(r.start, a) != coord(r.end, a) ||
+                       (r.kind == CanonKind::kArc && a != static_cast<int>(plane_axis(r.arc.plane)));
+    first[a] = !w->known[a] && moves;
+    w->known[a] = w->known[a] || moves;
+  }
   from.point(w->axis, machine(r.start));
   e.point(w->axis, machine(r.end));
   if (r.kind == CanonKind::kArc) {
@@ -87,6 +97,8 @@ bool travel_watch_check(TravelWatch* w, const CanonRecord& r) {
   }
   bool any = false;
   for (int a = 0; a < 3; ++a) {
+    if (!w->known[a]) continue;  // not moved yet: where it is is the machine's
+    if (first[a]) from.hi[a] = from.lo[a] = 0;  // its first move: from wherever the machine was
     if (e.hi[a] > from.hi[a]) keep(w, r.line, a, true, e.hi[a], e.hi_at[a]), any = true;
     if (e.lo[a] > from.lo[a]) keep(w, r.line, a, false, e.lo[a], e.lo_at[a]), any = true;
   }

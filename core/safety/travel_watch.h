@@ -12,7 +12,10 @@
 // A straight move is inside when its end is (the travel is a box, and its
 // start is where the move before it ended, checked there). A move that
 // starts past a limit (the one before it left) is a finding only where it
-// goes farther past: the move that left the travel is the one named.
+// goes farther past: the move that left the travel is the one named. The
+// position the program starts at is the machine's, not the program's (a
+// simulation starts at its origin): an axis counts from the first move
+// that moves it (an arc moves its plane's two axes).
 // An arc or helix is checked at its chords' points (core/canon/arc_chords.h,
 // sagitta 1 um), each within 2 nm + 6e-9 r of the arc, and a point counts
 // only past a limit by more than kTravelSlackNm: no false alarm from
@@ -43,6 +46,9 @@ struct TravelFinding {
 struct TravelWatch {
   MachineKind kind = MachineKind::kNone;  // whose limits (the messages name them)
   MachineAxis axis[3];
+  // Where the program starts is the machine's own (after homing, a
+  // previous job): an axis is checked from the first move that moves it.
+  bool known[3] = {false, false, false};
   uint64_t total = 0;      // moves past a limit (one a move and axis side)
   int32_t nkept = 0;
   TravelFinding kept[kTravelKept];

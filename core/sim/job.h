@@ -160,6 +160,11 @@ struct SimJob {
   // program starts, as a controller's parameter file holds them (a setup's
   // work offsets). Null: all at the machine's origin.
   const PointNm* work_offsets = nullptr;
+  // The coordinate system in force, the G92 offset and a G43.1 tool length
+  // offset when it starts (the machine's: core/interp/interp.h InterpOptions).
+  uint8_t start_coord_system = 0;
+  PointNm start_g92{0, 0, 0};
+  int64_t start_tlo_nm = 0;
   // Probe moves (G38.2-G38.5) stop where the tool, or a ball tip of this
   // diameter (> 0), trips on the stock as cut so far (core/cut/probe.h).
   // 0: the tool in the spindle.

@@ -27,6 +27,9 @@ InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, P
   o.default_feed_nm_per_min = job.default_feed_nm_per_min;
   o.max_blocks = job.max_blocks;
   o.work_offsets = job.work_offsets;
+  o.start_coord_system = job.start_coord_system;
+  o.start_g92 = job.start_g92;
+  o.start_tlo_nm = job.start_tlo_nm;
   if (job.resume && job.resume->have_position) {
     o.start_given = true;
     o.start_pos = job.resume->position;

@@ -86,6 +86,16 @@ int run_machine_load(RunOptions* o, RunMachine* m) {
       for (int c = 0; c < kMachineCoordSystems; ++c) j.work_offsets[c] = s.work_offset[c];
     }
     said("work offsets G54..G59.3", use);
+    if (use) {  // and with them what else the controller holds at the start
+      j.start_coord_system = s.coord_system;
+      j.start_g92 = s.g92;
+      j.start_tlo_nm = s.tlo_nm;
+      static const char* const kSystem[kMachineCoordSystems] = {"G54", "G55", "G56", "G57", "G58", "G59",
+                                                                "G59.1", "G59.2", "G59.3"};
+      if (s.coord_system != 0) said(std::string(kSystem[s.coord_system % kMachineCoordSystems]) + " in force", true);
+      if (!(s.g92 == PointNm{0, 0, 0})) said("a G92 offset", true);
+      if (s.tlo_nm != 0) said("a G43.1 tool length offset of " + mm_text(s.tlo_nm) + " mm", true);
+    }
   }
   return kExitOk;
 }

@@ -88,6 +88,11 @@ struct JobOptions {
   // when it starts (core/sim/job.h SimJob::work_offsets).
   bool have_work_offsets = false;
   PointNm work_offsets[9] = {};
+  // The machine's coordinate system in force, G92 and G43.1 offset at the
+  // start (tools/run/run_machine.h).
+  uint8_t start_coord_system = 0;
+  PointNm start_g92{0, 0, 0};
+  int64_t start_tlo_nm = 0;
   // A chain run in one `dexmill run`: what each program before this one
   // found (its report's findings), for this one's report.
   std::vector<ProgramFindings> chain_findings;

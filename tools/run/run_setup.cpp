@@ -127,6 +127,9 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   j.setups = o.job.setups.empty() ? nullptr : o.job.setups.data();
   j.nsetups = static_cast<int32_t>(o.job.setups.size());
   j.work_offsets = o.job.have_work_offsets ? o.job.work_offsets : nullptr;
+  j.start_coord_system = o.job.start_coord_system;
+  j.start_g92 = o.job.start_g92;
+  j.start_tlo_nm = o.job.start_tlo_nm;
   return kExitOk;
 }
 
