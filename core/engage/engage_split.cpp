@@ -28,6 +28,11 @@ void merge(Run* seg, int32_t* count, int32_t k) {
   --*count;
 }
 
+// How far apart the feeds of pieces a and b are.
+int64_t gap(const Run& a, const Run& b) {
+  return max_of(a.feed_nm_per_min, b.feed_nm_per_min) - min_of(a.feed_nm_per_min, b.feed_nm_per_min);
+}
+
 // min over the neighbours of k (the load between samples is covered by both).
 int64_t covered(const int64_t* feed, int32_t n, int32_t k) {
   int64_t f = feed[k];
@@ -79,11 +84,7 @@ int32_t engage_split(const int64_t* s_nm, const int64_t* feed_nm_per_min, int32_
     }
     if (shortest < 0) break;
     const int32_t k = shortest;
-    const bool with_next =
-        k == 0 || (k + 1 < count && !(max_of(seg[k].feed_nm_per_min, seg[k + 1].feed_nm_per_min) -
-                                            min_of(seg[k].feed_nm_per_min, seg[k + 1].feed_nm_per_min) >
-                                        max_of(seg[k].feed_nm_per_min, seg[k - 1].feed_nm_per_min) -
-                                            min_of(seg[k].feed_nm_per_min, seg[k - 1].feed_nm_per_min)));
+    const bool with_next = k == 0 || (k + 1 < count && gap(seg[k], seg[k + 1]) <= gap(seg[k], seg[k - 1]));
     merge(seg, &count, with_next ? k : k - 1);
   }
   // Neighbours with the same feed are one piece; then at most `most`:
@@ -95,9 +96,8 @@ int32_t engage_split(const int64_t* s_nm, const int64_t* feed_nm_per_min, int32_
     int32_t best = 0;
     int64_t best_gap = INT64_MAX;
     for (int32_t k = 0; k + 1 < count; ++k) {
-      const int64_t gap = max_of(seg[k].feed_nm_per_min, seg[k + 1].feed_nm_per_min) -
-                          min_of(seg[k].feed_nm_per_min, seg[k + 1].feed_nm_per_min);
-      if (gap < best_gap) best_gap = gap, best = k;
+      const int64_t d = gap(seg[k], seg[k + 1]);
+      if (d < best_gap) best_gap = d, best = k;
     }
     merge(seg, &count, best);
   }

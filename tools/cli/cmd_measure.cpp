@@ -11,7 +11,6 @@
 
 #include "core/config.h"
 #include "core/measure/measure_at.h"
-#include "core/sim/stock_state.h"
 #include "platform/format/stock_io.h"
 #include "platform/input/file_guard.h"
 #include "platform/report/report_json.h"
@@ -19,6 +18,7 @@
 #include "tools/cli/option_help.h"
 #include "tools/cli/option_parse.h"
 #include "tools/cli/option_values.h"
+#include "tools/run/run_stock.h"
 
 namespace dexmill {
 namespace cli {
@@ -107,11 +107,7 @@ int cmd_measure(int argc, char** argv) {
     return in.io_error() ? kExitIo : kExitInput;
   }
   const StockMeta m = in.meta();
-  if (sim_stock_fits<height_t>(m) != StockStateError::kOk) {
-    std::fprintf(stderr, "%s:1:17: error: a stock of %d-bit heights; this dexmill is built for %d-bit ones\n",
-                 a.file.c_str(), m.height_bits, DEXMILL_HEIGHT_BITS);
-    return kExitInput;
-  }
+  if (const int code = stock_heights_fit(m, a.file)) return code;
   const size_t cells = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
   std::vector<height_t> top(cells), bottom(cells);
   std::vector<uint32_t> lines((m.layers & kStockLayerLine) ? cells : 0);

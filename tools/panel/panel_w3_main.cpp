@@ -66,59 +66,11 @@ void info(golden::Out& out, const char* what, uint64_t n) {
   out.str("info instructions ").str(what).kv("n", static_cast<int64_t>(n)).end();
 }
 
-}  // namespace
-
-int main(int, char**) {
-  golden::Out out(golden::board_write);
-  DexelGrid<height_t> g;
-  const GridGeometry geo{kW3Nx, kW3Ny, 0, 0, kW3PitchNm, 0, kW3LsbNm};
-  if (!ok(grid_init(&g, geo, g_top, g_bottom, static_cast<size_t>(kW3Nx) * kW3Ny))) return 1;
-  grid_block_stock(&g, grid_height_of_z(g, kW3TopNm));
-  Tool tool;
-  tool.kind = ToolKind::kBall;
-  tool.diameter_nm = kW3ToolDiameterNm;
-  tool.flute_length_nm = kW3ToolFluteNm;
-  tool.length_nm = kW3ToolLengthNm;
-  tool.flutes = 2;  // the meter's chip per tooth (the cut ignores it)
-  const ToolProfile prof = tool_profile(tool);
-  SweepTool st;
-  if (!ok(sweep_tool_prepare(prof, g.lsb_nm, &st))) return 1;
-  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
-  RenderOptions opt;
-  opt.zformat = ZFormat::kZ16;
-  if (!ok(renderer_init(&g_renderer, g, fb, opt, g_scratch, sizeof g_scratch))) return 1;
-  renderer_set_tool(&g_renderer, &prof);
-  renderer_set_camera(&g_renderer, renderer_fit(g_renderer, ViewPreset::kIso));
-  const size_t n = sizeof kW3PathNm / sizeof kW3PathNm[0];
-
-  const uint64_t t0 = golden::board_instructions();
-  render_full(&g_renderer, &g, CutterPose{true, path_point(0)});
-  const uint64_t t1 = golden::board_instructions();
-  g.dirty = GridRect::none();
-  CutStats cs;
-  SweepChain chain;
-  for (size_t k = 1; k < n; ++k) sweep_chain_line(&g, st, path_point(k - 1), path_point(k), &cs, &chain);
-  sweep_chain_end(&g, st, &cs, &chain);
-  const uint64_t t2 = golden::board_instructions();
-  const GridRect changed = g.dirty;
-  render_update(&g_renderer, &g, CutterPose{true, path_point(n - 1)});
-  const uint64_t t3 = golden::board_instructions();
-
-  out.str("w3 cut").kv("moves", static_cast<int64_t>(n - 1)).kv("pieces", static_cast<int64_t>(cs.instances));
-  out.kv("dexel_updates", static_cast<int64_t>(cs.dexel_updates)).kx("grid_hash", grid_hash(g)).end();
-  out.str("w3 changed").kv("i0", changed.i0).kv("j0", changed.j0).kv("i1", changed.i1).kv("j1", changed.j1).end();
-  out.str("w3 frame").kx("hash", frame_hash(fb)).end();
-  if (t3 != 0) {
-    out.str("info clock: ").str(golden::board_clock_name()).end();
-    info(out, "full_frame(480x272)", t1 - t0);
-    info(out, "cut", t2 - t1);
-    out.str("info per_dexel_update_x100").kv("n", static_cast<int64_t>((t2 - t1) * 100 / cs.dexel_updates)).end();
-    info(out, "incremental_redraw(after the cut)", t3 - t2);
-  }
-
-  // Phase 2: the same cut, measured. A fresh grid on the same arrays (the
-  // first cut's lines are out; its hash is kept to compare).
-  const uint64_t hash1 = grid_hash(g);
+// Phase 2: the same cut, measured by the engagement meter; its lines, and
+// 0 when the cut came out as phase 1's (hash1) and the removal summed by
+// record is the grid's (cut_instructions: phase 1's, for the meter's share).
+int measured_cut(golden::Out& out, const GridGeometry& geo, const Tool& tool, const SweepTool& st, size_t n,
+                 uint64_t hash1, uint64_t cut_instructions) {
   DexelGrid<height_t> g2;
   if (!ok(grid_init(&g2, geo, g_top, g_bottom, static_cast<size_t>(kW3Nx) * kW3Ny))) return 1;
   grid_block_stock(&g2, grid_height_of_z(g2, kW3TopNm));
@@ -182,7 +134,7 @@ int main(int, char**) {
   out.kv("equal", hash2 == hash1 ? 1 : 0).end();
   if (t6 != 0) {
     const int64_t moves = static_cast<int64_t>(n - 1);
-    const int64_t meter = static_cast<int64_t>(t6 - t5) - static_cast<int64_t>(t2 - t1);
+    const int64_t meter = static_cast<int64_t>(t6 - t5) - static_cast<int64_t>(cut_instructions);
     info(out, "engage_meter_init+set_tool", t5 - t4);
     info(out, "cut_with_meter", t6 - t5);
     out.str("info instructions meter_per_move").kv("n", meter / moves).end();
@@ -191,4 +143,57 @@ int main(int, char**) {
     if (samples > 0) out.str("info instructions meter_per_sample").kv("n", meter / static_cast<int64_t>(samples)).end();
   }
   return hash2 == hash1 && removed == material_removed ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int, char**) {
+  golden::Out out(golden::board_write);
+  DexelGrid<height_t> g;
+  const GridGeometry geo{kW3Nx, kW3Ny, 0, 0, kW3PitchNm, 0, kW3LsbNm};
+  if (!ok(grid_init(&g, geo, g_top, g_bottom, static_cast<size_t>(kW3Nx) * kW3Ny))) return 1;
+  grid_block_stock(&g, grid_height_of_z(g, kW3TopNm));
+  Tool tool;
+  tool.kind = ToolKind::kBall;
+  tool.diameter_nm = kW3ToolDiameterNm;
+  tool.flute_length_nm = kW3ToolFluteNm;
+  tool.length_nm = kW3ToolLengthNm;
+  tool.flutes = 2;  // the meter's chip per tooth (the cut ignores it)
+  const ToolProfile prof = tool_profile(tool);
+  SweepTool st;
+  if (!ok(sweep_tool_prepare(prof, g.lsb_nm, &st))) return 1;
+  FrameView fb{g_frame, kFrameW, kFrameH, kFrameW * 2, PixelFormat::kRgb565};
+  RenderOptions opt;
+  opt.zformat = ZFormat::kZ16;
+  if (!ok(renderer_init(&g_renderer, g, fb, opt, g_scratch, sizeof g_scratch))) return 1;
+  renderer_set_tool(&g_renderer, &prof);
+  renderer_set_camera(&g_renderer, renderer_fit(g_renderer, ViewPreset::kIso));
+  const size_t n = sizeof kW3PathNm / sizeof kW3PathNm[0];
+
+  const uint64_t t0 = golden::board_instructions();
+  render_full(&g_renderer, &g, CutterPose{true, path_point(0)});
+  const uint64_t t1 = golden::board_instructions();
+  g.dirty = GridRect::none();
+  CutStats cs;
+  SweepChain chain;
+  for (size_t k = 1; k < n; ++k) sweep_chain_line(&g, st, path_point(k - 1), path_point(k), &cs, &chain);
+  sweep_chain_end(&g, st, &cs, &chain);
+  const uint64_t t2 = golden::board_instructions();
+  const GridRect changed = g.dirty;
+  render_update(&g_renderer, &g, CutterPose{true, path_point(n - 1)});
+  const uint64_t t3 = golden::board_instructions();
+
+  out.str("w3 cut").kv("moves", static_cast<int64_t>(n - 1)).kv("pieces", static_cast<int64_t>(cs.instances));
+  out.kv("dexel_updates", static_cast<int64_t>(cs.dexel_updates)).kx("grid_hash", grid_hash(g)).end();
+  out.str("w3 changed").kv("i0", changed.i0).kv("j0", changed.j0).kv("i1", changed.i1).kv("j1", changed.j1).end();
+  out.str("w3 frame").kx("hash", frame_hash(fb)).end();
+  if (t3 != 0) {
+    out.str("info clock: ").str(golden::board_clock_name()).end();
+    info(out, "full_frame(480x272)", t1 - t0);
+    info(out, "cut", t2 - t1);
+    out.str("info per_dexel_update_x100").kv("n", static_cast<int64_t>((t2 - t1) * 100 / cs.dexel_updates)).end();
+    info(out, "incremental_redraw(after the cut)", t3 - t2);
+  }
+
+  return measured_cut(out, geo, tool, st, n, grid_hash(g), t2 - t1);
 }

@@ -166,11 +166,7 @@ int open_saved_stock(const RunOptions& o, RunSetup* run) {
   }
   run->stock_meta = run->stock_in->meta();
   const StockMeta& m = run->stock_meta;
-  if (sim_stock_fits<height_t>(m) != StockStateError::kOk) {  // the header's m, at byte 17
-    std::fprintf(stderr, "%s:1:17: error: a stock of %d-bit heights; this dexmill is built for %d-bit ones\n",
-                 o.job.stock_file.c_str(), m.height_bits, DEXMILL_HEIGHT_BITS);
-    return kExitInput;
-  }
+  if (const int code = stock_heights_fit(m, o.job.stock_file)) return code;
   if (m.nprograms >= kStockMaxPrograms && !o.out.save_stock.empty())
     return fail(kExitUsage, "%s: the stock already holds the %d programs a stock file remembers; it cannot be "
                 "saved again", o.job.stock_file.c_str(), kStockMaxPrograms);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/config.h"
+#include "core/sim/stock_state.h"
 #include "platform/format/stl_read.h"
 #include "tools/cli/cli.h"
 
@@ -78,6 +79,13 @@ int carve_stock(DexelGrid<H>* g, const GridPlan& plan, const std::vector<Triangl
 template int carve_stock<uint8_t>(DexelGrid<uint8_t>*, const GridPlan&, const std::vector<TriangleNm>&);
 template int carve_stock<uint16_t>(DexelGrid<uint16_t>*, const GridPlan&, const std::vector<TriangleNm>&);
 template int carve_stock<uint32_t>(DexelGrid<uint32_t>*, const GridPlan&, const std::vector<TriangleNm>&);
+
+int stock_heights_fit(const StockMeta& m, const std::string& path) {
+  if (sim_stock_fits<height_t>(m) == StockStateError::kOk) return kExitOk;
+  std::fprintf(stderr, "%s:1:17: error: a stock of %d-bit heights; this dexmill is built for %d-bit ones\n", path.c_str(),
+               m.height_bits, DEXMILL_HEIGHT_BITS);
+  return kExitInput;
+}
 
 }  // namespace cli
 }  // namespace dexmill

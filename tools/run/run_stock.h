@@ -10,6 +10,7 @@
 #include "core/design/design.h"
 #include "core/grid/grid.h"
 #include "core/sim/stock_plan.h"
+#include "core/stock/stock_file.h"
 
 namespace dexmill {
 namespace cli {
@@ -28,6 +29,10 @@ int read_stock_stl(const std::string& path, std::vector<TriangleNm>* tris, Stock
 // the stock is wider than the design grid allows.
 template <class H>
 int carve_stock(DexelGrid<H>* g, const GridPlan& plan, const std::vector<TriangleNm>& tris);
+
+// A saved stock's heights against this build's (its m at byte 17): kExitOk,
+// or kExitInput after saying so at the file.
+int stock_heights_fit(const StockMeta& m, const std::string& path);
 
 }  // namespace cli
 }  // namespace dexmill
