@@ -136,6 +136,14 @@ struct ReportLoad {  // --check load's findings
   std::vector<Finding> kept;  // the first 100
 };
 
+// The estimate's share of one tool (the tool in the spindle; -1 before
+// any M6): report key `time_by_tool`.
+struct ReportToolTime {
+  int32_t tool = -1;
+  int64_t estimated_us = 0, feed_us = 0, rapid_us = 0;
+  uint64_t moves = 0;
+};
+
 struct RunReport {
   std::string file;
   uint32_t lines = 0;
@@ -181,6 +189,12 @@ struct RunReport {
   int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
   int64_t rapid_nm_per_min = 0;
   int64_t accel_nm_per_s2 = 0;  // --accel; 0: none
+  // The three estimates (core/canon/summary.h): no acceleration, every move
+  // from rest to rest, and blended within the path tolerance; the
+  // tolerance in force where the program gives none (-1: none).
+  int64_t no_accel_us = 0, stop_us = 0, blended_us = 0;
+  int64_t path_tolerance_nm = -1;
+  std::vector<ReportToolTime> time_by_tool;
   bool have_bounds = false;
   PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};
   uint64_t instances = 0, dexel_updates = 0;
