@@ -155,7 +155,7 @@ TEST(machine_file_linuxcnc_ini_in_mm) {
                                           "/home/cnc/linuxcnc/configs/router/../common/subs:"
                                           "/usr/share/linuxcnc/ncfiles"));
   CHECK(!f.disable_g92_persistence);
-  CHECK_EQ(f.keys.size(), 16u);
+  CHECK_EQ(f.keys.size(), 21u);  // with [KINS]KINEMATICS and [JOINT_0]'s four
   CHECK_EQ(f.keys.empty() ? std::string() : f.keys[0], std::string("[DISPLAY]MAX_FEED_OVERRIDE"));
 }
 
@@ -632,4 +632,49 @@ TEST(machine_file_ini_number_with_a_comment_after_it) {
   CHECK_EQ(f.spec.axis[0].min_nm, -5 * kNmPerMm);
   CHECK_EQ(f.spec.axis[0].max_accel_nm_per_s2, 300 * kNmPerMm);
   CHECK(!parse("[EMC]\n[AXIS_X]\nMAX_VELOCITY = 25#mm/s\n", &f, &err, "m.ini"));
+}
+
+TEST(machine_file_ini_joints_limit_their_axes) {
+  // A gantry (trivkins coordinates=XYYZ: joints 1 and 2 both move Y) whose
+  // [AXIS_*] sections give no limits: the joints' are the axes' travel, a
+  // Y within both of its joints, the least velocity and acceleration.
+  MachineFile f;
+  std::string err;
+  CHECK(parse("[KINS]\nJOINTS = 4\nKINEMATICS = trivkins coordinates=XYYZ kinstype=BOTH\n"
+              "[AXIS_X]\nMAX_VELOCITY = 50\n"
+              "[JOINT_0]\nMIN_LIMIT = -2\nMAX_LIMIT = 800\nMAX_VELOCITY = 40\nMAX_ACCELERATION = 500\n"
+              "[JOINT_1]\nMIN_LIMIT = -1\nMAX_LIMIT = 1200\nMAX_VELOCITY = 30\n"
+              "[JOINT_2]\nMIN_LIMIT = -3\nMAX_LIMIT = 1190\nMAX_VELOCITY = 35\nMAX_ACCELERATION = 400\n"
+              "[JOINT_3]\nMIN_LIMIT = -150\nMAX_LIMIT = 0\n",
+              &f, &err, "gantry.ini"));
+  if (!err.empty()) std::printf("  %s\n", err.c_str());
+  const MachineSpec& s = f.spec;
+  CHECK(s.axis[0].limited && s.axis[1].limited && s.axis[2].limited);
+  CHECK_EQ(s.axis[0].min_nm, -2 * kMm);
+  CHECK_EQ(s.axis[0].max_nm, 800 * kMm);
+  CHECK_EQ(s.axis[0].max_velocity_nm_per_min, 40 * 60 * kMm);  // the joint's 40 under the axis's 50
+  CHECK_EQ(s.axis[0].max_accel_nm_per_s2, 500 * kMm);
+  CHECK_EQ(s.axis[1].min_nm, -1 * kMm);
+  CHECK_EQ(s.axis[1].max_nm, 1190 * kMm);
+  CHECK_EQ(s.axis[1].max_velocity_nm_per_min, 30 * 60 * kMm);
+  CHECK_EQ(s.axis[1].max_accel_nm_per_s2, 400 * kMm);
+  CHECK_EQ(s.axis[2].min_nm, -150 * kMm);
+  CHECK_EQ(s.axis[2].max_nm, 0);
+  // An axis's own limits and a joint's: the narrower wins on each side.
+  CHECK(parse("[AXIS_Z]\nMIN_LIMIT = -100\nMAX_LIMIT = 5\n[JOINT_2]\nMIN_LIMIT = -120\nMAX_LIMIT = 0\n", &f, &err));
+  CHECK_EQ(f.spec.axis[2].min_nm, -100 * kMm);
+  CHECK_EQ(f.spec.axis[2].max_nm, 0);
+  // Without a [KINS] line the joints are trivkins' X, Y, Z in order.
+  CHECK(parse("[JOINT_1]\nMIN_LIMIT = 0\nMAX_LIMIT = 300\n", &f, &err));
+  CHECK(f.spec.axis[1].limited && !f.spec.axis[0].limited);
+  CHECK_EQ(f.spec.axis[1].max_nm, 300 * kMm);
+  // Other kinematics: joints are not axes, and give them no limit.
+  CHECK(parse("[KINS]\nKINEMATICS = genhexkins\n[JOINT_0]\nMIN_LIMIT = 0\nMAX_LIMIT = 300\n", &f, &err));
+  CHECK(!f.spec.axis[0].limited);
+  // Limits that leave an axis no travel are an error at the joint's line.
+  CHECK(!parse("[AXIS_X]\nMIN_LIMIT = 0\nMAX_LIMIT = 100\n[JOINT_0]\nMIN_LIMIT = 200\nMAX_LIMIT = 300\n", &f, &err,
+               "m.ini"));
+  CHECK(run_cli::has(err, "m.ini:6:1: error: [JOINT_0]'s limits leave its axis X no travel within [AXIS_X]'s"));
+  CHECK(!parse("[JOINT_4]\nMIN_LIMIT = 5\nMAX_LIMIT = 1\n", &f, &err, "m.ini"));
+  CHECK(run_cli::has(err, "m.ini:3:13: error: [JOINT_4] MIN_LIMIT is above its MAX_LIMIT"));
 }

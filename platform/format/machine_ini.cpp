@@ -24,14 +24,25 @@ std::string resolve(const std::string& dir, const std::string& p) {
 
 
 
+// LinuxCNC 2.8's joints: [JOINT_0] .. [JOINT_8], each a joint of the
+// kinematics; with trivkins joint n moves the axis its `coordinates=`
+// letter names (XYZABCUVW in order by default). A move must stay within
+// both the axis's and its joints' limits (the planner keeps to the axis's,
+// motion faults on a joint's), so an axis's travel is the intersection of
+// its own and its joints', and its velocity and acceleration the least.
+constexpr int kJoints = 9;
 enum Sec : uint8_t {
-  kSecOther, kSecTraj, kSecAxisX, kSecAxisY, kSecAxisZ, kSecEmcio, kSecRs274, kSecDisplay, kSecCount
+  kSecOther, kSecTraj, kSecAxisX, kSecAxisY, kSecAxisZ, kSecEmcio, kSecRs274, kSecDisplay, kSecKins, kSecJoint0,
+  kSecCount = kSecJoint0 + kJoints
 };
-const char* const kSecNames[kSecCount] = {"", "TRAJ", "AXIS_X", "AXIS_Y", "AXIS_Z", "EMCIO", "RS274NGC", "DISPLAY"};
+const char* const kSecNames[kSecCount] = {"",        "TRAJ",    "AXIS_X",  "AXIS_Y",  "AXIS_Z",  "EMCIO",
+                                          "RS274NGC", "DISPLAY", "KINS",    "JOINT_0", "JOINT_1", "JOINT_2",
+                                          "JOINT_3", "JOINT_4", "JOINT_5", "JOINT_6", "JOINT_7", "JOINT_8"};
 
-// The keys read; an axis's four follow kKeyAxis, axis by axis.
+// The keys read; an axis's four follow kKeyAxis, axis by axis, then the
+// joints' four, joint by joint.
 enum Key : uint8_t {
-  kKeyUnits, kKeyToolTable, kKeySubPath, kKeyParamFile, kKeyG92Volatile, kKeyFeedOverride, kKeyAxis
+  kKeyUnits, kKeyToolTable, kKeySubPath, kKeyParamFile, kKeyG92Volatile, kKeyFeedOverride, kKeyKinematics, kKeyAxis
 };
 enum AxisField : uint8_t { kMinLimit, kMaxLimit, kMaxVelocity, kMaxAccel, kAxisFields };
 const char* const kAxisKeys[kAxisFields] = {"MIN_LIMIT", "MAX_LIMIT", "MAX_VELOCITY", "MAX_ACCELERATION"};
@@ -68,6 +79,7 @@ class IniParser : public ReaderPlace {
       line_ = 1;
       return fail(1, kNotMachine);
     }
+    if (!join_joints()) return false;
     f_.spec.kind = MachineKind::kLinuxcnc;
     f_.spec.inch = inch_;
     for (int a = 0; a < 3; ++a) f_.spec.axis[a].limited = have_min_[a] && have_max_[a];
@@ -103,6 +115,7 @@ class IniParser : public ReaderPlace {
       case kSecTraj: *k = kKeyUnits; return key.is("LINEAR_UNITS");
       case kSecEmcio: *k = kKeyToolTable; return key.is("TOOL_TABLE");
       case kSecDisplay: *k = kKeyFeedOverride; return key.is("MAX_FEED_OVERRIDE");
+      case kSecKins: *k = kKeyKinematics; return key.is("KINEMATICS");
       case kSecRs274:
         if (key.is("SUBROUTINE_PATH")) *k = kKeySubPath;
         else if (key.is("PARAMETER_FILE")) *k = kKeyParamFile;
@@ -116,14 +129,21 @@ class IniParser : public ReaderPlace {
             return true;
           }
         return false;
-      default: return false;
+      default:
+        if (sec_ < kSecJoint0) return false;
+        for (int f = 0; f < kAxisFields; ++f)
+          if (key.is(kAxisKeys[f])) {
+            *k = kKeyAxis + (3 + sec_ - kSecJoint0) * kAxisFields + f;
+            return true;
+          }
+        return false;
     }
   }
 
   bool assign(const Span& key, const Span& val, std::size_t val_col) {
     int k = 0;
     if (!key_of(key, &k)) return true;  // not one of ours
-    const uint32_t bit = 1u << k;
+    const uint64_t bit = uint64_t{1} << k;
     if (given_ & bit) return true;  // the first counts (LinuxCNC's inifile)
     given_ |= bit;
     const std::string what = "[" + std::string(kSecNames[sec_]) + "]" + key.str();
@@ -146,6 +166,7 @@ class IniParser : public ReaderPlace {
       case kKeyParamFile: f_.parameter_file = resolve(dir_, val.str()); return true;
       case kKeySubPath: f_.subroutine_path = path_list(val); return true;
       case kKeyG92Volatile: return boolean(val, what, &f_.disable_g92_persistence);
+      case kKeyKinematics: return kinematics(val);
       default: {
         Decimal d;
         int64_t ppm = 0;
@@ -192,10 +213,56 @@ class IniParser : public ReaderPlace {
     return out;
   }
 
+  // [KINS] KINEMATICS: which axis each joint moves, where trivkins says
+  // (its `coordinates=` letters, joint by joint); other kinematics map
+  // joints to no axis, and their limits are not the axes'.
+  bool kinematics(const Span& v) {
+    for (int j = 0; j < kJoints; ++j) joint_axis_[j] = -1;
+    const std::string t = v.str();
+    if (t.compare(0, 8, "trivkins") != 0 || (t.size() > 8 && t[8] != ' ' && t[8] != '\t')) return true;
+    const std::size_t at = t.find("coordinates=");
+    const std::string letters = at == std::string::npos ? std::string("XYZABCUVW") : t.substr(at + 12);
+    for (std::size_t j = 0; j < letters.size() && j < static_cast<std::size_t>(kJoints); ++j) {
+      const char c = letters[j];
+      if (c == ' ' || c == '\t') break;
+      joint_axis_[j] = (c == 'X' || c == 'x') ? 0 : (c == 'Y' || c == 'y') ? 1 : (c == 'Z' || c == 'z') ? 2 : -1;
+    }
+    return true;
+  }
+
+  // Each axis within its joints' limits too (the comment at kJoints).
+  bool join_joints() {
+    for (int j = 0; j < kJoints; ++j) {
+      const int a = joint_axis_[j];
+      if (a < 0) continue;
+      MachineAxis& ax = f_.spec.axis[a];
+      const MachineAxis& jt = joint_[j];
+      if (jt.max_velocity_nm_per_min && (!ax.max_velocity_nm_per_min || jt.max_velocity_nm_per_min < ax.max_velocity_nm_per_min))
+        ax.max_velocity_nm_per_min = jt.max_velocity_nm_per_min;
+      if (jt.max_accel_nm_per_s2 && (!ax.max_accel_nm_per_s2 || jt.max_accel_nm_per_s2 < ax.max_accel_nm_per_s2))
+        ax.max_accel_nm_per_s2 = jt.max_accel_nm_per_s2;
+      if (joint_min_[j]) ax.min_nm = have_min_[a] && ax.min_nm > jt.min_nm ? ax.min_nm : jt.min_nm;
+      if (joint_max_[j]) ax.max_nm = have_max_[a] && ax.max_nm < jt.max_nm ? ax.max_nm : jt.max_nm;
+      have_min_[a] = have_min_[a] || joint_min_[j];
+      have_max_[a] = have_max_[a] || joint_max_[j];
+      if (have_min_[a] && have_max_[a] && ax.min_nm > ax.max_nm) {
+        line_ = joint_line_[j];
+        return fail(1, std::string("[") + kSecNames[kSecJoint0 + j] + "]'s limits leave its axis " + "XYZ"[a] +
+                           " no travel within [" + kSecNames[kSecAxisX + a] + "]'s");
+      }
+    }
+    return true;
+  }
+
+  // A value of [AXIS_*] (a < 3) or of [JOINT_(a - 3)].
   bool axis_value(int a, int field, const Span& val, const std::string& what) {
     const char* unit = inch_ ? "inch" : "mm";
     const int64_t per = inch_ ? 25400000 : kNmPerMm;  // nm per unit
-    MachineAxis& ax = f_.spec.axis[a];
+    const bool joint = a >= 3;
+    MachineAxis& ax = joint ? joint_[a - 3] : f_.spec.axis[a];
+    bool& have_min = joint ? joint_min_[a - 3] : have_min_[a];
+    bool& have_max = joint ? joint_max_[a - 3] : have_max_[a];
+    if (joint) joint_line_[a - 3] = line_;
     Decimal d;
     const bool num = decimal_all(number_part(val), &d);
     int64_t v = 0;
@@ -216,9 +283,10 @@ class IniParser : public ReaderPlace {
         if (!num || !scaled(d, per, -kLimitNm, kLimitNm, &v))
           return fail(val.col, what + " is a position in " + unit + " within +-10 m, not " + quoted(val));
         (field == kMinLimit ? ax.min_nm : ax.max_nm) = v;
-        (field == kMinLimit ? have_min_[a] : have_max_[a]) = true;
-        if (have_min_[a] && have_max_[a] && ax.min_nm > ax.max_nm)
-          return fail(val.col, std::string("[") + kSecNames[kSecAxisX + a] + "] MIN_LIMIT is above its MAX_LIMIT");
+        (field == kMinLimit ? have_min : have_max) = true;
+        if (have_min && have_max && ax.min_nm > ax.max_nm)
+          return fail(val.col, std::string("[") + kSecNames[joint ? kSecJoint0 + a - 3 : kSecAxisX + a] +
+                                   "] MIN_LIMIT is above its MAX_LIMIT");
         return true;
     }
   }
@@ -227,9 +295,14 @@ class IniParser : public ReaderPlace {
   bool units_only_, inch_;
   MachineFile f_;
   Sec sec_ = kSecOther;
-  uint32_t seen_ = 0, given_ = 0;
+  uint32_t seen_ = 0;
+  uint64_t given_ = 0;
   bool any_linuxcnc_ = false;
   bool have_min_[3] = {}, have_max_[3] = {};
+  MachineAxis joint_[kJoints];
+  bool joint_min_[kJoints] = {}, joint_max_[kJoints] = {};
+  uint32_t joint_line_[kJoints] = {};
+  int8_t joint_axis_[kJoints] = {0, 1, 2, -1, -1, -1, -1, -1, -1};  // trivkins' XYZ.. without a [KINS] line
 };
 
 // Feeds the INI's lines to p, a line ending in '\' joined with the next.
