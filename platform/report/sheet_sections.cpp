@@ -11,7 +11,7 @@ namespace dexmill {
 namespace sheet_detail {
 namespace {
 
-constexpr size_t kListed = 8;  // findings listed per kind; the rest counted
+constexpr size_t kListed = 5;  // findings listed per kind; the rest counted
 
 std::string u64(uint64_t v) { return std::to_string(v); }
 
@@ -183,7 +183,7 @@ std::string findings_section(const RunReport& r) {
     rows.push_back(finding(r, v.line, v.rule + ": " + v.message));
   group("process rules", r.have_materials, "--material", rows, r.material_violations_total);
   rows.clear();
-  for (const ReportLoad::Finding& f : r.load.kept) rows.push_back(finding(r, f.line, f.rule + ": " + f.message));
+  for (const ReportLoad::Finding& f : r.load.kept) rows.push_back(finding(r, f.line, f.message));  // the message names the rule
   group("load", r.have_load, "--check load", rows, r.load.total);
   rows.clear();
   for (const ReportDiag& d : r.errors) rows.push_back(finding(r, d.line, d.message));
@@ -202,7 +202,7 @@ std::string load_section(const RunReport& r, const SheetImages& im) {
   o += "</tr><tr>";
   for (const ReportEngageMax& m : p.maxima) o += "<td>" + html(m.value) + "&nbsp;" + html(unit_text(m.unit)) + "</td>";
   o += "</tr><tr>";
-  for (const ReportEngageMax& m : p.maxima) o += "<td>" + where(r, m.line) + "</td>";
+  for (const ReportEngageMax& m : p.maxima) o += "<td>" + (m.line ? "line " + u64(m.line) : std::string("-")) + "</td>";
   o += "</tr></table>\n";
   if (!im.load_plot_svg.empty()) {
     std::string svg = im.load_plot_svg;  // inline: without the XML declaration
