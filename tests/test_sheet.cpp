@@ -104,8 +104,8 @@ TEST(sheet_escapes_file_names) {
   RunReport r = with_findings();
   r.file = "a<b>&\"c'.ngc";
   const std::string page = sheet_html_text(r, SheetImages());
-  CHECK(has(page, "a&lt;b&gt;&amp;&quot;c&#39;.ngc"));
-  CHECK(has(page, "a&lt;b&gt;&amp;&quot;c&#39;.ngc:30"));  // a gouge's FILE:LINE
+  CHECK(has(page, "a&lt;b&gt;&amp;&quot;c&apos;.ngc"));
+  CHECK(has(page, "a&lt;b&gt;&amp;&quot;c&apos;.ngc:30"));  // a gouge's FILE:LINE
   CHECK(lacks(page, "a<b>"));
   CHECK_EQ(sheet_detail::html("x\x01y\xff"), std::string("x?y?"));
 }

@@ -55,7 +55,7 @@ std::string sheet_html_text(const RunReport& r, const SheetImages& im);
 namespace sheet_detail {  // what the files of the sheet share, not for callers
 
 // HTML text: & < > " ' escaped; control characters and bytes that are not
-// UTF-8 become '?'.
+// UTF-8 become '?' (platform/report/load_plot.h markup_escape, the SVG's).
 std::string html(const std::string& s);
 // RFC 4648 base64 of the bytes.
 std::string base64(const std::vector<uint8_t>& bytes);

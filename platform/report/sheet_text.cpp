@@ -10,21 +10,7 @@
 namespace dexmill {
 namespace sheet_detail {
 
-std::string html(const std::string& s) {
-  std::string out;
-  uint32_t cp;
-  for (size_t i = 0, j; i < s.size(); i = j) {
-    j = load_plot_detail::utf8_next(s, i, &cp);
-    if (cp == '&') out += "&amp;";
-    else if (cp == '<') out += "&lt;";
-    else if (cp == '>') out += "&gt;";
-    else if (cp == '"') out += "&quot;";
-    else if (cp == '\'') out += "&#39;";
-    else if ((cp < 0x20 && cp != '\n' && cp != '\t') || cp == 0x7f || cp == 0xfffd) out += '?';
-    else out.append(s, i, j - i);
-  }
-  return out;
-}
+std::string html(const std::string& s) { return load_plot_detail::markup_escape(s); }
 
 std::string base64(const std::vector<uint8_t>& b) {
   static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
