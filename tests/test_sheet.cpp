@@ -127,6 +127,12 @@ TEST(sheet_numbers_carry_units) {
   CHECK(has(page, "5000&nbsp;mm/min"));
   CHECK(has(page, "<td>T3</td><td><code>flat:6</code></td><td>30.00&nbsp;mm</td><td>5\xe2\x80\x93" "20</td>"));
   CHECK(has(page, "by tool: not estimated"));
+  CHECK(lacks(page, "blended"));  // no such estimates in this report
+  r.no_accel_us = 16779000;
+  r.stop_us = 30000000;
+  r.blended_us = 20500000;
+  r.path_tolerance_nm = 10000;
+  CHECK(has(sheet_html_text(r, SheetImages()), "blended 20.500\xc2\xa0s (path tolerance 0.010&nbsp;mm)"));
   CHECK(has(report_json_text(r), "\"tool_use\": [{\"number\": 3, \"stick_out_mm\": 30.0000, \"first_line\": 5, \"last_line\": 20}]"));
   // With the estimate by tool: its bars, in seconds.
   r.time_by_tool.push_back(ReportToolTime{3, 12000000, 11000000, 1000000, 10});
@@ -201,6 +207,12 @@ TEST(sheet_run_end_to_end) {
   CHECK_EQ(count_of(bare, "src=\"data:image/png;base64,"), 2u);
   CHECK(has(bare, "no design given (--design): no error view"));
   CHECK(has(bare, "<div class=\"verdict pass\">PASS</div>"));
+  // A chain: each program and the setup before it.
+  r = run_cli::run("pocket.ngc -q --tool flat:6 --setup flip-x pocket.ngc --sheet %/c.html");
+  CHECK_EQ(r.code, 0);
+  const std::string chain = run_cli::slurp(d + "/c.html");
+  CHECK(has(chain, "<tr><td>1</td><td>pocket.ngc</td><td>none</td>"));
+  CHECK(has(chain, "<tr><td>2</td><td>pocket.ngc</td><td>flip-x</td>"));
   // A name that is not .html, and a sheet that would overwrite the input.
   r = run_cli::run("pocket.ngc -q --sheet %/s.txt");
   CHECK_EQ(r.code, 2);

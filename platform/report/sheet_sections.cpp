@@ -126,6 +126,11 @@ std::string time_section(const RunReport& r) {
        nm_to_mm_text(r.rapid_nm_per_min, 0) + "&nbsp;mm/min" +
        (r.accel_nm_per_s2 ? ", accel " + nm_to_mm_text(r.accel_nm_per_s2, 0) + "&nbsp;mm/s²" : std::string(", no acceleration")) +
        "</p>\n";
+  if (r.stop_us || r.blended_us)  // the three estimates (core/canon/summary.h), when the run made them
+    o += "<p class=\"facts\">no acceleration " + seconds_text(r.no_accel_us, false) + " · from rest at every move " +
+         seconds_text(r.stop_us, false) + " · blended " + seconds_text(r.blended_us, false) +
+         (r.path_tolerance_nm >= 0 ? " (path tolerance " + nm_to_mm_text(r.path_tolerance_nm, 3) + "&nbsp;mm)" : std::string()) +
+         "</p>\n";
   if (r.time_by_tool.empty()) o += "<p class=\"note\">by tool: not estimated</p>\n";
   else o += time_bars_svg(r) + "<p class=\"note\">dark: feed, light: rapid</p>\n";
   return o + "</section>\n";
