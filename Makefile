@@ -100,7 +100,7 @@ $(shell mkdir -p $(BUILD) && (test -f $(FLAGS_STAMP) && [ "`cat $(FLAGS_STAMP)`"
 
 .PHONY: all run test test-unit bless check-golden-out check-bless check-readme check-headers check-poison check-layers \
         check-function-length check-comments check-c-api check-lib \
-        test-embed test-python test-install lib install uninstall clean
+        test-embed test-python test-install test-sheet lib install uninstall clean
 all: $(BIN)
 
 $(BUILD)/obj/core/%.o $(BUILD)/obj/display/%.o: BUILD_KIND := int
@@ -192,7 +192,7 @@ check-bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
 
 test: check-headers check-poison check-layers check-function-length check-comments check-c-api check-lib test-unit \
       check-golden-out \
-      check-bless test-embed test-python test-install check-readme
+      check-bless test-embed test-python test-install test-sheet check-readme
 
 run: $(BIN)
 	$(BIN) run --demo pocket
@@ -256,6 +256,10 @@ test-embed: $(EMBED) $(BIN)
 test-python: $(LIB_SO) $(BIN)
 	@if [ -n "$(SAN)" ]; then echo "skip: the Python wrapper under SAN"; else \
 	  DEXMILL_LIB=$(abspath $(LIB_SO)) DEXMILL=$(abspath $(BIN)) python3 tests/test_python_api.py; fi
+# The verification sheet in a real browser (chromium headless: PNG, PDF, no
+# network request; SKIPPED, said so, without chromium: install-deps.sh browser).
+test-sheet: $(BIN)
+	$(Q)tools/scripts/sheet-test.sh $(abspath $(BIN))
 # make install into a temporary DESTDIR, an embedder built from what it
 # installed (pkg-config), make uninstall leaving nothing.
 test-install: $(BIN) $(LIB_A) $(LIB_SO) $(LIB_IO) $(BUILD)/dexmill.1 $(EMBED)

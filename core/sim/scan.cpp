@@ -83,6 +83,7 @@ void ProgramScan::emit(const CanonRecord& r) {
     cuts[in_spindle_] = true;
     if (in_spindle_ == 0) first_lines[0] = r.line;
   }
+  if (moves && in_spindle_ >= 0) last_lines[in_spindle_] = r.line;
   if (r.kind != CanonKind::kToolChange) return;
   in_spindle_ = -1;
   Tool t;

@@ -64,6 +64,10 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   // loaded it ([0]: of its first such move).
   bool cuts[kScanToolsMax] = {};
   uint32_t first_lines[kScanToolsMax] = {};
+  // The line of each one's last feed or arc move (0: none), so that a
+  // tool's lines are first_lines[k] .. last_lines[k] (a tool loaded again
+  // later spans the lines between its loads too).
+  uint32_t last_lines[kScanToolsMax] = {};
   uint32_t unlisted = 0;       // loads of tools past kScanToolsMax
   int64_t max_radius_nm = 0;   // of every tool loaded
   uint32_t bad_tool_line = 0;  // the first M6 of a T the library lacks (0: none), and its number

@@ -146,6 +146,11 @@ std::string format_fixed(double v, int decimals);
 // v with three significant digits at most, no trailing zeros: "1.2", "850".
 std::string format_compact(double v);
 
+// XML (and HTML) text: markup characters escaped; control characters,
+// which XML does not allow, and bytes that are not UTF-8 become '?'. The
+// load plot's SVG and the sheet's page (platform/report/sheet_html.h).
+std::string markup_escape(const std::string& s);
+
 // The code point at s[i] and the index after it; a byte that does not start
 // a valid UTF-8 sequence is U+FFFD and one byte long.
 size_t utf8_next(const std::string& s, size_t i, uint32_t* code_point);

@@ -13,24 +13,6 @@ namespace {
 
 using namespace load_plot_detail;
 
-// XML text: markup characters escaped; control characters, which XML does
-// not allow, and bytes that are not UTF-8 become '?'.
-std::string escape(const std::string& s) {
-  std::string out;
-  uint32_t cp;
-  for (size_t i = 0, j; i < s.size(); i = j) {
-    j = utf8_next(s, i, &cp);
-    if (cp == '&') out += "&amp;";
-    else if (cp == '<') out += "&lt;";
-    else if (cp == '>') out += "&gt;";
-    else if (cp == '"') out += "&quot;";
-    else if (cp == '\'') out += "&apos;";
-    else if (cp < 0x20 || cp == 0x7f || cp == 0xfffd) out += '?';
-    else out.append(s, i, j - i);
-  }
-  return out;
-}
-
 std::string colour(PlotColour c) {
   static const char kHex[] = "0123456789abcdef";
   std::string s = "#";
@@ -107,7 +89,7 @@ void text_svg(const Item& it, std::string* o) {
   static const char* const kAnchor[] = {"", " text-anchor=\"middle\"", " text-anchor=\"end\""};
   *o += "<text x=\"" + num(it.x0) + "\" y=\"" + num(it.y0 + 7 * it.scale) + "\"";
   if (it.scale != 1) *o += " font-size=\"" + num(10 * it.scale) + "\"";
-  *o += std::string(kAnchor[static_cast<int>(it.anchor)]) + " fill=\"" + colour(it.colour) + "\">" + escape(it.text) +
+  *o += std::string(kAnchor[static_cast<int>(it.anchor)]) + " fill=\"" + colour(it.colour) + "\">" + markup_escape(it.text) +
         "</text>\n";
 }
 
@@ -118,13 +100,33 @@ void dot_svg(const Item& it, std::string* o) {
 
 }  // namespace
 
+namespace load_plot_detail {
+
+std::string markup_escape(const std::string& s) {
+  std::string out;
+  uint32_t cp;
+  for (size_t i = 0, j; i < s.size(); i = j) {
+    j = utf8_next(s, i, &cp);
+    if (cp == '&') out += "&amp;";
+    else if (cp == '<') out += "&lt;";
+    else if (cp == '>') out += "&gt;";
+    else if (cp == '"') out += "&quot;";
+    else if (cp == '\'') out += "&apos;";
+    else if (cp < 0x20 || cp == 0x7f || cp == 0xfffd) out += '?';
+    else out.append(s, i, j - i);
+  }
+  return out;
+}
+
+}  // namespace load_plot_detail
+
 std::string load_plot_svg(const LoadPlotData& d, int width_px, int height_px) {
   const Scene sc = load_plot_scene(d, width_px, height_px);
   const std::string w = num(sc.width), h = num(sc.height);
   std::string o = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   o += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + w + "\" height=\"" + h + "\" viewBox=\"0 0 " + w + " " +
        h + "\" font-family=\"DejaVu Sans Mono, Menlo, Consolas, monospace\" font-size=\"10\">\n";
-  o += "<title>" + escape(d.title) + "</title>\n";
+  o += "<title>" + markup_escape(d.title) + "</title>\n";
   o += "<rect width=\"" + w + "\" height=\"" + h + "\" fill=\"" + colour(sc.background) + "\"/>\n";
   for (const Item& it : sc.items) {
     switch (it.shape) {

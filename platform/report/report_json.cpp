@@ -4,6 +4,7 @@
 
 #include "core/math/fixed.h"
 #include "platform/os/output_file.h"
+#include "platform/report/verdict.h"
 
 namespace dexmill {
 namespace {
@@ -114,41 +115,62 @@ std::string chain_text(const RunReport& r) {
   return o;
 }
 
-std::string assessment_text(const RunReport& rep) {
+}  // namespace
+
+AssessmentTexts assessment_texts(const RunReport& rep) {
   const ReportAssessment& a = rep.assessment;
   const AssessResult& r = a.result;
   const unsigned __int128 lsb = static_cast<uint64_t>(rep.lsb_nm);
   const unsigned __int128 e_nm2 = ((static_cast<unsigned __int128>(r.e_lsb2.hi) << 64) | r.e_lsb2.lo) * lsb * lsb;
   const unsigned __int128 top_nm = static_cast<unsigned __int128>(r.sum_design_top_lsb) * lsb;
-  // E_rel in 1e-9 mm (pm): E nm^2 / sum nm = nm; x 1000 = pm.
-  const std::string e_rel = top_nm ? fixed_text_u128(round_div(e_nm2 * 1000, top_nm), 9) : std::string("null");
   const uint64_t n = r.design_columns;
   const int64_t rms_nm = n ? static_cast<int64_t>(isqrt_u128(U128{static_cast<uint64_t>(e_nm2 / n >> 64),
                                                                    static_cast<uint64_t>(e_nm2 / n)}))
                            : 0;
   auto area = [&](uint64_t columns) { return volume_mm3_text(columns, kNmPerMm, rep.pitch_nm); };
   auto volume = [&](uint64_t lsb_columns) { return volume_mm3_text(lsb_columns, rep.lsb_nm, rep.pitch_nm); };
-  auto extreme = [&](int64_t d_lsb, const PointNm& at) {
-    if (d_lsb <= 0) return std::string("null");
-    return "{\"mm\": " + nm_to_mm_text(d_lsb * rep.lsb_nm, 4) + ", \"x_mm\": " + nm_to_mm_text(at.x_nm, 4) +
-           ", \"y_mm\": " + nm_to_mm_text(at.y_nm, 4) + "}";
+  AssessmentTexts t;
+  t.e_mm2 = fixed_text_u128(round_div(e_nm2, 1000000), 6);
+  // E_rel in 1e-9 mm (pm): E nm^2 / sum nm = nm; x 1000 = pm.
+  t.e_rel = top_nm ? fixed_text_u128(round_div(e_nm2 * 1000, top_nm), 9) : std::string("null");
+  t.rms_mm = nm_to_mm_text(rms_nm, 4);
+  if (r.max_gouge_lsb > 0) t.max_gouge_mm = nm_to_mm_text(r.max_gouge_lsb * rep.lsb_nm, 4);
+  if (r.max_leftover_lsb > 0) t.max_leftover_mm = nm_to_mm_text(r.max_leftover_lsb * rep.lsb_nm, 4);
+  t.gouged_area_mm2 = area(r.gouge_columns);
+  t.gouged_volume_mm3 = volume(r.gouge_lsb);
+  t.leftover_area_mm2 = area(r.leftover_columns);
+  t.leftover_volume_mm3 = volume(r.leftover_lsb);
+  if (n)
+    t.within_percent =
+        fixed_text(static_cast<uint64_t>(round_div(static_cast<unsigned __int128>(r.within_tol_columns) * 10000, n)), 2, false);
+  t.outside_area_mm2 = area(r.outside_columns);
+  t.outside_volume_mm3 = volume(r.outside_lsb);
+  return t;
+}
+
+namespace {
+
+std::string assessment_text(const RunReport& rep) {
+  const ReportAssessment& a = rep.assessment;
+  const AssessResult& r = a.result;
+  const AssessmentTexts t = assessment_texts(rep);
+  auto extreme = [&](const std::string& mm, const PointNm& at) {
+    if (mm.empty()) return std::string("null");
+    return "{\"mm\": " + mm + ", \"x_mm\": " + nm_to_mm_text(at.x_nm, 4) + ", \"y_mm\": " + nm_to_mm_text(at.y_nm, 4) + "}";
   };
   std::string o = "  \"assessment\": {\"design\": {\"file\": " + quoted(a.file) + ", \"kind\": " + quoted(a.kind) +
-                  ", \"triangles\": " + u64(a.triangles) + ", \"columns\": " + u64(n) + "},\n";
+                  ", \"triangles\": " + u64(a.triangles) + ", \"columns\": " + u64(r.design_columns) + "},\n";
   o += "    \"tolerance_mm\": " + nm_to_mm_text(a.tolerance_nm, 4) + ", \"tolerance_boxes\": " + u64(a.tolerance_boxes) +
        ",\n";
-  o += "    \"E_mm2\": " + fixed_text_u128(round_div(e_nm2, 1000000), 6) + ", \"E_rel\": " + e_rel +
-       ", \"rms_mm\": " + nm_to_mm_text(rms_nm, 4) + ",\n";
-  o += "    \"max_gouge\": " + extreme(r.max_gouge_lsb, a.max_gouge_at) + ", \"max_leftover\": " +
-       extreme(r.max_leftover_lsb, a.max_leftover_at) + ",\n";
-  o += "    \"gouged\": {\"area_mm2\": " + area(r.gouge_columns) + ", \"volume_mm3\": " + volume(r.gouge_lsb) +
-       "}, \"leftover\": {\"area_mm2\": " + area(r.leftover_columns) + ", \"volume_mm3\": " + volume(r.leftover_lsb) +
+  o += "    \"E_mm2\": " + t.e_mm2 + ", \"E_rel\": " + t.e_rel + ", \"rms_mm\": " + t.rms_mm + ",\n";
+  o += "    \"max_gouge\": " + extreme(t.max_gouge_mm, a.max_gouge_at) + ", \"max_leftover\": " +
+       extreme(t.max_leftover_mm, a.max_leftover_at) + ",\n";
+  o += "    \"gouged\": {\"area_mm2\": " + t.gouged_area_mm2 + ", \"volume_mm3\": " + t.gouged_volume_mm3 +
+       "}, \"leftover\": {\"area_mm2\": " + t.leftover_area_mm2 + ", \"volume_mm3\": " + t.leftover_volume_mm3 +
        "},\n";
-  o += "    \"within_tolerance_percent\": " +
-       (n ? fixed_text(static_cast<uint64_t>(round_div(static_cast<unsigned __int128>(r.within_tol_columns) * 10000, n)), 2, false)
-          : std::string("null")) +
-       ", \"outside_design\": {\"area_mm2\": " + area(r.outside_columns) + ", \"volume_mm3\": " +
-       volume(r.outside_lsb) + "},\n";
+  o += "    \"within_tolerance_percent\": " + (t.within_percent.empty() ? std::string("null") : t.within_percent) +
+       ", \"outside_design\": {\"area_mm2\": " + t.outside_area_mm2 + ", \"volume_mm3\": " + t.outside_volume_mm3 +
+       "},\n";
   o += "    \"histogram\": {\"edges_mm\": [";
   for (int k = 0; k < kAssessEdges; ++k) o += std::string(k ? ", " : "") + nm_to_mm_text(kAssessBinEdgesNm[k], 2);
   o += "], \"columns\": [";
@@ -319,6 +341,30 @@ std::string machine_text(const RunReport& r) {
 
 }  // namespace
 
+namespace {
+
+// What the sheet (--sheet, platform/report/sheet_html.h) shows that the keys
+// above do not hold: each tool's stick-out and lines, and the verdict.
+std::string sheet_keys_text(const RunReport& r) {
+  std::string o = "  \"tool_use\": [";
+  for (std::size_t k = 0; k < r.tools_used.size(); ++k) {
+    const ReportToolUse& u = r.tools_used[k];
+    const bool cut = u.last_line != 0;
+    o += std::string(k ? ", " : "") + "{\"number\": " + (u.number < 0 ? std::string("null") : std::to_string(u.number)) +
+         ", \"stick_out_mm\": " + nm_to_mm_text(u.stick_out_nm, 4) +
+         ", \"first_line\": " + (cut ? u64(u.first_line) : std::string("null")) +
+         ", \"last_line\": " + (cut ? u64(u.last_line) : std::string("null")) + "}";
+  }
+  const Verdict v = report_verdict(r);
+  o += "],\n  \"verdict\": {\"pass\": " + std::string(v.pass() ? "true" : "false") + ", \"errors\": " + u64(v.errors) +
+       ", \"gouges\": " + u64(v.gouges) + ", \"collisions\": " + u64(v.collisions) + ", \"travel\": " +
+       u64(v.travel) + ", \"rules\": " + u64(v.rules) + ", \"load\": " + u64(v.load) + ", \"stopped\": " +
+       (v.stopped ? "true" : "false") + "},\n";
+  return o;
+}
+
+}  // namespace
+
 std::string report_json_text(const RunReport& r) {
   std::string o = "{\n";
   o += "  \"dexmill_report\": 1,\n";
@@ -381,6 +427,7 @@ std::string report_json_text(const RunReport& r) {
   if (r.have_engagement) o += engagement_text(r);
   if (r.have_load) o += load_text(r);
   if (r.have_machine) o += machine_text(r);
+  o += sheet_keys_text(r);
   o += "  \"timing\": {";
   for (std::size_t k = 0; k < r.timing.size(); ++k) {
     char b[64];

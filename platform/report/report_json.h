@@ -56,6 +56,15 @@
 //                   "spindle_stopped"|"below_stock"|"table", line, x_mm,
 //                   y_mm, z_mm, depth_mm, volume_mm3, message}]} (the first
 //                   64 kept; total counts all)
+//   tool_use        [{number (null: the tool before any M6), stick_out_mm,
+//                   first_line, last_line}] per tool of tool.used: its
+//                   stick-out and the lines it cut on, the M6 that first
+//                   loaded it to its last feed or arc move (null: it cut
+//                   nothing); the sheet's tool table (--sheet)
+//   verdict         {pass, errors, gouges, collisions, travel, rules, load,
+//                   stopped}: the counts of findings by kind from the totals
+//                   above (platform/report/verdict.h), pass when all are 0
+//                   and the run was not stopped; the sheet's top line
 //   timing          {STAGE_s: seconds, ...}
 //   run             {started (UTC), pid, outputs [{option, file, bytes} or
 //                   {option "--frames", folder, files}]}: the run that wrote
@@ -82,6 +91,15 @@ std::string safety_event_text(const SafetyEvent& e, int64_t lsb_nm, int64_t pitc
 std::string report_json_text(const RunReport& r);
 // Writes it atomically; false with a message on failure.
 bool write_report_json(const char* path, const RunReport& r, char* err, std::size_t errn);
+
+// The assessment's figures as `assessment` writes them (empty: null), for
+// the sheet (platform/report/sheet_html.h), which shows the same text.
+struct AssessmentTexts {
+  std::string e_mm2, e_rel, rms_mm, max_gouge_mm, max_leftover_mm;
+  std::string gouged_area_mm2, gouged_volume_mm3, leftover_area_mm2, leftover_volume_mm3;
+  std::string within_percent, outside_area_mm2, outside_volume_mm3;
+};
+AssessmentTexts assessment_texts(const RunReport& r);
 
 // removed_lsb x lsb x pitch^2 in mm^3 with 3 decimals, exactly rounded.
 std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_nm);

@@ -34,6 +34,11 @@ struct ReportToolUse {
   std::string source;  // "option", "table", "comment", "default" (empty: not known)
   uint32_t line = 0;   // source "comment": the comment's line, and its form (core/tool/tool_comment.h)
   std::string form;
+  // For the sheet (report key `tool_use`): the stick-out (Tool::length_nm)
+  // and the lines it cut on, the M6 that first loaded it (its first cut
+  // for the tool before any M6) to its last feed or arc move (0: none).
+  int64_t stick_out_nm = 0;
+  uint32_t first_line = 0, last_line = 0;
 };
 
 // An output of the run beside the report: a file and its bytes, or the

@@ -70,6 +70,9 @@ std::string load_finding_text(const LoadFinding& f, const StockComposition& c, b
 
 // --load-plot FILE.svg|.png (tools/run/run_load_plot.cpp), into its file
 // (false: *err says why).
+// The same figure as SVG text, width_px x height_px (the sheet's).
+std::string load_plot_svg_text(const EngageRecorder& r, const EngageSummary& s, const std::string& file, int64_t limit_mw,
+                               int width_px, int height_px);
 bool write_load_plot(const std::string& path, const EngageRecorder& r, const EngageSummary& s, const std::string& file,
                      int64_t limit_mw, std::string* err);
 

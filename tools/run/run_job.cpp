@@ -31,6 +31,7 @@
 #include "tools/run/run_safety.h"
 #include "tools/run/run_scan.h"
 #include "tools/run/run_setup.h"
+#include "tools/run/run_sheet.h"
 #include "tools/run/run_views.h"
 #include "tools/run/setup_text.h"
 
@@ -346,6 +347,10 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   OutputSet set;
   if (const int code = write_files(o, run)) return code;
   list_outputs(o, set, v, &rep);
+  if (!o.out.sheet.empty()) {  // drawn from the report as it stands, listed in it after
+    if (const int code = write_sheet(o, &su, rep)) return code;
+    rep.outputs.push_back(ReportOutput{"--sheet", o.out.sheet, set.bytes_of(o.out.sheet), 0});
+  }
   if (!write_report(o, run)) return kExitIo;
   std::string err;
   if (!set.publish(&err)) return fail(kExitIo, "%s", err.c_str());
@@ -364,6 +369,7 @@ int check_standard_output(const RunOptions& o) {
                                                             {"--save-stock", &o.out.save_stock},
                                                             {"--engagement-csv", &o.out.engagement_csv},
                                                             {"--load-plot", &o.out.load_plot},
+                                                            {"--sheet", &o.out.sheet},
                                                             {"--report", &o.out.report}};
   for (const auto& out : outs)
     if (is_stdout_path(*out.second)) return fail(kExitIo, "cannot write %s -: %s", out.first, err.c_str());

@@ -51,6 +51,11 @@ LoadPlotData plot_data(const EngageRecorder& r, const EngageSummary& s, const st
 
 }  // namespace
 
+std::string load_plot_svg_text(const EngageRecorder& r, const EngageSummary& s, const std::string& file, int64_t limit_mw,
+                               int width_px, int height_px) {
+  return load_plot_svg(plot_data(r, s, file, limit_mw), width_px, height_px);
+}
+
 bool write_load_plot(const std::string& path, const EngageRecorder& r, const EngageSummary& s, const std::string& file,
                      int64_t limit_mw, std::string* err) {
   const LoadPlotData d = plot_data(r, s, file, limit_mw);

@@ -100,7 +100,7 @@ int finish_run_options(RunOptions* o) {
 bool run_draws(const RunOptions& o) {
   const OutputOptions& f = o.out;
   return !f.image.empty() || !f.error_image.empty() || !f.frames_dir.empty() || !f.heightmap.empty() ||
-         !f.stl.empty() || !f.save_stock.empty() || !f.engagement_csv.empty() || !f.load_plot.empty() || o.view.window || !o.view.fbdev.empty();
+         !f.stl.empty() || !f.save_stock.empty() || !f.engagement_csv.empty() || !f.load_plot.empty() || !f.sheet.empty() || o.view.window || !o.view.fbdev.empty();
 }
 
 bool run_prints_summary(const RunOptions& o) { return o.out.print_summary && !run_draws(o) && o.out.report.empty(); }

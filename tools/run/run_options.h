@@ -165,6 +165,7 @@ struct OutputOptions {
   std::string save_stock;        // --save-stock FILE.dxstock: the final stock, to continue from
   std::string engagement_csv;    // --engagement-csv FILE: each feed move's load (tools/run/run_engage.h)
   std::string load_plot;         // --load-plot FILE.svg|FILE.png: load, removal rate and feed against time
+  std::string sheet;             // --sheet FILE.html: the one-page verification sheet (tools/run/run_sheet.h)
   // With none of the files above: the summary on stdout (`check
   // --simulate` and `optimize` run a job for its findings, without it).
   bool print_summary = true;

@@ -59,7 +59,7 @@ int check_outputs(const OutputOptions& o, FileGuard* guard, OutputFormats* forma
   const std::pair<const char*, const std::string*> all[] = {
       {"--image", &o.image}, {"--error-image", &o.error_image}, {"--heightmap", &o.heightmap},
       {"--stl", &o.stl},     {"--save-stock", &o.save_stock}, {"--engagement-csv", &o.engagement_csv},
-      {"--load-plot", &o.load_plot}, {"--report", &o.report}};
+      {"--load-plot", &o.load_plot}, {"--sheet", &o.sheet}, {"--report", &o.report}};
   for (const auto& out : all)
     if (!out.second->empty())
       if (const int code = guard_status(*guard, guard->check_output(out.first, *out.second))) return code;

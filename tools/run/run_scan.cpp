@@ -96,7 +96,8 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
     for (int k = 1; k < s.ntools; ++k) {
       char spec[kToolSpecTextMax];
       tool_spec_format(s.tools[k], spec, sizeof spec);
-      rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec, "", 0, ""});
+      rep->tools_used.push_back(ReportToolUse{s.numbers[k], spec, "", 0, "", s.tools[k].length_nm,
+                                                s.first_lines[k], s.last_lines[k]});
     }
   return kExitOk;
 }

@@ -324,7 +324,7 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     run->engage.reset(new EngageRecorder(run->plan.geo.lsb_nm, run->plan.geo.pitch_nm));
     if (!o.out.engagement_csv.empty() && !run->engage->open_csv(o.out.engagement_csv))
       return fail(kExitIo, "%s", run->engage->error());
-    if (!o.out.load_plot.empty()) run->engage->keep_plot();
+    if (!o.out.load_plot.empty() || !o.out.sheet.empty()) run->engage->keep_plot();  // the sheet shows the plot
     j.engagement = true;
     j.engage_sink = run->engage.get();
     j.engage_colours = engage_colours;

@@ -66,7 +66,8 @@ void report_tools(const ProgramScan& s, const ToolChoice& c, const std::string& 
     else src = c.source(number, &ct);
     const std::string spec = spec_of(s.tools[k]);
     rep->tools_used.push_back(ReportToolUse{number, spec, tool_source_name(src), ct ? ct->line : 0,
-                                            ct ? tool_comment_form_name(ct->form) : ""});
+                                            ct ? tool_comment_form_name(ct->form) : "", s.tools[k].length_nm,
+                                            s.first_lines[k], s.last_lines[k]});
     if (ct && msgs->printing())
       std::fprintf(stderr, "%s:%u: note: %s %s from the comment on line %u (%s)\n", file.c_str(), ct->line,
                    k == 0 ? "the first tool (before any M6)" : ("tool T" + std::to_string(number)).c_str(), spec.c_str(),

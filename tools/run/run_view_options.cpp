@@ -62,6 +62,14 @@ const Option<Out> kOutputs[] = {
          return fail(kExitUsage, "--load-plot needs a FILE.svg or FILE.png, not '%s'", v);
        return o->load_plot = v, kExitOk;
      }},
+    {"--sheet", "FILE.html",
+     "the verification sheet: one self-contained A4 page or two (the part's views, programs, tools with stick-out, "
+     "time, gouges with crops, collisions, travel, rule and load findings, a verdict at the top), drawn from the report",
+     [](Out* o, const char* v) -> int {
+       if (!has_extension(v, ".html") && !has_extension(v, ".htm"))
+         return fail(kExitUsage, "--sheet needs a FILE.html, not '%s'", v);
+       return o->sheet = v, kExitOk;
+     }},
     {"--report", "FILE.json", "summary: program, errors, stock, grid, tools, volume, time",
      [](Out* o, const char* v) -> int { return o->report = v, kExitOk; }},
 };

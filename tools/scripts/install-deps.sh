@@ -4,6 +4,7 @@
 #   tools/scripts/install-deps.sh window     + GLFW and Xvfb for the window test
 #   tools/scripts/install-deps.sh cross      + cross compilers, qemu, Cortex-M toolchain
 #   tools/scripts/install-deps.sh oracle     + LinuxCNC's stand-alone interpreter rs274 (oracle-check.sh --rs274)
+#   tools/scripts/install-deps.sh browser    + Chromium and its fonts for the sheet's browser test (sheet-test.sh)
 # Never installs g++-multilib: it removes the cross compilers (g++-12-multilib does not).
 set -eu
 pkgs="g++ clang make"
@@ -15,6 +16,7 @@ for extra in "$@"; do
                  libnewlib-arm-none-eabi qemu-system-arm";;
     fuzz) pkgs="$pkgs libclang-rt-14-dev";;
     oracle) pkgs="$pkgs linuxcnc-uspace";;
+    browser) pkgs="$pkgs chromium fonts-dejavu-core python3";;
     *) echo "install-deps.sh: unknown set '$extra'" >&2; exit 2;;
   esac
 done
