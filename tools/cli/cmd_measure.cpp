@@ -1,9 +1,10 @@
 // `dexmill measure STOCK.dxstock --at X,Y ...` (tools/CLI.md): measurements
 // of a simulated part, from the stock a run saved (`--save-stock`): at a
 // point, the column's top and bottom, whether it holds material, and the
-// line of the program that last cut it, each with its error bound
-// (core/measure/measure_at.h). The queries along a segment, of thickness and
-// of scallops come next.
+// line of the program that last cut it (core/measure/measure_at.h); a
+// section along a segment (--distance, tools/cli/cmd_measure_section.cpp);
+// the thinnest floor and wall (--thickness) and the highest scallop
+// (--scallop, tools/cli/cmd_measure_shape.cpp); each with its error bound.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -15,9 +16,11 @@
 #include "platform/input/file_guard.h"
 #include "platform/report/report_json.h"
 #include "tools/cli/cli.h"
+#include "tools/cli/cmd_measure.h"
 #include "tools/cli/option_help.h"
 #include "tools/cli/option_parse.h"
 #include "tools/cli/option_values.h"
+#include "tools/run/guard_inputs.h"
 #include "tools/run/run_stock.h"
 
 namespace dexmill {
@@ -27,6 +30,15 @@ namespace {
 struct MeasureArgs {
   std::string file;
   std::vector<std::pair<int64_t, int64_t>> at;  // --at, nm
+  bool distance = false;
+  int64_t segment_nm[4] = {};  // --distance X0,Y0,X1,Y1
+  std::string csv, svg;        // --csv, --svg
+  bool thickness = false;
+  int64_t wall_height_nm = 1000000;  // --wall-height, 1 mm
+  bool scallop = false;
+  bool region = false;
+  int64_t region_nm[4] = {};  // --region X0,Y0,X1,Y1
+  bool any() const { return !at.empty() || distance || thickness || scallop; }
 };
 
 int at(MeasureArgs* a, const char* v) {
@@ -36,19 +48,59 @@ int at(MeasureArgs* a, const char* v) {
   return kExitOk;
 }
 
+int distance(MeasureArgs* a, const char* v) {
+  if (!parse_mm_list(v, 4, a->segment_nm)) return fail(kExitUsage, "--distance needs X0,Y0,X1,Y1 in mm, not '%s'", v);
+  a->distance = true;
+  return kExitOk;
+}
+
+int region(MeasureArgs* a, const char* v) {
+  if (!parse_mm_list(v, 4, a->region_nm)) return fail(kExitUsage, "--region needs X0,Y0,X1,Y1 in mm, not '%s'", v);
+  a->region = true;
+  return kExitOk;
+}
+
+int wall_height(MeasureArgs* a, const char* v) {
+  if (!parse_scaled(v, 1000000, &a->wall_height_nm) || a->wall_height_nm <= 0 ||
+      a->wall_height_nm > 1000000000)
+    return fail(kExitUsage, "--wall-height needs a height in mm above 0 and up to 1000, not '%s'", v);
+  return kExitOk;
+}
+
 const Option<MeasureArgs> kMeasureOptions[] = {
     {"--at", "X,Y", "the part at a point (machine mm): top and bottom, material, the line that last cut it (repeatable)",
      at},
+    {"--distance", "X0,Y0,X1,Y1", "a section along the segment (machine mm), about a sample a pitch, as CSV", distance},
+    {"--csv", "FILE", "--distance's CSV into FILE (default: standard output)",
+     [](MeasureArgs* a, const char* v) -> int { a->csv = v; return kExitOk; }},
+    {"--svg", "FILE", "--distance's section as an SVG chart",
+     [](MeasureArgs* a, const char* v) -> int { a->svg = v; return kExitOk; }},
+    {"--thickness", nullptr, "the thinnest floor (top - bottom) and the thinnest wall, with where",
+     [](MeasureArgs* a, const char*) -> int { a->thickness = true; return kExitOk; }},
+    {"--wall-height", "MM", "a wall stands at least MM above the floor on both sides (default 1)", wall_height},
+    {"--scallop", nullptr, "the highest scallop (crest over the valleys beside it) across X and across Y",
+     [](MeasureArgs* a, const char*) -> int { a->scallop = true; return kExitOk; }},
+    {"--region", "X0,Y0,X1,Y1", "--scallop over the columns in this box only (machine mm; default: all)", region},
 };
 
 const CommandText kMeasureText = {
     "measure",
-    "usage: dexmill measure STOCK.dxstock --at X,Y [--at X,Y ...]\n\n"
+    "usage: dexmill measure STOCK.dxstock [--at X,Y ...] [--distance X0,Y0,X1,Y1 [--csv FILE] [--svg FILE]]\n"
+    "                       [--thickness [--wall-height MM]] [--scallop [--region X0,Y0,X1,Y1]]\n\n"
     "Measures the simulated part a run saved (dexmill run ... --save-stock\n"
     "STOCK.dxstock). --at X,Y gives the column nearest the point (machine mm):\n"
     "its top and bottom, or that it is cut through, and the program line that\n"
     "last lowered it (when the stock kept lines, as --save-stock does), with how\n"
-    "far the column is from the point and the heights' bound (one LSB).\n",
+    "far the column is from the point and the heights' bound (one LSB).\n"
+    "--distance samples the part along a segment, about one sample a pitch, as\n"
+    "CSV (standard output, or --csv FILE) and as a chart (--svg FILE).\n"
+    "--thickness gives the thinnest floor (top - bottom of a column) and the\n"
+    "thinnest wall: a run of columns along a row, a column or a diagonal whose\n"
+    "tops all stand --wall-height above the floor on both sides (a hole or the\n"
+    "grid's edge is air), its width the run's length, within one step.\n"
+    "--scallop gives the highest crest over the higher of the valleys beside it,\n"
+    "scanning along X and along Y (over --region only, if given), within two LSB\n"
+    "plus the height steps beside the crest and the valley.\n",
     "Exit 0 ok, 1 a stock file that is not one, 2 usage (a point off the stock's\n"
     "grid), 3 I/O.\n",
 };
@@ -66,7 +118,7 @@ const OptionTable<MeasureArgs>& measure_table() {
   return t;
 }
 
-std::string mm(int64_t nm, int decimals = 4) { return nm_to_mm_text(nm, decimals); }
+std::string mm(int64_t nm, int decimals = 4) { return measure_mm(nm, decimals); }
 
 // One answer: "X12.000 Y8.000: top Z-3.0000, bottom Z-10.0000 mm (...)".
 void print_at(const StockMeta& m, const MeasureAt& r, int64_t x, int64_t y) {
@@ -88,7 +140,52 @@ void print_at(const StockMeta& m, const MeasureAt& r, int64_t x, int64_t y) {
   std::printf("%s\n", o.c_str());
 }
 
+// Reads the stock file into s: kExitOk or the exit code after saying why.
+int read_stock(const std::string& file, MeasuredStock* s) {
+  StockFileReader in;
+  std::string err;
+  if (!in.open(file, &err)) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return in.io_error() ? kExitIo : kExitInput;
+  }
+  s->meta = in.meta();
+  const StockMeta& m = s->meta;
+  if (const int code = stock_heights_fit(m, file)) return code;
+  const size_t cells = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
+  s->top.assign(cells, 0);
+  s->bottom.assign(cells, 0);
+  s->lines.assign((m.layers & kStockLayerLine) ? cells : 0, 0);
+  s->programs.assign((m.layers & kStockLayerProgram) ? cells : 0, 0);
+  s->cls.assign((m.layers & kStockLayerClass) ? cells : 0, 0);
+  StockColumns c;
+  c.top = s->top.data();
+  c.bottom = s->bottom.data();
+  c.cls = s->cls.empty() ? nullptr : s->cls.data();
+  c.line = s->lines.empty() ? nullptr : s->lines.data();
+  c.program = s->programs.empty() ? nullptr : s->programs.data();
+  if (!in.read_columns(c, &err)) {
+    std::fprintf(stderr, "%s\n", err.c_str());
+    return in.io_error() ? kExitIo : kExitInput;
+  }
+  if (!ok(grid_init(&s->grid, m.geo, s->top.data(), s->bottom.data(), cells)))
+    return fail(kExitInput, "%s: a grid this build cannot hold", file.c_str());
+  return kExitOk;
+}
+
+// The outputs are none of the inputs, nor one file twice.
+int guard_outputs(const MeasureArgs& a) {
+  FileGuard guard;
+  if (const int code = guard_status(guard, guard.register_input(a.file, "stock"))) return code;
+  if (!a.csv.empty())
+    if (const int code = guard_status(guard, guard.check_output("--csv", a.csv))) return code;
+  if (!a.svg.empty())
+    if (const int code = guard_status(guard, guard.check_output("--svg", a.svg))) return code;
+  return kExitOk;
+}
+
 }  // namespace
+
+std::string measure_mm(int64_t nm, int decimals) { return nm_to_mm_text(nm, decimals); }
 
 CommandDoc measure_doc() { return command_doc(measure_table()); }
 
@@ -99,39 +196,28 @@ int cmd_measure(int argc, char** argv) {
   if (help) print_help(measure_doc(), stdout);
   if (parsed != kExitOk || help) return parsed;
   if (a.file.empty()) return fail(kExitUsage, "measure needs a stock file (dexmill run ... --save-stock STOCK.dxstock)");
-  if (a.at.empty()) return fail(kExitUsage, "measure needs a query: --at X,Y");
-  StockFileReader in;
-  std::string err;
-  if (!in.open(a.file, &err)) {
-    std::fprintf(stderr, "%s\n", err.c_str());
-    return in.io_error() ? kExitIo : kExitInput;
-  }
-  const StockMeta m = in.meta();
-  if (const int code = stock_heights_fit(m, a.file)) return code;
-  const size_t cells = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
-  std::vector<height_t> top(cells), bottom(cells);
-  std::vector<uint32_t> lines((m.layers & kStockLayerLine) ? cells : 0);
-  std::vector<uint8_t> programs((m.layers & kStockLayerProgram) ? cells : 0), cls((m.layers & kStockLayerClass) ? cells : 0);
-  StockColumns c;
-  c.top = top.data();
-  c.bottom = bottom.data();
-  c.cls = cls.empty() ? nullptr : cls.data();
-  c.line = lines.empty() ? nullptr : lines.data();
-  c.program = programs.empty() ? nullptr : programs.data();
-  if (!in.read_columns(c, &err)) {
-    std::fprintf(stderr, "%s\n", err.c_str());
-    return in.io_error() ? kExitIo : kExitInput;
-  }
-  DexelGrid<height_t> g;
-  if (!ok(grid_init(&g, m.geo, top.data(), bottom.data(), cells))) return fail(kExitInput, "%s: a grid this build cannot hold", a.file.c_str());
+  if (!a.any()) return fail(kExitUsage, "measure needs a query: --at X,Y, --distance, --thickness or --scallop");
+  if ((!a.csv.empty() || !a.svg.empty()) && !a.distance) return fail(kExitUsage, "--csv and --svg go with --distance");
+  if (a.region && !a.scallop) return fail(kExitUsage, "--region goes with --scallop");
+  if (a.distance && a.csv.empty() && !a.at.empty())
+    return fail(kExitUsage, "--distance with --at: give the CSV a file (--csv FILE), standard output has the points");
+  if (const int code = guard_outputs(a)) return code;
+  MeasuredStock s;
+  if (const int code = read_stock(a.file, &s)) return code;
+  const DexelGrid<height_t>& g = s.grid;
   for (const auto& p : a.at) {
-    const MeasureAt r = measure_at(g, c.line, c.program, p.first, p.second);
+    const MeasureAt r = measure_at(g, s.line_layer(), s.program_layer(), p.first, p.second);
     if (!r.on_grid)
       return fail(kExitUsage, "X%s Y%s is off the stock's grid (X%s..%s, Y%s..%s)", mm(p.first, 3).c_str(),
                   mm(p.second, 3).c_str(), mm(g.x0_nm, 3).c_str(), mm(g.x0_nm + (g.nx - 1) * g.pitch_nm, 3).c_str(),
                   mm(g.y0_nm, 3).c_str(), mm(g.y0_nm + (g.ny - 1) * g.pitch_nm, 3).c_str());
-    print_at(m, r, p.first, p.second);
+    print_at(s.meta, r, p.first, p.second);
   }
+  if (a.distance)
+    if (const int code = measure_section(s, a.segment_nm, a.csv, a.svg)) return code;
+  if (a.thickness) measure_thickness(s, a.wall_height_nm);
+  if (a.scallop)
+    if (const int code = measure_scallop(s, a.region ? a.region_nm : nullptr)) return code;
   return kExitOk;
 }
 

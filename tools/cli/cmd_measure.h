@@ -1,0 +1,56 @@
+// The pieces of `dexmill measure` (tools/cli/cmd_measure.cpp): the saved
+// stock as a grid, and the queries' writers, split by query.
+#ifndef DEXMILL_TOOLS_CLI_CMD_MEASURE_H
+#define DEXMILL_TOOLS_CLI_CMD_MEASURE_H
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "core/grid/grid.h"
+#include "core/stock/stock_file.h"
+
+namespace dexmill {
+namespace cli {
+
+// A stock read from its file, with the layers it kept.
+struct MeasuredStock {
+  StockMeta meta{};
+  std::vector<height_t> top, bottom;
+  std::vector<uint32_t> lines;
+  std::vector<uint8_t> programs, cls;
+  DexelGrid<height_t> grid;
+  const uint32_t* line_layer() const { return lines.empty() ? nullptr : lines.data(); }
+  const uint8_t* program_layer() const { return programs.empty() ? nullptr : programs.data(); }
+};
+
+std::string measure_mm(int64_t nm, int decimals = 4);
+
+// --distance X0,Y0,X1,Y1: the section as CSV (to csv_path, or standard
+// output when empty) and as an SVG chart (svg_path, when given).
+int measure_section(const MeasuredStock& s, const int64_t seg_nm[4], const std::string& csv_path,
+                    const std::string& svg_path);
+
+// The SVG chart of a section's samples (tools/cli/cmd_measure_svg.cpp).
+struct SectionChartPoint {
+  double along_mm;
+  bool material;
+  double top_mm, bottom_mm;
+  bool have_design;
+  double design_mm;
+};
+std::string section_svg(const std::vector<SectionChartPoint>& p, const std::string& title);
+
+// --thickness: the thinnest floor and wall, printed.
+void measure_thickness(const MeasuredStock& s, int64_t wall_height_nm);
+
+// --scallop: the highest scallop over the columns whose centres lie in the
+// box region_nm (X0,Y0,X1,Y1; the whole grid when null), printed; a
+// usage error when the box holds no column.
+int measure_scallop(const MeasuredStock& s, const int64_t* region_nm);
+
+}  // namespace cli
+}  // namespace dexmill
+
+#endif
