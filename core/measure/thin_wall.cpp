@@ -34,15 +34,34 @@ int32_t scan_length(int32_t nx, int32_t ny, int32_t i, int32_t j, int32_t di, in
   return n;
 }
 
-// The column k of scan s stands at least `level` (LSB) beside the scan:
-// both its neighbours crosswise to the scan do (holes and off the grid
-// are air).
+// The face is looked at kFaceReach steps crosswise each way from a run's
+// end, where it must lie within kFaceShift steps of the end along the
+// scan: within atan(3 / 6) = 26.6 degrees of crosswise.
+constexpr int32_t kFaceReach = 6;
+constexpr int32_t kFaceShift = 3;
+
 template <class H>
-bool crosswise_high(const DexelGrid<H>& g, const Scan& s, int32_t k, int64_t level) {
-  const int32_t i = s.i + s.di * k, j = s.j + s.dj * k;
+bool high_at(const DexelGrid<H>& g, int32_t i, int32_t j, int64_t level) {
+  return g.contains(i, j) && !g.is_hole(i, j) && static_cast<int64_t>(g.top[g.index(i, j)]) >= level;
+}
+
+// The face at column (i, j), the floor side towards (ox, oy), runs
+// crosswise to the scan: kFaceReach steps to either side crosswise, a
+// column at least `level` high (on the grid, not a hole) is followed
+// towards (ox, oy) by a lower one within kFaceShift steps of the end's
+// own place along the scan. A straight face within 26.6 degrees of
+// crosswise passes (the four scan directions are 45 degrees apart: every
+// face has one, with room for the grid's steps); the tip of a convex
+// corner, a chord far from a round island's centre, a wall's last
+// kFaceReach columns do not.
+template <class H>
+bool face_crosswise(const DexelGrid<H>& g, int32_t i, int32_t j, int32_t ox, int32_t oy, int64_t level) {
   for (int side = -1; side <= 1; side += 2) {
-    const int32_t ni = i - side * s.dj, nj = j + side * s.di;
-    if (!g.contains(ni, nj) || g.is_hole(ni, nj) || static_cast<int64_t>(g.top[g.index(ni, nj)]) < level) return false;
+    const int32_t qi = i - side * oy * kFaceReach, qj = j + side * ox * kFaceReach;
+    bool found = false;
+    for (int32_t t = -kFaceShift; t <= kFaceShift && !found; ++t)
+      found = high_at(g, qi + t * ox, qj + t * oy, level) && !high_at(g, qi + (t + 1) * ox, qj + (t + 1) * oy, level);
+    if (!found) return false;
   }
   return true;
 }
@@ -66,7 +85,9 @@ void scan_walls(const DexelGrid<H>& g, const Scan& s, WallScan kind, int64_t h_l
       // not across the wall (a corner's tip, a chord near a round
       // island's edge) and does not count.
       const int64_t level = (left > right ? left : right) + h_lsb;
-      if (!crosswise_high(g, s, a, level) || !crosswise_high(g, s, b, level)) break;
+      if (!face_crosswise(g, s.i + s.di * a, s.j + s.dj * a, -s.di, -s.dj, level) ||
+          !face_crosswise(g, s.i + s.di * b, s.j + s.dj * b, s.di, s.dj, level))
+        break;
       *best_run = b - a + 1;
       best->found = true;
       best->scan = kind;

@@ -8,10 +8,12 @@
 // before a and just after b. A hole (cut through) or the grid's edge beside
 // the run is air, lower than any floor, so a wall at the stock's edge or
 // standing between through-cuts counts. The run must be across the wall:
-// at both its ends the columns beside it, crosswise to the scan, stand
-// at that height too (so a face runs crosswise there; without this a
-// scan across a convex corner's tip or along a chord near a round
-// island's edge would find a short run where the material is thick).
+// at both its ends the face must run crosswise to the scan, within 26.6
+// degrees (6 steps crosswise to either side it is within 3 steps of the
+// end along the scan, thin_wall.cpp face_crosswise), so a wall is found
+// away from its own ends (6 steps); else a scan across a convex corner's
+// tip or along a chord near a round island's edge would find a short run
+// where the material is thick.
 // Its width is the run's length
 // (b - a + 1) times the scan's step (the pitch along rows and columns,
 // pitch * sqrt 2 along the diagonals); for each run start the shortest
@@ -21,9 +23,10 @@
 //
 // Bounds: along its scan the width is within one step of the wall's true
 // width there (its faces lie between sampled columns, each within a step).
-// A wall crosswise to a scan direction is measured at its true width; one
-// at an angle between two directions (at most 22.5 degrees from the
-// nearer) at most 1 / cos 22.5 = 1.083 times its width, plus the step.
+// A straight wall crosswise to a scan direction is measured at its true
+// width; one at an angle to it (counted up to 26.6 degrees) at most
+// 1 / cos 26.6 = 1.12 times its width, plus the step; a round one (an
+// island) at least cos 26.6 = 0.894 times its diameter, less the step.
 // Heights (H against the tops) are within one LSB. Tops only: a wall
 // under an overhang (a bottom raised by a second setup) is judged by its
 // top. Integer only, no heap; O(columns) per scan but for runs that start
