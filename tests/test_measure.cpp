@@ -156,6 +156,19 @@ TEST(run_measure_a_slot_section) {
   r = run_command("measure %/slot.dxstock --distance 1,1,2,2 --csv %/slot.dxstock");
   CHECK_EQ(r.code, 2);
   CHECK_EQ(run_command("measure %/slot.dxstock --at 12,10").code, 0);  // the stock is intact
+  // A design 1 mm below the top (a flat PGM, white at Z-1): the slot's
+  // floor is 1 mm under it, the uncut top 1 mm over, within two LSB.
+  write_tmp("flat.pgm", "P2\n2 2\n255\n255 255\n255 255\n");
+  r = run_command("measure %/slot.dxstock --design %/flat.pgm --design-z -3,-1 --at 15,10 --at 2,2");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.out, "slot.ngc; design Z-1.0000, cut - design -1.0000 mm (within 0.0004 mm)\n"));
+  CHECK(has(r.out, "uncut; design Z-1.0000, cut - design +1.0000 mm (within 0.0004 mm)\n"));
+  r = run_command("measure %/slot.dxstock --design %/flat.pgm --design-z -3,-1 --distance 15,0,15,20 --svg %/slotd.svg");
+  CHECK(has(r.out, "\n10.0000,15.0000,10.0000,15.0000,10.0000,1,-2.0000,-10.0000,-1.0000,5\n"));
+  CHECK(has(slurp(tmp_dir() + "/slotd.svg"), "(dashed: the design)"));
+  // A design that is not there, or is the CSV's name.
+  CHECK_EQ(run_command("measure %/slot.dxstock --design %/none.pgm --at 1,1").code, 3);
+  CHECK_EQ(run_command("measure %/slot.dxstock --design %/flat.pgm --distance 1,1,2,2 --csv %/flat.pgm").code, 2);
 }
 
 TEST(run_measure_a_ball_nose_scallop) {

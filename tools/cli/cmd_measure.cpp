@@ -21,6 +21,7 @@
 #include "tools/cli/option_parse.h"
 #include "tools/cli/option_values.h"
 #include "tools/run/guard_inputs.h"
+#include "tools/run/run_option_table.h"
 #include "tools/run/run_stock.h"
 
 namespace dexmill {
@@ -33,6 +34,7 @@ struct MeasureArgs {
   bool distance = false;
   int64_t segment_nm[4] = {};  // --distance X0,Y0,X1,Y1
   std::string csv, svg;        // --csv, --svg
+  JobOptions job;              // --design and its options (run's: tools/run/run_job_options.cpp)
   bool thickness = false;
   int64_t wall_height_nm = 1000000;  // --wall-height, 1 mm
   bool scallop = false;
@@ -112,6 +114,8 @@ const OptionTable<MeasureArgs>& measure_table() {
     OptionTable<MeasureArgs> table;
     table.text = &kMeasureText;
     table.sections.push_back(section<MeasureArgs>(nullptr, option_list(kMeasureOptions), whole));
+    table.sections.push_back(section<MeasureArgs>("The design part (as dexmill run takes it)", run_design_options(),
+                                                  [](MeasureArgs& a) -> JobOptions& { return a.job; }));
     table.operand = [](MeasureArgs* a, const char* arg, int index) -> int { return take_file(&a->file, arg, index); };
     return table;
   }();
@@ -121,7 +125,8 @@ const OptionTable<MeasureArgs>& measure_table() {
 std::string mm(int64_t nm, int decimals = 4) { return measure_mm(nm, decimals); }
 
 // One answer: "X12.000 Y8.000: top Z-3.0000, bottom Z-10.0000 mm (...)".
-void print_at(const StockMeta& m, const MeasureAt& r, int64_t x, int64_t y) {
+void print_at(const MeasuredStock& s, const MeasureAt& r, int64_t x, int64_t y) {
+  const StockMeta& m = s.meta;
   std::string o = "X" + mm(x, 3) + " Y" + mm(y, 3) + ": ";
   if (r.material)
     o += "top Z" + mm(r.top_nm) + ", bottom Z" + mm(r.bottom_nm) + " mm";
@@ -137,45 +142,15 @@ void print_at(const StockMeta& m, const MeasureAt& r, int64_t x, int64_t y) {
     o += "; last cut by line " + std::to_string(r.line);
     if ((m.layers & kStockLayerProgram) && r.program < m.nprograms) o += std::string(" of ") + m.programs[r.program].name;
   }
+  if (s.have_design) o += "; " + measure_design_at(s, r);
   std::printf("%s\n", o.c_str());
-}
-
-// Reads the stock file into s: kExitOk or the exit code after saying why.
-int read_stock(const std::string& file, MeasuredStock* s) {
-  StockFileReader in;
-  std::string err;
-  if (!in.open(file, &err)) {
-    std::fprintf(stderr, "%s\n", err.c_str());
-    return in.io_error() ? kExitIo : kExitInput;
-  }
-  s->meta = in.meta();
-  const StockMeta& m = s->meta;
-  if (const int code = stock_heights_fit(m, file)) return code;
-  const size_t cells = static_cast<size_t>(m.geo.nx) * static_cast<size_t>(m.geo.ny);
-  s->top.assign(cells, 0);
-  s->bottom.assign(cells, 0);
-  s->lines.assign((m.layers & kStockLayerLine) ? cells : 0, 0);
-  s->programs.assign((m.layers & kStockLayerProgram) ? cells : 0, 0);
-  s->cls.assign((m.layers & kStockLayerClass) ? cells : 0, 0);
-  StockColumns c;
-  c.top = s->top.data();
-  c.bottom = s->bottom.data();
-  c.cls = s->cls.empty() ? nullptr : s->cls.data();
-  c.line = s->lines.empty() ? nullptr : s->lines.data();
-  c.program = s->programs.empty() ? nullptr : s->programs.data();
-  if (!in.read_columns(c, &err)) {
-    std::fprintf(stderr, "%s\n", err.c_str());
-    return in.io_error() ? kExitIo : kExitInput;
-  }
-  if (!ok(grid_init(&s->grid, m.geo, s->top.data(), s->bottom.data(), cells)))
-    return fail(kExitInput, "%s: a grid this build cannot hold", file.c_str());
-  return kExitOk;
 }
 
 // The outputs are none of the inputs, nor one file twice.
 int guard_outputs(const MeasureArgs& a) {
   FileGuard guard;
   if (const int code = guard_status(guard, guard.register_input(a.file, "stock"))) return code;
+  if (const int code = guard_status(guard, guard.register_input(a.job.design, "--design"))) return code;
   if (!a.csv.empty())
     if (const int code = guard_status(guard, guard.check_output("--csv", a.csv))) return code;
   if (!a.svg.empty())
@@ -204,6 +179,8 @@ int cmd_measure(int argc, char** argv) {
   if (const int code = guard_outputs(a)) return code;
   MeasuredStock s;
   if (const int code = read_stock(a.file, &s)) return code;
+  if (!a.job.design.empty())
+    if (const int code = read_design(a.job, &s)) return code;
   const DexelGrid<height_t>& g = s.grid;
   for (const auto& p : a.at) {
     const MeasureAt r = measure_at(g, s.line_layer(), s.program_layer(), p.first, p.second);
@@ -211,7 +188,7 @@ int cmd_measure(int argc, char** argv) {
       return fail(kExitUsage, "X%s Y%s is off the stock's grid (X%s..%s, Y%s..%s)", mm(p.first, 3).c_str(),
                   mm(p.second, 3).c_str(), mm(g.x0_nm, 3).c_str(), mm(g.x0_nm + (g.nx - 1) * g.pitch_nm, 3).c_str(),
                   mm(g.y0_nm, 3).c_str(), mm(g.y0_nm + (g.ny - 1) * g.pitch_nm, 3).c_str());
-    print_at(s.meta, r, p.first, p.second);
+    print_at(s, r, p.first, p.second);
   }
   if (a.distance)
     if (const int code = measure_section(s, a.segment_nm, a.csv, a.svg)) return code;

@@ -9,7 +9,10 @@
 
 #include "core/config.h"
 #include "core/grid/grid.h"
+#include "core/measure/measure_at.h"
 #include "core/stock/stock_file.h"
+#include "tools/run/run_assess.h"
+#include "tools/run/run_options.h"
 
 namespace dexmill {
 namespace cli {
@@ -21,11 +24,22 @@ struct MeasuredStock {
   std::vector<uint32_t> lines;
   std::vector<uint8_t> programs, cls;
   DexelGrid<height_t> grid;
+  bool have_design = false;  // --design, on the grid (tools/cli/cmd_measure_read.cpp)
+  RunDesign design;
+  const int32_t* design_layer() const { return have_design ? design.grid.top_lsb : nullptr; }
   const uint32_t* line_layer() const { return lines.empty() ? nullptr : lines.data(); }
   const uint8_t* program_layer() const { return programs.empty() ? nullptr : programs.data(); }
 };
 
 std::string measure_mm(int64_t nm, int decimals = 4);
+
+// Reads the stock file into s; places job.design on its grid. kExitOk, or
+// the exit code after saying why.
+int read_stock(const std::string& file, MeasuredStock* s);
+int read_design(const JobOptions& job, MeasuredStock* s);
+// "design Z-1.0000, cut - design -1.0000 mm (within 0.0004 mm)" at the
+// column of r, or that the design misses it.
+std::string measure_design_at(const MeasuredStock& s, const MeasureAt& r);
 
 // --distance X0,Y0,X1,Y1: the section as CSV (to csv_path, or standard
 // output when empty) and as an SVG chart (svg_path, when given).

@@ -41,7 +41,7 @@ int measure_section(const MeasuredStock& s, const int64_t seg_nm[4], const std::
   std::string csv = "along_mm,x_mm,y_mm,column_x_mm,column_y_mm,material,top_mm,bottom_mm,design_mm,line\n";
   std::vector<SectionChartPoint> chart;
   for (int32_t k = 0; k <= seg.steps; ++k) {
-    const SectionSample p = section_sample(g, seg, k, s.line_layer(), s.program_layer(), nullptr);
+    const SectionSample p = section_sample(g, seg, k, s.line_layer(), s.program_layer(), s.design_layer());
     if (!p.at.on_grid)
       return fail(kExitUsage, "--distance: X%s Y%s is off the stock's grid", measure_mm(p.x_nm, 3).c_str(),
                   measure_mm(p.y_nm, 3).c_str());
