@@ -110,6 +110,13 @@ TEST(run_measure_thickness_of_pockets) {
   r = run_command("measure %/pocket1.dxstock --thickness");
   CHECK_EQ(r.code, 0);
   CHECK(has(r.out, "thinnest wall: 4.000 mm across Y at "));  // Y0..Y3.9 and Y16.1..Y20: 40 columns
+  // The picture: a PNG of the part in run's thin colouring.
+  r = run_command("measure %/pocket1.dxstock --thickness --image %/pocket1.png --thin 3");
+  CHECK_EQ(r.code, 0);
+  CHECK_EQ(slurp(tmp_dir() + "/pocket1.png").compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
+  CHECK_EQ(run_command("measure %/pocket1.dxstock --image %/x.png").code, 2);  // --image needs --thickness
+  CHECK_EQ(run_command("measure %/pocket1.dxstock --thickness --image %/pocket1.dxstock").code, 2);
+  CHECK_EQ(run_command("measure %/pocket1.dxstock --thickness --thin -1").code, 2);
   // Usage: a wall height of 0, --wall-height needs a number.
   CHECK_EQ(run_command("measure %/pocket1.dxstock --thickness --wall-height 0").code, 2);
   CHECK_EQ(run_command("measure %/pocket1.dxstock --thickness --wall-height x").code, 2);

@@ -37,6 +37,8 @@ struct MeasureArgs {
   JobOptions job;              // --design and its options (run's: tools/run/run_job_options.cpp)
   bool thickness = false;
   int64_t wall_height_nm = 1000000;  // --wall-height, 1 mm
+  std::string image;                 // --image
+  int64_t thin_nm = 1000000;         // --thin, 1 mm (as dexmill run's)
   bool scallop = false;
   bool region = false;
   int64_t region_nm[4] = {};  // --region X0,Y0,X1,Y1
@@ -69,6 +71,12 @@ int wall_height(MeasureArgs* a, const char* v) {
   return kExitOk;
 }
 
+int thin(MeasureArgs* a, const char* v) {
+  if (!parse_scaled(v, 1000000, &a->thin_nm) || a->thin_nm <= 0 || a->thin_nm > 1000000000)
+    return fail(kExitUsage, "--thin needs a thickness in mm above 0 and up to 1000, not '%s'", v);
+  return kExitOk;
+}
+
 const Option<MeasureArgs> kMeasureOptions[] = {
     {"--at", "X,Y", "the part at a point (machine mm): top and bottom, material, the line that last cut it (repeatable)",
      at},
@@ -80,6 +88,9 @@ const Option<MeasureArgs> kMeasureOptions[] = {
     {"--thickness", nullptr, "the thinnest floor (top - bottom) and the thinnest wall, with where",
      [](MeasureArgs* a, const char*) -> int { a->thickness = true; return kExitOk; }},
     {"--wall-height", "MM", "a wall stands at least MM above the floor on both sides (default 1)", wall_height},
+    {"--image", "FILE.png", "--thickness's picture: the part coloured as run --color thin draws it, the thinnest places marked",
+     [](MeasureArgs* a, const char* v) -> int { a->image = v; return kExitOk; }},
+    {"--thin", "MM", "--image highlights floors thinner than MM (default 1)", thin},
     {"--scallop", nullptr, "the highest scallop (crest over the valleys beside it) across X and across Y",
      [](MeasureArgs* a, const char*) -> int { a->scallop = true; return kExitOk; }},
     {"--region", "X0,Y0,X1,Y1", "--scallop over the columns in this box only (machine mm; default: all)", region},
@@ -88,7 +99,8 @@ const Option<MeasureArgs> kMeasureOptions[] = {
 const CommandText kMeasureText = {
     "measure",
     "usage: dexmill measure STOCK.dxstock [--at X,Y ...] [--distance X0,Y0,X1,Y1 [--csv FILE] [--svg FILE]]\n"
-    "                       [--thickness [--wall-height MM]] [--scallop [--region X0,Y0,X1,Y1]]\n\n"
+    "                       [--thickness [--wall-height MM] [--image FILE.png [--thin MM]]]\n"
+    "                       [--scallop [--region X0,Y0,X1,Y1]] [--design FILE ...]\n\n"
     "Measures the simulated part a run saved (dexmill run ... --save-stock\n"
     "STOCK.dxstock). --at X,Y gives the column nearest the point (machine mm):\n"
     "its top and bottom, or that it is cut through, and the program line that\n"
@@ -102,7 +114,10 @@ const CommandText kMeasureText = {
     "grid's edge is air), its width the run's length, within one step.\n"
     "--scallop gives the highest crest over the higher of the valleys beside it,\n"
     "scanning along X and along Y (over --region only, if given), within two LSB\n"
-    "plus the height steps beside the crest and the valley.\n",
+    "plus the height steps beside the crest and the valley.\n"
+    "--design FILE (with run's design options) adds the design's height and\n"
+    "cut - design to --at and the design's line to --distance (--tolerance and\n"
+    "--tolerance-box are read and not used).\n",
     "Exit 0 ok, 1 a stock file that is not one, 2 usage (a point off the stock's\n"
     "grid), 3 I/O.\n",
 };
@@ -155,6 +170,8 @@ int guard_outputs(const MeasureArgs& a) {
     if (const int code = guard_status(guard, guard.check_output("--csv", a.csv))) return code;
   if (!a.svg.empty())
     if (const int code = guard_status(guard, guard.check_output("--svg", a.svg))) return code;
+  if (!a.image.empty())
+    if (const int code = guard_status(guard, guard.check_output("--image", a.image))) return code;
   return kExitOk;
 }
 
@@ -174,6 +191,7 @@ int cmd_measure(int argc, char** argv) {
   if (!a.any()) return fail(kExitUsage, "measure needs a query: --at X,Y, --distance, --thickness or --scallop");
   if ((!a.csv.empty() || !a.svg.empty()) && !a.distance) return fail(kExitUsage, "--csv and --svg go with --distance");
   if (a.region && !a.scallop) return fail(kExitUsage, "--region goes with --scallop");
+  if (!a.image.empty() && !a.thickness) return fail(kExitUsage, "--image goes with --thickness");
   if (a.distance && a.csv.empty() && !a.at.empty())
     return fail(kExitUsage, "--distance with --at: give the CSV a file (--csv FILE), standard output has the points");
   if (const int code = guard_outputs(a)) return code;
@@ -192,7 +210,8 @@ int cmd_measure(int argc, char** argv) {
   }
   if (a.distance)
     if (const int code = measure_section(s, a.segment_nm, a.csv, a.svg)) return code;
-  if (a.thickness) measure_thickness(s, a.wall_height_nm);
+  if (a.thickness)
+    if (const int code = measure_thickness(s, a.wall_height_nm, a.image, a.thin_nm)) return code;
   if (a.scallop)
     if (const int code = measure_scallop(s, a.region ? a.region_nm : nullptr)) return code;
   return kExitOk;

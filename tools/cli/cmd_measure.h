@@ -10,6 +10,8 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/measure/measure_at.h"
+#include "core/measure/thin_floor.h"
+#include "core/measure/thin_wall.h"
 #include "core/stock/stock_file.h"
 #include "tools/run/run_assess.h"
 #include "tools/run/run_options.h"
@@ -56,8 +58,11 @@ struct SectionChartPoint {
 };
 std::string section_svg(const std::vector<SectionChartPoint>& p, const std::string& title);
 
-// --thickness: the thinnest floor and wall, printed.
-void measure_thickness(const MeasuredStock& s, int64_t wall_height_nm);
+// --thickness: the thinnest floor and wall, printed; drawn into image_path
+// (a PNG, when given) with the thin colouring under thin_nm.
+int measure_thickness(const MeasuredStock& s, int64_t wall_height_nm, const std::string& image_path, int64_t thin_nm);
+int measure_thin_image(const MeasuredStock& s, const std::string& path, int64_t thin_nm, const ThinFloor& floor,
+                       const ThinWall& wall);
 
 // --scallop: the highest scallop over the columns whose centres lie in the
 // box region_nm (X0,Y0,X1,Y1; the whole grid when null), printed; a

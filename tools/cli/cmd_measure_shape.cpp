@@ -1,6 +1,7 @@
 // `dexmill measure STOCK --thickness` and `--scallop` (tools/CLI.md): the
 // thinnest floor and wall (core/measure/thin_floor.h, thin_wall.h) and the
-// highest scallop (core/measure/scallop.h), printed with their bounds.
+// highest scallop (core/measure/scallop.h), printed with their bounds;
+// the picture in tools/cli/cmd_measure_image.cpp.
 #include <cstdio>
 #include <string>
 
@@ -30,9 +31,11 @@ void print_scallop(const char* across, const Scallop& s) {
               measure_mm(s.valley_nm).c_str(), measure_mm(s.error_nm).c_str(), s.crests);
 }
 
+void print_wall(const DexelGrid<height_t>& g, const ThinWall& w, const std::string& high);
+
 }  // namespace
 
-void measure_thickness(const MeasuredStock& s, int64_t wall_height_nm) {
+int measure_thickness(const MeasuredStock& s, int64_t wall_height_nm, const std::string& image_path, int64_t thin_nm) {
   const DexelGrid<height_t>& g = s.grid;
   const ThinFloor f = thin_floor(g);
   if (!f.found)
@@ -45,10 +48,16 @@ void measure_thickness(const MeasuredStock& s, int64_t wall_height_nm) {
                 measure_mm(div_ceil(g.pitch_nm, 2), 3).c_str());
   const ThinWall w = thin_wall(g, wall_height_nm);
   const std::string high = "walls at least " + measure_mm(wall_height_nm, 3) + " mm high";
-  if (!w.found) {
+  if (!w.found)
     std::printf("thinnest wall: none (%s)\n", high.c_str());
-    return;
-  }
+  else
+    print_wall(g, w, high);
+  return image_path.empty() ? kExitOk : measure_thin_image(s, image_path, thin_nm, f, w);
+}
+
+namespace {
+
+void print_wall(const DexelGrid<height_t>& g, const ThinWall& w, const std::string& high) {
   const std::string floor = w.floor_air ? "air on both sides" : "over Z" + measure_mm(w.floor_nm);
   std::printf("thinnest wall: %s mm across %s at %s (columns %s to %s, top Z%s %s; within %s mm; %s)\n",
               measure_mm(w.width_nm, 3).c_str(), wall_scan_name(w.scan), xy(w.x_nm, w.y_nm).c_str(),
@@ -56,6 +65,8 @@ void measure_thickness(const MeasuredStock& s, int64_t wall_height_nm) {
               xy(g.x0_nm + w.i1 * g.pitch_nm, g.y0_nm + w.j1 * g.pitch_nm).c_str(), measure_mm(w.top_nm).c_str(),
               floor.c_str(), measure_mm(w.width_error_nm, 3).c_str(), high.c_str());
 }
+
+}  // namespace
 
 int measure_scallop(const MeasuredStock& s, const int64_t* region_nm) {
   const DexelGrid<height_t>& g = s.grid;
