@@ -14,10 +14,32 @@
 #include "core/measure/thin_wall.h"
 #include "core/stock/stock_file.h"
 #include "tools/run/run_assess.h"
+#include "tools/cli/option_table.h"
 #include "tools/run/run_options.h"
 
 namespace dexmill {
 namespace cli {
+
+// The command's settings, as its options give them.
+struct MeasureArgs {
+  std::string file;
+  std::vector<std::pair<int64_t, int64_t>> at;  // --at, nm
+  bool distance = false;
+  int64_t segment_nm[4] = {};  // --distance X0,Y0,X1,Y1
+  std::string csv, svg;        // --csv, --svg
+  JobOptions job;              // --design and its options (run's: tools/run/run_job_options.cpp)
+  bool thickness = false;
+  int64_t wall_height_nm = 1000000;  // --wall-height, 1 mm
+  std::string image;                 // --image
+  int64_t thin_nm = 1000000;         // --thin, 1 mm (as dexmill run's)
+  bool scallop = false;
+  bool region = false;
+  int64_t region_nm[4] = {};  // --region X0,Y0,X1,Y1
+  bool any() const { return !at.empty() || distance || thickness || scallop; }
+};
+
+// The command's options and help (tools/cli/cmd_measure_options.cpp).
+const OptionTable<MeasureArgs>& measure_table();
 
 // A stock read from its file, with the layers it kept.
 struct MeasuredStock {
