@@ -3,7 +3,8 @@
 // material, and the column where (the first in row-major order among
 // equals). Each column's top and bottom are the cut's within one LSB
 // (core/measure/measure_at.h), so the thickness is within two LSB; the
-// column stands for the surface within pitch / sqrt 2 of its centre.
+// column stands for the surface within half a pitch of its centre along X
+// and Y (pitch / sqrt 2 in all).
 // Integer only, no heap.
 #ifndef DEXMILL_CORE_MEASURE_THIN_FLOOR_H
 #define DEXMILL_CORE_MEASURE_THIN_FLOOR_H

@@ -42,7 +42,7 @@ int measure_thickness(const MeasuredStock& s, int64_t wall_height_nm, const std:
     std::printf("thinnest floor: none (no column holds material)\n");
   else
     std::printf("thinnest floor: %s mm at %s (top Z%s, bottom Z%s; within %s mm, the column's centre within %s mm of "
-                "the place)\n",
+                "the place along X and Y)\n",
                 measure_mm(f.thickness_nm).c_str(), xy(f.x_nm, f.y_nm).c_str(), measure_mm(f.top_nm).c_str(),
                 measure_mm(f.bottom_nm).c_str(), measure_mm(f.thickness_error_nm).c_str(),
                 measure_mm(div_ceil(g.pitch_nm, 2), 3).c_str());
