@@ -36,7 +36,7 @@ allowed() {
     core/safety) echo "core/canon core/grid core/tool core/math core/cut core/material";;  # fixtures: the cut swept into them; a material's limits
     core/stock) echo "core/grid core/math";;  # the stock file: a stock between runs
     core/engage) echo "core/canon core/grid core/tool core/math";;  # what the cutting edge meets: engagement, chip, load
-    core/measure) echo "core/grid core/math";;  # measurements of a simulated part
+    core/measure) echo "core/design core/grid core/math";;  # measurements of a simulated part (against its design too)
     core/sim) echo "core/engage core/stock core/safety core/assess core/material core/cut core/design core/canon core/interp core/gcode core/grid core/tool core/math";;  # the engine: a run's stages and observers, tied together once
     display/raster) echo "core/math";;  # the frame, spans, clipping, the camera
     display/colour) echo "display/raster core/sim core/engage core/stock core/assess core/design core/grid core/material core/math";;  # a cell's colour by mode (tool colours: the provenance)
