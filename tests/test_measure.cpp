@@ -191,7 +191,7 @@ TEST(run_measure_a_ball_nose_scallop) {
   prog += "G0 Z5\nM30\n";
   write_tmp("raster.ngc", prog.c_str());
   CHECK_EQ(run("%/raster.ngc --tool ball:6 --stock 0,0,-10,30,20,0 --pitch 0.05 -q --save-stock %/raster.dxstock").code, 0);
-  Result r = run_command("measure %/raster.dxstock --scallop --region 8,6,22,14");
+  Result r = run_command("measure %/raster.dxstock --scallop 8,6,22,14");
   CHECK_EQ(r.code, 0);
   CHECK(has(r.out, "scallop region: X8.000 Y6.000 to X22.000 Y14.000 (281 x 161 columns)\n"));
   CHECK(has(r.out, "scallop across X: none"));  // along the feed: flat
@@ -207,7 +207,10 @@ TEST(run_measure_a_ball_nose_scallop) {
   // One dexel's worth of height: the cusp's slope (0.5 / sqrt(8.75)) times
   // the pitch, at the crest and the valley, and two LSB.
   CHECK_LE(bound, 2 * 0.0002 + 2 * 0.05 * 0.5 / std::sqrt(8.75) + 0.0002);
-  // Errors: a region off the grid; --region without --scallop.
-  CHECK_EQ(run_command("measure %/raster.dxstock --scallop --region 40,40,50,50").code, 2);
-  CHECK_EQ(run_command("measure %/raster.dxstock --region 8,6,22,14 --thickness").code, 2);
+  // Errors: a box off the grid, a box that is not four numbers. The
+  // operand after a bare --scallop is not its box.
+  CHECK_EQ(run_command("measure %/raster.dxstock --scallop 40,40,50,50").code, 2);
+  CHECK_EQ(run_command("measure %/raster.dxstock --scallop 8,6,22").code, 2);
+  CHECK_EQ(run_command("measure --scallop %/raster.dxstock").code, 0);
+  CHECK_EQ(run_command("measure %/raster.dxstock --scallop=8,6,22,14").code, 0);
 }

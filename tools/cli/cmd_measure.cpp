@@ -81,7 +81,6 @@ int cmd_measure(int argc, char** argv) {
   if (a.file.empty()) return fail(kExitUsage, "measure needs a stock file (dexmill run ... --save-stock STOCK.dxstock)");
   if (!a.any()) return fail(kExitUsage, "measure needs a query: --at X,Y, --distance, --thickness or --scallop");
   if ((!a.csv.empty() || !a.svg.empty()) && !a.distance) return fail(kExitUsage, "--csv and --svg go with --distance");
-  if (a.region && !a.scallop) return fail(kExitUsage, "--region goes with --scallop");
   if (!a.image.empty() && !a.thickness) return fail(kExitUsage, "--image goes with --thickness");
   if (a.distance && a.csv.empty() && !a.at.empty())
     return fail(kExitUsage, "--distance with --at: give the CSV a file (--csv FILE), standard output has the points");

@@ -34,7 +34,7 @@ struct MeasureArgs {
   int64_t thin_nm = 1000000;         // --thin, 1 mm (as dexmill run's)
   bool scallop = false;
   bool region = false;
-  int64_t region_nm[4] = {};  // --region X0,Y0,X1,Y1
+  int64_t region_nm[4] = {};  // --scallop X0,Y0,X1,Y1
   bool any() const { return !at.empty() || distance || thickness || scallop; }
 };
 

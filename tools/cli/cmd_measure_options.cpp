@@ -26,8 +26,10 @@ int distance(MeasureArgs* a, const char* v) {
   return kExitOk;
 }
 
-int region(MeasureArgs* a, const char* v) {
-  if (!parse_mm_list(v, 4, a->region_nm)) return fail(kExitUsage, "--region needs X0,Y0,X1,Y1 in mm, not '%s'", v);
+int scallop(MeasureArgs* a, const char* v) {
+  a->scallop = true;
+  if (!v) return kExitOk;
+  if (!parse_mm_list(v, 4, a->region_nm)) return fail(kExitUsage, "--scallop takes X0,Y0,X1,Y1 in mm, not '%s'", v);
   a->region = true;
   return kExitOk;
 }
@@ -59,16 +61,17 @@ const Option<MeasureArgs> kMeasureOptions[] = {
     {"--image", "FILE.png", "--thickness's picture: the part coloured as run --color thin draws it, the thinnest places marked",
      [](MeasureArgs* a, const char* v) -> int { a->image = v; return kExitOk; }},
     {"--thin", "MM", "--image highlights floors thinner than MM (default 1)", thin},
-    {"--scallop", nullptr, "the highest scallop (crest over the valleys beside it) across X and across Y",
-     [](MeasureArgs* a, const char*) -> int { a->scallop = true; return kExitOk; }},
-    {"--region", "X0,Y0,X1,Y1", "--scallop over the columns in this box only (machine mm; default: all)", region},
+    {"--scallop", "[X0,Y0,X1,Y1]",
+     "the highest scallop (crest over the valleys beside it) across X and across Y, over the columns in the box "
+     "(machine mm) when given",
+     scallop},
 };
 
 const CommandText kMeasureText = {
     "measure",
     "usage: dexmill measure STOCK.dxstock [--at X,Y ...] [--distance X0,Y0,X1,Y1 [--csv FILE] [--svg FILE]]\n"
     "                       [--thickness [--wall-height MM] [--image FILE.png [--thin MM]]]\n"
-    "                       [--scallop [--region X0,Y0,X1,Y1]] [--design FILE ...]\n\n"
+    "                       [--scallop [X0,Y0,X1,Y1]] [--design FILE ...]\n\n"
     "Measures the simulated part a run saved (dexmill run ... --save-stock\n"
     "STOCK.dxstock). --at X,Y gives the column nearest the point (machine mm):\n"
     "its top and bottom, or that it is cut through, and the program line that\n"
@@ -81,7 +84,7 @@ const CommandText kMeasureText = {
     "tops all stand --wall-height above the floor on both sides (a hole or the\n"
     "grid's edge is air), its width the run's length, within one step.\n"
     "--scallop gives the highest crest over the higher of the valleys beside it,\n"
-    "scanning along X and along Y (over --region only, if given), within two LSB\n"
+    "scanning along X and along Y (over the box X0,Y0,X1,Y1 only, if given), within two LSB\n"
     "plus the height steps beside the crest and the valley.\n"
     "--design FILE (with run's design options) adds the design's height and\n"
     "cut - design to --at and the design's line to --distance (--tolerance and\n"

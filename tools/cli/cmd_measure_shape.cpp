@@ -80,7 +80,7 @@ int measure_scallop(const MeasuredStock& s, const int64_t* region_nm) {
     r.j0 = clamp_index(div_ceil(y0 - g.y0_nm, g.pitch_nm), g.ny);
     r.j1 = clamp_index(div_floor(y1 - g.y0_nm, g.pitch_nm) + 1, g.ny);
   }
-  if (r.empty()) return fail(kExitUsage, "--region holds no column of the stock's grid");
+  if (r.empty()) return fail(kExitUsage, "--scallop's box holds no column of the stock's grid");
   std::printf("scallop region: %s to %s (%d x %d columns)\n",
               xy(g.x0_nm + r.i0 * g.pitch_nm, g.y0_nm + r.j0 * g.pitch_nm).c_str(),
               xy(g.x0_nm + (r.i1 - 1) * g.pitch_nm, g.y0_nm + (r.j1 - 1) * g.pitch_nm).c_str(), r.i1 - r.i0,

@@ -41,6 +41,15 @@ int unknown_option(const ParseView& v, const std::string& name) {
   return fail(kExitUsage, "%sunknown option '%s'%s%s", v.text->message_prefix, name.c_str(), mean.c_str(), hint.c_str());
 }
 
+// An option whose value is written "[VALUE]" takes the next argument only
+// when it reads as one: a number list (`--scallop 0,0,10,10`), not an
+// option or an operand (`--scallop part.dxstock`). Null: no value.
+const char* optional_value(const OptionDoc& d, const char* next) {
+  if (!next || !d.value || d.value[0] != '[') return nullptr;
+  const char c = next[0] == '-' || next[0] == '+' ? next[1] : next[0];
+  return (c >= '0' && c <= '9') || c == '.' ? next : nullptr;
+}
+
 // The first pass: is help asked for among the options?
 bool help_asked(const ParseView& v, int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
@@ -51,7 +60,9 @@ bool help_asked(const ParseView& v, int argc, char** argv) {
     std::string name;
     const char* inline_value = nullptr;
     const int k = find_option(v, a, &name, &inline_value);
-    if (k >= 0 && v.options[k]->value && !inline_value) ++i;  // its value
+    if (k >= 0 && v.options[k]->value && !inline_value &&
+        (v.options[k]->value[0] != '[' || optional_value(*v.options[k], i + 1 < argc ? argv[i + 1] : nullptr)))
+      ++i;  // its value
   }
   return false;
 }
@@ -80,7 +91,10 @@ int parse_view(const ParseView& v, int argc, char** argv, bool* help) {
     if (k < 0) return unknown_option(v, name);
     const OptionDoc& d = *v.options[k];
     if (!d.value && value) return fail(kExitUsage, "%s takes no value", name.c_str());
-    if (d.value && !value) {
+    if (d.value && d.value[0] == '[' && !value) {
+      value = optional_value(d, i + 1 < argc ? argv[i + 1] : nullptr);
+      if (value) ++i;
+    } else if (d.value && !value) {
       if (i + 1 >= argc) return fail(kExitUsage, "%s needs %s", name.c_str(), d.needs ? d.needs : "a value");
       value = argv[++i];
     }
