@@ -141,6 +141,11 @@ struct TimeAxis {
 TimeAxis time_axis(double end, int32_t ticks);
 std::string time_label(const TimeAxis& a, double t);
 
+// 1, 2 or 5 times a power of ten: the least not below raw, or (nearest)
+// the one nearest to it, so that an axis gets about as many ticks as asked.
+double nice_step(double raw, bool nearest);
+// Decimals that print every multiple of step exactly.
+int step_decimals(double step);
 // v with exactly `decimals` (0..9) decimals, rounded half away from zero.
 std::string format_fixed(double v, int decimals);
 // v with three significant digits at most, no trailing zeros: "1.2", "850".

@@ -49,29 +49,6 @@ double pow10i(int k) {
   return p;
 }
 
-// 1, 2 or 5 times a power of ten: the least not below raw, or (nearest)
-// the one nearest to it, so that an axis gets about as many ticks as asked.
-double nice_step(double raw, bool nearest) {
-  if (!(raw > 0) || !std::isfinite(raw)) return 1;
-  double p = 1;
-  for (int i = 0; i < 400 && p * 10 <= raw; ++i) p *= 10;
-  for (int i = 0; i < 400 && p > raw; ++i) p /= 10;
-  const double m = raw / p;
-  if (nearest) return (m < 1.5 ? 1 : m < 3 ? 2 : m < 7 ? 5 : 10) * p;
-  return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
-}
-
-// Decimals that print every multiple of step exactly.
-int step_decimals(double step) {
-  int d = 0;
-  while (d < 9) {
-    const double r = step * pow10i(d);
-    if (std::fabs(r - std::round(r)) < 1e-6 * std::max(1.0, r)) break;
-    ++d;
-  }
-  return d;
-}
-
 // Large values of power and force read better in kW and kN, removal rates
 // in cm³/min.
 void scale_unit(const std::string& unit, double magnitude, double* factor, std::string* name) {
@@ -94,6 +71,26 @@ std::string clock_label(double t, bool hours) {
 }
 
 }  // namespace
+
+double nice_step(double raw, bool nearest) {
+  if (!(raw > 0) || !std::isfinite(raw)) return 1;
+  double p = 1;
+  for (int i = 0; i < 400 && p * 10 <= raw; ++i) p *= 10;
+  for (int i = 0; i < 400 && p > raw; ++i) p /= 10;
+  const double m = raw / p;
+  if (nearest) return (m < 1.5 ? 1 : m < 3 ? 2 : m < 7 ? 5 : 10) * p;
+  return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
+}
+
+int step_decimals(double step) {
+  int d = 0;
+  while (d < 9) {
+    const double r = step * pow10i(d);
+    if (std::fabs(r - std::round(r)) < 1e-6 * std::max(1.0, r)) break;
+    ++d;
+  }
+  return d;
+}
 
 std::string format_fixed(double v, int decimals) {
   if (!std::isfinite(v) || std::fabs(v) > 1e15) return "?";

@@ -63,7 +63,6 @@ std::string point_mm(const PointNm& p) {
   return "[" + nm_to_mm_text(p.x_nm, 4) + ", " + nm_to_mm_text(p.y_nm, 4) + ", " + nm_to_mm_text(p.z_nm, 4) + "]";
 }
 
-std::string seconds_of_us(int64_t us) { return fixed_text(static_cast<uint64_t>(div_round(max_of<int64_t>(us, 0), 1000)), 3, false); }
 
 void diags(std::string* o, const char* key, const std::vector<ReportDiag>& v) {
   *o += "  " + quoted(key) + ": [";
@@ -116,6 +115,8 @@ std::string chain_text(const RunReport& r) {
 }
 
 }  // namespace
+
+std::string seconds_of_us(int64_t us) { return fixed_text(static_cast<uint64_t>(div_round(max_of<int64_t>(us, 0), 1000)), 3, false); }
 
 AssessmentTexts assessment_texts(const RunReport& rep) {
   const ReportAssessment& a = rep.assessment;
@@ -338,10 +339,6 @@ std::string machine_text(const RunReport& r) {
   }
   return o + (m.findings.empty() ? "]},\n" : "\n    ]},\n");
 }
-
-}  // namespace
-
-namespace {
 
 // What the sheet (--sheet, platform/report/sheet_html.h) shows that the keys
 // above do not hold: each tool's stick-out and lines, and the verdict.

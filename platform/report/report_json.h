@@ -101,6 +101,8 @@ struct AssessmentTexts {
 };
 AssessmentTexts assessment_texts(const RunReport& r);
 
+// Microseconds as seconds with 3 decimals, rounded to nearest (negative: 0).
+std::string seconds_of_us(int64_t us);
 // removed_lsb x lsb x pitch^2 in mm^3 with 3 decimals, exactly rounded.
 std::string volume_mm3_text(uint64_t removed_lsb, int64_t lsb_nm, int64_t pitch_nm);
 // nm as mm with `decimals` (<= 6) decimals, rounded to nearest.

@@ -33,9 +33,8 @@ std::string img_png(const std::vector<uint8_t>& png, const std::string& alt, con
 }
 
 std::string seconds_text(int64_t us, bool clock) {
-  const int64_t ms = (std::max<int64_t>(us, 0) + 500) / 1000;
-  std::string o = nm_to_mm_text(ms * 1000, 3) + "\xc2\xa0s";  // ms x 1000 "nm" is the seconds with 3 decimals
-  const int64_t s = (ms + 500) / 1000;
+  std::string o = seconds_of_us(us) + "\xc2\xa0s";  // the report's text
+  const int64_t s = ((std::max<int64_t>(us, 0) + 500) / 1000 + 500) / 1000;  // the shown ms, rounded
   if (clock && s >= 60) {
     o += " (" + (s >= 3600 ? std::to_string(s / 3600) + " h " : std::string()) + std::to_string(s / 60 % 60) + " min " +
          std::to_string(s % 60) + " s)";

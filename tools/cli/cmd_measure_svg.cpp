@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "platform/report/load_plot.h"
 #include "tools/cli/cmd_measure.h"
 
 namespace dexmill {
@@ -18,12 +19,9 @@ namespace {
 
 constexpr double kWidth = 800, kHeight = 360, kLeft = 70, kRight = 20, kTop = 40, kBottom = 50;
 
-// A tick spacing of 1, 2 or 5 times a power of ten giving about n ticks.
-double tick_step(double span, int n) {
-  const double raw = span / n, p = std::pow(10.0, std::floor(std::log10(raw)));
-  const double f = raw / p;
-  return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
-}
+// A tick spacing of 1, 2 or 5 times a power of ten giving about n ticks
+// (the load plot's, platform/report/load_plot.h).
+double tick_step(double span, int n) { return load_plot_detail::nice_step(span / n, true); }
 
 std::string num(double v) {
   char b[32];
@@ -32,9 +30,7 @@ std::string num(double v) {
 }
 
 std::string label(double v, double step) {
-  char b[32];
-  std::snprintf(b, sizeof b, step >= 1 ? "%.0f" : step >= 0.1 ? "%.1f" : step >= 0.01 ? "%.2f" : "%.3f", v);
-  return std::string(b) == "-0" ? "0" : b;
+  return load_plot_detail::format_fixed(v, load_plot_detail::step_decimals(step));
 }
 
 struct Frame {

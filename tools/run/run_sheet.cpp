@@ -111,10 +111,8 @@ int write_sheet(const RunOptions& o, RunSetup* su, const RunReport& rep) {
   if (su->engage && su->sim->engagement())
     im.load_plot_svg = load_plot_svg_text(*su->engage, *su->sim->engagement(), su->shown_name, o.job.spindle_power_mw, 1000, 400);
   const std::string page = sheet_html_text(rep, im);
-  OutputFile out;
-  if (!out.open(o.out.sheet.c_str())) return fail(kExitIo, "%s", out.error());
-  out.write(page.data(), page.size());
-  if (!out.commit()) return fail(kExitIo, "%s", out.error());
+  char err[512];
+  if (!write_output(o.out.sheet.c_str(), page.data(), page.size(), err, sizeof err)) return fail(kExitIo, "%s", err);
   return kExitOk;
 }
 
