@@ -46,7 +46,7 @@
 
 namespace dexmill {
 
-constexpr int kPlanRing = 48;  // segments of look-ahead (48 * sizeof(PlanSegment) = 6 KiB)
+constexpr int kPlanRing = 48;  // segments of look-ahead (48 * 104-byte PlanSegment = 4992 bytes on x86-64)
 
 // The machine: per axis (X, Y, Z) its velocity and acceleration limits; a
 // path above max_path_nm_per_s is held to it (0: no such limit).
