@@ -38,12 +38,21 @@ struct CanonArc {
 
 struct CanonRecord {
   CanonKind kind;
+  // The path control mode in force (G61 = 610, G61.1 = 611, G64 = 640; 0 on
+  // records made outside the interpreter: taken as G64), how the move ends
+  // at its junction with the next (core/canon/motion_plan.h). Here and
+  // path_tolerance_nm after `tool`: in padding, so a record stays 136 bytes
+  // (cutter compensation holds 32 of them in the interpreter).
+  uint16_t path_mode;
   uint32_t line;         // 1-based line of the block in the source
   PointNm start, end;    // controlled point (tool tip) in machine coordinates, nm;
                          // end == start for records that do not move
   CanonArc arc;          // kArc only
   int64_t feed_nm_per_min;  // kFeed, kArc: feed in force (G93: the equivalent rate)
   int32_t tool;          // tool number in the spindle (after kToolChange: the one just loaded)
+  // G64's P, the path tolerance in machine nm (0: none, LinuxCNC's "as
+  // fast as possible"; at most 2^31 - 1 nm, the interpreter clamps).
+  int32_t path_tolerance_nm;
   int64_t tool_length_offset_nm;  // G43/G49 offset in force (not applied to start/end)
   int64_t dwell_ms;      // kDwell
   int32_t spindle_rpm;   // kSpindle

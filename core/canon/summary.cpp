@@ -33,10 +33,6 @@ int64_t distance_nm(const PointNm& a, const PointNm& b) {
   return static_cast<int64_t>(isqrt_u128(s));
 }
 
-namespace {
-int64_t arc_length_nm(const CanonRecord& r, int64_t sweep_bam);
-}
-
 int64_t MotionSummary::piece_time_us(int64_t length_nm, int64_t rate_nm_per_min) {
   if (rate_nm_per_min <= 0) return 0;
   return muldiv_round(length_nm, 60 * 1000000LL, rate_nm_per_min);
@@ -55,28 +51,37 @@ int64_t MotionSummary::move_time_us(const MotionTimeModel& m, int64_t length_nm,
   return 2 * static_cast<int64_t>(isqrt_round_u64(static_cast<uint64_t>(q)));
 }
 
-MotionSummary::MotionSummary(const MotionTimeModel& model) : model_(model) {}
+MotionSummary::MotionSummary(const MotionTimeModel& model) : model_(model) {
+  PlanLimits lim = model.axes;
+  bool per_axis = false;
+  for (int i = 0; i < 3; ++i) per_axis = per_axis || lim.accel_nm_per_s2[i] > 0;
+  planning_ = model.blend && (per_axis || model.accel_nm_per_s2 > 0);
+  if (!planning_) return;
+  for (int i = 0; i < 3; ++i) {
+    if (lim.velocity_nm_per_s[i] <= 0) lim.velocity_nm_per_s[i] = model.rapid_nm_per_min / 60;
+    if (lim.accel_nm_per_s2[i] <= 0) lim.accel_nm_per_s2[i] = model.accel_nm_per_s2;
+  }
+  if (!per_axis) lim.max_path_nm_per_s = model.rapid_nm_per_min / 60;
+  plan_.init(lim, this);
+}
 
-namespace {
-int64_t arc_length_nm(const CanonRecord& r, int64_t sweep_bam) {
+int64_t arc_length_nm(const CanonRecord& r, int64_t sweep_bam, int64_t* radius_nm) {
   const Plane pl = r.arc.plane;
   const PointNm c = r.arc.centre;
   const PointNm c0{plane_a(pl, c), plane_b(pl, c), 0};
   const int64_t r0 = distance_nm(c0, PointNm{plane_a(pl, r.start), plane_b(pl, r.start), 0});
   const int64_t r1 = distance_nm(c0, PointNm{plane_a(pl, r.end), plane_b(pl, r.end), 0});
+  *radius_nm = r0 / 2 + r1 / 2;
   // Mean radius times the sweep in radians; 2^32 / (2 pi) = 683565275.58.
   const int64_t around = muldiv_round(r0 / 2 + r1 / 2, static_cast<int64_t>(abs_u64(sweep_bam)), 683565276);
   const int64_t along = plane_c(pl, r.end) - plane_c(pl, r.start);
   return distance_nm(PointNm{0, 0, 0}, PointNm{around, along, 0});
 }
-}  // namespace
 
-void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t rate, int64_t len) {
+void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t len) {
   motion_.add(a);
   motion_.add(b);
   if (len < 0) len = distance_nm(a, b);
-  if (feed) rate = min_of(rate, model_.max_feed_nm_per_min);
-  const int64_t us = move_time_us(model_, len, rate);
   if (feed) {
     feed_.add(a);
     feed_.add(b);
@@ -86,11 +91,37 @@ void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t
       feed_below_zero_.add(b);
     }
     feed_nm_ = sat_add_i64(feed_nm_, len);
-    feed_us_ = sat_add_i64(feed_us_, us);
   } else {
     rapid_nm_ = sat_add_i64(rapid_nm_, len);
-    rapid_us_ = sat_add_i64(rapid_us_, us);
   }
+}
+
+void MotionSummary::timed(const CanonRecord& r, bool feed, int64_t len, int64_t radius_nm) {
+  const int64_t rate = feed ? min_of(r.feed_nm_per_min, model_.max_feed_nm_per_min) : model_.rapid_nm_per_min;
+  MotionTimeModel flat = model_;
+  flat.accel_nm_per_s2 = 0;
+  const int64_t na = move_time_us(flat, len, rate), us = move_time_us(model_, len, rate);
+  const int64_t st = model_.accel_nm_per_s2 > 0 ? us : na;
+  na_us_ = sat_add_i64(na_us_, na);
+  st_us_ = sat_add_i64(st_us_, st);
+  (feed ? feed_us_ : rapid_us_) = sat_add_i64(feed ? feed_us_ : rapid_us_, us);
+  const PlanPayload p{r.tool, feed ? kMoveFeed : kMoveRapid, {na, st}};
+  if (!planning_) {
+    if (move_sink_) move_sink_->move_time(MoveTimes{r.tool, p.kind, na, st, us});
+  } else if (r.kind == CanonKind::kArc) {
+    plan_.arc(r, len, radius_nm, p);
+  } else {
+    plan_.line(r.start, r.end, feed ? rate : 0, r, p);
+  }
+}
+
+void MotionSummary::planned(const PlanPayload& p, int64_t us) {
+  (p.kind == kMoveFeed ? bl_feed_us_ : bl_rapid_us_) = sat_add_i64(p.kind == kMoveFeed ? bl_feed_us_ : bl_rapid_us_, us);
+  if (move_sink_) move_sink_->move_time(MoveTimes{p.tool, p.kind, p.tag_us[0], p.tag_us[1], us});
+}
+
+void MotionSummary::finish() {
+  if (planning_) plan_.stop();
 }
 
 void MotionSummary::emit(const CanonRecord& r) {
@@ -98,11 +129,12 @@ void MotionSummary::emit(const CanonRecord& r) {
   if (k >= 0 && k < kCanonKinds) ++counts_[k];
   switch (r.kind) {
     case CanonKind::kTraverse:
-      piece(r.start, r.end, false, model_.rapid_nm_per_min, -1);
+    case CanonKind::kFeed: {
+      const bool feed = r.kind == CanonKind::kFeed;
+      piece(r.start, r.end, feed, -1);
+      timed(r, feed, distance_nm(r.start, r.end), 0);
       break;
-    case CanonKind::kFeed:
-      piece(r.start, r.end, true, r.feed_nm_per_min, -1);
-      break;
+    }
     case CanonKind::kArc: {
       // Boxes from the chords the cutter follows; length and time from the
       // arc itself (chords would be short by sagitta / (3 r) relative).
@@ -112,17 +144,31 @@ void MotionSummary::emit(const CanonRecord& r) {
       ArcChords chords;
       chords.init(r, kArcChordSagittaNm);
       if (chords.count() > 100000) chords.init(r, chords.radius_max() / 1000);
-      const int64_t len = arc_length_nm(r, chords.sweep_bam());
-      piece(r.start, r.start, true, r.feed_nm_per_min, len);
+      int64_t radius_nm = 0;
+      const int64_t len = arc_length_nm(r, chords.sweep_bam(), &radius_nm);
+      piece(r.start, r.start, true, len);
+      timed(r, true, len, radius_nm);
       PointNm from = r.start, to;
       while (chords.next(&to)) {
-        piece(from, to, true, r.feed_nm_per_min, 0);
+        piece(from, to, true, 0);
         from = to;
       }
       break;
     }
-    case CanonKind::kDwell:
-      dwell_us_ = sat_add_i64(dwell_us_, sat_mul_i64(r.dwell_ms, 1000));
+    case CanonKind::kDwell: {
+      // The machine stops for a dwell (as for a tool change, a spindle
+      // command, a pause and the end: LinuxCNC's queue waits for them).
+      finish();
+      const int64_t us = sat_mul_i64(r.dwell_ms, 1000);
+      dwell_us_ = sat_add_i64(dwell_us_, us);
+      if (move_sink_) move_sink_->move_time(MoveTimes{r.tool, kMoveDwell, us, us, us});
+      break;
+    }
+    case CanonKind::kToolChange:
+    case CanonKind::kSpindle:
+    case CanonKind::kPause:
+    case CanonKind::kEnd:
+      finish();
       break;
     default:
       break;

@@ -185,6 +185,8 @@ void BlockRunner::commit() {
   r.feed_nm_per_min = nx.per_rev ? sync_feed(nx.feed_nm_per_min, nx.spindle_rpm) : nx.feed_nm_per_min;
   r.tool = nx.tool;
   r.tool_length_offset_nm = nx.tlo_nm;
+  r.path_mode = static_cast<uint16_t>(nx.path_mode);
+  r.path_tolerance_nm = nx.path_tolerance_nm;
   if (plan.nurbs_add) {  // G5.2: one more control point
     NurbsCurve& c = I.nurbs_;
     if (plan.nurbs_add == 2) {
@@ -403,6 +405,8 @@ GcodeError Interp::context_return(int level, uint32_t line, uint16_t col, GcodeD
   r.feed_nm_per_min = s.feed_nm_per_min;
   r.tool = s.tool;
   r.tool_length_offset_nm = s.tlo_nm;
+  r.path_mode = static_cast<uint16_t>(s.path_mode);
+  r.path_tolerance_nm = s.path_tolerance_nm;
   r.spindle_rpm = s.spindle_dir * s.spindle_rpm;
   r.coolant = s.coolant;
   const bool spindle = r.spindle_rpm != state_.spindle_dir * state_.spindle_rpm, coolant = s.coolant != state_.coolant;

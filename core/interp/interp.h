@@ -148,6 +148,7 @@ struct InterpState {
   bool retract_to_r;        // G99
   uint8_t coord_system;     // 0..8 = G54, G55, ..., G59, G59.1, G59.2, G59.3
   int16_t path_mode;        // G61 = 610, G61.1 = 611, G64 = 640
+  int32_t path_tolerance_nm;  // G64 P, nm (0: none given; G61 and G61.1 set 0; held to 2^31 - 1)
   int64_t feed_nm_per_min;  // F in G94 (0 = never set)
   int32_t spindle_rpm;      // S, >= 0
   int8_t spindle_dir;       // M3 +1, M4 -1, M5 0

@@ -140,7 +140,14 @@ GcodeError BlockRunner::run_modes() {
     const int g = b.g[kGCoordSystem];
     nx.coord_system = static_cast<uint8_t>(g <= 590 ? (g - 540) / 10 : 6 + (g - 591));
   }
-  if (b.g[kGPathControl] >= 0) nx.path_mode = b.g[kGPathControl];
+  if (b.g[kGPathControl] >= 0) {
+    // G64 P in the block's units; a negative P counts as none (LinuxCNC
+    // blends as fast as possible for P <= 0), one over 2.1 m as 2.1 m. Q, the naive-CAM tolerance,
+    // only merges collinear moves there and is not kept.
+    nx.path_mode = b.g[kGPathControl];
+    const int64_t p_nm = nx.path_mode == 640 && b.has_word('P') ? decimal_to_nm(b.val('P'), nx.inch) : 0;
+    nx.path_tolerance_nm = static_cast<int32_t>(clamp<int64_t>(p_nm, 0, INT32_MAX));
+  }
   if (b.g[kGDistance] >= 0) nx.incremental = b.g[kGDistance] == 910;
   if (b.g[kGArcDistance] >= 0) nx.arc_absolute = b.g[kGArcDistance] == 901;
   if (b.g[kGRetract] >= 0) nx.retract_to_r = b.g[kGRetract] == 990;

@@ -21,6 +21,7 @@ ModalContext modal_context_save(const InterpState& s, bool auto_restore) {
   c.coolant = s.coolant;
   c.spindle_dir = s.spindle_dir;
   c.path_mode = s.path_mode;
+  c.path_tolerance_nm = s.path_tolerance_nm;
   c.spindle_rpm = s.spindle_rpm;
   c.feed_nm_per_min = s.feed_nm_per_min;
   c.tlo_nm = s.tlo_nm;
@@ -40,6 +41,7 @@ void modal_context_apply(const ModalContext& c, InterpState* s) {
   s->coolant = c.coolant;
   s->spindle_dir = c.spindle_dir;
   s->path_mode = c.path_mode;
+  s->path_tolerance_nm = c.path_tolerance_nm;
   s->spindle_rpm = c.spindle_rpm;
   s->feed_nm_per_min = c.feed_nm_per_min;
   s->tlo_nm = c.tlo_nm;

@@ -28,6 +28,7 @@ struct ModalContext {
   uint8_t coolant;
   int8_t spindle_dir;
   int16_t path_mode;
+  int32_t path_tolerance_nm;
   int32_t spindle_rpm;
   int64_t feed_nm_per_min;
   int64_t tlo_nm;
@@ -38,7 +39,7 @@ inline bool operator==(const ModalContext& a, const ModalContext& b) {
          a.incremental == b.incremental && a.arc_absolute == b.arc_absolute && a.inverse_time == b.inverse_time &&
          a.per_rev == b.per_rev && a.retract_to_r == b.retract_to_r && a.diameter_x == b.diameter_x &&
          a.plane == b.plane && a.comp_side == b.comp_side && a.coord_system == b.coord_system &&
-         a.coolant == b.coolant && a.spindle_dir == b.spindle_dir && a.path_mode == b.path_mode &&
+         a.coolant == b.coolant && a.spindle_dir == b.spindle_dir && a.path_mode == b.path_mode && a.path_tolerance_nm == b.path_tolerance_nm &&
          a.spindle_rpm == b.spindle_rpm && a.feed_nm_per_min == b.feed_nm_per_min && a.tlo_nm == b.tlo_nm;
 }
 
