@@ -301,15 +301,16 @@ TEST(motion_plan_against_double_oracle) {
 }
 
 namespace {
-MotionSummary summarise(const char* const* lines, int n, const MotionTimeModel& model) {
-  MotionSummary s(model);
+// Summed into *s with the planner's memory at *plan.
+void summarise(const char* const* lines, int n, MotionSummary* sum, MotionPlanner* plan) {
+  MotionSummary& s = *sum;
+  s.set_planner(plan);
   Interp in(&s, InterpOptions());
   for (int k = 0; k < n; ++k) {
     GcodeDiag d;
     CHECK_EQ(in.execute_line(lines[k], std::strlen(lines[k]), static_cast<uint32_t>(k + 1), &d), GcodeError::kOk);
   }
   s.finish();
-  return s;
 }
 }  // namespace
 
@@ -321,17 +322,25 @@ TEST(motion_plan_in_the_summary_lies_between) {
   MotionTimeModel m;
   m.accel_nm_per_s2 = 300 * 1000000LL;
   m.blend = true;
-  const MotionSummary s = summarise(prog, 14, m);
+  MotionPlanner plan;
+  MotionSummary s(m);
+  summarise(prog, 14, &s, &plan);
   CHECK_GT(s.blended_time_us(), s.no_accel_time_us());
   CHECK_LT(s.blended_time_us(), s.stop_time_us());
   CHECK_EQ(s.stop_time_us(), s.estimated_time_us());  // the model's own figure unchanged
   CHECK_EQ(s.blended_feed_us() + s.blended_rapid_us() + s.dwell_time_us(), s.blended_time_us());
   // Without the planner: every figure is the model's.
   m.blend = false;
-  const MotionSummary f = summarise(prog, 14, m);
+  MotionSummary f(m);
+  summarise(prog, 14, &f, &plan);
   CHECK_EQ(f.blended_time_us(), f.estimated_time_us());
   CHECK_EQ(f.stop_time_us(), s.stop_time_us());
   CHECK_EQ(f.no_accel_time_us(), s.no_accel_time_us());
+  // Blend asked for but no planner's memory given: the model's figure too.
+  m.blend = true;
+  MotionSummary g(m);
+  summarise(prog, 14, &g, nullptr);
+  CHECK_EQ(g.blended_time_us(), g.stop_time_us());
 }
 
 namespace {

@@ -5,6 +5,8 @@
 // taking Z past its limit, the INI's defaults (tool table, units, rapid)
 // said and an option winning; a grbl dump, its travel in negative space
 // and its G54 from `$#`; --fail-on-travel's exit 4 and 0; usage errors.
+#include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "tests/run_cli_util.h"
@@ -127,4 +129,60 @@ TEST(run_machine_start_state_from_the_controller) {
   write_tmp("tlo2.ngc", "G21 G90\nG0 X5 Y5\nG0 Z-20\nM30\n");
   r = run("%/tlo2.ngc -q --machine %/tlo.txt --tool flat:3 --stock -200,-100,-60,-150,-50,-40");
   CHECK(has(r.err, "tlo2.ngc:3:1: warning: travel: Z 10.000 mm past the machine's 0 (grbl's home)"));
+}
+
+namespace {
+
+// The number after "KEY": in a report's text (NaN when absent or null).
+double number_of(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\"" + key + "\": ");
+  if (at == std::string::npos) return 0.0 / 0.0;
+  const char* p = text.c_str() + at + key.size() + 4;
+  char* end = nullptr;
+  const double v = std::strtod(p, &end);
+  return end == p ? 0.0 / 0.0 : v;
+}
+
+std::string axis_ini(int ax_x, int ax_y) {
+  return "[TRAJ]\nLINEAR_UNITS = mm\n"
+         "[AXIS_X]\nMIN_LIMIT = -500\nMAX_LIMIT = 500\nMAX_VELOCITY = 100\nMAX_ACCELERATION = " + std::to_string(ax_x) +
+         "\n[AXIS_Y]\nMIN_LIMIT = -500\nMAX_LIMIT = 500\nMAX_VELOCITY = 100\nMAX_ACCELERATION = " + std::to_string(ax_y) +
+         "\n[AXIS_Z]\nMIN_LIMIT = -100\nMAX_LIMIT = 100\nMAX_VELOCITY = 50\nMAX_ACCELERATION = 1000\n";
+}
+
+}  // namespace
+
+// The time estimate with a machine: blended between its two bounds, the
+// largest G64 P, the share of each tool adding up to the total; and each
+// axis's own acceleration reaches the planner (a zigzag along X takes
+// longer on a machine slow in X than on one slow in Y, though both bounds,
+// which use the slowest axis, are the same).
+TEST(run_machine_time_estimate_per_axis_and_by_tool) {
+  if (skip()) return;
+  write_tmp("slowx.ini", axis_ini(100, 1000).c_str());
+  write_tmp("slowy.ini", axis_ini(1000, 100).c_str());
+  std::string prog = "G21 G90 G64 P0.05\nT1 M6\nG0 X0 Y0 Z2\nG1 Z-1 F600\n";
+  for (int k = 0; k < 20; ++k) prog += "G1 X" + std::string(k % 2 ? "0" : "60") + " Y" + std::to_string(k) + " F3000\n";
+  prog += "T2 M6\nG0 Z2\nG1 X5 Y5 F1000\nG1 Z-1\nG1 X20\nM30\n";
+  write_tmp("zigx.ngc", prog.c_str());
+  CHECK_EQ(run("%/zigx.ngc -q --tool flat:6 --stock -5,-5,-5,70,30,0 --machine %/slowx.ini --report %/slowx.json").code, 0);
+  CHECK_EQ(run("%/zigx.ngc -q --tool flat:6 --stock -5,-5,-5,70,30,0 --machine %/slowy.ini --report %/slowy.json").code, 0);
+  const std::string x = slurp(tmp_dir() + "/slowx.json"), y = slurp(tmp_dir() + "/slowy.json");
+  const double bx = number_of(x, "blended_s"), by = number_of(y, "blended_s");
+  CHECK(number_of(x, "no_accel_s") < bx && bx < number_of(x, "stop_s"));
+  CHECK(by < bx);
+  CHECK_EQ(number_of(x, "stop_s"), number_of(y, "stop_s"));
+  CHECK_EQ(number_of(x, "estimated_time_s"), bx);
+  CHECK_EQ(number_of(x, "path_tolerance_mm"), 0.05);
+  CHECK(has(x, "\"time_by_tool\": [{\"tool\": 1, "));
+  CHECK(has(x, "}, {\"tool\": 2, "));
+  const std::size_t t2 = x.find("{\"tool\": 2, ");
+  const double share1 = number_of(x, "time_by_tool\": [{\"tool\": 1, \"estimated_s");
+  const double share2 = t2 == std::string::npos ? 0 : number_of(x.substr(t2), "estimated_s");
+  CHECK(share1 > 0 && share2 > 0);
+  CHECK(std::fabs(share1 + share2 - bx) < 0.0015);  // each rounded to the ms
+  // The summary says what the estimate is.
+  const Result r = run("%/zigx.ngc --tool flat:6 --stock -5,-5,-5,70,30,0 --machine %/slowx.ini");
+  CHECK(has(r.out, " blended at corners (G64 P up to 0.0500 mm), each axis within its velocity and acceleration (the machine's)\n"));
+  CHECK(has(r.out, "         bounds: "));
 }

@@ -208,12 +208,13 @@ TEST(run_without_outputs_prints_a_summary) {
   CHECK(has(r.out, "time     "));
   CHECK(has(r.out, "Add --image out.png"));
   // Blocks run, and what the time estimate is (a lower bound without
-  // acceleration, an upper one with --accel).
+  // acceleration; with --accel, blended between its bounds).
   CHECK(has(r.out, "pocket.ngc: 23 blocks run, mm;"));
   CHECK(has(r.out, " at programmed feeds, rapids at 5000 mm/min, no acceleration (a lower bound; --accel MM/S2"));
   const Result accel = run("pocket.ngc --accel 500.5");
-  CHECK(has(accel.out, " at programmed feeds, rapids at 5000 mm/min, every move from rest to rest at --accel 500.500 "
-                       "mm/s^2 (an upper bound: no blending)"));
+  CHECK(has(accel.out, "time     0:00:17 blended at corners (G64), each axis within its velocity and acceleration\n"));
+  CHECK(has(accel.out, "         bounds: 0:00:17 without acceleration, 0:00:18 stopping at every move (rapids at 5000 mm/min, "
+                       "acceleration 500.500 mm/s^2)\n"));
   CHECK_EQ(accel.out.find("no acceleration"), std::string::npos);
   // With an output, standard output stays quiet.
   CHECK(run("pocket.ngc -q --report /dev/null").out.empty());

@@ -55,14 +55,20 @@ MotionSummary::MotionSummary(const MotionTimeModel& model) : model_(model) {
   PlanLimits lim = model.axes;
   bool per_axis = false;
   for (int i = 0; i < 3; ++i) per_axis = per_axis || lim.accel_nm_per_s2[i] > 0;
-  planning_ = model.blend && (per_axis || model.accel_nm_per_s2 > 0);
-  if (!planning_) return;
+  want_plan_ = model.blend && (per_axis || model.accel_nm_per_s2 > 0);
+  if (!want_plan_) return;
   for (int i = 0; i < 3; ++i) {
     if (lim.velocity_nm_per_s[i] <= 0) lim.velocity_nm_per_s[i] = model.rapid_nm_per_min / 60;
     if (lim.accel_nm_per_s2[i] <= 0) lim.accel_nm_per_s2[i] = model.accel_nm_per_s2;
   }
   if (!per_axis) lim.max_path_nm_per_s = model.rapid_nm_per_min / 60;
-  plan_.init(lim, this);
+  limits_ = lim;
+}
+
+void MotionSummary::set_planner(MotionPlanner* p) {
+  plan_ = p;
+  planning_ = want_plan_ && p;
+  if (planning_) plan_->init(limits_, this);
 }
 
 int64_t arc_length_nm(const CanonRecord& r, int64_t sweep_bam, int64_t* radius_nm) {
@@ -109,9 +115,9 @@ void MotionSummary::timed(const CanonRecord& r, bool feed, int64_t len, int64_t 
   if (!planning_) {
     if (move_sink_) move_sink_->move_time(MoveTimes{r.tool, p.kind, na, st, us});
   } else if (r.kind == CanonKind::kArc) {
-    plan_.arc(r, len, radius_nm, p);
+    plan_->arc(r, len, radius_nm, p);
   } else {
-    plan_.line(r.start, r.end, feed ? rate : 0, r, p);
+    plan_->line(r.start, r.end, feed ? rate : 0, r, p);
   }
 }
 
@@ -121,7 +127,7 @@ void MotionSummary::planned(const PlanPayload& p, int64_t us) {
 }
 
 void MotionSummary::finish() {
-  if (planning_) plan_.stop();
+  if (planning_) plan_->stop();
 }
 
 void MotionSummary::emit(const CanonRecord& r) {

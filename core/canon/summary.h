@@ -83,6 +83,11 @@ class MotionSummary final : public CanonSink, private PlanSink {
   // Each move's times, once the blended one is known (up to kPlanRing
   // moves later; no heap here, the sink sums them by tool).
   void set_move_sink(MoveTimeSink* s) { move_sink_ = s; }
+  // The look-ahead's memory (about 5 KB), the caller's, before the first
+  // record: only the pass that wants the blended figure pays for it (the
+  // simulation's own clock, per move, is the model's). Without one, or
+  // without the model's blend and an acceleration, blended = the model's.
+  void set_planner(MotionPlanner* p);
 
   // Records by CanonKind (index static_cast<int>(kind)).
   uint64_t count(CanonKind k) const { return counts_[static_cast<int>(k)]; }
@@ -108,6 +113,7 @@ class MotionSummary final : public CanonSink, private PlanSink {
   // the planner does not run). The blended split into feeds and rapids.
   int64_t no_accel_time_us() const { return na_us_ + dwell_us_; }
   int64_t stop_time_us() const { return st_us_ + dwell_us_; }
+  bool blending() const { return planning_; }
   int64_t blended_time_us() const { return planning_ ? bl_feed_us_ + bl_rapid_us_ + dwell_us_ : estimated_time_us(); }
   int64_t blended_feed_us() const { return planning_ ? bl_feed_us_ : feed_us_; }
   int64_t blended_rapid_us() const { return planning_ ? bl_rapid_us_ : rapid_us_; }
@@ -133,8 +139,9 @@ class MotionSummary final : public CanonSink, private PlanSink {
   int64_t feed_nm_ = 0, rapid_nm_ = 0;
   int64_t feed_us_ = 0, rapid_us_ = 0, dwell_us_ = 0;
   int64_t na_us_ = 0, st_us_ = 0, bl_feed_us_ = 0, bl_rapid_us_ = 0;
-  bool planning_ = false;
-  MotionPlanner plan_;
+  bool planning_ = false, want_plan_ = false;
+  PlanLimits limits_;
+  MotionPlanner* plan_ = nullptr;
   MoveTimeSink* move_sink_ = nullptr;
 };
 

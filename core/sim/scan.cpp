@@ -12,6 +12,20 @@ ProgramScan::ProgramScan(const SimJob& job)
   numbers[0] = -1;
   ntools = 1;
   max_radius_nm = job.tool.diameter_nm / 2;
+  summary.set_move_sink(this);
+}
+
+void ProgramScan::move_time(const MoveTimes& t) {
+  if (in_spindle_ < 0) return;
+  ScanToolTime& s = tool_time[in_spindle_];
+  s.estimated_us = sat_add_i64(s.estimated_us, t.blended_us);
+  if (t.kind == kMoveDwell) {
+    s.dwell_us = sat_add_i64(s.dwell_us, t.blended_us);
+    return;
+  }
+  int64_t& part = t.kind == kMoveFeed ? s.feed_us : s.rapid_us;
+  part = sat_add_i64(part, t.blended_us);
+  ++s.moves;
 }
 
 void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also) {
@@ -24,6 +38,7 @@ void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem
   GcodeRunner runner(&tap, &interp, messages, true);
   while (runner.step() && !bad_tool_line) {
   }
+  summary.finish();  // a program without M2: the look-ahead's last moves
   lines = runner.lines();
   probes = interp.probe_moves();
   io_error = runner.io_error();
@@ -73,7 +88,10 @@ void ProgramScan::line(const char* text, size_t n, uint32_t line_no) {
 }
 
 void ProgramScan::emit(const CanonRecord& r) {
-  summary.emit(r);
+  summary.emit(r);  // first: a tool change's flush still finds the old tool in the spindle
+  if ((r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc || r.kind == CanonKind::kTraverse) &&
+      r.path_mode == 640 && r.path_tolerance_nm > 0)
+    path_tolerance_max_nm = max_of(path_tolerance_max_nm, r.path_tolerance_nm);
   if (interp_ && (r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc))
     (interp_->state().inch ? inch_moves : mm_moves) = true;
   if (choice_ && interp_) choice_->comments().record(r, interp_->state().inch, interp_->state().selected_tool);

@@ -30,7 +30,14 @@ namespace dexmill {
 // not sized for.
 constexpr int kScanToolsMax = 128;
 
-class ProgramScan final : public CanonSink, public LineWatcher {
+// One tool's share of the time estimate (MotionSummary's MoveTimes, the
+// blended figure where the planner ran), summed by ProgramScan.
+struct ScanToolTime {
+  int64_t estimated_us = 0, feed_us = 0, rapid_us = 0, dwell_us = 0;
+  uint64_t moves = 0;  // straight moves and arcs
+};
+
+class ProgramScan final : public CanonSink, public LineWatcher, private MoveTimeSink {
  public:
   // The job's tool and library (null: every T is the tool), time model and
   // reading options (kept: a copy).
@@ -47,6 +54,9 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   // program's tool comments into it, and lists the tools it chose in the
   // end (tools[0] its initial tool).
   void set_tool_choice(ToolChoice* c) { choice_ = c; }
+  // The blended time estimate's look-ahead memory (core/canon/summary.h),
+  // before run(); without it the estimate is the model's.
+  void set_planner(MotionPlanner* p) { summary.set_planner(p); }
 
   void emit(const CanonRecord& r) override;
   // LineWatcher: the program's (WORKPIECE,...) comments (core/sim/workpiece_comment.h)
@@ -68,6 +78,12 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   // tool's lines are first_lines[k] .. last_lines[k] (a tool loaded again
   // later spans the lines between its loads too).
   uint32_t last_lines[kScanToolsMax] = {};
+  // The time each one took (its moves are timed once the look-ahead is
+  // done with them, always before the next tool change is read: a tool
+  // change stops the machine). Time with an unlisted tool is in none.
+  ScanToolTime tool_time[kScanToolsMax];
+  // The largest G64 P of a move (nm; -1: no move under G64 with P).
+  int32_t path_tolerance_max_nm = -1;
   uint32_t unlisted = 0;       // loads of tools past kScanToolsMax
   int64_t max_radius_nm = 0;   // of every tool loaded
   uint32_t bad_tool_line = 0;  // the first M6 of a T the library lacks (0: none), and its number
@@ -91,6 +107,8 @@ class ProgramScan final : public CanonSink, public LineWatcher {
   int64_t smallest_diameter_nm() const;
 
  private:
+  void move_time(const MoveTimes& t) override;
+
   BlkForm blk_{};  // a BLK FORM 0.1 waiting for its 0.2
   SimJob job_;
   SingleToolLibrary single_;

@@ -412,7 +412,18 @@ std::string report_json_text(const RunReport& r) {
   o += "  \"time_model\": {\"rapid_mm_per_min\": " + nm_to_mm_text(r.rapid_nm_per_min, 0) + ", \"accel_mm_per_s2\": " +
        (r.accel_nm_per_s2 ? nm_to_mm_text(r.accel_nm_per_s2, 3) : std::string("null")) + ", \"feed_s\": " +
        seconds_of_us(r.feed_us) + ", \"rapid_s\": " + seconds_of_us(r.rapid_us) + ", \"dwell_s\": " +
-       seconds_of_us(r.dwell_us) + "},\n";
+       seconds_of_us(r.dwell_us) + ", \"no_accel_s\": " + seconds_of_us(r.no_accel_us) + ", \"stop_s\": " +
+       seconds_of_us(r.stop_us) + ", \"blended_s\": " + (r.blended ? seconds_of_us(r.blended_us) : std::string("null")) +
+       ", \"path_tolerance_mm\": " + (r.path_tolerance_nm >= 0 ? nm_to_mm_text(r.path_tolerance_nm, 4) : std::string("null")) +
+       "},\n";
+  o += "  \"time_by_tool\": [";
+  for (std::size_t k = 0; k < r.time_by_tool.size(); ++k) {
+    const ReportToolTime& t = r.time_by_tool[k];
+    o += std::string(k ? ", " : "") + "{\"tool\": " + (t.tool < 0 ? std::string("null") : std::to_string(t.tool)) +
+         ", \"estimated_s\": " + seconds_of_us(t.estimated_us) + ", \"feed_s\": " + seconds_of_us(t.feed_us) +
+         ", \"rapid_s\": " + seconds_of_us(t.rapid_us) + ", \"moves\": " + u64(t.moves) + "}";
+  }
+  o += "],\n";
   if (r.have_bounds)
     o += "  \"bounds_mm\": {\"min\": " + point_mm(r.bounds_lo) + ", \"max\": " + point_mm(r.bounds_hi) + "},\n";
   else

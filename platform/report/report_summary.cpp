@@ -51,15 +51,20 @@ std::string report_summary_text(const RunReport& r) {
       }
     }
   }
-  // What the estimate is: a lower bound without acceleration (no machine
-  // reaches F at once), an upper one with --accel (every move from rest
-  // to rest, no blending).
-  o += "time     " + hms(r.estimated_us) + " at programmed feeds, rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) +
-       " mm/min, " +
-       (r.accel_nm_per_s2 ? "every move from rest to rest at --accel " +
-                                nm_to_mm_text(r.accel_nm_per_s2, r.accel_nm_per_s2 % 1000000 ? 3 : 0) +
-                                " mm/s^2 (an upper bound: no blending)\n"
-                          : std::string("no acceleration (a lower bound; --accel MM/S2 for a machine's)\n"));
+  // What the estimate is: without an acceleration a lower bound (no
+  // machine reaches F at once); with one, the blended estimate
+  // (core/canon/motion_plan.h) between its two bounds.
+  if (r.blended) {
+    o += "time     " + hms(r.estimated_us) + " blended at corners (G64" +
+         (r.path_tolerance_nm >= 0 ? " P up to " + nm_to_mm_text(r.path_tolerance_nm, 4) + " mm" : std::string()) +
+         "), each axis within its velocity and acceleration" + (r.have_machine ? " (the machine's)" : "") + "\n";
+    o += "         bounds: " + hms(r.no_accel_us) + " without acceleration, " + hms(r.stop_us) +
+         " stopping at every move (rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) + " mm/min, acceleration " +
+         nm_to_mm_text(r.accel_nm_per_s2, r.accel_nm_per_s2 % 1000000 ? 3 : 0) + " mm/s^2)\n";
+  } else {
+    o += "time     " + hms(r.estimated_us) + " at programmed feeds, rapids at " + nm_to_mm_text(r.rapid_nm_per_min, 0) +
+         " mm/min, no acceleration (a lower bound; --accel MM/S2 or --machine FILE for a machine's)\n";
+  }
   if (r.have_machine) {  // the machine, what it gave and what the options kept
     const ReportMachine& m = r.machine;
     o += "machine  " + m.file + " (" + (m.kind == "grbl" ? "grbl" : "LinuxCNC") + "): travel";

@@ -198,7 +198,8 @@ struct RunReport {
   // from rest to rest, and blended within the path tolerance; the
   // tolerance in force where the program gives none (-1: none).
   int64_t no_accel_us = 0, stop_us = 0, blended_us = 0;
-  int64_t path_tolerance_nm = -1;
+  bool blended = false;  // the planner ran (an acceleration known): blended_us is its figure
+  int64_t path_tolerance_nm = -1;  // the largest G64 P of a move (-1: none)
   std::vector<ReportToolTime> time_by_tool;
   bool have_bounds = false;
   PointNm bounds_lo{0, 0, 0}, bounds_hi{0, 0, 0};

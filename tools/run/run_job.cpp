@@ -319,7 +319,8 @@ int write_results(const RunOptions& o, Run* run, bool user_quit) {
   rep.dexel_updates = sim.mill().stats().dexel_updates;
   rep.removed_lsb_dexels = sim.removed_lsb();
   if (su.cut_notes) {  // a program that probes: the cut's messages, probe errors, moves and time
-    motion_to_report(sim.time(), &rep);
+    motion_to_report(sim.time(), &rep);  // the engine's clock: not blended
+    rep.time_by_tool.clear();               // the scan's, whose probes did not stop on the stock
     rep.messages.clear();
     for (const GcodeNotes::Note& n : su.cut_notes->kept)
       if (rep.messages.size() < 100) rep.messages.push_back(RunReport::Message{n.line, n.kind, n.text});

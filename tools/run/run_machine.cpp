@@ -71,6 +71,10 @@ int run_machine_load(RunOptions* o, RunMachine* m) {
     if (use) j.read.inch = s.inch, j.read.units_given = true;
     said(std::string("units ") + (s.inch ? "inch" : "mm"), use);
   }
+  for (int a = 0; a < 3; ++a) {  // the blended estimate's, axis by axis
+    if (!j.have_rapid) j.axes.velocity_nm_per_s[a] = s.axis[a].max_velocity_nm_per_min / 60;
+    if (!j.have_accel) j.axes.accel_nm_per_s2[a] = s.axis[a].max_accel_nm_per_s2;
+  }
   if (const int64_t v = slowest(s, false)) {
     if (!j.have_rapid) j.rapid_nm_per_min = v;
     said("rapid " + nm_to_mm_text(v, 0) + " mm/min (the slowest axis)", !j.have_rapid);

@@ -105,6 +105,9 @@ struct JobOptions {
   ReadOptions read;              // --units, --default-feed, --subroutine-path, --max-blocks, --tools
   int64_t rapid_nm_per_min = MotionTimeModel().rapid_nm_per_min;  // --rapid MM/MIN, for the time estimate
   int64_t accel_nm_per_s2 = 0;   // --accel MM/S2 (0: none)
+  // Each axis's velocity and acceleration from --machine, where no --rapid
+  // or --accel overrides them (the blended estimate's, core/canon/motion_plan.h).
+  PlanLimits axes;
   bool strict = false;           // --strict: an input error cuts nothing (else up to the bad block)
   // --max-input MIB: the most bytes of a program copied because it cannot
   // be read twice (standard input, a pipe, a FIFO, a device).

@@ -86,6 +86,7 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
   rep->lines = s.lines;
   if (s.inch_moves || s.mm_moves) rep->units = s.inch_moves ? (s.mm_moves ? "mixed" : "inch") : "mm";
   motion_to_report(s.summary, rep);
+  tool_times_to_report(s, rep);
   rep->errors = msgs->error_list;
   msgs->finish();
   rep->warnings = msgs->warning_list();
@@ -108,13 +109,29 @@ void motion_to_report(const MotionSummary& sum, RunReport* rep) {
   rep->arc = sum.count(CanonKind::kArc);
   rep->dwell = sum.count(CanonKind::kDwell);
   rep->tool_change = sum.count(CanonKind::kToolChange);
-  rep->estimated_us = sum.estimated_time_us();
-  rep->feed_us = sum.feed_time_us();
-  rep->rapid_us = sum.rapid_time_us();
+  // The headline is the best estimate the pass made: blended where it had
+  // an acceleration and the look-ahead, else the model's.
+  rep->estimated_us = sum.blended_time_us();
+  rep->feed_us = sum.blended_feed_us();
+  rep->rapid_us = sum.blended_rapid_us();
   rep->dwell_us = sum.dwell_time_us();
+  rep->no_accel_us = sum.no_accel_time_us();
+  rep->stop_us = sum.stop_time_us();
+  rep->blended_us = sum.blended_time_us();
+  rep->blended = sum.blending();
   rep->have_bounds = sum.motion_box().valid;
   rep->bounds_lo = sum.motion_box().lo;
   rep->bounds_hi = sum.motion_box().hi;
+}
+
+void tool_times_to_report(const ProgramScan& s, RunReport* rep) {
+  rep->time_by_tool.clear();
+  rep->path_tolerance_nm = s.path_tolerance_max_nm;
+  for (int k = 0; k < s.ntools; ++k) {
+    const ScanToolTime& t = s.tool_time[k];
+    if (k == 0 && t.moves == 0 && t.dwell_us == 0) continue;  // nothing before the first M6
+    rep->time_by_tool.push_back(ReportToolTime{s.numbers[k], t.estimated_us, t.feed_us, t.rapid_us, t.moves});
+  }
 }
 
 }  // namespace cli

@@ -76,6 +76,8 @@ int scan_pass(const ScanInput& in, ProgramScan* scan, const GcodeNotes& notes, s
 // the scan's, or, for a program that probes, the cut's (where each probe
 // stopped on the stock).
 void motion_to_report(const MotionSummary& sum, RunReport* rep);
+// The estimate by tool (the report's time_by_tool) and the largest G64 P.
+void tool_times_to_report(const ProgramScan& s, RunReport* rep);
 
 }  // namespace cli
 }  // namespace dexmill

@@ -124,6 +124,10 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   j.max_blocks = o.job.read.max_blocks;
   j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
   j.time.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  // With an acceleration the estimate blends (the scan's, which has the
+  // look-ahead's memory; the engine's per-move clock stays the model's).
+  j.time.axes = o.job.axes;
+  j.time.blend = true;
   j.setups = o.job.setups.empty() ? nullptr : o.job.setups.data();
   j.nsetups = static_cast<int32_t>(o.job.setups.size());
   j.work_offsets = o.job.have_work_offsets ? o.job.work_offsets : nullptr;
@@ -406,6 +410,8 @@ int first_pass(const RunOptions& o, RunSetup* run) {
   scan_job.notes = &notes;
   run->scan.reset(new ProgramScan(scan_job));
   run->scan->set_tool_choice(run->choice.get());
+  run->planner.reset(new MotionPlanner());
+  run->scan->set_planner(run->planner.get());
   run->want_path = o.view.path_overlay || o.view.window || !o.view.fbdev.empty();
   const double t0 = clock_now_s();
   const ScanInput in{run->read_path, run->shown_name, &o.job.read, &run->table, run->guard, run->choice.get()};

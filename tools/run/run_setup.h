@@ -56,6 +56,7 @@ struct RunSetup {
   SimJob job;
   RunReport rep;
   std::unique_ptr<ProgramScan> scan;
+  std::unique_ptr<MotionPlanner> planner;  // the scan's look-ahead (the blended time estimate)
   std::unique_ptr<EngageRecorder> engage;  // the engine's sink for each move's load (CSV, plot, each tool's largest)
   // A program that probes: its messages from the cut (where each probe
   // stopped on the stock), and the probe errors only the cut finds.
