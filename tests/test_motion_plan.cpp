@@ -17,7 +17,11 @@ using namespace dexmill;
 namespace {
 struct Collect final : PlanSink {
   std::vector<int64_t> us;
-  void planned(const PlanPayload&, int64_t time_us) override { us.push_back(time_us); }
+  void planned(const PlanPayload&, const PlanTimes& t) override {
+    us.push_back(t.blended_us);
+    ordered = ordered && t.cruise_us <= t.blended_us + 1 && t.blended_us <= t.stop_us;
+  }
+  bool ordered = true;
 };
 
 // One move for both: a line (arc false) or an XY arc about centre with
@@ -152,13 +156,14 @@ std::vector<int64_t> planned(const std::vector<Move>& moves, const PlanLimits& L
   Collect c;
   MotionPlanner p;
   p.init(L, &c);
-  const PlanPayload pay{0, 0, {0, 0}};
+  const PlanPayload pay{0, 0};
   for (const Move& m : moves) {
     if (m.r.kind == CanonKind::kArc) p.arc(m.r, m.length_nm, m.radius_nm, pay);
     else p.line(m.r.start, m.r.end, m.r.kind == CanonKind::kTraverse ? 0 : m.r.feed_nm_per_min, m.r, pay);
     if (m.stop_after) p.stop();
   }
   p.stop();
+  CHECK(c.ordered);  // every segment: cruise <= blended <= stop (motion_plan.h PlanTimes)
   return c.us;
 }
 
@@ -327,15 +332,17 @@ TEST(motion_plan_in_the_summary_lies_between) {
   summarise(prog, 14, &s, &plan);
   CHECK_GT(s.blended_time_us(), s.no_accel_time_us());
   CHECK_LT(s.blended_time_us(), s.stop_time_us());
-  CHECK_EQ(s.stop_time_us(), s.estimated_time_us());  // the model's own figure unchanged
+  // The planner's bounds are of its own model (per-axis limits, arcs at
+  // a / 2 along the path), not the flat model's: stop here is above it.
+  CHECK_GT(s.stop_time_us(), s.estimated_time_us());
   CHECK_EQ(s.blended_feed_us() + s.blended_rapid_us() + s.dwell_time_us(), s.blended_time_us());
   // Without the planner: every figure is the model's.
   m.blend = false;
   MotionSummary f(m);
   summarise(prog, 14, &f, &plan);
   CHECK_EQ(f.blended_time_us(), f.estimated_time_us());
-  CHECK_EQ(f.stop_time_us(), s.stop_time_us());
-  CHECK_EQ(f.no_accel_time_us(), s.no_accel_time_us());
+  CHECK_EQ(f.stop_time_us(), f.estimated_time_us());
+  CHECK_EQ(f.estimated_time_us(), s.estimated_time_us());  // the engine's per-move clock: the model's either way
   // Blend asked for but no planner's memory given: the model's figure too.
   m.blend = true;
   MotionSummary g(m);

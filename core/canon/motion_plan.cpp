@@ -120,7 +120,9 @@ void MotionPlanner::finish_oldest() {
   const int64_t v1 = min_of(exit_max, reach(v0, o.accel_nm_per_s2, o.length_nm));
   const int64_t us = segment_time_us(o.length_nm, v0, v1, o.cruise_nm_per_s, o.accel_nm_per_s2);
   total_us_ = sat_add_i64(total_us_, us);
-  if (sink_) sink_->planned(o.payload, us);
+  if (sink_)
+    sink_->planned(o.payload, PlanTimes{muldiv_round(o.length_nm, 1000000, o.cruise_nm_per_s),
+                                        segment_time_us(o.length_nm, 0, 0, o.cruise_nm_per_s, o.accel_nm_per_s2), us});
   v_start_nm_per_s_ = v1;
   head_ = (head_ + 1) % kPlanRing;
   --count_;
@@ -156,7 +158,7 @@ void MotionPlanner::line(const PointNm& a, const PointNm& b, int64_t feed_nm_per
   PlanSegment s{};
   s.length_nm = distance_nm(a, b);
   if (s.length_nm == 0 || !plan_unit_q30(b.x_nm - a.x_nm, b.y_nm - a.y_nm, b.z_nm - a.z_nm, s.dir_start)) {
-    if (sink_) sink_->planned(p, 0);
+    if (sink_) sink_->planned(p, PlanTimes{0, 0, 0});
     return;
   }
   for (int i = 0; i < 3; ++i) s.dir_end[i] = s.dir_start[i];

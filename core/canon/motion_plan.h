@@ -62,7 +62,15 @@ struct PlanLimits {
 struct PlanPayload {
   int32_t tool;
   uint8_t kind;  // the consumer's own class of the move
-  int64_t tag_us[2];  // the consumer's other figures for it
+};
+
+// A finished segment's three times under the machine's model, us: at its
+// cruise velocity throughout (L / vc: no time to reach it), from rest to
+// rest (the trapezoid between 0 and 0), and blended (between the junction
+// velocities the look-ahead chose). cruise <= blended <= stop, always: the
+// junction velocities lie in [0, vc] and the trapezoid's time falls as they rise.
+struct PlanTimes {
+  int64_t cruise_us, stop_us, blended_us;
 };
 
 struct PlanSegment {
@@ -79,8 +87,8 @@ struct PlanSegment {
 
 class PlanSink {
  public:
-  // One segment done: its time under the model.
-  virtual void planned(const PlanPayload& p, int64_t time_us) = 0;
+  // One segment done: its times under the model.
+  virtual void planned(const PlanPayload& p, const PlanTimes& t) = 0;
 
  protected:
   ~PlanSink() = default;

@@ -104,26 +104,29 @@ void MotionSummary::piece(const PointNm& a, const PointNm& b, bool feed, int64_t
 
 void MotionSummary::timed(const CanonRecord& r, bool feed, int64_t len, int64_t radius_nm) {
   const int64_t rate = feed ? min_of(r.feed_nm_per_min, model_.max_feed_nm_per_min) : model_.rapid_nm_per_min;
+  const int64_t us = move_time_us(model_, len, rate);
+  (feed ? feed_us_ : rapid_us_) = sat_add_i64(feed ? feed_us_ : rapid_us_, us);
+  const PlanPayload p{r.tool, feed ? kMoveFeed : kMoveRapid};
+  if (planning_) {  // the three figures are the planner's, of the machine's axes (planned())
+    if (r.kind == CanonKind::kArc) plan_->arc(r, len, radius_nm, p);
+    else plan_->line(r.start, r.end, feed ? rate : 0, r, p);
+    return;
+  }
   MotionTimeModel flat = model_;
   flat.accel_nm_per_s2 = 0;
-  const int64_t na = move_time_us(flat, len, rate), us = move_time_us(model_, len, rate);
+  const int64_t na = move_time_us(flat, len, rate);
   const int64_t st = model_.accel_nm_per_s2 > 0 ? us : na;
   na_us_ = sat_add_i64(na_us_, na);
   st_us_ = sat_add_i64(st_us_, st);
-  (feed ? feed_us_ : rapid_us_) = sat_add_i64(feed ? feed_us_ : rapid_us_, us);
-  const PlanPayload p{r.tool, feed ? kMoveFeed : kMoveRapid, {na, st}};
-  if (!planning_) {
-    if (move_sink_) move_sink_->move_time(MoveTimes{r.tool, p.kind, na, st, us});
-  } else if (r.kind == CanonKind::kArc) {
-    plan_->arc(r, len, radius_nm, p);
-  } else {
-    plan_->line(r.start, r.end, feed ? rate : 0, r, p);
-  }
+  if (move_sink_) move_sink_->move_time(MoveTimes{r.tool, p.kind, na, st, us});
 }
 
-void MotionSummary::planned(const PlanPayload& p, int64_t us) {
-  (p.kind == kMoveFeed ? bl_feed_us_ : bl_rapid_us_) = sat_add_i64(p.kind == kMoveFeed ? bl_feed_us_ : bl_rapid_us_, us);
-  if (move_sink_) move_sink_->move_time(MoveTimes{p.tool, p.kind, p.tag_us[0], p.tag_us[1], us});
+void MotionSummary::planned(const PlanPayload& p, const PlanTimes& t) {
+  int64_t& part = p.kind == kMoveFeed ? bl_feed_us_ : bl_rapid_us_;
+  part = sat_add_i64(part, t.blended_us);
+  na_us_ = sat_add_i64(na_us_, t.cruise_us);
+  st_us_ = sat_add_i64(st_us_, t.stop_us);
+  if (move_sink_) move_sink_->move_time(MoveTimes{p.tool, p.kind, t.cruise_us, t.stop_us, t.blended_us});
 }
 
 void MotionSummary::finish() {

@@ -130,7 +130,7 @@ class MotionSummary final : public CanonSink, private PlanSink {
   void piece(const PointNm& a, const PointNm& b, bool feed, int64_t len_nm);
   // One move's times: the model's, and the planner's once it is done.
   void timed(const CanonRecord& r, bool feed, int64_t len_nm, int64_t radius_nm);
-  void planned(const PlanPayload& p, int64_t time_us) override;
+  void planned(const PlanPayload& p, const PlanTimes& t) override;
 
   MotionTimeModel model_;
   uint64_t counts_[kCanonKinds] = {};

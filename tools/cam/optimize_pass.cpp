@@ -1,6 +1,7 @@
 #include "tools/cam/optimize_pass.h"
 
 #include <cstdio>
+#include <memory>
 
 #include "core/safety/material_limits.h"
 #include "core/gcode/block.h"
@@ -72,6 +73,20 @@ MoveSplit split_line(const OptimizeInput& in, std::pair<std::size_t, int32_t> pi
   return split;
 }
 
+// The program's time before or after the rewrite; with --accel blended
+// (core/canon/motion_plan.h), each copy with its own look-ahead.
+struct PlannedSummary {
+  explicit PlannedSummary(const MotionTimeModel& model) : summary(model), planner(new MotionPlanner()) {
+    summary.set_planner(planner.get());
+  }
+  int64_t finish_us() {
+    summary.finish();
+    return summary.blended_time_us();
+  }
+  MotionSummary summary;
+  std::unique_ptr<MotionPlanner> planner;
+};
+
 }  // namespace
 
 int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
@@ -85,7 +100,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   memory->attach(&opt);
   LineRecords sink;
   Interp interp(&sink, opt);
-  MotionSummary before(in.time_model), after(in.time_model);
+  PlannedSummary before(in.time_model), after(in.time_model);
   FeedRewriter rewriter;
   const SplitIndex split_at = split_index(in.splits);
   const char* text = nullptr;
@@ -165,14 +180,14 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
       ++out->left_over;
     }
     for (CanonRecord r : sink.records) {
-      before.emit(r);
+      before.summary.emit(r);
       if (is_feed(r)) r.feed_nm_per_min = e.feed_nm_per_min;
-      if (split.pieces.empty()) after.emit(r);
+      if (split.pieces.empty()) after.summary.emit(r);
     }
     for (std::size_t k = 0; k < split.pieces.size(); ++k) {  // the pieces, the last at the line's own feed
       CanonRecord r = split.pieces[k];
       if (k + 1 == split.pieces.size()) r.feed_nm_per_min = e.feed_nm_per_min;
-      after.emit(r);
+      after.summary.emit(r);
     }
     if (e.kind == FeedEdit::Kind::kNone) continue;
     out->splices.push_back(ProgramSplice{file.line_offset() + s.at, s.erase, s.text});
@@ -186,8 +201,8 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
       ++out->lines_restored;
     }
   }
-  out->before_us = before.estimated_time_us();
-  out->after_us = after.estimated_time_us();
+  out->before_us = before.finish_us();
+  out->after_us = after.finish_us();
   return kExitOk;
 }
 

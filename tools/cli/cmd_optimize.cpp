@@ -375,6 +375,7 @@ int cmd_optimize(int argc, char** argv) {
   }
   in.time_model.rapid_nm_per_min = o.job.rapid_nm_per_min;
   in.time_model.accel_nm_per_s2 = o.job.accel_nm_per_s2;
+  in.time_model.blend = true;  // with --accel, as run's estimate
   OptimizeResult res;
   const int pass = optimize_pass(in, &res);
   if (pass != kExitOk) return pass;

@@ -146,8 +146,8 @@ const Option<Job> kJob[] = {
        return machine_rate("--rapid", "rapid rate in mm/min", v, &o->rapid_nm_per_min);
      }},
     {"--accel", "MM/S2",
-     "time estimate with every move speeding up from rest and slowing to rest at this acceleration (default: "
-     "none)",
+     "the machine's acceleration, for the time estimate: corners blended within G64 P, LinuxCNC-style, "
+     "between the bounds of no acceleration and every move from rest to rest (default: none)",
      [](Job* o, const char* v) -> int {
        o->have_accel = true;
        return machine_rate("--accel", "acceleration in mm/s2", v, &o->accel_nm_per_s2);
