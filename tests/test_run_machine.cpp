@@ -189,3 +189,25 @@ TEST(run_machine_time_estimate_per_axis_and_by_tool) {
   CHECK(has(r.out, " blended at corners (G64 P up to 0.0500 mm), each axis within its velocity and acceleration (the machine's)\n"));
   CHECK(has(r.out, "         bounds: "));
 }
+
+// The time a saved stock keeps for the program is the report's estimate
+// (blended with a machine), so the chain of programs adds up what the
+// reports said, not the engine's unblended clock.
+TEST(run_machine_chain_keeps_the_blended_time) {
+  if (skip()) return;
+  write_tmp("slowx2.ini", axis_ini(100, 1000).c_str());
+  std::string prog = "G21 G90 G64\nG0 X0 Y0 Z2\nG1 Z-1 F600\n";
+  for (int k = 0; k < 10; ++k) prog += "G1 X" + std::string(k % 2 ? "0" : "40") + " Y" + std::to_string(k) + " F3000\n";
+  prog += "M30\n";
+  write_tmp("zigc.ngc", prog.c_str());
+  CHECK_EQ(run("%/zigc.ngc -q --tool flat:6 --stock -5,-5,-5,50,15,0 --machine %/slowx2.ini --save-stock %/zigc.dxstock "
+               "--report %/zigc.json").code, 0);
+  const std::string x = slurp(tmp_dir() + "/zigc.json");
+  const std::size_t chain = x.find("\"chain\": ");
+  CHECK(chain != std::string::npos);
+  const double blended = number_of(x, "blended_s");
+  CHECK(blended < number_of(x, "stop_s"));
+  if (chain == std::string::npos) return;
+  CHECK_EQ(number_of(x.substr(chain), "estimated_time_s"), blended);
+  CHECK_EQ(number_of(x.substr(x.find("\"programs\": [", chain)), "estimated_time_s"), blended);
+}

@@ -22,7 +22,7 @@ StockStateError sim_stock_fits(const StockMeta& m) {
 }
 
 template <class H>
-StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, StockMeta* out) {
+StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, StockMeta* out, int64_t program_us) {
   const SimJob& job = sim.job();
   const StockMeta* was = job.resume;
   if (was && was->nprograms >= kStockMaxPrograms) return StockStateError::kTooManyPrograms;
@@ -42,7 +42,7 @@ StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, S
   m.tool = sim.status().tool;
   m.position = sim.mill().position();
   const uint64_t removed = sim.removed_lsb();
-  const int64_t us = sim.status().sim_us;
+  const int64_t us = program_us >= 0 ? program_us : sim.status().sim_us;
   const uint64_t moves = sim.status().moves;
   m.removed_lsb_dexels = (was ? was->removed_lsb_dexels : 0) + removed;
   m.sim_us = (was ? was->sim_us : 0) + us;
@@ -78,7 +78,7 @@ StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, S
 
 #define DEXMILL_STOCK_STATE_INSTANTIATE(H)                         \
   template StockStateError sim_stock_fits<H>(const StockMeta&); \
-  template StockStateError sim_stock_meta<H>(const SimulationT<H>&, const char*, StockMeta*);
+  template StockStateError sim_stock_meta<H>(const SimulationT<H>&, const char*, StockMeta*, int64_t);
 DEXMILL_STOCK_STATE_INSTANTIATE(height_t)
 #undef DEXMILL_STOCK_STATE_INSTANTIATE
 

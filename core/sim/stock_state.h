@@ -31,8 +31,11 @@ StockStateError sim_stock_fits(const StockMeta& m);
 // keeps (provenance's), where the tool is, the chain (job.resume's programs,
 // then this one, named `program`) and its totals. Material and design names
 // are the front end's to fill (it knows the files).
+// program_us is the time recorded for this program: the front end's best
+// estimate where it has one (a blended plan's, core/canon/motion_plan.h),
+// or -1 for the engine's own per-move clock.
 template <class H>
-StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, StockMeta* out);
+StockStateError sim_stock_meta(const SimulationT<H>& sim, const char* program, StockMeta* out, int64_t program_us = -1);
 
 }  // namespace dexmill
 

@@ -94,7 +94,11 @@ bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<heigh
 void chain_of_run(RunSetup* su) {
   const SimJob& j = su->sim->job();
   if (!j.resume && !j.provenance_programs) return;
-  su->have_chain = sim_stock_meta(*su->sim, su->shown_name.c_str(), &su->chain) == StockStateError::kOk;
+  // A blended estimate is the program's time, as the report's; a run that
+  // stopped early (a gouge, a collision) keeps the clock of what it cut.
+  const bool whole = su->sim->stop_reason() == SimStop::kNone;
+  const int64_t us = su->rep.blended && whole ? su->rep.estimated_us : -1;
+  su->have_chain = sim_stock_meta(*su->sim, su->shown_name.c_str(), &su->chain, us) == StockStateError::kOk;
 }
 
 // The report's findings at their lines: its errors, warnings, gouges,
