@@ -62,7 +62,7 @@ TEST(sheet_verdict_counts_findings_by_kind) {
   const RunReport r = with_findings();
   const Verdict v = report_verdict(r);
   CHECK(!v.pass());
-  CHECK_EQ(verdict_text(v, r), std::string("3 gouges \xc2\xb7 1 collision \xc2\xb7 2 travel \xc2\xb7 5 rule findings \xc2\xb7 1 load"));
+  CHECK_EQ(verdict_text(v, r), std::string("3 gouges \xc2\xb7 1 collision \xc2\xb7 2 travel findings \xc2\xb7 5 rule findings \xc2\xb7 1 load finding"));
   const std::string page = sheet_html_text(r, SheetImages());
   CHECK(has(page, "<div class=\"verdict fail\">3 gouges \xc2\xb7 1 collision"));
   CHECK(lacks(page, "PASS"));

@@ -25,9 +25,9 @@ std::string verdict_text(const Verdict& v, const RunReport& r) {
   add(v.errors, "error", "errors");
   add(v.gouges, "gouge", "gouges");
   add(v.collisions, "collision", "collisions");
-  add(v.travel, "travel", "travel");
+  add(v.travel, "travel finding", "travel findings");
   add(v.rules, "rule finding", "rule findings");
-  add(v.load, "load", "load");
+  add(v.load, "load finding", "load findings");
   if (v.stopped)
     o += std::string(o.empty() ? "" : " \xc2\xb7 ") + "stopped (" + r.stopped_reason + ") at line " +
          std::to_string(r.stopped_line);
