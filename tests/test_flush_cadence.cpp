@@ -342,3 +342,42 @@ TEST(flush_shows_what_finish_cuts) {
   }
   CHECK(compared > 20);
 }
+
+TEST(zero_length_moves_cut_nothing) {
+  // A move of no length from where the last one ended (a post's repeated
+  // point, a dwell written as G1 to the same place) cuts nothing the moves
+  // around it do not (core/cut/mill.cpp, cut_line): with one or three of
+  // them after every move, the grid is the one of the program without them
+  // to the bit, and the cutting loop visits no more dexels; each tool
+  // shape, both modes, flushed or not.
+  std::mt19937_64 rng(4107);
+  const Setup s{-300000, -200000, 310000, 202, 152};
+  int compared = 0;
+  for (int program = 0; program < 3; ++program) {
+    const std::string text = program == 0 ? std::string(kHandProgram) : random_program(&rng, program == 2);
+    const std::vector<CanonRecord> recs = records_of(text);
+    for (int repeats : {1, 3}) {
+      std::vector<CanonRecord> padded;
+      for (const CanonRecord& r : recs) {
+        padded.push_back(r);
+        if (r.kind != CanonKind::kFeed && r.kind != CanonKind::kTraverse && r.kind != CanonKind::kArc) continue;
+        CanonRecord z = r;
+        z.kind = CanonKind::kFeed;
+        z.start = z.end = r.end;
+        for (int k = 0; k < repeats; ++k) padded.push_back(z);
+      }
+      for (int32_t number = 1; number <= 4; ++number)
+        for (CutMode mode : {CutMode::kSweep, CutMode::kStamp})
+          for (Pattern pattern : {Pattern::kNone, Pattern::kRandom}) {
+            Run<uint16_t> plain, zero;
+            run_program<uint16_t>(s, tool_number(number), mode, recs, pattern, 7, &plain);
+            run_program<uint16_t>(s, tool_number(number), mode, padded, pattern, 7, &zero);
+            CHECK(plain.top == zero.top);
+            CHECK(plain.bottom == zero.bottom);
+            CHECK_EQ(plain.stats.dexel_updates, zero.stats.dexel_updates);
+            ++compared;
+          }
+    }
+  }
+  CHECK_EQ(compared, 3 * 2 * 4 * 2 * 2);
+}

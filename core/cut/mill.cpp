@@ -107,6 +107,11 @@ void Mill<H>::cut_line(PointNm a, PointNm b) {
   // A move that continues from the last one's end need not redo the tool
   // standing at that joint (stamp: the instance; sweep: the start cap).
   const bool first = !(chained_ && a == last_);
+  // A move of no length from the last one's end sweeps only the tool
+  // standing there, which that move's end (its cap, whole or the wedge the
+  // next move leaves to it) cuts already: it cuts nothing new, so it costs
+  // nothing, and the grid is the one the program without it gives.
+  if (!first && a == b) return;
   if (have_tool_) {
     if (mode_ == CutMode::kStamp) stamp_line(grid_, cutter_, a, b, &stats_, first);
     else sweep_chain_line(grid_, sweep_, a, b, &stats_, &chain_);
