@@ -107,14 +107,29 @@ void Mill<H>::cut_line(PointNm a, PointNm b) {
   // A move that continues from the last one's end need not redo the tool
   // standing at that joint (stamp: the instance; sweep: the start cap).
   const bool first = !(chained_ && a == last_);
-  // A move of no length from the last one's end sweeps only the tool
-  // standing there, which that move's end (its cap, whole or the wedge the
-  // next move leaves to it) cuts already: it cuts nothing new, so it costs
-  // nothing, and the grid is the one the program without it gives.
-  if (!first && a == b) return;
+  // A vertical move from the last one's end that stays within the span the
+  // tool has swept at this X and Y (a peck cycle's retracts and its rapids
+  // back down, a repeated point: a move of no length) cuts nothing new: a
+  // cutter's radius never shrinks upwards, so the tool standing anywhere in
+  // that span lies inside what the moves there swept, and each dexel's cut
+  // is a min over them (core/cut/sweep.h). It costs nothing and leaves the
+  // grid as cutting it would (tests/test_flush_cadence.cpp).
+  const bool vertical = a.x_nm == b.x_nm && a.y_nm == b.y_nm;
+  const int64_t lo = min_of(a.z_nm, b.z_nm), hi = max_of(a.z_nm, b.z_nm);
+  if (!first && vertical && skip_covered_ && lo >= covered_z_lo_nm_ && hi <= covered_z_hi_nm_) {
+    last_ = b;
+    return;
+  }
   if (have_tool_) {
     if (mode_ == CutMode::kStamp) stamp_line(grid_, cutter_, a, b, &stats_, first);
     else sweep_chain_line(grid_, sweep_, a, b, &stats_, &chain_);
+  }
+  if (!first && vertical) {
+    covered_z_lo_nm_ = min_of(covered_z_lo_nm_, lo);
+    covered_z_hi_nm_ = max_of(covered_z_hi_nm_, hi);
+  } else {
+    covered_z_lo_nm_ = vertical ? lo : b.z_nm;
+    covered_z_hi_nm_ = vertical ? hi : b.z_nm;
   }
   last_ = b;
   chained_ = true;
@@ -137,6 +152,7 @@ void Mill<H>::emit(const CanonRecord& r) {
         if (have_tool_) sweep_chain_arc(grid_, sweep_, r, &stats_, &chain_);
         last_ = r.end;
         chained_ = true;
+        covered_z_lo_nm_ = covered_z_hi_nm_ = r.end.z_nm;
         break;
       }
       // Chords near the grid only; the tool tip still ends at r.end.

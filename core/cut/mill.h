@@ -83,6 +83,10 @@ class Mill : public CanonSink {
   // The tool tip after the last record.
   PointNm position() const { return last_; }
 
+  // Off: every move is cut as given, even one that cuts nothing new (the
+  // reference the tests compare the skips of cut_line with).
+  void set_skip_covered(bool on) { skip_covered_ = on; }
+
  private:
   void cut_line(PointNm a, PointNm b);
   // Puts back the dexels flush saved (and the counts), if it showed a cap.
@@ -103,6 +107,10 @@ class Mill : public CanonSink {
   int32_t failed_tool_ = -1;
   PointNm last_{0, 0, 0};
   bool chained_ = false;  // stamp: the next move starts where the last cut ended
+  // The vertical span the tool has swept at last_'s X and Y since it came
+  // there (cut_line: a vertical move within it cuts nothing new).
+  bool skip_covered_ = true;
+  int64_t covered_z_lo_nm_ = 0, covered_z_hi_nm_ = 0;
   SweepChain chain_;      // sweep: the polyline so far
   // flush: the box of dexels (exclusive bounds) saved in words_ before it
   // cut the pending cap, and what else the cut may change.
