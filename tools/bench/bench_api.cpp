@@ -28,19 +28,13 @@
 #include "display/api/dexmill.h"
 #include "platform/os/read_file.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/bench_program.h"
 #include "tools/bench/workloads.h"
 
 namespace dexmill {
 namespace {
 
 constexpr size_t kPiece = 4096;
-
-// Errors counted, not printed: a bench measures.
-class Quiet final : public GcodeMessages {
- public:
-  void error(const GcodeDiag&) override { ++errors_; }
-  void warning(const GcodeDiag&) override { ++warnings_; }
-};
 
 // paper-w3's polyline as a program.
 std::string workload_program() {
@@ -57,15 +51,9 @@ std::string workload_program() {
   return s + "M30\n";
 }
 
-struct Program {
-  std::string name, text, tool_spec;
-  SimJob job;           // the engine's job, as `dexmill run` would plan it
-  dm_job api;           // the same for the API
-  uint32_t lines = 0;
-  double scan_s = 0;    // the interpretation alone
-  bool ok = false;
-};
+using Program = BenchProgram;
 
+// The program of $DEXMILL_BENCH_PROGRAM, or paper-w3's path, planned.
 bool load(const char* bench, Program* p) {
   const char* path = std::getenv("DEXMILL_BENCH_PROGRAM");
   const char* tool = std::getenv("DEXMILL_BENCH_TOOL");
@@ -83,44 +71,7 @@ bool load(const char* bench, Program* p) {
     p->text = workload_program();
     p->name = "paper-w3-as-gcode";
   }
-  if (tool_spec_parse(p->tool_spec.c_str(), p->tool_spec.size(), &p->job.tool) != ToolSpecError::kOk) {
-    std::fprintf(stderr, "%s: bad tool '%s'\n", bench, p->tool_spec.c_str());
-    return false;
-  }
-  // The scan, timed: the stock and pitch come from it as on the command line.
-  std::unique_ptr<ProgramScan> scan;
-  std::unique_ptr<ProgramMemory> mem(new ProgramMemory());
-  std::vector<char> buf(LineReader::kStartBytes);
-  p->scan_s = bench::best_time_s([&] {
-    scan.reset(new ProgramScan(p->job));
-    ChunkInput in(buf.data(), buf.size());
-    in.feed(p->text.data(), p->text.size());
-    in.close();
-    Quiet q;
-    const double t0 = bench::now_s();
-    scan->run(&in, &q, mem.get());
-    return bench::now_s() - t0;
-  }, 0.5, 5);
-  p->lines = scan->lines;
-  const StockBox stock = default_stock(scan->summary, scan->max_radius_nm);
-  const int64_t pitch = default_pitch_nm(stock, scan->smallest_diameter_nm());
-  if (plan_grid(stock, 0, 0, pitch, &p->job.plan) != PlanError::kOk) {
-    std::fprintf(stderr, "%s: no grid for this program's stock\n", bench);
-    return false;
-  }
-  p->job.input_buffer_bytes = LineReader::kStartBytes;
-  dm_job_init(&p->api, DEXMILL_API_VERSION);
-  const PointNm* c[2] = {&stock.lo, &stock.hi};
-  for (int k = 0; k < 2; ++k) {
-    int64_t* to = k ? p->api.stock.hi_nm : p->api.stock.lo_nm;
-    to[0] = c[k]->x_nm;
-    to[1] = c[k]->y_nm;
-    to[2] = c[k]->z_nm;
-  }
-  p->api.pitch_nm = pitch;
-  p->api.tool.spec = p->tool_spec.c_str();
-  p->ok = true;
-  return true;
+  return bench_program_plan(bench, p);
 }
 
 // One run through the API with budget b; calls slice(seconds) after each
@@ -156,34 +107,6 @@ double api_run(const Program& p, const dm_budget& b, F slice) {
   return t;
 }
 
-// The same through the engine alone, a line a step.
-double engine_run(const Program& p) {
-  std::vector<uint64_t> mem(sim_required_bytes(p.job) / 8 + 1);
-  Simulation* s = sim_create(p.job, mem.data(), mem.size() * 8);
-  if (!s) return -1;
-  SimBudget b;
-  b.lines = 1;
-  size_t at = 0;
-  const double t0 = bench::now_s();
-  for (;;) {
-    const SimState st = s->step(b);
-    if (st == SimState::kNeedInput) {
-      if (at < p.text.size()) {
-        const size_t k = std::min(kPiece, p.text.size() - at);
-        s->feed(p.text.data() + at, k);
-        at += k;
-      } else {
-        s->close_input();
-      }
-    } else if (st != SimState::kReady) {
-      break;
-    }
-  }
-  const double t = bench::now_s() - t0;
-  sim_destroy(s);
-  return t;
-}
-
 void run_lines(const char* name) {
   Program p;
   if (!load(name, &p)) return;
@@ -194,7 +117,7 @@ void run_lines(const char* name) {
   const int runs = bench::single_run() ? 1 : 7;
   for (int r = 0; r < runs; ++r) {
     api = std::min(api, api_run(p, line, [](double, dm_sim*) {}));
-    engine = std::min(engine, engine_run(p));
+    engine = std::min(engine, bench_engine_run(p));
   }
   const double per = 1e9 / std::max<uint32_t>(p.lines, 1);
   bench::result(name, "program=%s lines=%u api_ns_per_line=%.0f engine_ns_per_line=%.0f api_overhead_ns_per_line=%.1f "
