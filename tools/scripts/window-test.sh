@@ -8,7 +8,8 @@
 # anti-aliased (--antialias: the live view as the still is by default).
 # Then clicks, as a person would click (xdotool): seen from the top, a click
 # on the pocket's floor must print `dexmill measure --at`'s line for it on
-# standard output (its floor's Z-3, the line that cut it), one line a click
+# standard output (its floor's Z-3, the line that cut it, the design there:
+# --design tests/run/pocket_design.stl), one line a click
 # on the part and none for a click beside it, each the very line measure
 # --at prints for the stock the run saves, and mark the place (the marker's
 # cyan in the window).
@@ -121,8 +122,8 @@ check_clicks() {
   fi
   rm -f "$tmp/final.ppm" "$tmp/window.xwd"
   DISPLAY=$disp build/glfw/dexmill run tests/run/pocket.ngc --window --exit-when-done --hold 6 --speed 50 \
-    --size 320x240 --view top --no-antialias --image "$tmp/final.ppm" --save-stock "$tmp/click.dxstock" -q \
-    >"$tmp/click.out" 2>"$tmp/run.err" &
+    --size 320x240 --view top --no-antialias --image "$tmp/final.ppm" --save-stock "$tmp/click.dxstock" \
+    --design tests/run/pocket_design.stl -q >"$tmp/click.out" 2>"$tmp/run.err" &
   dpid=$!
   for _ in $(seq 300); do [ -s "$tmp/final.ppm" ] && break; kill -0 "$dpid" 2>/dev/null || break; sleep 0.1; done
   [ -s "$tmp/final.ppm" ] || { echo "window-test: FAIL (clicks): no final image"; cat "$tmp/run.err"; exit 1; }
@@ -153,6 +154,8 @@ x, y, top, line_no = float(m[0].group(1)), float(m[0].group(2)), m[0].group(3), 
 # mill (lines 10-14 of tests/run/pocket.ngc).
 if not (2 <= x <= 8 and 2 <= y <= 18 and top == "-3.0000" and line_no and 10 <= int(line_no) <= 14):
     sys.exit("window-test: FAIL (clicks): the pocket floor click measured " + out[0])
+if "; design Z" not in out[0]:
+    sys.exit("window-test: FAIL (clicks): no design in " + out[0])
 d = open(sys.argv[2], "rb").read()
 h = struct.unpack(">25I", d[:100])
 pos, w, hh, bpl = h[0] + 12 * h[19], h[4], h[5], h[12]
@@ -167,7 +170,7 @@ PY
   # The very line measure --at prints for the stock the run saved.
   while IFS= read -r l; do
     at=$(echo "$l" | sed -n 's/^X\([-0-9.]*\) Y\([-0-9.]*\):.*/\1,\2/p')
-    m=$(build/glfw/dexmill measure "$tmp/click.dxstock" --at "$at" 2>&1)
+    m=$(build/glfw/dexmill measure "$tmp/click.dxstock" --design tests/run/pocket_design.stl --at "$at" 2>&1)
     [ "$m" = "$l" ] || { echo "window-test: FAIL (clicks): the window printed"; echo "  $l"; echo "measure --at $at prints"; echo "  $m"; exit 1; }
   done <"$tmp/click.out"
   echo "window-test: ok (clicks): each line is what dexmill measure --at prints for the saved stock"
