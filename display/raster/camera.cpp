@@ -177,6 +177,9 @@ void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32
   const int32_t* axes[3] = {b.r, b.u, b.d};
   Projector& p = v->proj;
   p = Projector{};
+  v->width = width;
+  v->height = height;
+  v->view_height_nm = 0;
   p.kind = cam.projection;
   const int64_t w16 = static_cast<int64_t>(width) * kSubpixelOne, h16 = static_cast<int64_t>(height) * kSubpixelOne;
   const int64_t one32 = static_cast<int64_t>(1) << 32;
@@ -206,6 +209,7 @@ void view_build(const Camera& cam, const SceneFrame& scene, int32_t width, int32
     }
     v->sees_below = b.d[2] < 0;
     v->eye = t;
+    v->view_height_nm = vh;
   } else {
     // Camera space in units U = R / 2^16: x = r.(P - T), y = u.(P - T),
     // w = D - d.(P - T), the distance in front of the eye.

@@ -75,7 +75,12 @@ struct View {
   PointNm origin;
   int32_t right_q30[3], up_q30[3], eye_q30[3];  // the camera basis r, u, d
   bool sees_below;  // the eye can see faces that point down (below the stock top)
-  PointNm eye;      // perspective: the eye position
+  PointNm eye;      // perspective: the eye position; orthographic: the target (the frame's centre)
+  // The frame the maps were built for, and (orthographic) the height of
+  // world it shows after view_build's zoom limit: what turns a pixel back
+  // into a ray (display/view/pick.h).
+  int32_t width = 0, height = 0;
+  int64_t view_height_nm = 0;
 };
 
 // What the camera looks at: the box that holds the stock, the table and the

@@ -177,6 +177,10 @@ void stock_view_share_frame(StockView* v, const StockView& other);
 // False (nothing drawn) when the frames or depths do not match.
 bool stock_view_blend(StockView* v, const StockView& top);
 inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
+// The view of the last draw at the frame's own size (the supersampled
+// scene's camera and scene frame at 1x): what turns a pixel of the picture
+// back into the dexel drawn there (display/view/pick.h).
+inline const View& stock_view_picture_view(const StockView& v) { return v.view_1x; }
 void stock_view_set_camera(StockView* v, const Camera& c);
 // The chosen camera fitted to the stock and the fixtures, inside the
 // picture's area (stock_view_picture_area) with a margin and, with

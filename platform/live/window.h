@@ -14,12 +14,21 @@
 
 namespace dexmill {
 
+// How far (pixels, each way) the mouse may move between a left press and
+// its release for the two to be a click rather than a drag.
+constexpr int32_t kClickSlopPx = 3;
+
 // Input since the last poll.
 struct WindowInput {
   bool quit = false;          // q, Esc, or the window closed
   bool toggle_pause = false;  // space
   int speed_steps = 0;        // + and - presses (+1 / -1 each)
   int32_t drag_dx = 0, drag_dy = 0;  // pixels the mouse moved with a button held
+  // A left click: pressed and released within kClickSlopPx of where it was
+  // pressed (a drag further than that only orbits); the pixel of frame()
+  // it was pressed at.
+  bool click = false;
+  int32_t click_x = 0, click_y = 0;
   int32_t zoom_steps = 0;     // wheel notches, > 0 towards the scene
   bool reset_view = false;    // r
   bool toggle_path = false;   // p: the toolpath over the part

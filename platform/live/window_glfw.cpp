@@ -5,6 +5,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -22,6 +23,10 @@ struct Window::Impl {
   WindowInput pending;
   bool dragging = false;
   double last_x = 0, last_y = 0;
+  // The left press that may become a click: where it was, and the farthest
+  // the mouse has gone from there since.
+  bool left_down = false;
+  double press_x = 0, press_y = 0, strayed = 0;
   std::string error;
 
   void fit_to_framebuffer() {
@@ -62,15 +67,42 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
   if (key == GLFW_KEY_KP_SUBTRACT) --in.speed_steps;
 }
 
-void on_button(GLFWwindow* w, int, int action, int) {
+// The cursor (window coordinates) as a pixel of the frame, which is
+// larger on a display that scales windows.
+void frame_pixel(GLFWwindow* w, const Window::Impl& p, double x, double y, int32_t* px, int32_t* py) {
+  int ww = 0, wh = 0;
+  glfwGetWindowSize(w, &ww, &wh);
+  const double sx = ww > 0 ? static_cast<double>(p.width) / ww : 1.0, sy = wh > 0 ? static_cast<double>(p.height) / wh : 1.0;
+  *px = static_cast<int32_t>(x * sx);
+  *py = static_cast<int32_t>(y * sy);
+}
+
+void on_button(GLFWwindow* w, int button, int action, int) {
   Window::Impl* p = impl_of(w);
   p->dragging = action == GLFW_PRESS;
   glfwGetCursorPos(w, &p->last_x, &p->last_y);
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  if (action == GLFW_PRESS) {
+    p->left_down = true;
+    p->press_x = p->last_x;
+    p->press_y = p->last_y;
+    p->strayed = 0;
+  } else if (action == GLFW_RELEASE && p->left_down) {
+    p->left_down = false;
+    if (p->strayed <= kClickSlopPx) {
+      p->pending.click = true;
+      frame_pixel(w, *p, p->press_x, p->press_y, &p->pending.click_x, &p->pending.click_y);
+    }
+  }
 }
 
 void on_cursor(GLFWwindow* w, double x, double y) {
   Window::Impl* p = impl_of(w);
   if (!p->dragging) return;
+  if (p->left_down) {
+    const double dx = x - p->press_x, dy = y - p->press_y;
+    p->strayed = std::max(p->strayed, std::max(dx < 0 ? -dx : dx, dy < 0 ? -dy : dy));
+  }
   p->pending.drag_dx += static_cast<int32_t>(x - p->last_x);
   p->pending.drag_dy += static_cast<int32_t>(y - p->last_y);
   p->last_x = x;

@@ -17,6 +17,7 @@
 #include "platform/report/report_json.h"
 #include "tools/cli/cli.h"
 #include "tools/cli/cmd_measure.h"
+#include "tools/cli/measure_text.h"
 #include "tools/cli/option_help.h"
 #include "tools/cli/option_parse.h"
 #include "tools/cli/option_values.h"
@@ -30,26 +31,16 @@ namespace {
 
 std::string mm(int64_t nm, int decimals = 4) { return measure_mm(nm, decimals); }
 
-// One answer: "X12.000 Y8.000: top Z-3.0000, bottom Z-10.0000 mm (...)".
-void print_at(const MeasuredStock& s, const MeasureAt& r, int64_t x, int64_t y) {
-  const StockMeta& m = s.meta;
-  std::string o = "X" + mm(x, 3) + " Y" + mm(y, 3) + ": ";
-  if (r.material)
-    o += "top Z" + mm(r.top_nm) + ", bottom Z" + mm(r.bottom_nm) + " mm";
-  else
-    o += "no material (cut through)";
-  o += " (the column at X" + mm(r.column_x_nm, 3) + " Y" + mm(r.column_y_nm, 3) + ", " + mm(r.distance_nm, 3) +
-       " mm away; heights within " + mm(r.height_error_nm) + " mm)";
-  if (!(m.layers & kStockLayerLine)) {
-    o += "; the stock kept no lines";
-  } else if (r.line == 0) {
-    o += "; uncut";
-  } else {
-    o += "; last cut by line " + std::to_string(r.line);
-    if ((m.layers & kStockLayerProgram) && r.program < m.nprograms) o += std::string(" of ") + m.programs[r.program].name;
-  }
-  if (s.have_design) o += "; " + measure_design_at(s, r);
-  std::printf("%s\n", o.c_str());
+// What --at reads of the stock: its grid, the layers it kept, the design.
+MeasureSource source_of(const MeasuredStock& s) {
+  MeasureSource src;
+  src.grid = &s.grid;
+  src.lines = s.line_layer();
+  src.programs = s.program_layer();
+  src.program_list = s.meta.programs;
+  src.nprograms = s.meta.nprograms;
+  src.design_top_lsb = s.design_layer();
+  return src;
 }
 
 // The outputs are none of the inputs, nor one file twice.
@@ -90,13 +81,14 @@ int cmd_measure(int argc, char** argv) {
   if (!a.job.design.empty())
     if (const int code = read_design(a.job, &s)) return code;
   const DexelGrid<height_t>& g = s.grid;
+  const MeasureSource src = source_of(s);
   for (const auto& p : a.at) {
-    const MeasureAt r = measure_at(g, s.line_layer(), s.program_layer(), p.first, p.second);
-    if (!r.on_grid)
+    std::string text;
+    if (!measure_at_text(src, p.first, p.second, &text))
       return fail(kExitUsage, "X%s Y%s is off the stock's grid (X%s..%s, Y%s..%s)", mm(p.first, 3).c_str(),
                   mm(p.second, 3).c_str(), mm(g.x0_nm, 3).c_str(), mm(g.x0_nm + (g.nx - 1) * g.pitch_nm, 3).c_str(),
                   mm(g.y0_nm, 3).c_str(), mm(g.y0_nm + (g.ny - 1) * g.pitch_nm, 3).c_str());
-    print_at(s, r, p.first, p.second);
+    std::printf("%s\n", text.c_str());
   }
   if (a.distance)
     if (const int code = measure_section(s, a.segment_nm, a.csv, a.svg)) return code;

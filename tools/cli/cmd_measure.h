@@ -61,9 +61,6 @@ std::string measure_mm(int64_t nm, int decimals = 4);
 // the exit code after saying why.
 int read_stock(const std::string& file, MeasuredStock* s);
 int read_design(const JobOptions& job, MeasuredStock* s);
-// "design Z-1.0000, cut - design -1.0000 mm (within 0.0004 mm)" at the
-// column of r, or that the design misses it.
-std::string measure_design_at(const MeasuredStock& s, const MeasureAt& r);
 
 // --distance X0,Y0,X1,Y1: the section as CSV (to csv_path, or standard
 // output when empty) and as an SVG chart (svg_path, when given).

@@ -53,20 +53,5 @@ int read_design(const JobOptions& job, MeasuredStock* s) {
   return kExitOk;
 }
 
-std::string measure_design_at(const MeasuredStock& s, const MeasureAt& r) {
-  const int32_t d = s.design.grid.top_lsb[s.grid.index(r.i, r.j)];
-  if (d == kNoDesign) return "no design there";
-  const int64_t z = s.grid.z0_nm + static_cast<int64_t>(d) * s.grid.lsb_nm;
-  std::string o = "design Z" + measure_mm(z);
-  // The design's column is rounded to an LSB (core/design/design.cpp), the
-  // cut's within one: the difference within two.
-  if (r.material)
-    o += ", cut - design " + std::string(r.top_nm >= z ? "+" : "") + measure_mm(r.top_nm - z) + " mm (within " +
-         measure_mm(2 * s.grid.lsb_nm) + " mm)";
-  else
-    o += ", cut through";
-  return o;
-}
-
 }  // namespace cli
 }  // namespace dexmill

@@ -185,6 +185,8 @@ int open_views(const RunOptions& o, Run* run) {
   in.motion_moves = s.rep.rapid + s.rep.feed + s.rep.arc;
   in.total_us = s.rep.estimated_us;
   in.top_lsb = o.job.stock_stl.empty() ? static_cast<uint32_t>(s.plan.top_lsb) : 0u;
+  in.chain = s.stock_in ? &s.stock_meta : nullptr;
+  in.program_name = s.shown_name;
   return run->views.open(o, s.sim, in);
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/math/fixed.h"
 #include "display/overlay/font.h"
+#include "display/view/pick.h"
 #include "platform/os/clock.h"
 #include "platform/live/fbdev.h"
 #include "platform/report/report_json.h"
@@ -49,6 +50,11 @@ constexpr int64_t kElevationLimitBam = 0x3fffffff;  // just under 90 degrees
 constexpr int32_t kBamPerPixel = 5965232;  // 0.5 degree: a drag across 720 pixels turns once
 
 int32_t band_scale(int32_t width) { return width >= 960 ? 2 : 1; }  // the status line fits up to 80 cells
+
+constexpr double kClickTextS = 4;  // how long a click's heights stay on the status line
+// The click's marker: cyan, apart from the gouges' red, the safety
+// findings' magenta and the partial run's amber.
+constexpr Rgb kClickMark{40, 200, 255};
 
 }  // namespace
 
@@ -117,6 +123,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
   pic.height = all.height - band_h_;
   out_.set_antialias(o.view.live_antialiased());
   if (!out_.init(g, pic, cam, err)) return kExitIo;
+  out_.add_marks(&click_mark_, kClickMark);
   base_wall_s_ = clock_now_s();
   next_frame_s_ = base_wall_s_;
   return kExitOk;
@@ -137,7 +144,9 @@ void LiveView::layout(const DexelGrid<height_t>& g) {
 bool LiveView::frame(DexelGrid<height_t>* g, const CutterPose& pose, const LiveStatus& st, bool done, bool) {
   if (before_draw_) before_draw_();
   RenderResult res = out_.draw(g, pose);
-  const ScreenRect band = status_band_draw(screen_->screen().frame(), band_h_, status_text(st, speed_milli_, paused_, done));
+  const bool clicked = !click_text_.empty() && clock_now_s() < click_until_s_;
+  const ScreenRect band = status_band_draw(screen_->screen().frame(), band_h_,
+                                           clicked ? click_text_ : status_text(st, speed_milli_, paused_, done));
   ScreenRect rects[kMaxDirtyRects + 1];
   int n = 0;
   for (int k = 0; k < res.nrects; ++k) rects[n++] = res.rects[k];
@@ -150,9 +159,39 @@ bool LiveView::frame(DexelGrid<height_t>* g, const CutterPose& pose, const LiveS
   return true;
 }
 
+bool LiveView::click(const DexelGrid<height_t>& g, int32_t x, int32_t y) {
+  if (!measure_.grid) return false;
+  // The picture is the frame's top rows, so its pixels are the screen's.
+  const PickHit h = pick_dexel(out_.picture_view(), g, x, y);
+  std::string text;
+  if (!h.hit || !measure_dexel_text(measure_, h.i, h.j, &text)) {
+    click_text_ = "no part under the cursor";
+  } else {
+    std::printf("%s\n", text.c_str());
+    std::fflush(stdout);
+    const size_t k = g.index(h.i, h.j);
+    const PointNm at{g.x0_nm + static_cast<int64_t>(h.i) * g.pitch_nm, g.y0_nm + static_cast<int64_t>(h.j) * g.pitch_nm,
+                     g.z0_nm + static_cast<int64_t>(g.top[k]) * g.lsb_nm};
+    click_mark_.assign(1, at);
+    out_.repaint();  // the old marker off
+    click_text_ = "measured X" + nm_to_mm_text(at.x_nm, 3) + " Y" + nm_to_mm_text(at.y_nm, 3) + ": top Z" +
+                  nm_to_mm_text(at.z_nm, 4) + ", bottom Z" +
+                  nm_to_mm_text(g.z0_nm + static_cast<int64_t>(g.bottom[k]) * g.lsb_nm, 4);
+    if (measure_.lines) click_text_ += measure_.lines[k] ? ", line " + std::to_string(measure_.lines[k]) : ", uncut";
+  }
+  click_until_s_ = clock_now_s() + kClickTextS;
+  return true;
+}
+
 bool LiveView::handle_input(DexelGrid<height_t>* g, double wait_s, bool* redraw) {
   const WindowInput in = screen_->poll(wait_s);
   if (in.quit) return false;
+  if (!click_text_.empty() && clock_now_s() >= click_until_s_) {
+    click_text_.clear();  // the status line back
+    *redraw = true;
+  }
+  // Before any orbit: the pixel is of the picture as it is on the screen.
+  if (in.click && click(*g, in.click_x, in.click_y)) *redraw = true;
   if (in.resized) {
     layout(*g);
     *redraw = true;

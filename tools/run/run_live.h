@@ -5,7 +5,10 @@
 // picture: program line, X Y Z, feed, tool, simulated time.
 //
 // The window also takes input: drag orbits, the wheel zooms, space pauses,
-// + and - double or halve the speed, r resets the view, q or Esc quits.
+// + and - double or halve the speed, r resets the view, q or Esc quits, and
+// a left click (no drag) on the part measures it there: the line
+// `dexmill measure --at` would print for that column on standard output, a
+// marker on the place and the heights on the status line for a while.
 #ifndef DEXMILL_TOOLS_RUN_RUN_LIVE_H
 #define DEXMILL_TOOLS_RUN_RUN_LIVE_H
 
@@ -13,10 +16,12 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "display/surface/render.h"
+#include "tools/cli/measure_text.h"
 #include "tools/run/run_options.h"
 #include "tools/run/run_render.h"
 
@@ -62,6 +67,9 @@ class LiveView {
   // Runs before every frame is drawn: completes the cut so far (the Mill
   // defers a move's end cap) and passes its dirty rectangle on.
   void set_before_draw(std::function<void()> f) { before_draw_ = std::move(f); }
+  // What a click measures (its grid the one drawn; the layers and the
+  // design as the run keeps them). Without it clicks are ignored.
+  void set_measure(const MeasureSource& s) { measure_ = s; }
 
   // Called after every interpreted line, with the simulated time so far:
   // draws and presents a frame when the pacing says so, handles input
@@ -82,6 +90,9 @@ class LiveView {
   // Polls input for up to wait_s seconds; false when the user quit.
   bool handle_input(DexelGrid<height_t>* g, double wait_s, bool* redraw);
   void layout(const DexelGrid<height_t>& g);
+  // A click at pixel (x, y) of the screen: measured and marked, or said to
+  // miss. True when the picture changes (the marker, the status line).
+  bool click(const DexelGrid<height_t>& g, int32_t x, int32_t y);
 
   std::unique_ptr<LiveScreen> screen_;
   RenderOutput out_;
@@ -97,6 +108,10 @@ class LiveView {
   bool failed_ = false;
   std::string error_;
   int32_t band_h_ = 0;
+  MeasureSource measure_;
+  std::vector<PointNm> click_mark_;  // the last click's place (one point, or none)
+  std::string click_text_;           // shown on the status line until click_until_s_
+  double click_until_s_ = 0;
 };
 
 }  // namespace cli

@@ -21,9 +21,10 @@ const CommandText kRunText = {
     "FILEs are cut in order on one stock (dexmill run A.nc --setup flip-x B.nc): the\n"
     "outputs are the last one's.\n",
     "Window keys: drag orbits, wheel zooms, space pauses, + and - change speed, p shows\n"
-    "the toolpath, r resets the view, q quits. Exit status: 0 ok, 1 input errors (the cut\n"
-    "goes up to the first), 2 usage, 3 I/O, 4 a check asked for failed (--stop-at,\n"
-    "--fail-on-gouge, --fail-on-collision).\n",
+    "the toolpath, r resets the view, q quits; a click on the part prints measure --at's\n"
+    "line for it. Exit status: 0 ok, 1 input errors (the cut goes up to the first), 2\n"
+    "usage, 3 I/O, 4 a check asked for failed (--stop-at, --fail-on-gouge,\n"
+    "--fail-on-collision).\n",
 };
 
 JobOptions& job_part(RunOptions& o) { return o.job; }

@@ -90,6 +90,11 @@ class RenderOutput {
   bool blend(const RenderOutput& top) { return stock_view_blend(v_.get(), *top.v_); }
   Camera camera() const;
   void set_camera(const Camera& c);
+  // The view the last frame was drawn with, at the picture's size (for
+  // picking what a pixel shows).
+  const View& picture_view() const { return stock_view_picture_view(*v_); }
+  // Has the next draw repaint the whole picture (a mark moved off a place).
+  void repaint() { renderer_invalidate(&v_->r, ScreenRect{0, 0, v_->r.fb.width, v_->r.fb.height}); }
   // The chosen camera fitted to the stock (what `r` resets the window to).
   Camera initial_camera() const;
 

@@ -361,6 +361,8 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
     j.provenance = true;
     j.provenance_lines = j.provenance_programs = true;
   }
+  // A click in the window says which line last cut the column clicked.
+  if (o.view.window) j.provenance = j.provenance_lines = true;
   j.probe_tip_nm = o.job.probe_tip_nm;
   j.stop_at_gouge = o.job.stop_at_gouge;
   j.stop_at_collision = o.job.stop_at_collision;

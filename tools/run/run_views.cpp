@@ -60,6 +60,30 @@ void RunViews::set_colours(const RunOptions& o, const Inputs& in) {
       }
 }
 
+namespace {
+
+// What a click in the live window measures: the engine's grid, the lines
+// (and programs: the chain's, then this one) the run keeps (a window's run
+// keeps the lines: tools/run/run_setup.cpp), the design when given.
+MeasureSource live_measure(Simulation* sim, const RunViews::Inputs& in, std::vector<StockProgram>* programs) {
+  MeasureSource m;
+  m.grid = &sim->grid();
+  const StockColumns c = sim->stock_columns(kStockLayerLine | kStockLayerProgram);
+  m.lines = c.line;
+  m.programs = c.program;
+  programs->clear();
+  for (int32_t k = 0; in.chain && k < in.chain->nprograms; ++k) programs->push_back(in.chain->programs[k]);
+  programs->push_back(StockProgram{});
+  stock_name_set(programs->back().name, in.program_name.c_str());
+  m.program_list = programs->data();
+  m.nprograms = static_cast<int32_t>(programs->size());
+  m.no_lines = "the run keeps no lines";
+  if (in.design) m.design_top_lsb = in.design->grid.top_lsb;
+  return m;
+}
+
+}  // namespace
+
 int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
   sim_ = sim;
   in_ = in;
@@ -76,6 +100,7 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
   if (is_live_) {
     const int code = live_.open(o, grid, cam_, in.total_us, &err);
     if (code != kExitOk) return fail(code, "%s", err.c_str());
+    live_.set_measure(live_measure(sim, in, &chain_programs_));
     outputs_.push_back(live_.output());
   }
   if (!o.out.frames_dir.empty()) {

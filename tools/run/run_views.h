@@ -39,6 +39,8 @@ class RunViews final : public SimObserver {
     uint64_t motion_moves = 0;             // the program's, for the frames' default cadence
     int64_t total_us = 0;                  // its time, for a live view's pace
     uint32_t top_lsb = 0;                  // the block's top (an STL blank's: 0), for textured tops
+    const StockMeta* chain = nullptr;      // a --stock's header: the chain's earlier programs (null: none)
+    std::string program_name;              // this program as a saved stock names it
   };
   RunViews() = default;
   RunViews(const RunViews&) = delete;
@@ -100,6 +102,7 @@ class RunViews final : public SimObserver {
   bool count_path_ = false;
   uint32_t path_done_ = 0;   // the backplot's pieces cut so far
   std::vector<PointNm> error_mark_, stop_mark_;
+  std::vector<StockProgram> chain_programs_;  // the chain's programs and this one, for a click's measurement
 };
 
 }  // namespace cli

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build and the tests need, if missing.
 #   tools/scripts/install-deps.sh            compilers for `make test` (g++, clang)
-#   tools/scripts/install-deps.sh window     + GLFW and Xvfb for the window test
+#   tools/scripts/install-deps.sh window     + GLFW, Xvfb and xdotool for the window test
 #   tools/scripts/install-deps.sh cross      + cross compilers, qemu, Cortex-M toolchain
 #   tools/scripts/install-deps.sh oracle     + LinuxCNC's stand-alone interpreter rs274 (oracle-check.sh --rs274)
 #   tools/scripts/install-deps.sh browser    + Chromium and its fonts for the sheet's browser test (sheet-test.sh)
@@ -10,7 +10,7 @@ set -eu
 pkgs="g++ clang make"
 for extra in "$@"; do
   case $extra in
-    window) pkgs="$pkgs libglfw3-dev pkg-config xvfb x11-apps imagemagick";;
+    window) pkgs="$pkgs libglfw3-dev pkg-config xvfb x11-apps xdotool imagemagick";;
     cross) pkgs="$pkgs g++-12-multilib g++-arm-linux-gnueabihf g++-aarch64-linux-gnu g++-powerpc-linux-gnu
                  g++-s390x-linux-gnu g++-mips-linux-gnu qemu-user gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib
                  libnewlib-arm-none-eabi qemu-system-arm";;

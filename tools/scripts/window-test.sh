@@ -6,10 +6,18 @@
 # final frame that the run wrote with --image: once aliased (--no-antialias,
 # the live view's default and the still's with that flag) and once
 # anti-aliased (--antialias: the live view as the still is by default).
+# Then clicks, as a person would click (xdotool): seen from the top, a click
+# on the pocket's floor must print `dexmill measure --at`'s line for it on
+# standard output (its floor's Z-3, the line that cut it, the design there:
+# --design tests/run/pocket_design.stl), one line a click
+# on the part and none for a click beside it, each the very line measure
+# --at prints for the stock the run saves, and mark the place (the marker's
+# cyan in the window).
 #
 #   tools/scripts/window-test.sh            builds build/glfw/dexmill if needed
-# Skips (exit 0, with a message) when Xvfb, xwd or GLFW is not installed:
-# tools/scripts/install-deps.sh window installs them.
+# Skips (exit 0, with a message) when Xvfb, xwd or GLFW is not installed,
+# and the clicks alone when xdotool is not: tools/scripts/install-deps.sh
+# window installs them.
 set -u
 cd "$(dirname "$0")/../.."
 skip() { echo "window-test: skipped: $*"; exit 0; }
@@ -103,3 +111,69 @@ PY
 
 check_window --no-antialias
 check_window --antialias
+
+# Clicks on the finished part, seen from the top (the pocket's left side
+# lies left of the picture's centre), and one on the background; each part
+# click's line must be measure --at's.
+check_clicks() {
+  if ! command -v xdotool >/dev/null; then
+    echo "window-test: skipped: the clicks: xdotool is not installed (tools/scripts/install-deps.sh window)"
+    return 0
+  fi
+  rm -f "$tmp/final.ppm" "$tmp/window.xwd"
+  DISPLAY=$disp build/glfw/dexmill run tests/run/pocket.ngc --window --exit-when-done --hold 6 --speed 50 \
+    --size 320x240 --view top --no-antialias --image "$tmp/final.ppm" --save-stock "$tmp/click.dxstock" \
+    --design tests/run/pocket_design.stl -q >"$tmp/click.out" 2>"$tmp/run.err" &
+  dpid=$!
+  for _ in $(seq 300); do [ -s "$tmp/final.ppm" ] && break; kill -0 "$dpid" 2>/dev/null || break; sleep 0.1; done
+  [ -s "$tmp/final.ppm" ] || { echo "window-test: FAIL (clicks): no final image"; cat "$tmp/run.err"; exit 1; }
+  sleep 0.5
+  wid=$(DISPLAY=$disp xdotool search --name '^dexmill$' | head -1)
+  [ -n "$wid" ] || { echo "window-test: FAIL (clicks): xdotool found no dexmill window"; exit 1; }
+  # The pocket's floor, the picture's centre, the background's corner.
+  for p in "80 120" "160 120" "4 4"; do
+    set -- $p
+    DISPLAY=$disp xdotool mousemove --window "$wid" "$1" "$2" click 1
+    sleep 0.4
+  done
+  xwd -display "$disp" -name dexmill -silent -out "$tmp/window.xwd" || { echo "window-test: FAIL (clicks): xwd could not capture the window"; exit 1; }
+  wait "$dpid"; rc=$?; dpid=
+  [ "$rc" = 0 ] || { echo "window-test: FAIL (clicks): dexmill exited $rc"; cat "$tmp/run.err"; exit 1; }
+  python3 - "$tmp/click.out" "$tmp/window.xwd" <<'PY' || exit 1
+import re, struct, sys
+out = open(sys.argv[1]).read().splitlines()
+if len(out) != 2:
+    sys.exit("window-test: FAIL (clicks): %d lines on standard output for two clicks on the part and one beside it:\n%s" % (len(out), "\n".join(out)))
+line = re.compile(r"^X(-?[0-9.]+) Y(-?[0-9.]+): top Z(-?[0-9.]+), bottom Z(-?[0-9.]+) mm \(the column at X\1 Y\2, 0\.000 mm away; heights within [0-9.]+ mm\); (last cut by line ([0-9]+)( of .+)?|uncut)$")
+m = [line.match(l) for l in out]
+for l, k in zip(out, m):
+    if not k:
+        sys.exit("window-test: FAIL (clicks): not measure --at's line: " + l)
+x, y, top, line_no = float(m[0].group(1)), float(m[0].group(2)), m[0].group(3), m[0].group(6)
+# The pocket's left side: G1 passes along X5 at Z-3 with a 6 mm flat end
+# mill (lines 10-14 of tests/run/pocket.ngc).
+if not (2 <= x <= 8 and 2 <= y <= 18 and top == "-3.0000" and line_no and 10 <= int(line_no) <= 14):
+    sys.exit("window-test: FAIL (clicks): the pocket floor click measured " + out[0])
+if "; design Z" not in out[0]:
+    sys.exit("window-test: FAIL (clicks): no design in " + out[0])
+d = open(sys.argv[2], "rb").read()
+h = struct.unpack(">25I", d[:100])
+pos, w, hh, bpl = h[0] + 12 * h[19], h[4], h[5], h[12]
+cyan = sum(1 for yy in range(hh) for xx in range(w)
+           if struct.unpack("<I", d[pos + yy * bpl + 4 * xx: pos + yy * bpl + 4 * xx + 4])[0] & 0xffffff == 0x28c8ff)
+if cyan == 0:
+    sys.exit("window-test: FAIL (clicks): no marker (cyan) in the window after the clicks")
+print("window-test: ok (clicks): " + out[0])
+print("window-test: ok (clicks): " + out[1])
+print("window-test: ok (clicks): one line a click on the part, none beside it; the marker shows (%d px)" % cyan)
+PY
+  # The very line measure --at prints for the stock the run saved.
+  while IFS= read -r l; do
+    at=$(echo "$l" | sed -n 's/^X\([-0-9.]*\) Y\([-0-9.]*\):.*/\1,\2/p')
+    m=$(build/glfw/dexmill measure "$tmp/click.dxstock" --design tests/run/pocket_design.stl --at "$at" 2>&1)
+    [ "$m" = "$l" ] || { echo "window-test: FAIL (clicks): the window printed"; echo "  $l"; echo "measure --at $at prints"; echo "  $m"; exit 1; }
+  done <"$tmp/click.out"
+  echo "window-test: ok (clicks): each line is what dexmill measure --at prints for the saved stock"
+}
+
+check_clicks
