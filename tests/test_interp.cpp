@@ -150,12 +150,59 @@ TEST(interp_r_arc_centres) {
   CHECK_EQ(rec.records[4].arc.plane, Plane::kZX);
 }
 
+// F on the line that changes the units: RS274/NGC sets F (its step 3)
+// before the units (step 12), so LinuxCNC reads it in the units before the
+// line (rs274 on "G20 F6": SET_FEED_RATE(6.0000), then
+// USE_LENGTH_UNITS(CANON_UNITS_INCHES); its sim moves at 6 mm/min), warned
+// of; grbl (feed_in_line_units) reads the line's units. No warning where the
+// line sets no new units, sets the ones in force, or F is per revolution.
+TEST(interp_feed_on_a_units_line) {
+  struct Case {
+    const char* program;
+    bool line_units;
+    int64_t feed_nm_per_min;
+    uint32_t warn_line;  // 0: no warning
+    uint16_t warn_col;
+  };
+  const Case cases[] = {
+      {"G20 F6\nG1 X1", false, mm(6), 1, 5},        // the CAMotics vcarve.ngc opening
+      {"G20 F6\nG1 X1", true, 6 * 25400000, 0, 0},  // grbl's reading
+      {"G20\nF6\nG1 X1", false, 6 * 25400000, 0, 0},  // F after the units line: inch
+      {"G21 F100 G1 X1", false, mm(100), 0, 0},      // mm already: no change
+      {"G20\nG20 F6 G1 X1", false, 6 * 25400000, 0, 0},
+      {"G20\nG1 G21 X1 F100", false, INT64_C(100) * 25400000, 2, 11},  // the other way: 100 in/min
+      {"G20 F6\nG21\nG1 X1", false, mm(6), 1, 5},  // a later units change keeps the feed
+      {"G21 S1000 M3\nG20 G95 F0.002\nG1 X1", false, 50800 * 1000, 0, 0},
+  };
+  for (const Case& c : cases) {
+    t::Recorder rec;
+    t::Warnings w;
+    InterpOptions opt;
+    opt.warnings = &w;
+    opt.feed_in_line_units = c.line_units;
+    GcodeDiag d;
+    CHECK_EQ(run(c.program, &rec, &d, opt), GcodeError::kOk);
+    CHECK_EQ(rec.records.back().feed_nm_per_min, c.feed_nm_per_min);
+    std::vector<GcodeDiag> seen;
+    for (const GcodeDiag& g : w.list)
+      if (g.code == GcodeError::kWarnFeedBeforeUnits) seen.push_back(g);
+    CHECK_EQ(seen.size(), c.warn_line ? 1u : 0u);
+    if (!seen.empty()) {
+      CHECK_EQ(seen[0].line, c.warn_line);
+      CHECK_EQ(seen[0].col, c.warn_col);
+    }
+  }
+}
+
 TEST(interp_inverse_time_and_units) {
   t::Recorder rec;
   GcodeDiag d;
   CHECK_EQ(run("G21 G93\nG1 X10 F2\nG20 G94 G1 X1 F10", &rec, &d), GcodeError::kOk);
   CHECK_EQ(rec.records[0].feed_nm_per_min, mm(20));  // 10 mm in 1/2 minute
-  CHECK_EQ(rec.records[1].feed_nm_per_min, 254000000);
+  // F10 on the line that says G20 is read in mm, the units before it
+  // (RS274/NGC sets F before the units; LinuxCNC's rs274 prints
+  // SET_FEED_RATE(10) before USE_LENGTH_UNITS(INCHES) and moves at 10 mm/min).
+  CHECK_EQ(rec.records[1].feed_nm_per_min, mm(10));
   CHECK(rec.records[1].end == (PointNm{25400000, 0, 0}));
   CHECK_EQ(run("G21 G93\nG1 X10 F2\nG1 X20", &rec, &d), GcodeError::kInverseTimeNoF);
   InterpOptions inch;

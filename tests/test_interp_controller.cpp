@@ -94,7 +94,7 @@ TEST(controller_fast_feeds_and_speeds) {
   CHECK_EQ(w.list.size(), 2u);
   // No warning at 1e6 itself, nor in inch up to 1e6 mm/min.
   t::Warnings w2;
-  CHECK_EQ(run("G21 F1000000 S1000000 M3\nG1 X1\nG20 F39000\nG1 X1", &rec, &d, &w2), GcodeError::kOk);
+  CHECK_EQ(run("G21 F1000000 S1000000 M3\nG1 X1\nG20\nF39000\nG1 X1", &rec, &d, &w2), GcodeError::kOk);
   CHECK_EQ(w2.list.size(), 0u);
   // The time estimate counts a feed at most at 1e6 mm/min: 20 mm at 2e6
   // take as long as at 1e6, 1.2 ms.

@@ -107,6 +107,16 @@ TEST(run_machine_grbl_travel_and_offsets) {
   const std::string rep = slurp(tmp_dir() + "/grbl.json");
   CHECK(has(rep, "\"kind\": \"grbl\", \"travel_mm\": {\"x\": [-300.000, 0.000], \"y\": [-200.000, 0.000], \"z\": [-80.000, 0.000]}"));
   CHECK(has(rep, "work offsets"));
+  // grbl reads F on a G20 line in inches (LinuxCNC in the units before the
+  // line, warned of: core/interp/interp_modes.cpp): no warning with the dump.
+  write_tmp("inch.ngc", "G20 F6\nG0 X0.2 Y0.2 Z0.2\nG1 Z-0.02\nG1 X1\nM30\n");
+  const char* warned = "inch.ngc:1:5: warning: F on the line that changes the units is read in the units before it";
+  r = run("%/inch.ngc -q --machine %/grbl.txt --tool flat:3 --stock 0,0,-10,30,30,0");
+  CHECK_EQ(r.code, 0);
+  CHECK(lacks(r.err, "F on the line"));
+  r = run("%/inch.ngc -q --tool flat:3 --stock 0,0,-10,30,30,0");
+  CHECK_EQ(r.code, 0);
+  CHECK(has(r.err, warned));
 }
 
 TEST(run_machine_start_state_from_the_controller) {

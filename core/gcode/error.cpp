@@ -212,6 +212,10 @@ const char* gcode_error_template(GcodeError e) {
     case GcodeError::kWarnUnitsLookInch:
       return "the program never sets its units and its numbers look like inches, not mm: its moves span at most "
              "{a} across and its feeds reach {b} a minute; if it is in inches, give --units inch";
+    case GcodeError::kWarnFeedBeforeUnits:
+      return "{w} on the line that changes the units is read in the units before it, as RS274/NGC orders a line "
+             "(F, then G20/G21) and LinuxCNC moves: {a} mm/min (grbl reads the line's units); put G20/G21 on a line "
+             "before it";
     case GcodeError::kWarnCompNoTable:
       return "{w}: no tool table (--tools), so the tool radius is 0: the path is not compensated";
     case GcodeError::kWarnManualRetract:

@@ -152,6 +152,7 @@ enum class GcodeError : uint16_t {
   kWarnContextRest = 160,
   kWarnUnitsNotSet = 161,
   kWarnUnitsLookInch = 162,
+  kWarnFeedBeforeUnits = 163,
   // -- o-word control flow (200..229; errors, though after the warnings:
   // the ranges above were full)
   kOwordBadLabel = 200,

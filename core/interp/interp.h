@@ -84,6 +84,10 @@ struct InterpOptions {
   // that move, and again at the end when it never sets them, the default
   // is mm and its numbers look like inches (core/interp/units_guess.h).
   bool units_given = false;
+  // F on a line that also says G20/G21 is read in the line's units, as
+  // grbl reads it; otherwise in the units before the line, as RS274/NGC and
+  // LinuxCNC do (core/interp/interp_modes.cpp), with a warning.
+  bool feed_in_line_units = false;
   const ToolTable* tools = nullptr;   // for G43 H; null: lengths are 0
   GcodeDiagSink* warnings = nullptr;  // null: warnings are dropped
   // Parameters and expressions: caller memory (about 57 KB,

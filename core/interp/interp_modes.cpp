@@ -28,7 +28,17 @@ GcodeError BlockRunner::run_modes() {
     if (nx.inverse_time) {
       plan.inverse_f = f;
     } else {
-      nx.feed_nm_per_min = decimal_to_nm(f, nx.inch);
+      // RS274/NGC's order of execution sets F (step 3) before the length
+      // units (step 12): a G94 F on the line that says G20 or G21 is read in
+      // the units before the line, and LinuxCNC moves at that (its canon
+      // converts F when it gets it and not at a later units change). grbl
+      // reads the line's units (InterpOptions::feed_in_line_units). A G95
+      // feed per revolution is read in the line's units, as before.
+      const bool changes = nx.inch != cur.inch;
+      const bool line_units = nx.per_rev || in.options_.feed_in_line_units;
+      nx.feed_nm_per_min = decimal_to_nm(f, line_units ? nx.inch : cur.inch);
+      if (changes && !line_units)
+        warn_once(kOnceFeedBeforeUnits, GcodeError::kWarnFeedBeforeUnits, b.col_of('F'), "F", nx.feed_nm_per_min);
       if (!nx.per_rev && nx.feed_nm_per_min > kFastFeedNmPerMin) warn_once(kOnceFastFeed, GcodeError::kWarnFastFeed, b.col_of('F'), "F");
     }
   }

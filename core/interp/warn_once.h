@@ -19,6 +19,7 @@ enum WarnOnce : uint16_t {
   kOnceDiameter = 1 << 6,
   kOnceCompNoTable = 1 << 7,
   kOnceG49H = 1 << 8,
+  kOnceFeedBeforeUnits = 1 << 9,
 };
 
 }  // namespace interp_detail

@@ -81,6 +81,7 @@ struct SimJob {
   // Reading the program (core/interp/interp.h InterpOptions).
   bool inch = false;                    // units before any G20/G21
   bool units_given = false;             // the caller chose them: no warning for a program that sets none
+  bool feed_in_line_units = false;      // F on a G20/G21 line in that line's units, as grbl (InterpOptions)
   int64_t default_feed_nm_per_min = 0;  // a controller's feed for moves with none in force (0: an error)
   uint64_t max_blocks = kDefaultMaxBlocks;
   GcodeDiagSink* warnings = nullptr;    // the interpreter's warnings as they come (the simulation also counts them)

@@ -21,6 +21,7 @@ InterpOptions sim_interp_options(const SimJob& job, const ToolTable* fallback, P
   InterpOptions o;
   o.inch = job.inch;
   o.units_given = job.units_given;
+  o.feed_in_line_units = job.feed_in_line_units;
   o.tools = job.offsets ? job.offsets : fallback;
   o.warnings = job.warnings;
   o.messages = job.notes;

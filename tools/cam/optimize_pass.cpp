@@ -95,6 +95,7 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
   const std::unique_ptr<GcodeMemory> memory = gcode_memory();
   InterpOptions opt;
   opt.inch = in.inch;
+  opt.feed_in_line_units = in.feed_in_line_units;
   opt.default_feed_nm_per_min = in.default_feed_nm_per_min;
   opt.tools = in.tools;  // warnings were printed by the cut's reading
   memory->attach(&opt);
@@ -149,7 +150,9 @@ int optimize_pass(const OptimizeInput& in, OptimizeResult* out) {
       fl.limit_nm_per_min = min_of(fl.limit_nm_per_min, (*in.targets)[line]);
     }
     fl.feed_after_nm_per_min = st.feed_nm_per_min;
-    fl.inch = st.inch;
+    // An F word on a line that changes the units is read in the units
+    // before it (core/interp/interp_modes.cpp), a G95 or grbl's in the line's.
+    fl.inch = st.per_rev || in.feed_in_line_units ? st.inch : state_before.inch;
     GcodeBlock b;
     GcodeLineKind kind;
     const bool block = gcode_read_block(text, len, line, &b, &kind, &diag) == GcodeError::kOk && kind == GcodeLineKind::kBlock;

@@ -24,6 +24,7 @@ struct OptimizeInput {
   std::string read_path;                     // the program as the cut read it
   std::string shown_name;                    // its name in messages
   bool inch = false;                         // --units inch
+  bool feed_in_line_units = false;           // a grbl machine's reading of F on a G20/G21 line
   int64_t default_feed_nm_per_min = 0;       // --default-feed, as the cut had it
   const ToolTable* tools = nullptr;          // --tools (or --tool), for G43 H and G41 D as the cut had it
   const std::vector<int64_t>* limits = nullptr;  // per line, from the cut (RunResult::line_feed_limits, tools/run/run_job.h)

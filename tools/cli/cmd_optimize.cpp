@@ -361,6 +361,7 @@ int cmd_optimize(int argc, char** argv) {
   in.read_path = input.read_path();
   in.shown_name = shown;
   in.inch = o.job.read.inch;
+  in.feed_in_line_units = o.job.read.feed_in_line_units;
   in.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
   {  // the first line's end says the program's
     const auto nl = std::find(bytes.begin(), bytes.end(), static_cast<unsigned char>('\n'));

@@ -100,6 +100,7 @@ int ReadSetup::load_tools(const ReadOptions& o, const std::string& program) {
 void ReadSetup::apply(const ReadOptions& o, InterpOptions* opt, GcodeFile* file) {
   opt->inch = o.inch;
   opt->units_given = o.units_given;
+  opt->feed_in_line_units = o.feed_in_line_units;
   opt->default_feed_nm_per_min = o.default_feed_nm_per_min;
   opt->max_blocks = o.max_blocks;
   memory->attach(opt);

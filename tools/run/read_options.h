@@ -23,6 +23,7 @@ namespace cli {
 struct ReadOptions {
   bool inch = false;                      // --units inch: units before any G20/G21
   bool units_given = false;               // --units was given: no warning for a program that sets none
+  bool feed_in_line_units = false;        // a grbl --machine: F on a G20/G21 line in its units (InterpOptions)
   // --tool-units: the tool table's units (kProgram: the rule of
   // core/sim/tool_units.h, the program's when it sets them before its first T)
   enum class ToolUnits : uint8_t { kProgram, kMm, kInch } tool_units = ToolUnits::kProgram;

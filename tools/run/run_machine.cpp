@@ -66,6 +66,9 @@ int run_machine_load(RunOptions* o, RunMachine* m) {
       }
     said("subroutine path " + m->file.subroutine_path, use);
   }
+  // grbl reads an F on a G20/G21 line in that line's units; LinuxCNC in
+  // the units before it (core/interp/interp_modes.cpp).
+  if (s.kind == MachineKind::kGrbl) j.read.feed_in_line_units = true;
   if (s.kind == MachineKind::kLinuxcnc) {  // the units a program starts in (grbl's $13 only reports)
     const bool use = !j.read.units_given;
     if (use) j.read.inch = s.inch, j.read.units_given = true;

@@ -120,6 +120,7 @@ int load_tools(const RunOptions& o, RunSetup* run) {
   j.offsets = run->choice.get();
   j.inch = o.job.read.inch;
   j.units_given = o.job.read.units_given;
+  j.feed_in_line_units = o.job.read.feed_in_line_units;
   j.default_feed_nm_per_min = o.job.read.default_feed_nm_per_min;
   j.max_blocks = o.job.read.max_blocks;
   j.time.rapid_nm_per_min = o.job.rapid_nm_per_min;
