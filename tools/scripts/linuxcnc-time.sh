@@ -244,6 +244,14 @@ addf lcnc-time-moving servo-thread
 addf lcnc-time-total servo-thread
 EOF
 
+# LinuxCNC refuses a file that ends without M2, M30 or a closing %
+# ("File ended with no percent sign or program end"), which other
+# controllers' programs often do: it runs a copy with an M2 after the last
+# line (nothing after a program end or a closing % is read, so a program
+# that has one runs unchanged).
+ext=${program##*/}; case $ext in *.*) ext=.${ext##*.};; *) ext=;; esac
+{ cat "$program"; printf '\nM2\n'; } >"$tmp/program$ext"
+program=$tmp/program$ext
 export LCNC_TIME_PROGRAM=$program LCNC_TIME_OUT=$tmp/result
 # uspace's rtapi_app refuses to run as root without a fallback user to
 # drop to (RTAPI_UID); nobody's will do for a simulator.
