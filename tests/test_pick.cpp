@@ -159,6 +159,20 @@ Views views(const BoxNm& stock) {
   return v;
 }
 
+// Calls f(name, view, oracle) for each of views()'s cameras fitted to g,
+// the view built at kW x kH as the renderer builds it.
+template <class F>
+void for_each_view(const DexelGrid<uint16_t>& g, F f) {
+  BoxNm stock;
+  const SceneFrame scene = scene_of(g, &stock);
+  const Views vs = views(stock);
+  for (int c = 0; c < 4; ++c) {
+    View v;
+    view_build(vs.cam[c], scene, kW, kH, &v);
+    f(vs.name[c], v, Oracle(vs.cam[c]));
+  }
+}
+
 int32_t cheb(int32_t ai, int32_t aj, int32_t bi, int32_t bj) {
   return std::max(std::abs(ai - bi), std::abs(aj - bj));
 }
@@ -171,13 +185,7 @@ int32_t cheb(int32_t ai, int32_t aj, int32_t bi, int32_t bj) {
 TEST(pick_dexel_centres_come_back) {
   Plate plate;
   const DexelGrid<uint16_t>& g = plate.tg.g;
-  BoxNm stock;
-  const SceneFrame scene = scene_of(g, &stock);
-  const Views vs = views(stock);
-  for (int c = 0; c < 4; ++c) {
-    View v;
-    view_build(vs.cam[c], scene, kW, kH, &v);
-    const Oracle o(vs.cam[c]);
+  for_each_view(g, [&](const char* name, const View& v, const Oracle& o) {
     int seen = 0, exact = 0;
     for (int32_t j = 0; j < g.ny; ++j) {
       for (int32_t i = 0; i < g.nx; ++i) {
@@ -193,18 +201,18 @@ TEST(pick_dexel_centres_come_back) {
         ++seen;
         const PickHit h = pick_dexel(v, g, px, py);
         if (!CHECK(h.hit)) {
-          std::printf("  %s: dexel (%d, %d) at pixel (%d, %d): no hit\n", vs.name[c], i, j, px, py);
+          std::printf("  %s: dexel (%d, %d) at pixel (%d, %d): no hit\n", name, i, j, px, py);
           continue;
         }
         if (!CHECK(cheb(h.i, h.j, i, j) <= 1))
-          std::printf("  %s: dexel (%d, %d) at pixel (%d, %d): picked (%d, %d)\n", vs.name[c], i, j, px, py, h.i, h.j);
+          std::printf("  %s: dexel (%d, %d) at pixel (%d, %d): picked (%d, %d)\n", name, i, j, px, py, h.i, h.j);
         exact += h.i == i && h.j == j;
       }
     }
     // Most of the plate faces the camera, and most centres come back exact.
     CHECK(seen > g.nx * g.ny / 3);
     CHECK(exact * 10 > seen * 7);
-  }
+  });
 }
 
 // Every fourth pixel of each view: the pick and the oracle's ray cast agree
@@ -212,13 +220,7 @@ TEST(pick_dexel_centres_come_back) {
 TEST(pick_agrees_with_ray_cast_hits_and_misses) {
   Plate plate;
   const DexelGrid<uint16_t>& g = plate.tg.g;
-  BoxNm stock;
-  const SceneFrame scene = scene_of(g, &stock);
-  const Views vs = views(stock);
-  for (int c = 0; c < 4; ++c) {
-    View v;
-    view_build(vs.cam[c], scene, kW, kH, &v);
-    const Oracle o(vs.cam[c]);
+  for_each_view(g, [&](const char* name, const View& v, const Oracle& o) {
     int hits = 0, misses = 0, differ = 0;
     for (int32_t py = 0; py < kH; py += 4) {
       for (int32_t px = 0; px < kW; px += 4) {
@@ -227,7 +229,7 @@ TEST(pick_agrees_with_ray_cast_hits_and_misses) {
         const PickHit h = pick_dexel(v, g, px, py);
         if (h.hit != want || (want && cheb(h.i, h.j, oi, oj) > 1)) {
           ++differ;
-          std::printf("  %s: pixel (%d, %d): oracle %d (%d, %d), pick %d (%d, %d)\n", vs.name[c], px, py, want, oi, oj,
+          std::printf("  %s: pixel (%d, %d): oracle %d (%d, %d), pick %d (%d, %d)\n", name, px, py, want, oi, oj,
                       h.hit, h.i, h.j);
         }
         (want ? hits : misses) += 1;
@@ -241,7 +243,7 @@ TEST(pick_agrees_with_ray_cast_hits_and_misses) {
     CHECK(!pick_dexel(v, g, kW - 1, kH - 1).hit);
     CHECK(!pick_dexel(v, g, -1, kH / 2).hit);
     CHECK(!pick_dexel(v, g, kW / 2, kH).hit);
-  }
+  });
 }
 
 // From the top: the pocket's floor at its height, and the hole through it

@@ -34,8 +34,6 @@
 namespace dexmill {
 namespace {
 
-constexpr size_t kPiece = 4096;
-
 // paper-w3's polyline as a program.
 std::string workload_program() {
   Workload w;
@@ -92,7 +90,7 @@ double api_run(const Program& p, const dm_budget& b, F slice) {
     const double s1 = bench::now_s();
     if (state == DM_NEED_INPUT) {
       if (at < p.text.size()) {
-        const size_t k = std::min(kPiece, p.text.size() - at);
+        const size_t k = std::min(kBenchPieceBytes, p.text.size() - at);
         dm_feed(sim, p.text.data() + at, k);
         at += k;
       } else {

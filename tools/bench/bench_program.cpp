@@ -15,9 +15,7 @@
 namespace dexmill {
 namespace {
 
-constexpr size_t kPiece = 4096;
-
-// Errors counted, not printed: a bench measures.
+// Errors and warnings dropped, not printed: a bench measures.
 class Quiet final : public GcodeMessages {
  public:
   void error(const GcodeDiag&) override {}
@@ -79,7 +77,7 @@ double bench_engine_run(const BenchProgram& p) {
     const SimState st = s->step(b);
     if (st == SimState::kNeedInput) {
       if (at < p.text.size()) {
-        const size_t k = std::min(kPiece, p.text.size() - at);
+        const size_t k = std::min(kBenchPieceBytes, p.text.size() - at);
         s->feed(p.text.data() + at, k);
         at += k;
       } else {

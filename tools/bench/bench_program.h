@@ -5,6 +5,7 @@
 #ifndef DEXMILL_TOOLS_BENCH_BENCH_PROGRAM_H
 #define DEXMILL_TOOLS_BENCH_BENCH_PROGRAM_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <string>
@@ -13,6 +14,10 @@
 #include "display/api/dexmill.h"
 
 namespace dexmill {
+
+// The pieces the benchmarks feed a program's text in, through the engine
+// and the API alike.
+constexpr size_t kBenchPieceBytes = 4096;
 
 struct BenchProgram {
   std::string name, text, tool_spec;
@@ -27,7 +32,7 @@ struct BenchProgram {
 // false with a line on standard error naming `bench`.
 bool bench_program_plan(const char* bench, BenchProgram* p);
 
-// The program through the engine alone (core/sim), fed in 4 KiB pieces
+// The program through the engine alone (core/sim), fed in kBenchPieceBytes pieces
 // and stepped a line at a time; its wall time in seconds (-1: no engine).
 double bench_engine_run(const BenchProgram& p);
 

@@ -30,9 +30,10 @@ std::string design_text(const DexelGrid<height_t>& g, const int32_t* design, con
 
 }  // namespace
 
-bool measure_at_text(const MeasureSource& s, int64_t x, int64_t y, std::string* out) {
+bool measure_at_text(const MeasureSource& s, int64_t x, int64_t y, std::string* out, MeasureAt* got) {
   const MeasureAt r = measure_at(*s.grid, s.lines, s.programs, x, y);
   if (!r.on_grid) return false;
+  if (got) *got = r;
   std::string o = "X" + mm(x, 3) + " Y" + mm(y, 3) + ": ";
   if (r.material)
     o += "top Z" + mm(r.top_nm) + ", bottom Z" + mm(r.bottom_nm) + " mm";
@@ -49,16 +50,15 @@ bool measure_at_text(const MeasureSource& s, int64_t x, int64_t y, std::string* 
     if (s.programs && s.program_list && r.program < s.nprograms) o += std::string(" of ") + s.program_list[r.program].name;
   }
   if (s.design_top_lsb) o += "; " + design_text(*s.grid, s.design_top_lsb, r);
-  else if (s.no_design) o += std::string("; ") + s.no_design;
   *out = o;
   return true;
 }
 
-bool measure_dexel_text(const MeasureSource& s, int32_t i, int32_t j, std::string* out) {
+bool measure_dexel_text(const MeasureSource& s, int32_t i, int32_t j, std::string* out, MeasureAt* got) {
   const DexelGrid<height_t>& g = *s.grid;
   if (!g.contains(i, j)) return false;
   return measure_at_text(s, g.x0_nm + static_cast<int64_t>(i) * g.pitch_nm, g.y0_nm + static_cast<int64_t>(j) * g.pitch_nm,
-                         out);
+                         out, got);
 }
 
 }  // namespace cli

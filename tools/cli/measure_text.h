@@ -10,6 +10,7 @@
 
 #include "core/config.h"
 #include "core/grid/grid.h"
+#include "core/measure/measure_at.h"
 #include "core/stock/stock_file.h"
 
 namespace dexmill {
@@ -25,18 +26,17 @@ struct MeasureSource {
   const int32_t* design_top_lsb = nullptr;  // the design's tops on the grid (null: no design)
   // Said in place of the line where none are kept.
   const char* no_lines = "the stock kept no lines";
-  // Said in place of the design where there is none (null: nothing).
-  const char* no_design = nullptr;
 };
 
 // The line for the point (x, y), nm, e.g. "X12.000 Y8.000: top Z-3.0000,
 // bottom Z-10.0000 mm (the column at ..., heights within ...); last cut by
 // line 12; design Z-3.0000, cut - design +0.0000 mm (within 0.0004 mm)",
-// without a newline. False (nothing written) when the point is off the grid.
-bool measure_at_text(const MeasureSource& s, int64_t x_nm, int64_t y_nm, std::string* out);
+// without a newline; *got (when given) the measurement it words. False
+// (nothing written) when the point is off the grid.
+bool measure_at_text(const MeasureSource& s, int64_t x_nm, int64_t y_nm, std::string* out, MeasureAt* got = nullptr);
 
 // The same for dexel (i, j) of the grid, measured at its axis.
-bool measure_dexel_text(const MeasureSource& s, int32_t i, int32_t j, std::string* out);
+bool measure_dexel_text(const MeasureSource& s, int32_t i, int32_t j, std::string* out, MeasureAt* got = nullptr);
 
 }  // namespace cli
 }  // namespace dexmill

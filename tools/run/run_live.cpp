@@ -164,20 +164,17 @@ bool LiveView::click(const DexelGrid<height_t>& g, int32_t x, int32_t y) {
   // The picture is the frame's top rows, so its pixels are the screen's.
   const PickHit h = pick_dexel(out_.picture_view(), g, x, y);
   std::string text;
-  if (!h.hit || !measure_dexel_text(measure_, h.i, h.j, &text)) {
+  MeasureAt r;
+  if (!h.hit || !measure_dexel_text(measure_, h.i, h.j, &text, &r)) {
     click_text_ = "no part under the cursor";
   } else {
     std::printf("%s\n", text.c_str());
     std::fflush(stdout);
-    const size_t k = g.index(h.i, h.j);
-    const PointNm at{g.x0_nm + static_cast<int64_t>(h.i) * g.pitch_nm, g.y0_nm + static_cast<int64_t>(h.j) * g.pitch_nm,
-                     g.z0_nm + static_cast<int64_t>(g.top[k]) * g.lsb_nm};
-    click_mark_.assign(1, at);
+    click_mark_.assign(1, PointNm{r.column_x_nm, r.column_y_nm, r.top_nm});
     out_.repaint();  // the old marker off
-    click_text_ = "measured X" + nm_to_mm_text(at.x_nm, 3) + " Y" + nm_to_mm_text(at.y_nm, 3) + ": top Z" +
-                  nm_to_mm_text(at.z_nm, 4) + ", bottom Z" +
-                  nm_to_mm_text(g.z0_nm + static_cast<int64_t>(g.bottom[k]) * g.lsb_nm, 4);
-    if (measure_.lines) click_text_ += measure_.lines[k] ? ", line " + std::to_string(measure_.lines[k]) : ", uncut";
+    click_text_ = "measured X" + nm_to_mm_text(r.column_x_nm, 3) + " Y" + nm_to_mm_text(r.column_y_nm, 3) + ": top Z" +
+                  nm_to_mm_text(r.top_nm, 4) + ", bottom Z" + nm_to_mm_text(r.bottom_nm, 4);
+    if (measure_.lines) click_text_ += r.line ? ", line " + std::to_string(r.line) : ", uncut";
   }
   click_until_s_ = clock_now_s() + kClickTextS;
   return true;
