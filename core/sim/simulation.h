@@ -48,6 +48,7 @@
 #include "core/sim/gcode_runner.h"
 #include "core/sim/job.h"
 #include "core/safety/travel_watch.h"
+#include "core/sim/peck_fold.h"
 #include "core/sim/provenance.h"
 
 namespace dexmill {
@@ -159,6 +160,9 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   // Lines from a caller's input (a file on the host); else the pieces fed.
   void read_from(LineInput* in);
   void set_observer(SimObserver* o) { observer_ = o; }
+  // Off: every vertical move is cut by itself (the reference
+  // tests/test_peck_fold.cpp compares the fold with). Before start().
+  void set_fold(bool on) { fold_allowed_ = on; }
   // Errors also go to m as they come (the host prints them).
   void forward_messages(GcodeMessages* m) { msgs_.forward = m; }
   // Takes the stock as it is now as the untouched one (the watches'
@@ -282,6 +286,8 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   };
 
   void process(const Queued& q);
+  void charge_cut(uint32_t line);
+  void settle_fold();
   int64_t measure_load(EngageMove* mv);
   void split_move(const EngageMove& mv, const CuttingCoefficients& c, int64_t max_chip_nm, int64_t max_feed_nm_per_min,
                   int64_t move_feed_nm_per_min);
@@ -304,6 +310,10 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   uint32_t queue_cap_, queue_head_ = 0, queue_n_ = 0;
   MotionSummary time_;
   SimObserver* observer_ = nullptr;
+  // Vertical moves held to be cut as one (core/sim/peck_fold.h): only with
+  // no watcher that judges moves one by one.
+  bool fold_allowed_ = true, fold_on_ = false;
+  PeckFold fold_;
   // observers
   bool safety_on_;
   SafetyWatch safety_;

@@ -349,6 +349,7 @@ void SimulationT<H>::start() {
                       prov_programs_, classes, lines, r ? r->prov_tool : nullptr, classes ? r->prov_ntools : 0,
                       classes ? r->prov_unlisted : 0, static_cast<uint8_t>(r ? r->nprograms : 0));
   }
+  fold_on_ = fold_allowed_ && !safety_on_ && !job_.engagement && !job_.material && !job_.design;
   load_tool(job_.tool);
 }
 
@@ -430,6 +431,8 @@ void SimulationT<H>::process(const Queued& q) {
     return;
   }
   const bool move = sim_detail::is_move(r);
+  const bool held = fold_.active && peck_fold_add(&fold_, r);
+  if (fold_.active && !held) settle_fold();
   // Where the line before left the tool: a deferred end cap cut now is its.
   if (move && r.line != last_move_line_) {
     const PointNm at = mill_.position();
@@ -444,15 +447,9 @@ void SimulationT<H>::process(const Queued& q) {
     const int32_t rpm = q.spindle_rpm > 0 ? q.spindle_rpm : job_.default_spindle_rpm;
     engage_meter_before(&engage_, grid_, r, q.spindle_dir >= 0, rpm);
   }
-  mill_.emit(r);
-  if (job_.provenance) {
-    const ProvenanceOrigin po{origin_.line, origin_.end, origin_.tool};
-    provenance_record(&prov_, grid_.dirty, r.line, have_origin_ ? &po : nullptr);
-  }
-  if (job_.design &&
-      gouge_watch_check(&gouges_, grid_, grid_.dirty, r.line, mill_.position(), have_origin_ ? &origin_ : nullptr)) {
-    gouged_ = true;
-    ++gouge_finds_;
+  if (!held && !(fold_on_ && peck_fold_begin(&fold_, r, mill_.position()))) {
+    mill_.emit(r);
+    charge_cut(r.line);
   }
   if (travel_on_) (void)travel_watch_check(&travel_, r);
   const bool spindle_on = q.spindle_dir != 0;
@@ -490,7 +487,7 @@ void SimulationT<H>::process(const Queued& q) {
     if (mv.feed && job_.engage_sink) job_.engage_sink->move(mv);
   }
   status_.line = r.line;
-  status_.pos = mill_.position();
+  status_.pos = fold_.active ? fold_.at : mill_.position();
   if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc) status_.feed_nm_per_min = r.feed_nm_per_min;
   if (r.kind == CanonKind::kToolChange) {
     status_.tool = r.tool;
@@ -512,6 +509,36 @@ void SimulationT<H>::process(const Queued& q) {
   if (!move) return;
   ++status_.moves;
   if (observer_) observer_->moved(status_.moves);
+}
+
+// What the cut of a record of `line` changed, to the watchers that charge it
+// to a line: provenance and gouges.
+template <class H>
+void SimulationT<H>::charge_cut(uint32_t line) {
+  if (job_.provenance) {
+    const ProvenanceOrigin po{origin_.line, origin_.end, origin_.tool};
+    provenance_record(&prov_, grid_.dirty, line, have_origin_ ? &po : nullptr);
+  }
+  if (job_.design &&
+      gouge_watch_check(&gouges_, grid_, grid_.dirty, line, mill_.position(), have_origin_ ? &origin_ : nullptr)) {
+    gouged_ = true;
+    ++gouge_finds_;
+  }
+}
+
+// Cuts the held vertical moves as one (core/sim/peck_fold.h), charged to
+// their line, and shows it to the observer: every reader of the grid and
+// every step's return see the cut as if each move had been cut.
+template <class H>
+void SimulationT<H>::settle_fold() {
+  if (!fold_.active) return;
+  fold_.active = false;
+  CanonRecord moves[3];
+  const int n = peck_fold_moves(fold_, moves);
+  for (int k = 0; k < n; ++k) mill_.emit(moves[k]);
+  charge_cut(fold_.line);
+  if (observer_) observer_->changed(grid_.dirty);
+  grid_.dirty = GridRect::none();
 }
 
 // The process rules on what the record removed, in the state it ran in.
@@ -569,10 +596,13 @@ SimState SimulationT<H>::step(const SimBudget& budget) {
       --queue_n_;
       process(q);
       if (finished_) return state_;
+      if (queue_n_ == 0) settle_fold();  // the line is cut: what it held too
       if (queue_n_ == 0 && !runner_.done() && line_end_stops()) return state_;
       if (status_.moves - moves0 >= budget.moves || mill_.stats().dexel_updates - work0 >= budget.dexel_updates ||
-          (budget.yield && budget.yield(budget.yield_ctx)))
+          (budget.yield && budget.yield(budget.yield_ctx))) {
+        settle_fold();  // a step returns with the grid showing every record
         return state_ = SimState::kReady;
+      }
       continue;
     }
     if (lines >= budget.lines) return state_ = SimState::kReady;
@@ -615,6 +645,7 @@ ProbeSense SimulationT<H>::sense(const PointNm& from, const PointNm& to, int mot
 
 template <class H>
 void SimulationT<H>::sync() {
+  settle_fold();
   mill_.flush();
   if (job_.provenance) provenance_note(&prov_, grid_.dirty);
   if (job_.engagement) engage_meter_note(&engage_, grid_.dirty);
@@ -628,6 +659,7 @@ void SimulationT<H>::finish() {
   start();
   finished_ = true;
   if (state_ == SimState::kReady || state_ == SimState::kNeedInput) state_ = SimState::kDone;
+  settle_fold();
   mill_.finish();
   if (job_.provenance) provenance_record(&prov_, grid_.dirty, last_move_line_, nullptr);
   if (job_.engagement) engage_meter_commit(&engage_, grid_, grid_.dirty, engage_cls_, engage_band_);  // the last end cap
