@@ -125,6 +125,14 @@ TEST(grid_budget_on_the_command_line) {
   CHECK_EQ(r.code, 2);
   CHECK(has(r.err, "the grid would be 100x100 dexels, whose heights need 39 KiB (40000 bytes)"));
   CHECK_EQ(run("pocket.ngc -q --stock %/budget.dxstock --max-memory 1G").code, 0);
+  // A grid past the stock file's 64 M dexels is not refused by a budget
+  // that holds it, but --save-stock is, before anything is allocated.
+  const std::string big = "pocket.ngc -q --stock 0,0,-10,50,50,0 --grid 8195x8195";
+  r = run(big + " --save-stock %/big.dxstock");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "dexmill: error: --save-stock: the grid would be 8195x8195 dexels, more than the 67108864 a stock "
+                   "file holds (64 M); give a coarser --pitch or --grid\n"));
+  CHECK(has(run(big + " --max-memory 1K").err, "the grid would be 8195x8195 dexels, whose heights need"));
   // A bad SIZE is the usual option error.
   for (const char* bad : {"0", "99999999999G", "1.5G", "lots", "-1"}) {
     r = run(job + "--max-memory " + bad);

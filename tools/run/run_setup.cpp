@@ -221,6 +221,15 @@ int plan_saved_stock(const RunOptions& o, RunSetup* run) {
   return kExitOk;
 }
 
+// --save-stock: a grid the stock file holds (its limit, not the budget's:
+// said before the cut rather than after it).
+int save_stock_fits(const RunOptions& o, const GridPlan& plan) {
+  if (o.out.save_stock.empty() || static_cast<int64_t>(plan.geo.nx) * plan.geo.ny <= kStockMaxDexels) return kExitOk;
+  return fail(kExitUsage, "--save-stock: the grid would be %dx%d dexels, more than the %lld a stock file holds (64 M); "
+              "give a coarser --pitch or --grid", static_cast<int>(plan.geo.nx), static_cast<int>(plan.geo.ny),
+              static_cast<long long>(kStockMaxDexels));
+}
+
 // The stock (an STL blank, the option's box, the demo's, or the program's
 // extents) and the grid that holds it.
 int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
@@ -253,6 +262,7 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   std::string err;
   if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, run_grid_budget(o.job.max_memory_bytes), &run->plan, &err))
     return fail(kExitUsage, "%s", err.c_str());
+  if (const int code = save_stock_fits(o, run->plan)) return code;
   // A tool narrower than the pitch may fall between the dexel axes and cut
   // nothing: say so rather than show an untouched block.
   for (int k = 0; k < scan.ntools; ++k)
