@@ -133,6 +133,12 @@ TEST(grid_budget_on_the_command_line) {
   CHECK(has(r.err, "dexmill: error: --save-stock: the grid would be 8195x8195 dexels, more than the 67108864 a stock "
                    "file holds (64 M); give a coarser --pitch or --grid\n"));
   CHECK(has(run(big + " --max-memory 1K").err, "the grid would be 8195x8195 dexels, whose heights need"));
+  // zig plans the grid run would, within the same budget.
+  r = run_command("zig --stock 0,0,-10,10,10,0 --pitch 0.1 --max-memory 1K panel");
+  CHECK_EQ(r.code, 2);
+  CHECK(has(r.err, "dexmill: error: the grid would be 103x103 dexels, whose heights need 41 KiB (42436 bytes), more "
+                   "than --max-memory's 1 KiB (1024 bytes)"));
+  CHECK_EQ(run_command("zig --stock 0,0,-10,10,10,0 --pitch 0.1 --max-memory 1M panel").code, 0);
   // A bad SIZE is the usual option error.
   for (const char* bad : {"0", "99999999999G", "1.5G", "lots", "-1"}) {
     r = run(job + "--max-memory " + bad);
