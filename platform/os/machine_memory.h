@@ -1,5 +1,5 @@
 // The machine's physical memory, which `dexmill run`'s default memory
-// budget is a share of (tools/run/run_memory.h).
+// budget is a share of (tools/run/run_stock.h run_grid_budget).
 #ifndef DEXMILL_PLATFORM_OS_MACHINE_MEMORY_H
 #define DEXMILL_PLATFORM_OS_MACHINE_MEMORY_H
 
