@@ -392,9 +392,9 @@ TEST(ranges_just_outside_are_refused) {
   CHECK(plan_grid(box_mm(20000, 20000, 10), 0, 0, 1000 * kMm + 1, &plan) == PlanError::kBadGeometry);
   CHECK(plan_grid(box_mm(65.532, 0.002, 2), 0, 0, 1000, &plan) == PlanError::kOk);
   CHECK_EQ(plan.geo.nx, 65535);
-  int64_t nx = 0, ny = 0;
-  CHECK(plan_grid(box_mm(65.533, 0.002, 2), 0, 0, 1000, &plan, &nx, &ny) == PlanError::kTooManyDexels);
-  CHECK_EQ(nx, 65536);
+  PlanRefusal refused;
+  CHECK(plan_grid(box_mm(65.533, 0.002, 2), 0, 0, 1000, &plan, GridBudget{}, &refused) == PlanError::kTooManyDexels);
+  CHECK_EQ(refused.nx, 65536);
   StockBox far = box;
   far.hi.x_nm = kStockCoordMaxNm;
   CHECK(plan_grid(far, 0, 0, 1000 * kMm, &plan) == PlanError::kOk);

@@ -37,8 +37,19 @@ int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm) {
   return max_of<int64_t>(1, min_of(coarse, max_of(fine, smallest_tool_nm / kDefaultDexelsPerTool)));
 }
 
+PlanError plan_check_budget(int64_t nx, int64_t ny, const GridBudget& budget, PlanRefusal* why) {
+  // Sides within int32 (a grid's, core/grid/grid.h) keep the count within
+  // 64 bits; its bytes saturate rather than wrap (and then cannot fit).
+  const uint64_t cells = static_cast<uint64_t>(nx) * static_cast<uint64_t>(ny);
+  const uint64_t per = max_of(budget.dexel_bytes, kGridDexelBytes);
+  const uint64_t need = per != 0 && cells > UINT64_MAX / per ? UINT64_MAX : cells * per;
+  if (need <= budget.max_bytes) return PlanError::kOk;
+  if (why) *why = PlanRefusal{nx, ny, need, budget.max_bytes};
+  return PlanError::kOverBudget;
+}
+
 PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
-                    int64_t* want_nx, int64_t* want_ny) {
+                    const GridBudget& budget, PlanRefusal* why) {
   const int64_t corners[6] = {stock.lo.x_nm, stock.lo.y_nm, stock.lo.z_nm, stock.hi.x_nm, stock.hi.y_nm, stock.hi.z_nm};
   for (const int64_t c : corners)
     if (c < -kStockCoordMaxNm || c > kStockCoordMaxNm) return PlanError::kBadStock;
@@ -55,11 +66,12 @@ PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int
   // the stock's shape (a most-dexels-each-way is the most it may have).
   const int64_t ux = div_ceil(sx, pitch) + 1, uy = div_ceil(sy, pitch) + 1;
   const int64_t nx = ux + 2, ny = uy + 2;
-  if (nx > 65535 || ny > 65535 || nx * ny > kMaxGridCells) {
-    if (want_nx) *want_nx = nx;
-    if (want_ny) *want_ny = ny;
+  if (nx > 65535 || ny > 65535) {
+    if (why) *why = PlanRefusal{nx, ny, 0, budget.max_bytes};
     return PlanError::kTooManyDexels;
   }
+  const PlanError spent = plan_check_budget(nx, ny, budget, why);
+  if (spent != PlanError::kOk) return spent;
   GridPlan p;
   p.stock_nx = static_cast<int32_t>(ux);
   p.stock_ny = static_cast<int32_t>(uy);

@@ -32,9 +32,15 @@
 // `dexmill run` takes +-10 m, the interpreter's) with lo < hi on every
 // axis; its height at most 2^m - 1 LSBs of at most 1 m (65 km for 16-bit
 // heights, 255 m for 8); a pitch from 1 nm to 1 m; at most 65535 dexels a
-// side and kMaxGridCells in all; the grid's geometry within
-// grid_check_geometry's bounds (core/grid/grid.h). Outside, plan_grid
-// refuses with the error below that names it.
+// side (the grid's int32 sides and index, core/grid/grid.h); the grid's
+// geometry within grid_check_geometry's bounds. Outside, plan_grid refuses
+// with the error below that names it.
+//
+// Memory: no fixed count of dexels, a budget of bytes (GridBudget): the
+// caller says what a dexel costs it and how many bytes its run may use
+// (`dexmill run --max-memory`, by default a share of the machine's memory,
+// tools/run/run_stock.cpp); the plan refuses a grid that needs more, before
+// anything is allocated.
 #ifndef DEXMILL_CORE_SIM_STOCK_PLAN_H
 #define DEXMILL_CORE_SIM_STOCK_PLAN_H
 
@@ -61,8 +67,26 @@ struct GridPlan {
   StockBox stock;              // the stock as the grid holds it (rounded up to whole pitches)
 };
 
-// Most dexels a run may use (2 x 2 bytes each for 16-bit heights).
-constexpr int64_t kMaxGridCells = 64LL << 20;
+// The bytes a dexel of the grid holds: its top and bottom.
+constexpr uint64_t kGridDexelBytes = 2 * sizeof(height_t);
+// The budget of a caller that gives none (the embedding API, the panel, the
+// benches): the 64 M dexels of heights the plan took before it had a budget.
+constexpr uint64_t kGridDefaultBudgetBytes = (uint64_t{64} << 20) * kGridDexelBytes;
+
+// What a grid may cost.
+struct GridBudget {
+  uint64_t max_bytes = kGridDefaultBudgetBytes;  // the most the dexels may take, bytes
+  // What one dexel costs the caller, bytes: the grid's heights, and the
+  // planes it keeps per dexel beside them (at least kGridDexelBytes).
+  uint64_t dexel_bytes = kGridDexelBytes;
+};
+
+// What a refused plan would have been.
+struct PlanRefusal {
+  int64_t nx = 0, ny = 0;    // the grid's size, dexels
+  uint64_t need_bytes = 0;   // nx * ny * the budget's dexel_bytes (saturated at UINT64_MAX)
+  uint64_t max_bytes = 0;    // the budget's
+};
 // The farthest a stock box's corner may be from the origin, nm.
 constexpr int64_t kStockCoordMaxNm = 1000LL * 1000 * 1000000;
 
@@ -74,16 +98,23 @@ int64_t default_pitch_nm(const StockBox& stock, int64_t smallest_tool_nm);
 enum class PlanError : uint8_t {
   kOk = 0,
   kGridTooSmall,   // a most-dexels-each-way below 4 x 4
-  kTooManyDexels,  // beyond 65535 a side or kMaxGridCells (want_nx, want_ny say how many)
+  kTooManyDexels,  // beyond 65535 a side (the refusal's nx, ny say how many)
   kBadGeometry,    // pitch, size or position out of the grid's range
   kBadStock,       // a box corner beyond kStockCoordMaxNm, lo >= hi, or taller than the heights hold
+  kOverBudget,     // the dexels need more bytes than the budget (the refusal says how many)
 };
 
 // Plans the grid for a stock: by grid_nx/ny when given (> 0), else by
-// pitch_nm (the caller's default_pitch_nm when nothing gave one). On
-// kTooManyDexels, *want_nx and *want_ny (when not null) are the grid's size.
+// pitch_nm (the caller's default_pitch_nm when nothing gave one), within
+// the budget. Allocates nothing. On kTooManyDexels and kOverBudget, *why
+// (when not null) says what the grid would have been.
 PlanError plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
-                    int64_t* want_nx = nullptr, int64_t* want_ny = nullptr);
+                    const GridBudget& budget = GridBudget{}, PlanRefusal* why = nullptr);
+
+// kOk when an nx x ny grid fits the budget, else kOverBudget with *why
+// (when not null) filled: the check plan_grid makes, for a grid that comes
+// planned (a saved stock's).
+PlanError plan_check_budget(int64_t nx, int64_t ny, const GridBudget& budget, PlanRefusal* why = nullptr);
 
 // Fills a grid set up by grid_init with the plan's stock.
 template <class H>

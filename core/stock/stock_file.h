@@ -30,6 +30,12 @@ constexpr int kStockNameBytes = 64;     // a name with its NUL (longer ones are 
 constexpr int kStockMaxPrograms = 32;   // programs a stock remembers (the chain that made it)
 constexpr int kStockMaxTools = 64;      // the provenance's tool order (core/sim/provenance.h kProvenanceMaxTools)
 constexpr uint32_t kStockDefaultTileRows = 16;
+// The most dexels a stock file holds (the 64 M a run's grid was once capped
+// at): what a reader may be asked to allocate for a header it has not yet
+// seen the tiles of stays bounded. A run's grid may be larger (its memory
+// budget, core/sim/stock_plan.h); `dexmill run --save-stock` refuses one
+// beyond this before the cut (tools/run/run_setup.cpp).
+constexpr int64_t kStockMaxDexels = int64_t{64} << 20;
 
 // Which optional layers a file holds (a byte per column each, but lines: 4).
 enum StockLayer : uint8_t {

@@ -234,7 +234,7 @@ StockError stock_meta_check(const StockMeta& m, const char** detail) {
   if ((m.layers & kStockLayerProgram) && !(m.layers & kStockLayerLine)) return bad("layers (programs without lines)");
   if (m.tile_rows < 1 || m.tile_rows > 65535) return bad("tile rows (1 to 65535)");
   if (grid_check_geometry(m.geo) != Status::kOk) return bad("grid geometry");
-  if (static_cast<int64_t>(m.geo.nx) * m.geo.ny > (static_cast<int64_t>(64) << 20)) return bad("grid size (64 M dexels)");
+  if (static_cast<int64_t>(m.geo.nx) * m.geo.ny > kStockMaxDexels) return bad("grid size (64 M dexels)");
   const int64_t hmax = (m.height_bits == 32 ? static_cast<int64_t>(0xFFFFFFFFu) : (static_cast<int64_t>(1) << m.height_bits) - 1);
   if (m.top_bound_lsb < 0 || m.top_bound_lsb > hmax) return bad("top bound");
   if (m.top_lsb < 0 || m.top_lsb > hmax) return bad("stock top");

@@ -37,6 +37,30 @@ bool parse_pair(const char* s, int64_t lo, int64_t hi, int32_t* a, int32_t* b) {
   return true;
 }
 
+bool parse_size_bytes(const char* s, uint64_t* bytes) {
+  uint64_t n = 0;
+  const char* p = s;
+  for (; *p >= '0' && *p <= '9'; ++p) {
+    const uint64_t digit = static_cast<uint64_t>(*p - '0');
+    if (n > (UINT64_MAX - digit) / 10) return false;
+    n = n * 10 + digit;
+  }
+  if (p == s) return false;
+  int shift_bits = 0;
+  if (*p) {
+    switch (*p) {
+      case 'K': case 'k': shift_bits = 10; break;
+      case 'M': case 'm': shift_bits = 20; break;
+      case 'G': case 'g': shift_bits = 30; break;
+      default: return false;
+    }
+    if (p[1]) return false;
+  }
+  if (n == 0 || n > (UINT64_MAX >> shift_bits)) return false;
+  *bytes = n << shift_bits;
+  return true;
+}
+
 bool parse_mm_list(const char* s, int n, int64_t* v) {
   int k = 0;
   const char* p = s;

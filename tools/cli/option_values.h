@@ -19,6 +19,11 @@ bool parse_scaled(const char* s, int64_t scale, int64_t* out);
 // "AxB" (or "AXB") with both whole numbers in [lo, hi].
 bool parse_pair(const char* s, int64_t lo, int64_t hi, int32_t* a, int32_t* b);
 
+// A size in bytes: a whole number of them, or of K, M or G (powers of 1024:
+// KiB, MiB, GiB; either case), from 1 to what 64 bits hold; false for
+// anything else (no sign, fraction or space; 0; past 2^64 - 1).
+bool parse_size_bytes(const char* s, uint64_t* bytes);
+
 // "A,B,C..." with exactly n numbers in mm, into nm, each within the range
 // of G-code coordinates.
 bool parse_mm_list(const char* s, int n, int64_t* v);

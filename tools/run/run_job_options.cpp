@@ -76,6 +76,13 @@ int max_input(Job* o, const char* v) {
   return kExitOk;
 }
 
+int max_memory(Job* o, const char* v) {
+  if (!parse_size_bytes(v, &o->max_memory_bytes))
+    return fail(kExitUsage, "--max-memory needs a size: a whole number of bytes, or of K, M or G (1024, 1024^2, "
+                "1024^3 bytes), from 1 to 2^64 - 1 bytes, not '%s'", v);
+  return kExitOk;
+}
+
 const Option<Job> kJob[] = {
     {"--demo", "NAME|list",
      "pocket: the built-in demo (what run with no FILE runs on a terminal; writes out/); else one of the "
@@ -157,6 +164,11 @@ const Option<Job> kJob[] = {
      "copied to $TMPDIR first; beyond it the run stops with an error (default 1024; a regular file has no "
      "limit)",
      max_input},
+    {"--max-memory", "SIZE",
+     "the most memory the grid and the engine that cuts it may take: bytes, or K, M, G (powers of 1024: "
+     "--max-memory 2G is 2147483648 bytes); a grid that would need more is refused before anything is "
+     "allocated (default: half the machine's physical memory; 4G where it cannot be read)",
+     max_memory},
     {"--strict", nullptr,
      "a program with an input error is not cut at all (by default the cut goes up to the bad block, which the "
      "frames mark in amber, and the run exits 1)",

@@ -112,6 +112,9 @@ struct JobOptions {
   // --max-input MIB: the most bytes of a program copied because it cannot
   // be read twice (standard input, a pipe, a FIFO, a device).
   uint64_t max_input_bytes = kDefaultMaxCopyBytes;
+  // --max-memory SIZE: the most the grid and the engine that cuts it may
+  // take (tools/run/run_stock.h run_grid_budget); 0: a share of the machine's.
+  uint64_t max_memory_bytes = 0;
   std::string material;          // --material PRESET|FILE: the stock's composition and its process rules
   // --demo NAME: one of the paper's workpieces (core/design/builtin.h) cut
   // end to end; the design of `builtin` is used when it is set.

@@ -211,11 +211,23 @@ int turn_saved_stock(const RunOptions& o, RunSetup* run) {
   return kExitOk;
 }
 
-int plan_saved_stock(RunSetup* run) {
+int plan_saved_stock(const RunOptions& o, RunSetup* run) {
   run->plan = sim_plan_of_stock(run->stock_meta);
+  std::string err;
+  if (!plan_within_budget(run->plan, run_grid_budget(o.job.max_memory_bytes), &err))
+    return fail(kExitUsage, "%s", err.c_str());
   run->rep.stock_source = "dxstock";
   report_plan(run);
   return kExitOk;
+}
+
+// --save-stock: a grid the stock file holds (its limit, not the budget's:
+// said before the cut rather than after it).
+int save_stock_fits(const RunOptions& o, const GridPlan& plan) {
+  if (o.out.save_stock.empty() || static_cast<int64_t>(plan.geo.nx) * plan.geo.ny <= kStockMaxDexels) return kExitOk;
+  return fail(kExitUsage, "--save-stock: the grid would be %dx%d dexels, more than the %lld a stock file holds (64 M); "
+              "give a coarser --pitch or --grid", static_cast<int>(plan.geo.nx), static_cast<int>(plan.geo.ny),
+              static_cast<long long>(kStockMaxDexels));
 }
 
 // The stock (an STL blank, the option's box, the demo's, or the program's
@@ -223,7 +235,7 @@ int plan_saved_stock(RunSetup* run) {
 int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   RunReport& rep = run->rep;
   StockBox stock;
-  if (run->stock_in) return plan_saved_stock(run);
+  if (run->stock_in) return plan_saved_stock(o, run);
   if (!o.job.stock_stl.empty()) {
     if (const int code = read_stock_stl(o.job.stock_stl, &run->blank, &stock)) return code;
     rep.stock_source = "stl";
@@ -248,7 +260,9 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   int64_t pitch_nm = o.job.pitch_nm;
   if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
   std::string err;
-  if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, &run->plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, run_grid_budget(o.job.max_memory_bytes), &run->plan, &err))
+    return fail(kExitUsage, "%s", err.c_str());
+  if (const int code = save_stock_fits(o, run->plan)) return code;
   // A tool narrower than the pitch may fall between the dexel axes and cut
   // nothing: say so rather than show an untouched block.
   for (int k = 0; k < scan.ntools; ++k)
@@ -370,6 +384,9 @@ int start_engine(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   SimSetup why;
   const size_t bytes = sim_required_bytes(j, &why);
   if (!bytes) return setup_failed(why, o, *run);
+  std::string over;
+  if (!engine_within_budget(bytes, run->plan, run_grid_budget(o.job.max_memory_bytes), &over))
+    return fail(kExitUsage, "%s", over.c_str());
   if (!run->memory.allocate(bytes))
     return fail(kExitIo, "cannot allocate %s for the %dx%d grid (and the engine that cuts it)", size_text(bytes).c_str(),
                 static_cast<int>(run->plan.geo.nx), static_cast<int>(run->plan.geo.ny));

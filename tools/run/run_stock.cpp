@@ -6,25 +6,78 @@
 #include "core/config.h"
 #include "core/sim/stock_state.h"
 #include "platform/format/stl_read.h"
+#include "platform/os/machine_memory.h"
+#include "platform/os/memory.h"
 #include "tools/cli/cli.h"
 
 namespace dexmill {
 namespace cli {
 
-bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, GridPlan* out,
-               std::string* err) {
-  int64_t nx = 0, ny = 0;
-  switch (dexmill::plan_grid(stock, grid_nx, grid_ny, pitch_nm, out, &nx, &ny)) {
+namespace {
+
+// The machine's memory this share of is a run's default budget.
+constexpr uint64_t kMachineMemoryShareDivisor = 2;
+constexpr uint64_t kUnknownMachineBudgetBytes = uint64_t{4} << 30;
+
+// "... need 977 MiB (1024384036 bytes), more than --max-memory's 512 MiB
+// (536870912 bytes); give ..." after what: the words every refusal ends in.
+std::string over_budget_text(const char* what, uint64_t need_bytes, uint64_t max_bytes) {
+  char b[400];
+  std::snprintf(b, sizeof b, "%s need %s (%llu bytes), more than --max-memory's %s (%llu bytes); give a coarser "
+                "--pitch or --grid, or a larger --max-memory", what, size_text(need_bytes).c_str(),
+                static_cast<unsigned long long>(need_bytes), size_text(max_bytes).c_str(),
+                static_cast<unsigned long long>(max_bytes));
+  return b;
+}
+
+std::string grid_over_budget_text(const PlanRefusal& r) {
+  char what[120];
+  std::snprintf(what, sizeof what, "the grid would be %lldx%lld dexels, whose heights", static_cast<long long>(r.nx),
+                static_cast<long long>(r.ny));
+  return over_budget_text(what, r.need_bytes, r.max_bytes);
+}
+
+}  // namespace
+
+GridBudget run_grid_budget(uint64_t max_memory_bytes) {
+  GridBudget b;
+  const uint64_t machine_bytes = machine_memory_bytes();
+  b.max_bytes = max_memory_bytes     ? max_memory_bytes
+                : machine_bytes == 0 ? kUnknownMachineBudgetBytes
+                                     : machine_bytes / kMachineMemoryShareDivisor;
+  return b;
+}
+
+bool plan_within_budget(const GridPlan& plan, const GridBudget& budget, std::string* err) {
+  PlanRefusal r;
+  if (plan_check_budget(plan.geo.nx, plan.geo.ny, budget, &r) == PlanError::kOk) return true;
+  *err = grid_over_budget_text(r);
+  return false;
+}
+
+bool engine_within_budget(uint64_t engine_bytes, const GridPlan& plan, const GridBudget& budget, std::string* err) {
+  if (engine_bytes <= budget.max_bytes) return true;
+  char what[160];
+  std::snprintf(what, sizeof what, "the %dx%d grid and the engine that cuts it (with the planes this run keeps per dexel)",
+                static_cast<int>(plan.geo.nx), static_cast<int>(plan.geo.ny));
+  *err = over_budget_text(what, engine_bytes, budget.max_bytes);
+  return false;
+}
+
+bool plan_grid(const StockBox& stock, int32_t grid_nx, int32_t grid_ny, int64_t pitch_nm, const GridBudget& budget,
+               GridPlan* out, std::string* err) {
+  PlanRefusal r;
+  switch (dexmill::plan_grid(stock, grid_nx, grid_ny, pitch_nm, out, budget, &r)) {
     case PlanError::kOk: return true;
     case PlanError::kGridTooSmall: *err = "--grid needs at least 4x4 dexels"; return false;
     case PlanError::kTooManyDexels: {
       char b[200];
-      std::snprintf(b, sizeof b, "the grid would be %lldx%lld dexels, more than the %lld M dexels a run may use; "
-                    "give a coarser --pitch or --grid", static_cast<long long>(nx), static_cast<long long>(ny),
-                    static_cast<long long>(kMaxGridCells >> 20));
+      std::snprintf(b, sizeof b, "the grid would be %lldx%lld dexels, more than the 65535 a side a grid holds; "
+                    "give a coarser --pitch or --grid", static_cast<long long>(r.nx), static_cast<long long>(r.ny));
       *err = b;
       return false;
     }
+    case PlanError::kOverBudget: *err = grid_over_budget_text(r); return false;
     case PlanError::kBadGeometry: break;
     case PlanError::kBadStock: {
       char b[200];

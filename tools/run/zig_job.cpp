@@ -66,7 +66,8 @@ int zig_generate(const JobOptions& o, ZigJob* z, std::string* text, ZigProgramSt
   const int64_t pitch_nm = o.pitch_nm || o.grid_nx ? o.pitch_nm : default_pitch_nm(stock, o.tool.diameter_nm);
   GridPlan& plan = *plan_out;
   std::string err;
-  if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, &plan, &err)) return fail(kExitUsage, "%s", err.c_str());
+  if (!plan_grid(stock, o.grid_nx, o.grid_ny, pitch_nm, run_grid_budget(o.max_memory_bytes), &plan, &err))
+    return fail(kExitUsage, "%s", err.c_str());
   RunDesign d;
   const int dcode = load_design(o, plan, "", &d);
   if (dcode != kExitOk) return dcode;
