@@ -340,6 +340,32 @@ bool dominant_turn(const CanonRecord& arc, bool* start_cap, CanonRecord* one) {
   return true;
 }
 
+bool sweep_arc_exact(const SweepTool& t, const CanonRecord& arc) {
+  const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
+  const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
+  const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
+  const bool exact = exact_shape && arc.arc.plane == Plane::kXY && ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
+  if (!exact || arc.start.z_nm == arc.end.z_nm) return exact;
+  // The helix formulas want ra > R (a window under half a turn; for the
+  // ball, convex) and kk < 2^16 at the closest column, rho = ra - R:
+  // kappa^2 < 2^16 ra (ra - R), kappa the descent per radian (bounded by
+  // dz over the whole sweep / 1 rad). Helices tighter than the tool (a
+  // helical bore) go through chords.
+  const int64_t ra_u = ra_nm * kSweepUnitsPerNm;
+  const uint64_t dz_u = abs_u64(arc.end.z_nm - arc.start.z_nm) * kSweepUnitsPerNm;
+  return ra_u > t.r_u && static_cast<uint64_t>(mul_shift(static_cast<int64_t>(dz_u), static_cast<int64_t>(dz_u), 16)) <
+                             static_cast<uint64_t>(ra_u) * static_cast<uint64_t>(ra_u - t.r_u);
+}
+
+// fn(a, b) for each chord of the arc near the grid (core/cut/arc_walk.h).
+template <class H, class Fn>
+void each_chord(const DexelGrid<H>& g, const SweepTool& t, const CanonRecord& arc, Fn fn) {
+  const int64_t margin = 2 * (t.r_u / kSweepUnitsPerNm) + g.pitch_nm;
+  const RectNm reach{g.x0_nm - margin, g.y0_nm - margin, g.x0_nm + (g.nx - 1) * g.pitch_nm + margin,
+                     g.y0_nm + (g.ny - 1) * g.pitch_nm + margin};
+  arc_walk(arc, kArcChordSagittaNm, reach, fn);
+}
+
 template <class H, int W>
 void sweep_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, const CanonRecord& arc, CutStats* st,
                  bool start_cap) {
@@ -348,37 +374,21 @@ void sweep_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, c
     sweep_arc_w<H, W>(g, t, tune, one, st, start_cap);
     return;
   }
-  const bool exact_shape = t.kind == ToolKind::kBall || t.kind == ToolKind::kFlat;
-  const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
-  const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
-  const bool level = arc.start.z_nm == arc.end.z_nm;
-  bool exact = exact_shape && arc.arc.plane == Plane::kXY && ra_nm > 0 && ra_nm <= kMaxExactRadiusNm;
-  if (exact && !level) {
-    // The helix formulas want ra > R (a window under half a turn; for the
-    // ball, convex) and kk < 2^16 at the closest column, rho = ra - R:
-    // kappa^2 < 2^16 ra (ra - R), kappa the descent per radian (bounded by
-    // dz over the whole sweep / 1 rad). Helices tighter than the tool (a
-    // helical bore) go through chords.
-    const int64_t ra_u = ra_nm * kSweepUnitsPerNm;
-    const uint64_t dz_u = abs_u64(arc.end.z_nm - arc.start.z_nm) * kSweepUnitsPerNm;
-    exact = ra_u > t.r_u && static_cast<uint64_t>(mul_shift(static_cast<int64_t>(dz_u), static_cast<int64_t>(dz_u), 16)) <
-                                static_cast<uint64_t>(ra_u) * static_cast<uint64_t>(ra_u - t.r_u);
-  }
-  if (!exact) {
-    // Chords near the grid only (core/cut/arc_walk.h); a joint is chained when
-    // the chord starts where the last one ended.
-    const int64_t margin = 2 * (t.r_u / kSweepUnitsPerNm) + g->pitch_nm;
-    const RectNm reach{g->x0_nm - margin, g->y0_nm - margin, g->x0_nm + (g->nx - 1) * g->pitch_nm + margin,
-                       g->y0_nm + (g->ny - 1) * g->pitch_nm + margin};
+  if (!sweep_arc_exact(t, arc)) {
+    // Each chord with both caps; a joint is chained when the chord starts
+    // where the last one ended.
     PointNm last = arc.start;
     bool chained = !start_cap;
-    arc_walk(arc, kArcChordSagittaNm, reach, [&](PointNm a, PointNm b) {
+    each_chord(*g, t, arc, [&](PointNm a, PointNm b) {
       sweep_line_w<H, W>(g, t, tune, a, b, st, !(chained && a == last));
       last = b;
       chained = true;
     });
     return;
   }
+  const int64_t cx = arc.arc.centre.x_nm, cy = arc.arc.centre.y_nm;
+  const int64_t ra_nm = hypot_round(arc.start.x_nm - cx, arc.start.y_nm - cy);
+  const bool level = arc.start.z_nm == arc.end.z_nm;
   ArcChords pieces;
   // Quarter-turn pieces: a sagitta as large as the radius.
   pieces.init(arc, ra_nm);
@@ -409,6 +419,24 @@ void sweep_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, c
 template <class H, int W>
 void sweep_chain_arc_w(DexelGrid<H>* g, const SweepTool& t, const SweepTuning& tune, const CanonRecord& arc,
                        CutStats* st, SweepChain* c) {
+  CanonRecord one;
+  bool mid_path = false;
+  const CanonRecord& turn = dominant_turn(arc, &mid_path, &one) ? one : arc;
+  if (!sweep_arc_exact(t, turn)) {
+    // Chords go on the chain as the straight moves they are: each cuts its
+    // band and only the wedge of its start cap the chord before leaves
+    // (SweepChain, core/cut/sweep.h), instead of a whole cap a chord (the
+    // arcs of an XZ profile with a ball: 40 % of the dexel updates of
+    // blur_torus.ngc, tools/README.md). A turn that starts mid-path does not
+    // start at the chain's end, which then ends first.
+    each_chord(*g, t, turn, [&](PointNm a, PointNm b) { sweep_chain_line_w<H, W>(g, t, tune, a, b, st, c); });
+    if (!(c->end == arc.end)) {  // chords off the grid, or the first turn of a rising helix
+      sweep_chain_end_w<H, W>(g, t, tune, st, c);
+      c->state = SweepChain::State::kCovered;
+      c->end = arc.end;
+    }
+    return;
+  }
   sweep_chain_end_w<H, W>(g, t, tune, st, c);
   const bool joined = c->state != SweepChain::State::kFresh && c->end == arc.start;
   sweep_arc_w<H, W>(g, t, tune, arc, st, !joined);
