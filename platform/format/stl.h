@@ -3,7 +3,8 @@
 // over, walls where material meets holes) with coplanar cells merged into
 // larger faces (platform/mesh/stl_merge.h): flat floors and untouched tops,
 // straight walls. Every edge is shared by exactly two triangles with
-// opposite directions, and the solid is the cell surface's to the last bit.
+// opposite directions, and the solid is the cell surface's to the last bit
+// (or, with a tolerance, its tops within it: platform/mesh/stl_plane.h).
 //
 // Streaming: one pass counts the triangles (the header needs the count
 // first, and standard output or a pipe cannot be rewound to patch it), a
