@@ -11,7 +11,7 @@ bool PlaneRuns<H>::fits(int32_t lo, int32_t hi, int32_t j0, int32_t j1) const {
   const int64_t z00 = top(lo, j0), z10 = top(hi, j0), z01 = top(lo, j1), z11 = top(hi, j1);
   // Slopes A / 2w along x and B / 2h along y; everything times 2wh, so
   // exact: T - slopes becomes r = 2wh T - hA (x - lo) - wB (y - j0), at
-  // most 2^49 in magnitude for 32-bit tops and sides of kPlaneSideCells.
+  // most 2^50 in magnitude for 32-bit tops and sides of kPlaneSideCells.
   const int64_t a = z10 + z11 - z00 - z01, b = z01 + z11 - z00 - z10;
   const int64_t scale = 2 * w * h, limit = scale * tolerance_lsb_;
   int64_t r_min = INT64_MAX, r_max = INT64_MIN, top_min = INT64_MAX, bottom_max = INT64_MIN;
