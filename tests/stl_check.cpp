@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -64,6 +65,45 @@ int64_t cell_volume6(const dexmill::DexelGrid<H>& g, const dexmill::SurfaceMater
   return v6;
 }
 
+template <class H>
+TopError top_error(const std::vector<IntTri>& tris, const dexmill::DexelGrid<H>& g, const dexmill::SurfaceMaterial& m) {
+  TopError e;
+  std::vector<uint8_t> covered(static_cast<size_t>(g.nx) * g.ny, 0);
+  for (const IntTri& t : tris) {
+    const int64_t* a = t.v[0];
+    const int64_t* b = t.v[1];
+    const int64_t* c = t.v[2];
+    const int64_t area2 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if (area2 <= 0) continue;  // a wall, or a bottom
+    e.area2 += area2;
+    const int64_t i0 = std::min({a[0], b[0], c[0]}), i1 = std::max({a[0], b[0], c[0]});
+    const int64_t j0 = std::min({a[1], b[1], c[1]}), j1 = std::max({a[1], b[1], c[1]});
+    for (int64_t j = j0; j <= j1; ++j)
+      for (int64_t i = i0; i <= i1; ++i) {
+        // Barycentric weights times area2, exact; inside (or on a side)
+        // when all are >= 0.
+        const int64_t wa = (b[0] - i) * (c[1] - j) - (b[1] - j) * (c[0] - i);
+        const int64_t wb = (c[0] - i) * (a[1] - j) - (c[1] - j) * (a[0] - i);
+        const int64_t wc = area2 - wa - wb;
+        if (wa < 0 || wb < 0 || wc < 0) continue;
+        const double z = (static_cast<double>(wa) * a[2] + static_cast<double>(wb) * b[2] + static_cast<double>(wc) * c[2]) /
+                         static_cast<double>(area2);
+        const size_t d = g.index(static_cast<int32_t>(i), static_cast<int32_t>(j));
+        e.max_lsb = std::max(e.max_lsb, std::fabs(z - static_cast<double>(g.top[d])));
+        covered[d] = 1;
+      }
+  }
+  for (int32_t j = 0; j + 1 < g.ny; ++j)
+    for (int32_t i = 0; i + 1 < g.nx; ++i)
+      if (m.cell_mask(i, j) == 15)
+        for (int k = 0; k < 4; ++k) e.uncovered += !covered[g.index(i + (k & 1), j + (k >> 1))];
+  return e;
+}
+
+template TopError top_error<uint16_t>(const std::vector<IntTri>&, const dexmill::DexelGrid<uint16_t>&,
+                                      const dexmill::SurfaceMaterial&);
+template TopError top_error<uint32_t>(const std::vector<IntTri>&, const dexmill::DexelGrid<uint32_t>&,
+                                      const dexmill::SurfaceMaterial&);
 template int64_t cell_volume6<uint16_t>(const dexmill::DexelGrid<uint16_t>&, const dexmill::SurfaceMaterial&);
 template int64_t cell_volume6<uint32_t>(const dexmill::DexelGrid<uint32_t>&, const dexmill::SurfaceMaterial&);
 

@@ -39,6 +39,18 @@ MeshFacts mesh_facts(const std::vector<IntTri>& tris);
 template <class H>
 int64_t cell_volume6(const dexmill::DexelGrid<H>& g, const dexmill::SurfaceMaterial& m);
 
+// How far the top surface of `tris` (the triangles facing up, seen from
+// above) lies from the grid's tops, in LSB, by double-precision
+// interpolation at every dexel a top triangle covers (its sides too); and
+// how many dexels of full cells (four material corners) none covers.
+struct TopError {
+  double max_lsb = 0;
+  long uncovered = 0;
+  int64_t area2 = 0;  // twice the top triangles' area seen from above, in cells
+};
+template <class H>
+TopError top_error(const std::vector<IntTri>& tris, const dexmill::DexelGrid<H>& g, const dexmill::SurfaceMaterial& m);
+
 }  // namespace t
 
 #endif

@@ -2,7 +2,8 @@
 // (platform/format/stl_read.h), every vertex exactly on a grid point, closed
 // (every directed edge once, its reverse once), the cell surface's volume
 // to the last LSB, the count in its header the one stl_triangle_count
-// gives; on grids with holes, islands, diagonal contacts and through holes.
+// gives; on grids with holes, islands, diagonal contacts and through holes;
+// and within a tolerance (platform/mesh/stl_plane.h).
 #include <unistd.h>
 
 #include <cstdio>
@@ -36,12 +37,12 @@ std::string tmp_path(const char* name) {
   return p;
 }
 
-// Writes g's STL and reads it back in grid units; false if a vertex is off
+// Writes g's STL (its tops within tolerance_lsb) and reads it back in grid units; false if a vertex is off
 // the grid's points.
-bool write_and_read(const DexelGrid<uint16_t>& g, std::vector<t::IntTri>* tris) {
+bool write_and_read(const DexelGrid<uint16_t>& g, std::vector<t::IntTri>* tris, int64_t tolerance_lsb = 0) {
   const std::string path = tmp_path("t.stl");
   char err[256];
-  CHECK(write_stl(path.c_str(), g, err, sizeof err));
+  CHECK(write_stl(path.c_str(), g, tolerance_lsb, err, sizeof err));
   bool on_grid = true;
   StlReadInfo info;
   std::string msg;
@@ -64,7 +65,7 @@ bool write_and_read(const DexelGrid<uint16_t>& g, std::vector<t::IntTri>* tris) 
   std::remove(path.c_str());
   CHECK(r == StlRead::kOk);
   CHECK(info.binary);
-  CHECK_EQ(info.triangles, stl_triangle_count(g));
+  CHECK_EQ(info.triangles, stl_triangle_count(g, tolerance_lsb));
   return on_grid;
 }
 
@@ -125,7 +126,7 @@ TEST(stl_random_grids_are_closed) {
   }
   G empty(6, 6);
   for (auto& h : empty.top) h = 0;
-  CHECK_EQ(stl_triangle_count(empty.g), uint64_t{0});
+  CHECK_EQ(stl_triangle_count(empty.g, 0), uint64_t{0});
 }
 
 TEST(stl_size_is_said_before_a_huge_file) {
@@ -133,4 +134,22 @@ TEST(stl_size_is_said_before_a_huge_file) {
   const std::string note = dexmill::stl_size_note(10000000, "part.stl");
   CHECK(note.find("writing a 0.5 GB STL (10000000 triangles) to 'part.stl'") != std::string::npos);
   CHECK(dexmill::stl_size_note(1000000, "part.stl").empty());
+}
+
+// Within a tolerance the file is closed too, its lifted points on the
+// grid's, the volume within the tolerance times the top area.
+TEST(stl_file_within_tolerance_is_closed) {
+  G b(30, 24);
+  for (int j = 1; j < 23; ++j)
+    for (int i = 1; i < 29; ++i) b.top[b.g.index(i, j)] = static_cast<uint16_t>(4000 + 13 * i + 7 * j + (i * j) % 5);
+  b.top[b.g.index(9, 9)] = b.bottom[b.g.index(9, 9)] = 0;  // a hole
+  std::vector<t::IntTri> tris;
+  CHECK(write_and_read(b.g, &tris, 8));
+  const t::MeshFacts f = t::mesh_facts(tris);
+  const int64_t v6 = t::cell_volume6(b.g, SurfaceMaterial(b.g));
+  const int64_t dv6 = f.volume6 > v6 ? f.volume6 - v6 : v6 - f.volume6;
+  CHECK_EQ(f.open_edges, 0L);
+  CHECK_EQ(f.flat_tris, 0L);
+  CHECK(dv6 <= 6 * 8 * 27 * 21);
+  CHECK(tris.size() * 3 < stl_triangle_count(b.g, 0));  // the walls under sloped tops stay a cell's each
 }

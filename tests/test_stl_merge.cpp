@@ -46,7 +46,7 @@ Compared compare(const DexelGrid<H>& g, const char* what) {
   const SurfaceMaterial m(g);
   t::TriangleList cells, merged;
   cell_surface(g, m, &cells);
-  merged_surface(g, m, &merged);
+  merged_surface(g, m, 0, &merged);
   const t::MeshFacts a = t::mesh_facts(cells.tris), b = t::mesh_facts(merged.tris);
   const int64_t v6 = t::cell_volume6(g, m);
   const bool good = a.open_edges == 0 && b.open_edges == 0 && b.flat_tris == 0 && a.volume6 == v6 && b.volume6 == v6 &&

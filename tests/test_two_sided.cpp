@@ -95,7 +95,7 @@ TEST(two_sided_part_from_two_programs_and_a_flip) {
                      part.top.size())));
   const SurfaceMaterial mat(g);
   t::TriangleList tris;
-  merged_surface(g, mat, &tris);
+  merged_surface(g, mat, 0, &tris);
   const t::MeshFacts f = t::mesh_facts(tris.tris);
   CHECK_EQ(f.open_edges, 0);
   CHECK_EQ(f.volume6, t::cell_volume6(g, mat));

@@ -29,9 +29,9 @@ class Counter final : public TriangleSink {
 };
 
 template <class H>
-uint64_t count_triangles(const DexelGrid<H>& g, const SurfaceMaterial& material) {
+uint64_t count_triangles(const DexelGrid<H>& g, const SurfaceMaterial& material, int64_t tolerance_lsb) {
   Counter c;
-  merged_surface(g, material, &c);
+  merged_surface(g, material, tolerance_lsb, &c);
   return c.count;
 }
 
@@ -92,14 +92,14 @@ std::string stl_size_note(uint64_t triangles, const char* path) {
 }
 
 template <class H>
-uint64_t stl_triangle_count(const DexelGrid<H>& g) {
-  return count_triangles(g, SurfaceMaterial(g));
+uint64_t stl_triangle_count(const DexelGrid<H>& g, int64_t tolerance_lsb) {
+  return count_triangles(g, SurfaceMaterial(g), tolerance_lsb);
 }
 
 template <class H>
-bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t errn) {
+bool write_stl(const char* path, const DexelGrid<H>& g, int64_t tolerance_lsb, char* err, std::size_t errn) {
   const SurfaceMaterial material(g);
-  const uint64_t count = count_triangles(g, material);
+  const uint64_t count = count_triangles(g, material, tolerance_lsb);
   if (count > 0xffffffffu) {
     std::snprintf(err, errn, "cannot write '%s': %llu triangles are more than STL can count", path,
                   static_cast<unsigned long long>(count));
@@ -117,7 +117,7 @@ bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t e
     for (int k = 0; k < 4; ++k) header[80 + k] = static_cast<uint8_t>(count >> (8 * k));
     f.write(header, sizeof header);
     Writer<H> w(g, &f);
-    merged_surface(g, material, &w);
+    merged_surface(g, material, tolerance_lsb, &w);
     w.flush();
     if (f.commit()) return true;
   }
@@ -126,8 +126,8 @@ bool write_stl(const char* path, const DexelGrid<H>& g, char* err, std::size_t e
 }
 
 #define DEXMILL_STL_INSTANTIATE(H)                                  \
-  template uint64_t stl_triangle_count<H>(const DexelGrid<H>&); \
-  template bool write_stl<H>(const char*, const DexelGrid<H>&, char*, std::size_t);
+  template uint64_t stl_triangle_count<H>(const DexelGrid<H>&, int64_t); \
+  template bool write_stl<H>(const char*, const DexelGrid<H>&, int64_t, char*, std::size_t);
 DEXMILL_STL_INSTANTIATE(uint8_t)
 DEXMILL_STL_INSTANTIATE(uint16_t)
 DEXMILL_STL_INSTANTIATE(uint32_t)

@@ -7,6 +7,7 @@
 
 #include "display/surface/mesh.h"
 #include "platform/mesh/stl_ladder.h"
+#include "platform/mesh/stl_plane.h"
 
 namespace dexmill {
 namespace {
@@ -36,7 +37,7 @@ struct FaceKey {
   enum Kind : uint8_t { kSingle, kTop, kBottom, kWall };
   Kind kind;
   int32_t a, b;  // a run's [lo, hi); a wall's mask
-  int64_t h0_lsb, h1_lsb;
+  int64_t h0_lsb, h1_lsb;  // a level run's height, a planar run's first row (h0); a wall's top and bottom
 };
 
 bool same_face(const FaceKey& x, const FaceKey& y) {
@@ -49,20 +50,23 @@ struct CellRow {
   int32_t j = -1;                  // cell row; outside the grid every cell is empty
   std::vector<uint8_t> mask;       // kCellCases index
   std::vector<int32_t> lo[2], hi[2];  // [0] tops, [1] bottoms: the run of flat cells [lo, hi) holding the cell, or -1
+  std::vector<int64_t> key[2];        // with lo: the run's height, or (planar tops) the first row of its rectangle
   std::vector<uint8_t> wall_ok;    // an axis wall with one top and one bottom height, top above bottom
 };
 
 template <class H>
 class Merger {
  public:
-  Merger(const DexelGrid<H>& g, const SurfaceMaterial& m, TriangleSink* out)
-      : g_(g), m_(m), out_(out), ncx_(g.nx - 1), ncy_(g.ny - 1) {
+  Merger(const DexelGrid<H>& g, const SurfaceMaterial& m, int64_t tolerance_lsb, TriangleSink* out)
+      : g_(g), m_(m), out_(out), ncx_(g.nx - 1), ncy_(g.ny - 1), planar_(tolerance_lsb > 1),
+        planes_(g, tolerance_lsb), lift_(g, out) {
     for (CellRow& r : rows_) {
       r.mask.resize(ncx_);
       r.wall_ok.resize(ncx_);
       for (int b = 0; b < 2; ++b) {
         r.lo[b].resize(ncx_);
         r.hi[b].resize(ncx_);
+        r.key[b].resize(ncx_);
       }
     }
     for (int b = 0; b < 2; ++b) {
@@ -118,6 +122,10 @@ class Merger {
     const H* const rows[2][2] = {{g_.top + g_.index(0, j), g_.top + g_.index(0, j + 1)},
                                  {g_.bottom + g_.index(0, j), g_.bottom + g_.index(0, j + 1)}};
     for (int b = 0; b < 2; ++b) {
+      if (b == 0 && planar_) {
+        planes_.row(j, r->mask, &r->lo[0], &r->hi[0], &r->key[0]);
+        continue;
+      }
       const H *h0 = rows[b][0], *h1 = rows[b][1];
       // Flat cells next to each other share two corners: one height.
       int32_t run_lo = -1;
@@ -125,6 +133,7 @@ class Merger {
         const bool flat = r->mask[i] == 15 && h0[i] == h0[i + 1] && h0[i] == h1[i] && h0[i] == h1[i + 1];
         run_lo = !flat ? -1 : run_lo >= 0 ? run_lo : i;
         r->lo[b][i] = run_lo;
+        r->key[b][i] = static_cast<int64_t>(h0[i]);
       }
       for (int32_t i = ncx_ - 1, run_hi = -1; i >= 0; --i) {
         if (r->lo[b][i] < 0) run_hi = -1;
@@ -152,7 +161,7 @@ class Merger {
     FaceKey k{FaceKey::kSingle, 0, 0, 0, 0};
     if (r.j < 0 || r.j >= ncy_ || i < 0 || i >= ncx_) return k;
     const int b = bottom ? 1 : 0;
-    if (r.lo[b][i] >= 0) return FaceKey{bottom ? FaceKey::kBottom : FaceKey::kTop, r.lo[b][i], r.hi[b][i], height(i, r.j, bottom), 0};
+    if (r.lo[b][i] >= 0) return FaceKey{bottom ? FaceKey::kBottom : FaceKey::kTop, r.lo[b][i], r.hi[b][i], r.key[b][i], 0};
     const int mask = r.mask[i];
     if (r.wall_ok[i] && wall_side(mask) == side)
       return FaceKey{FaceKey::kWall, mask, 0, wall_height(i, r.j, mask, false), wall_height(i, r.j, mask, true)};
@@ -162,18 +171,18 @@ class Merger {
   // across both (stl_merge.h).
   bool kept(const FaceKey& x, const FaceKey& y) const { return !same_face(x, y); }
 
-  // The rectangles of flat tops (or bottoms) holding a run of row c.
+  // The rectangles of flat tops (or bottoms) holding a run of row c; with
+  // a tolerance the tops are planar ones, their points at their own tops.
   void flat_faces(const CellRow& p, const CellRow& c, const CellRow& n, bool bottom) {
     const int b = bottom ? 1 : 0;
     const int32_t j = c.j;
     for (int32_t lo = 0; lo < ncx_; ++lo) {
       if (c.lo[b][lo] != lo) continue;
       const int32_t hi = c.hi[b][lo];
-      const int64_t h = height(lo, j, bottom);
-      auto same_run = [&](const CellRow& r) {
-        return r.lo[b][lo] == lo && r.hi[b][lo] == hi && height(lo, r.j, bottom) == h;
-      };
-      const LadderPlane plane{LadderPlane::kXY, h, bottom, out_};
+      const int64_t key = c.key[b][lo];
+      auto same_run = [&](const CellRow& r) { return r.lo[b][lo] == lo && r.hi[b][lo] == hi && r.key[b][lo] == key; };
+      const bool lifted = planar_ && !bottom;
+      const LadderPlane plane{LadderPlane::kXY, lifted ? 0 : key, bottom, lifted ? static_cast<TriangleSink*>(&lift_) : out_};
       Ladder& lad = flat_open_[b][lo];
       if (!same_run(p)) {
         cap_.clear();
@@ -259,6 +268,9 @@ class Merger {
   const SurfaceMaterial& m_;
   TriangleSink* out_;
   int32_t ncx_, ncy_;
+  bool planar_;  // tops merge within the tolerance (stl_plane.h), not only level ones
+  PlaneRuns<H> planes_;
+  TopLift<H> lift_;
   CellRow rows_[3];
   std::vector<Ladder> flat_open_[2];  // by the run's lo: the rectangle through the current row
   std::vector<Ladder> ywall_open_;    // by cell column: the strip through the current row
@@ -271,14 +283,14 @@ class Merger {
 }  // namespace
 
 template <class H>
-void merged_surface(const DexelGrid<H>& g, const SurfaceMaterial& m, TriangleSink* out) {
+void merged_surface(const DexelGrid<H>& g, const SurfaceMaterial& m, int64_t tolerance_lsb, TriangleSink* out) {
   if (g.nx < 2 || g.ny < 2) return;
-  Merger<H> merger(g, m, out);
+  Merger<H> merger(g, m, tolerance_lsb, out);
   merger.run();
 }
 
-template void merged_surface<uint8_t>(const DexelGrid<uint8_t>&, const SurfaceMaterial&, TriangleSink*);
-template void merged_surface<uint16_t>(const DexelGrid<uint16_t>&, const SurfaceMaterial&, TriangleSink*);
-template void merged_surface<uint32_t>(const DexelGrid<uint32_t>&, const SurfaceMaterial&, TriangleSink*);
+template void merged_surface<uint8_t>(const DexelGrid<uint8_t>&, const SurfaceMaterial&, int64_t, TriangleSink*);
+template void merged_surface<uint16_t>(const DexelGrid<uint16_t>&, const SurfaceMaterial&, int64_t, TriangleSink*);
+template void merged_surface<uint32_t>(const DexelGrid<uint32_t>&, const SurfaceMaterial&, int64_t, TriangleSink*);
 
 }  // namespace dexmill

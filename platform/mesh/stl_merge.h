@@ -24,6 +24,12 @@
 // point on a triangle's edge. Faces across a segment are known from the
 // cells on both sides of it, so three cell rows decide everything.
 //
+// With a tolerance of more than one LSB the tops merge within it instead:
+// nearly planar rectangles (platform/mesh/stl_plane.h: every dexel top
+// within the tolerance of the surface written over it), whose points keep
+// their own tops, so the rule above still holds: the same point left out
+// or kept on both sides, at the same height. Bottoms and walls as above.
+//
 // Memory: the surface material (one bit a dexel), three rows of cell
 // classes, and one face state per place along the row.
 #ifndef DEXMILL_PLATFORM_MESH_STL_MERGE_H
@@ -34,8 +40,9 @@
 
 namespace dexmill {
 
+// tolerance_lsb <= 1: the exact surface (level faces only).
 template <class H>
-void merged_surface(const DexelGrid<H>& g, const SurfaceMaterial& m, TriangleSink* out);
+void merged_surface(const DexelGrid<H>& g, const SurfaceMaterial& m, int64_t tolerance_lsb, TriangleSink* out);
 
 }  // namespace dexmill
 

@@ -288,7 +288,11 @@ int write_files(const RunOptions& o, Run* run) {
   double stl_s = 0;
   if (!o.out.stl.empty()) {
     const double t_stl = clock_now_s();
-    if (!write_stl(o.out.stl.c_str(), su.sim->grid(), e, sizeof e)) return fail(kExitIo, "%s", e);
+    // The tolerance in whole LSB, rounded down so the surface stays within
+    // the millimetres asked for; one LSB or less is the exact surface.
+    const auto& g = su.sim->grid();
+    if (!write_stl(o.out.stl.c_str(), g, o.out.stl_tolerance_nm / g.lsb_nm, e, sizeof e))
+      return fail(kExitIo, "%s", e);
     stl_s = clock_now_s() - t_stl;
   }
   v.write_s += clock_now_s() - t_files;

@@ -19,6 +19,7 @@ int check_pairs(const RunOptions& o) {
   if (o.view.have_preset && (o.view.have_azimuth || o.view.have_elevation))
     return fail(kExitUsage, "give --view or --azimuth/--elevation, not both");
   if (o.out.every && o.out.frames_dir.empty()) return fail(kExitUsage, "--every needs --frames DIR");
+  if (o.out.have_stl_tolerance && o.out.stl.empty()) return fail(kExitUsage, "--stl-tolerance needs --stl FILE.stl");
   if (o.view.window && !o.view.fbdev.empty()) return fail(kExitUsage, "give --window or --fbdev, not both");
   if (!j.demo.empty() && (!j.file.empty() || !j.design.empty()))
     return fail(kExitUsage, "--demo cuts its own program from its own design: give no FILE and no --design");

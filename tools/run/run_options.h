@@ -168,6 +168,8 @@ struct OutputOptions {
   ImageFormat frame_format = ImageFormat::kPng;  // --frame-format
   int64_t every = 0;             // --every; 0: about 100 frames over the program
   std::string heightmap, stl, report;
+  int64_t stl_tolerance_nm = 0;  // --stl-tolerance MM: the STL's tops within it (0: exact, as one LSB)
+  bool have_stl_tolerance = false;
   std::string save_stock;        // --save-stock FILE.dxstock: the final stock, to continue from
   std::string engagement_csv;    // --engagement-csv FILE: each feed move's load (tools/run/run_engage.h)
   std::string load_plot;         // --load-plot FILE.svg|FILE.png: load, removal rate and feed against time

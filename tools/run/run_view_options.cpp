@@ -42,6 +42,15 @@ const Option<Out> kOutputs[] = {
      [](Out* o, const char* v) -> int { return o->heightmap = v, kExitOk; }},
     {"--stl", "FILE.stl", "the final surface as a closed binary STL",
      [](Out* o, const char* v) -> int { return o->stl = v, kExitOk; }},
+    {"--stl-tolerance", "MM",
+     "merge the STL's top cells into larger facets, every top within MM of the surface written over it "
+     "(default: the grid's LSB, the exact surface)",
+     [](Out* o, const char* v) -> int {
+       if (!parse_scaled(v, kNmPerMm, &o->stl_tolerance_nm) || o->stl_tolerance_nm < 0 ||
+           o->stl_tolerance_nm > kNmPerMm)
+         return fail(kExitUsage, "--stl-tolerance needs mm from 0 to 1, not '%s'", v);
+       return o->have_stl_tolerance = true, kExitOk;
+     }},
     {"--save-stock", "FILE.dxstock",
      "the final stock, its columns exact, with which tool and line cut each one and the chain of programs "
      "that made it: --stock FILE.dxstock continues from it",
