@@ -78,7 +78,7 @@ endif
 rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
 CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
 DISPLAY_SRC  := $(sort $(call rwildcard,display,*.cpp))
-PLATFORM_SRC := $(sort $(call rwildcard,platform,*.cpp))
+PLATFORM_SRC := $(sort $(filter-out platform/web/%,$(call rwildcard,platform,*.cpp)))  # web/: wasm32 only (make web)
 TOOLS_SRC    := $(sort $(filter-out tools/cli/main.cpp tools/panel/%,$(call rwildcard,tools,*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
 INT_HEADERS  := $(sort $(call rwildcard,core display,*.h))
@@ -192,7 +192,7 @@ check-bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
 
 test: check-headers check-poison check-layers check-function-length check-comments check-c-api check-lib test-unit \
       check-golden-out \
-      check-bless test-embed test-python test-install test-sheet check-readme
+      check-bless test-embed test-python test-install test-sheet test-web check-readme
 
 run: $(BIN)
 	$(BIN) run --demo pocket
@@ -324,6 +324,41 @@ panel:
 	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)
 panel-w3:
 	$(EMBEDDED_ENV) tools/scripts/panel_w3.sh $(PANEL_ARGS)
+
+# ---- the browser (platform/web/README.md) ------------------------------------
+#   make web       build/web/: dexmill.wasm (core/, display/ and the C API,
+#                  integer-only, with the glue of platform/web/), dexmill.js
+#                  (the loader with the module inside as base64, so the page
+#                  works from file://) and index.html
+#   make test-web  the page in headless Chromium: its canvas's pixels hashed
+#                  in the page against `dexmill run --image`'s (SKIPPED, said
+#                  so, without Chromium or the wasm32 toolchain)
+# Debian's clang and wasm-ld with wasi-libc for memcpy and the like; no
+# start files, no entry: the page calls the exports of platform/web/web_api.cpp.
+WEB      := build/web
+WEB_CXX  ?= clang++ --target=wasm32-wasi
+WEB_OPT  ?= -O2
+WEB_SRC  := $(CORE_SRC) $(DISPLAY_SRC) $(sort $(wildcard platform/web/*.cpp))
+WEB_OBJ  := $(patsubst %.cpp,build/wasm32/obj/%.o,$(WEB_SRC))  # not in $(WEB): that folder is what a panel serves
+WEB_LDFLAGS := -nostartfiles -Wl,--no-entry -Wl,--gc-sections -Wl,--stack-first -Wl,-z,stack-size=1048576 -Wl,--strip-all
+.PHONY: web test-web
+web: $(WEB)/dexmill.wasm $(WEB)/dexmill.js $(WEB)/index.html
+build/wasm32/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(Q)$(WEB_CXX) -std=c++17 $(WEB_OPT) $(WARN) -I. $(INTFLAGS) -MMD -MP -ffunction-sections -fdata-sections -c $< -o $@
+$(WEB)/dexmill.wasm: $(WEB_OBJ)
+	$(call say,LINK,$@)
+	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@
+$(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
+	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
+$(WEB)/index.html: platform/web/index.html
+	$(Q)cp $< $@
+# In `make test`: built only where the toolchain and Chromium are (Debian's
+# paths, as install-deps.sh web puts them); the script says SKIPPED otherwise.
+WEB_CAN  := $(and $(wildcard /usr/lib/wasm32-wasi/libc.a),$(shell command -v wasm-ld),$(shell command -v chromium))
+test-web: $(BIN) $(if $(WEB_CAN),web)
+	$(Q)tools/scripts/web-test.sh $(abspath $(BIN))
+-include $(shell find build/wasm32 -name '*.d' 2>/dev/null)
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
 #   make fuzz SECONDS=N           the pipeline target N seconds (default 60)

@@ -1,0 +1,157 @@
+/* dexmill.js - the page's side of dexmill.wasm: loads the module (its bytes
+ * are DEXMILL_WASM_BASE64, put in front of this file by
+ * tools/scripts/web_embed.sh), sets a job up with the CLI's option texts,
+ * feeds the program in pieces, steps it a slice at a time so the page stays
+ * live, and copies the XRGB8888 frame into a canvas. The exports it calls
+ * are platform/web/web_api.cpp's; the states and statuses are
+ * display/api/dexmill.h's. No framework, no request: plain script.
+ */
+"use strict";
+var dexmill = (function () {
+  var READY = 0, NEED_INPUT = 1, DONE = 2, STOPPED = 3;
+  var VIEWS = { iso: 0, top: 1, front: 2, right: 3 };
+  var STATES = ["ready", "need input", "done", "stopped", "input error"];
+
+  function wasmBytes() {
+    var s = atob(DEXMILL_WASM_BASE64), b = new Uint8Array(s.length);
+    for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
+    return b;
+  }
+
+  /* "AxB" as two positive integers (the CLI's --grid and --size). */
+  function pair(text, what) {
+    var m = /^\s*(\d+)\s*x\s*(\d+)\s*$/.exec(text || "");
+    if (!m) throw new Error(what + ": not WxH: '" + text + "'");
+    return [parseInt(m[1], 10), parseInt(m[2], 10)];
+  }
+
+  function Engine(exports) {
+    this.x = exports;
+    this.width = 0;
+    this.height = 0;
+  }
+  Engine.prototype.bytes = function (ptr, n) { return new Uint8Array(this.x.memory.buffer, ptr, n); };
+  Engine.prototype.cstring = function (ptr) {
+    var b = new Uint8Array(this.x.memory.buffer), end = ptr;
+    while (b[end]) ++end;
+    return new TextDecoder().decode(b.subarray(ptr, end));
+  };
+  /* Text into web_text()'s buffer; its length in bytes. */
+  Engine.prototype.put = function (text) {
+    var b = typeof text === "string" ? new TextEncoder().encode(text) : text;
+    if (b.length > this.x.web_text_bytes()) throw new Error("text too long");
+    this.bytes(this.x.web_text(), b.length).set(b);
+    return b.length;
+  };
+  Engine.prototype.check = function (status, what) {
+    if (status !== 0) throw new Error(what + ": " + this.cstring(this.x.web_status_message(status)));
+  };
+
+  /* A job from the CLI's texts: o.stock "X0,Y0,Z0,X1,Y1,Z1" (mm), o.tool
+   * "flat:6", o.grid "NXxNY", o.size "WxH", o.view iso|top|front|right,
+   * o.antialias and o.decorations as `dexmill run` draws its images. */
+  Engine.prototype.job = function (o) {
+    var x = this.x, v = String(o.stock || "").split(",");
+    this.check(x.web_job(), "job");
+    if (v.length !== 6) throw new Error("stock: six comma-separated numbers (mm)");
+    for (var k = 0; k < 6; ++k) this.check(x.web_set_stock(k, this.put(v[k])), "stock");
+    this.check(x.web_set_tool(this.put(o.tool || "flat:6")), "tool");
+    var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
+    this.check(x.web_set_grid(g[0], g[1]), "grid");
+    var view = VIEWS[o.view || "iso"];
+    if (view === undefined) throw new Error("view: iso, top, front or right");
+    this.check(x.web_create(s[0], s[1], view, o.antialias ? 1 : 0, o.decorations ? 1 : 0), "the job");
+    this.width = s[0];
+    this.height = s[1];
+  };
+
+  Engine.prototype.progress = function () {
+    var x = this.x;
+    this.check(x.web_progress(), "progress");
+    return {
+      state: STATES[x.web_state()] || "?", stopReason: x.web_stop_reason(), line: x.web_line(),
+      linesRead: x.web_lines_read(), moves: Number(x.web_moves()), errors: x.web_errors(),
+      warnings: x.web_warnings(), removedMm3: Number(x.web_removed_um3()) / 1e9,
+      machineSeconds: Number(x.web_machine_time_us()) / 1e6
+    };
+  };
+  /* The input errors kept: {line, col, message}. */
+  Engine.prototype.inputErrors = function () {
+    var out = [], x = this.x;
+    for (var k = 0; x.web_error_message(k) > 0; ++k)
+      out.push({ line: x.web_error_line(k), col: x.web_error_col(k), message: this.cstring(x.web_message()) });
+    return out;
+  };
+
+  /* Cuts the program of `source` (next(max) -> Promise of a Uint8Array, empty
+   * at its end). Every o.sliceMs (default 30) it draws, calls o.onSlice and
+   * lets the page run; o.moves is a step's budget (default 256). */
+  Engine.prototype.run = async function (source, o) {
+    o = o || {};
+    var x = this.x, moves = o.moves || 256, sliceMs = o.sliceMs || 30, state = READY, ended = false;
+    var last = performance.now();
+    while (state === READY || state === NEED_INPUT) {
+      state = x.web_step(moves);
+      if (state < 0) this.check(-state, "step");
+      if (state === NEED_INPUT) {
+        var piece = ended ? null : await source.next(x.web_text_bytes());
+        if (piece && piece.length) this.check(x.web_feed(this.put(piece)), "feed");
+        else { ended = true; this.check(x.web_end_input(), "end of input"); }
+      } else if (performance.now() - last > sliceMs) {
+        this.render();
+        if (o.onSlice) o.onSlice(this.progress());
+        await new Promise(function (r) { setTimeout(r, 0); });
+        last = performance.now();
+      }
+    }
+    this.render();
+    return this.progress();
+  };
+
+  Engine.prototype.render = function () {
+    var n = this.x.web_render();
+    if (n < 0) this.check(-n, "render");
+  };
+  /* The frame (XRGB8888, 0xFFRRGGBB little-endian: B, G, R, X) into a
+   * canvas's 2D context as RGBA. */
+  Engine.prototype.draw = function (ctx) {
+    var n = this.width * this.height, src = this.bytes(this.x.web_pixels(), n * 4);
+    var img = ctx.createImageData(this.width, this.height), d = img.data;
+    for (var i = 0; i < n * 4; i += 4) {
+      d[i] = src[i + 2];
+      d[i + 1] = src[i + 1];
+      d[i + 2] = src[i];
+      d[i + 3] = 255;
+    }
+    ctx.putImageData(img, 0, 0);
+  };
+
+  /* A File or Blob read in pieces (Blob.slice): only a piece is held. */
+  function blobSource(blob) {
+    var at = 0;
+    return {
+      next: async function (max) {
+        var piece = blob.slice(at, Math.min(blob.size, at + max));
+        at += piece.size;
+        return new Uint8Array(await piece.arrayBuffer());
+      }
+    };
+  }
+
+  /* FNV-1a (32 bits) of the R, G, B bytes of RGBA pixels, as hex: the pixel
+   * hash tools/scripts/web-test.sh computes of `dexmill run --image`'s. */
+  function fnv1aRgb(rgba) {
+    var h = 0x811c9dc5;
+    for (var i = 0; i < rgba.length; ++i) {
+      if ((i & 3) === 3) continue;
+      h = Math.imul(h ^ rgba[i], 16777619) >>> 0;
+    }
+    return ("0000000" + h.toString(16)).slice(-8);
+  }
+
+  function load() {
+    return WebAssembly.instantiate(wasmBytes(), {}).then(function (r) { return new Engine(r.instance.exports); });
+  }
+
+  return { load: load, blobSource: blobSource, fnv1aRgb: fnv1aRgb, DONE: DONE, STOPPED: STOPPED };
+})();

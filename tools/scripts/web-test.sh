@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# web-test.sh - make test-web: the page of `make web` (build/web/) in headless
+# Chromium draws the pixels `dexmill run --image` draws. For each case the
+# page's own form and Run path (index.html's dexmillPage.run) cuts a fixture
+# program fed from a Blob in pieces, draws the frame into its canvas, and
+# hashes the canvas's pixels (getImageData, FNV-1a of the R, G, B bytes, in
+# the page); the native run's PPM is hashed the same way, and the two RGB
+# byte strings are compared whole, the first differing pixel named. No
+# request may leave the page (tools/scripts/web_page.py watches). Also the
+# times of the job in the page and natively, and the page's size.
+# SKIPPED, said so, where the wasm build or Chromium is missing
+# (tools/scripts/install-deps.sh web).
+#   tools/scripts/web-test.sh BIN [WEBDIR]   (WEBDIR default build/web)
+set -eu
+bin=${1:?usage: web-test.sh BIN [WEBDIR]}
+cd "$(dirname "$0")/../.."
+web=${2:-build/web}
+fail() { echo "FAIL: web-test: $*"; exit 1; }
+browser=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$browser" ]; then
+  echo "web-test: SKIPPED: chromium not installed (tools/scripts/install-deps.sh web)"
+  exit 0
+fi
+if [ ! -s "$web/dexmill.js" ] || [ ! -s "$web/index.html" ]; then
+  echo "web-test: SKIPPED: no $web/dexmill.js (make web; its toolchain: tools/scripts/install-deps.sh web)"
+  exit 0
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# program | stock | tool | grid | size | view | the look: plain (aliased, no
+# triad or scale bar: --no-antialias --no-decorations) or cli (run's default)
+cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
+tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli'
+
+# The page: build/web/ as served, plus job.js, which sets the form per case
+# and runs it the way the Run button does, then hands back the canvas's RGB.
+cp "$web/index.html" "$web/dexmill.js" "$tmp/"
+{
+  echo "var DEXMILL_CASES = ["
+  while IFS='|' read -r prog stock tool grid size view look; do
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s},\n' \
+      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)"
+  done <<< "$cases"
+  echo "];"
+  cat <<'EOF'
+window.dexmillTest = (async function () {
+  var out = [], $ = function (id) { return document.getElementById(id); };
+  for (var c of DEXMILL_CASES) {
+    var s = atob(c.program), b = new Uint8Array(s.length);
+    for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
+    $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
+    $("view").value = c.view; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
+    var px = $("view-canvas").getContext("2d").getImageData(0, 0, r.width, r.height).data, rgb = "";
+    for (var k = 0; k < px.length; k += 4) rgb += String.fromCharCode(px[k], px[k + 1], px[k + 2]);
+    r.rgb = btoa(rgb);
+    r.shownHash = $("hash").textContent;
+    out.push(r);
+  }
+  return out;
+})();
+EOF
+} > "$tmp/job.js"
+sed 's|</body>|<script src="job.js"></script></body>|' "$web/index.html" > "$tmp/test.html"
+
+flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run --disable-background-networking
+       --disable-component-update --disable-sync --disable-default-apps --disable-domain-reliability
+       "--host-resolver-rules=MAP * ~NOTFOUND")
+python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html")" window.dexmillTest 300 "${flags[@]}" \
+  > "$tmp/page.json" || fail "the page did not run"
+
+# The native runs, timed, each as the CLI draws it.
+n=0
+while IFS='|' read -r prog stock tool grid size view look; do
+  n=$((n + 1))
+  opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size" --view "$view")
+  [ "$look" = cli ] || opts+=(--no-antialias --no-decorations)
+  t0=$(date +%s%N)
+  "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
+  t1=$(date +%s%N)
+  echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
+done <<< "$cases"
+
+python3 - "$tmp" <<'PY' || fail "the page's pixels are not dexmill run's"
+import base64, json, sys
+tmp = sys.argv[1]
+page = json.load(open(tmp + "/page.json"))
+native = [l.split("|") for l in open(tmp + "/native.txt").read().split("\n") if l]
+
+def fnv1a(data):
+    h = 0x811c9dc5
+    for b in data:
+        h = ((h ^ b) * 16777619) & 0xffffffff
+    return "%08x" % h
+
+def ppm(path):
+    raw = open(path, "rb").read()
+    fields, at = [], 0
+    while len(fields) < 4:  # P6, width, height, maxval; one whitespace byte after the last
+        while raw[at:at + 1].isspace():
+            at += 1
+        start = at
+        while not raw[at:at + 1].isspace():
+            at += 1
+        fields.append(raw[start:at])
+    assert fields[0] == b"P6" and fields[3] == b"255", path
+    return int(fields[1]), int(fields[2]), raw[at + 1:]
+
+bad = 0
+assert len(page) == len(native), "cases: %d in the page, %d native" % (len(page), len(native))
+for k, (r, (prog, size, view, look, ms)) in enumerate(zip(page, native), 1):
+    w, h, cli = ppm("%s/cli%d.ppm" % (tmp, k))
+    got = base64.b64decode(r["rgb"])
+    what = "%s %s %s %s" % (prog, size, view, look)
+    if (w, h) != (r["width"], r["height"]) or len(got) != len(cli):
+        print("web-test: %s: the page's frame is %dx%d, dexmill run's %dx%d" % (what, r["width"], r["height"], w, h))
+        bad = 1
+        continue
+    if fnv1a(got) != r["hash"] or r["shownHash"] != r["hash"]:
+        print("web-test: %s: the page's hash %s (shown %s) is not that of its pixels, %s" %
+              (what, r["hash"], r["shownHash"], fnv1a(got)))
+        bad = 1
+    if got != cli:
+        i = next(i for i in range(len(got)) if got[i] != cli[i]) // 3
+        diff = sum(1 for i in range(0, len(got), 3) if got[i:i + 3] != cli[i:i + 3])
+        print("web-test: %s: %d pixels differ, the first at (%d, %d): page %s, dexmill run %s" %
+              (what, diff, i % w, i // w, got[3 * i:3 * i + 3].hex(), cli[3 * i:3 * i + 3].hex()))
+        bad = 1
+        continue
+    print("ok: web-test: %s: the page's canvas is dexmill run's image, byte for byte (FNV-1a %s); "
+          "the job in the page %.0f ms, dexmill run %s ms (the whole process)" % (what, r["hash"], r["ms"], ms))
+sys.exit(bad)
+PY
+js=$(wc -c < "$web/dexmill.js"); html=$(wc -c < "$web/index.html"); wasm=$(wc -c < "$web/dexmill.wasm")
+gz=$(( $(gzip -9c "$web/index.html" | wc -c) + $(gzip -9c "$web/dexmill.js" | wc -c) ))
+echo "ok: web-test: no request left the page; dexmill.wasm $wasm B; the page (index.html + dexmill.js) $((js + html)) B, $gz B gzipped (each file gzip -9)"

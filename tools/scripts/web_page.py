@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""web_page.py - loads a page in headless Chromium, driven over the DevTools
+protocol on a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out, messages
+ended by NUL; no port, no package), waits for its load, then evaluates an
+expression, awaits it if it is a promise, and prints its value as JSON.
+Every request the page makes is watched: one that is not file:, data: or
+blob: fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log. tools/scripts/web-test.sh uses it.
+
+  web_page.py CHROMIUM URL EXPRESSION [TIMEOUT_S] [--flag...]
+Exit: 0 the value printed; 1 the page threw, timed out or made a request.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def fail(msg):
+    print("web_page: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+class Pipe:
+    def __init__(self, browser, flags, profile, log):
+        to_r, to_w = os.pipe()      # commands: we write, Chromium reads fd 3
+        from_r, from_w = os.pipe()  # answers: Chromium writes fd 4
+        def child():
+            os.dup2(to_r, 3)
+            os.dup2(from_w, 4)
+        self.proc = subprocess.Popen([browser, "--remote-debugging-pipe", "--user-data-dir=" + profile] + flags,
+                                     pass_fds=(3, 4), preexec_fn=child,
+                                     stdout=subprocess.DEVNULL, stderr=log)
+        os.close(to_r)
+        os.close(from_w)
+        self.w, self.r = to_w, from_r
+        self.buf = b""
+        self.next_id = 0
+        self.requests = []
+
+    def send(self, method, params=None, session=None):
+        self.next_id += 1
+        msg = {"id": self.next_id, "method": method, "params": params or {}}
+        if session:
+            msg["sessionId"] = session
+        os.write(self.w, json.dumps(msg).encode() + b"\0")
+        return self.next_id
+
+    def read(self, deadline):
+        while b"\0" not in self.buf:
+            if time.time() > deadline:
+                fail("timed out")
+            chunk = os.read(self.r, 1 << 16)
+            if not chunk:
+                fail("chromium closed the pipe")
+            self.buf += chunk
+        raw, self.buf = self.buf.split(b"\0", 1)
+        msg = json.loads(raw)
+        if msg.get("method") == "Network.requestWillBeSent":
+            url = msg["params"]["request"]["url"]
+            if not url.startswith(("file:", "data:", "blob:")):
+                self.requests.append(url)
+        return msg
+
+    def call(self, method, params, deadline, session=None, until=None):
+        """Sends a command; returns its result (after the event `until`, if given)."""
+        want = self.send(method, params, session)
+        result, seen = None, until is None
+        while result is None or not seen:
+            msg = self.read(deadline)
+            if msg.get("id") == want:
+                if "error" in msg:
+                    fail(method + ": " + json.dumps(msg["error"]))
+                result = msg["result"]
+            elif msg.get("method") == until:
+                seen = True
+        return result
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    flags = [a for a in sys.argv[1:] if a.startswith("--")]
+    if len(args) < 3:
+        fail("usage: web_page.py CHROMIUM URL EXPRESSION [TIMEOUT_S] [--flag...]")
+    browser, url, expr = args[:3]
+    deadline = time.time() + (float(args[3]) if len(args) > 3 else 120)
+    log = open(os.environ.get("WEB_PAGE_LOG", os.devnull), "w")
+    with tempfile.TemporaryDirectory(ignore_cleanup_errors=True) as profile:
+        p = Pipe(browser, flags, profile, log)
+        try:
+            target = p.call("Target.createTarget", {"url": "about:blank"}, deadline)["targetId"]
+            s = p.call("Target.attachToTarget", {"targetId": target, "flatten": True}, deadline)["sessionId"]
+            p.call("Network.enable", {}, deadline, s)
+            p.call("Page.enable", {}, deadline, s)
+            p.call("Page.navigate", {"url": url}, deadline, s, until="Page.loadEventFired")
+            r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
+                       deadline, s)
+        finally:
+            # Browser.close ends every process of it (a kill leaves its children writing the profile).
+            try:
+                p.send("Browser.close")
+                p.proc.wait(timeout=10)
+            except (OSError, subprocess.TimeoutExpired):
+                p.proc.kill()
+                p.proc.wait()
+    if "exceptionDetails" in r:
+        d = r["exceptionDetails"]
+        fail("the page threw: " + d.get("exception", {}).get("description", d.get("text", "?")))
+    if p.requests:
+        fail("the page made requests: " + " ".join(p.requests))
+    print(json.dumps(r["result"].get("value")))
+
+
+main()
