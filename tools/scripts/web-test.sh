@@ -10,9 +10,13 @@
 # times of the job in the page and natively, and the page's size.
 # SKIPPED, said so, where the wasm build or Chromium is missing
 # (tools/scripts/install-deps.sh web).
-#   tools/scripts/web-test.sh BIN [WEBDIR]   (WEBDIR default build/web)
+#   tools/scripts/web-test.sh BIN [WEBDIR [CASE...]]   (WEBDIR default build/web)
+# A CASE more is a line as those below, e.g. a long program for the times
+# (platform/web/README.md has the one its figures come from).
 set -eu
-bin=${1:?usage: web-test.sh BIN [WEBDIR]}
+bin=${1:?usage: web-test.sh BIN [WEBDIR [CASE...]]}
+bin=$(realpath "$bin")
+extra=("${@:3}")
 cd "$(dirname "$0")/../.."
 web=${2:-build/web}
 fail() { echo "FAIL: web-test: $*"; exit 1; }
@@ -33,6 +37,7 @@ trap 'rm -rf "$tmp"' EXIT
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli'
+for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
