@@ -1,7 +1,8 @@
 // web_arena.h - the one arena of the WebAssembly build: the linear memory
-// past the module's own data (the linker's __heap_base), grown once to a
-// job's size before the job is made (web_api.cpp), never while cutting. A
-// job as large as or smaller than the last reuses it as it is.
+// past the module's own data (the linker's __heap_base), grown to a job's
+// size while the job is made (web_api.cpp: the simulation, then its view,
+// which is sized from it), never while cutting. A job as large as or
+// smaller than the last reuses it as it is.
 #ifndef DEXMILL_PLATFORM_WEB_WEB_ARENA_H
 #define DEXMILL_PLATFORM_WEB_WEB_ARENA_H
 

@@ -9,7 +9,8 @@
 # request may leave the page (tools/scripts/web_page.py watches). Also the
 # times of the job in the page and natively, and the page's size.
 # SKIPPED, said so, where the wasm build or Chromium is missing
-# (tools/scripts/install-deps.sh web).
+# (tools/scripts/install-deps.sh web). WEB_PAGE_SCREENSHOT=FILE.png keeps a
+# picture of the page after the last case (web_page.py).
 #   tools/scripts/web-test.sh BIN [WEBDIR [CASE...]]   (WEBDIR default build/web)
 # A CASE more is a line as those below, e.g. a long program for the times
 # (platform/web/README.md has the one its figures come from).
@@ -35,8 +36,8 @@ trap 'rm -rf "$tmp"' EXIT
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default)
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
-tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
-tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli'
+tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case

@@ -4,11 +4,13 @@ protocol on a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out, messages
 ended by NUL; no port, no package), waits for its load, then evaluates an
 expression, awaits it if it is a promise, and prints its value as JSON.
 Every request the page makes is watched: one that is not file:, data: or
-blob: fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log. tools/scripts/web-test.sh uses it.
+blob: fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log;
+WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated. tools/scripts/web-test.sh uses it.
 
   web_page.py CHROMIUM URL EXPRESSION [TIMEOUT_S] [--flag...]
 Exit: 0 the value printed; 1 the page threw, timed out or made a request.
 """
+import base64
 import json
 import os
 import subprocess
@@ -93,9 +95,16 @@ def main():
             s = p.call("Target.attachToTarget", {"targetId": target, "flatten": True}, deadline)["sessionId"]
             p.call("Network.enable", {}, deadline, s)
             p.call("Page.enable", {}, deadline, s)
+            p.call("Emulation.setDeviceMetricsOverride",
+                   {"width": 1000, "height": 620, "deviceScaleFactor": 1, "mobile": False}, deadline, s)
             p.call("Page.navigate", {"url": url}, deadline, s, until="Page.loadEventFired")
             r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
                        deadline, s)
+            shot = os.environ.get("WEB_PAGE_SCREENSHOT")
+            if shot:
+                png = p.call("Page.captureScreenshot", {"format": "png"}, deadline, s)["data"]
+                with open(shot, "wb") as f:
+                    f.write(base64.b64decode(png))
         finally:
             # Browser.close ends every process of it (a kill leaves its children writing the profile).
             try:
