@@ -346,9 +346,13 @@ web: $(WEB)/dexmill.wasm $(WEB)/dexmill.js $(WEB)/index.html
 build/wasm32/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(Q)$(WEB_CXX) -std=c++17 $(WEB_OPT) $(WARN) -I. $(INTFLAGS) -MMD -MP -ffunction-sections -fdata-sections -c $< -o $@
+# The libraries' members it links (--trace): string and memory functions and
+# 128-bit arithmetic; never malloc or the C++ runtime (no heap, as on Cortex-M).
+# An import would fail dexmill.js's instantiation (it gives none).
 $(WEB)/dexmill.wasm: $(WEB_OBJ)
 	$(call say,LINK,$@)
-	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@
+	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@ -Wl,--trace > build/wasm32/link.trace
+	$(Q)! grep -E 'malloc|libc\+\+' build/wasm32/link.trace || { echo "make web: the module links the heap or the C++ runtime (above)"; rm -f $@; exit 1; }
 $(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
 	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
 $(WEB)/index.html: platform/web/index.html
