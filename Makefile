@@ -333,6 +333,8 @@ panel-w3:
 #   make test-web  the page in headless Chromium: its canvas's pixels hashed
 #                  in the page against `dexmill run --image`'s (SKIPPED, said
 #                  so, without Chromium or the wasm32 toolchain)
+#   make test-web-stream  a 35 MB program read in pieces through the page's
+#                  file input: the same bytes, the tab's peak memory
 # Debian's clang and wasm-ld with wasi-libc for memcpy and the like; no
 # start files, no entry: the page calls the exports of platform/web/web_api.cpp.
 WEB      := build/web
@@ -341,7 +343,7 @@ WEB_OPT  ?= -O2
 WEB_SRC  := $(CORE_SRC) $(DISPLAY_SRC) $(sort $(wildcard platform/web/*.cpp))
 WEB_OBJ  := $(patsubst %.cpp,build/wasm32/obj/%.o,$(WEB_SRC))  # not in $(WEB): that folder is what a panel serves
 WEB_LDFLAGS := -nostartfiles -Wl,--no-entry -Wl,--gc-sections -Wl,--stack-first -Wl,-z,stack-size=1048576 -Wl,--strip-all
-.PHONY: web test-web
+.PHONY: web test-web test-web-stream
 web: $(WEB)/dexmill.wasm $(WEB)/dexmill.js $(WEB)/index.html
 build/wasm32/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
@@ -362,6 +364,10 @@ $(WEB)/index.html: platform/web/index.html
 WEB_CAN  := $(and $(wildcard /usr/lib/wasm32-wasi/libc.a),$(shell command -v wasm-ld),$(shell command -v chromium))
 test-web: $(BIN) $(if $(WEB_CAN),web)
 	$(Q)tools/scripts/web-test.sh $(abspath $(BIN))
+# Not in `make test` (about a minute): a 35 MB program through the page's
+# file input, its frame against dexmill run's, the tab's peak memory.
+test-web-stream: $(BIN) $(if $(WEB_CAN),web)
+	$(Q)tools/scripts/web-stream-test.sh $(abspath $(BIN))
 -include $(shell find build/wasm32 -name '*.d' 2>/dev/null)
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------

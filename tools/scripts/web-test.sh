@@ -20,18 +20,8 @@ bin=$(realpath "$bin")
 extra=("${@:3}")
 cd "$(dirname "$0")/../.."
 web=${2:-build/web}
-fail() { echo "FAIL: web-test: $*"; exit 1; }
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$browser" ]; then
-  echo "web-test: SKIPPED: chromium not installed (tools/scripts/install-deps.sh web)"
-  exit 0
-fi
-if [ ! -s "$web/dexmill.js" ] || [ ! -s "$web/index.html" ]; then
-  echo "web-test: SKIPPED: no $web/dexmill.js (make web; its toolchain: tools/scripts/install-deps.sh web)"
-  exit 0
-fi
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+. tools/scripts/web_common.sh
+web_setup web-test "$web"
 
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default)
@@ -42,7 +32,6 @@ for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
-cp "$web/index.html" "$web/dexmill.js" "$tmp/"
 {
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look; do
@@ -50,6 +39,7 @@ cp "$web/index.html" "$web/dexmill.js" "$tmp/"
       "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)"
   done <<< "$cases"
   echo "];"
+  cat tools/scripts/web_probe.js
   cat <<'EOF'
 window.dexmillTest = (async function () {
   var out = [], $ = function (id) { return document.getElementById(id); };
@@ -58,12 +48,7 @@ window.dexmillTest = (async function () {
     for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     $("view").value = c.view; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
-    var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
-    var px = $("view-canvas").getContext("2d").getImageData(0, 0, r.width, r.height).data, rgb = "";
-    for (var k = 0; k < px.length; k += 4) rgb += String.fromCharCode(px[k], px[k + 1], px[k + 2]);
-    r.rgb = btoa(rgb);
-    r.shownHash = $("hash").textContent;
-    out.push(r);
+    out.push(dexmillProbe(await dexmillPage.run(dexmill.blobSource(new Blob([b])))));
   }
   return out;
 })();
@@ -71,10 +56,7 @@ EOF
 } > "$tmp/job.js"
 sed 's|</body>|<script src="job.js"></script></body>|' "$web/index.html" > "$tmp/test.html"
 
-flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars --no-first-run --disable-background-networking
-       --disable-component-update --disable-sync --disable-default-apps --disable-domain-reliability
-       "--host-resolver-rules=MAP * ~NOTFOUND")
-python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html")" window.dexmillTest 300 "${flags[@]}" \
+python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html")" window.dexmillTest 300 "${web_flags[@]}" \
   > "$tmp/page.json" || fail "the page did not run"
 
 # The native runs, timed, each as the CLI draws it.

@@ -5,7 +5,11 @@ ended by NUL; no port, no package), waits for its load, then evaluates an
 expression, awaits it if it is a promise, and prints its value as JSON.
 Every request the page makes is watched: one that is not file:, data: or
 blob: fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log;
-WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated. tools/scripts/web-test.sh uses it.
+WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated;
+WEB_PAGE_FILE="SELECTOR=PATH" gives a file input that file (as a user
+choosing it), before the expression runs; WEB_PAGE_MEMORY=FILE writes the
+peak resident memory (VmHWM, kB) of the browser's renderer processes, the
+page's tab among them, once evaluated. tools/scripts/web-test.sh uses it.
 
   web_page.py CHROMIUM URL EXPRESSION [TIMEOUT_S] [--flag...]
 Exit: 0 the value printed; 1 the page threw, timed out or made a request.
@@ -80,6 +84,40 @@ class Pipe:
         return result
 
 
+def renderer_peaks_kb(root):
+    """VmHWM of each renderer process under pid root (Linux /proc)."""
+    parent, cmd = {}, {}
+    for d in os.listdir("/proc"):
+        if not d.isdigit():
+            continue
+        try:
+            stat = open("/proc/%s/stat" % d).read()
+            parent[int(d)] = int(stat[stat.rindex(")") + 2:].split()[1])
+            cmd[int(d)] = open("/proc/%s/cmdline" % d, "rb").read()
+        except (OSError, ValueError):
+            continue
+    peaks = []
+    for pid in parent:
+        up = pid
+        while up in parent and up != root:
+            up = parent[up]
+        if up == root and b"--type=renderer" in cmd[pid]:
+            for line in open("/proc/%d/status" % pid):
+                if line.startswith("VmHWM:"):
+                    peaks.append(int(line.split()[1]))
+    return peaks
+
+
+def set_file(p, spec, deadline, s):
+    """WEB_PAGE_FILE: SELECTOR=PATH into that file input."""
+    selector, path = spec.split("=", 1)
+    root = p.call("DOM.getDocument", {}, deadline, s)["root"]["nodeId"]
+    node = p.call("DOM.querySelector", {"nodeId": root, "selector": selector}, deadline, s)["nodeId"]
+    if not node:
+        fail("no element " + selector)
+    p.call("DOM.setFileInputFiles", {"nodeId": node, "files": [os.path.abspath(path)]}, deadline, s)
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     flags = [a for a in sys.argv[1:] if a.startswith("--")]
@@ -98,8 +136,13 @@ def main():
             p.call("Emulation.setDeviceMetricsOverride",
                    {"width": 1000, "height": 620, "deviceScaleFactor": 1, "mobile": False}, deadline, s)
             p.call("Page.navigate", {"url": url}, deadline, s, until="Page.loadEventFired")
+            if os.environ.get("WEB_PAGE_FILE"):
+                set_file(p, os.environ["WEB_PAGE_FILE"], deadline, s)
             r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
                        deadline, s)
+            if os.environ.get("WEB_PAGE_MEMORY"):
+                with open(os.environ["WEB_PAGE_MEMORY"], "w") as f:
+                    f.write(" ".join(str(k) for k in renderer_peaks_kb(p.proc.pid)) + "\n")
             shot = os.environ.get("WEB_PAGE_SCREENSHOT")
             if shot:
                 png = p.call("Page.captureScreenshot", {"format": "png"}, deadline, s)["data"]
