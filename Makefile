@@ -19,6 +19,9 @@
 #   make GLFW=1       build/glfw/dexmill, with the live window of `dexmill run --window`
 #                     (libglfw3-dev: tools/scripts/install-deps.sh window); its own
 #                     build folder, so switching does not rebuild the rest
+#   make web          build/web/: the page that cuts and draws in a browser
+#                     (WebAssembly; tools/scripts/install-deps.sh web), and
+#                     make test-web its pixels against dexmill run's in Chromium
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (core/README.md,
@@ -364,7 +367,7 @@ $(WEB)/index.html: platform/web/index.html
 WEB_CAN  := $(and $(wildcard /usr/lib/wasm32-wasi/libc.a),$(shell command -v wasm-ld),$(shell command -v chromium))
 test-web: $(BIN) $(if $(WEB_CAN),web)
 	$(Q)tools/scripts/web-test.sh $(abspath $(BIN))
-# Not in `make test` (about a minute): a 35 MB program through the page's
+# Not in `make test` (about 20 s): a 35 MB program through the page's
 # file input, its frame against dexmill run's, the tab's peak memory.
 test-web-stream: $(BIN) $(if $(WEB_CAN),web)
 	$(Q)tools/scripts/web-stream-test.sh $(abspath $(BIN))

@@ -8,8 +8,8 @@
 # (tools/scripts/web_compare.py). Also the times, and the peak resident
 # memory of the tab (its renderer's VmHWM, tools/scripts/web_page.py)
 # against the same page cutting the program's first 1000 lines: a tab that
-# held the file would need its 35 MB more. Not in `make test` (about a
-# minute); SKIPPED, said so, without the wasm build or Chromium.
+# held the file would need its 35 MB more. Not in `make test` (about 20
+# s); SKIPPED, said so, without the wasm build or Chromium.
 #   tools/scripts/web-stream-test.sh BIN [WEBDIR]   (WEBDIR default build/web)
 set -eu
 bin=$(realpath "${1:?usage: web-stream-test.sh BIN [WEBDIR]}")
