@@ -154,6 +154,7 @@ var dexmill = (function () {
     var at = 0, reader = null, buf = null;
     try { reader = blob.stream().getReader({ mode: "byob" }); } catch (e) { reader = null; }
     return {
+      name: blob.name || "program",  /* a File's name, for FILE:LINE:COL */
       next: async function (max) {
         if (!reader) {
           var piece = blob.slice(at, Math.min(blob.size, at + max));
