@@ -37,6 +37,7 @@ var dexmill = (function () {
     this.x = exports;
     this.width = 0;
     this.height = 0;
+    this.generation = 0;  /* jobs made: one job at a time lives in the module */
   }
   Engine.prototype.bytes = function (ptr, n) { return new Uint8Array(this.x.memory.buffer, ptr, n); };
   Engine.prototype.cstring = function (ptr) {
@@ -60,6 +61,7 @@ var dexmill = (function () {
    * o.antialias and o.decorations as `dexmill run` draws its images. */
   Engine.prototype.job = function (o) {
     var x = this.x, v = String(o.stock || "").split(",");
+    ++this.generation;  /* a run of the job before stops at its next await */
     this.check(x.web_job(), "job");
     if (v.length !== 6) throw new Error("stock: six comma-separated numbers (mm)");
     for (var k = 0; k < 6; ++k) this.check(x.web_set_stock(k, this.put(v[k])), "stock");
@@ -101,12 +103,15 @@ var dexmill = (function () {
   Engine.prototype.run = async function (source, o) {
     o = o || {};
     var x = this.x, moves = o.moves || 256, sliceMs = o.sliceMs || 30, state = READY, ended = false;
-    var last = performance.now(), drawn = -Infinity, drawCost = 0;
+    var last = performance.now(), drawn = -Infinity, drawCost = 0, generation = this.generation, self = this;
+    /* After each await: the module may hold another job now (Run again). */
+    function mine() { if (self.generation !== generation) throw new Error("replaced by a new job"); }
     while (state === READY || state === NEED_INPUT) {
       state = x.web_step(moves);
       if (state < 0) this.check(-state, "step");
       if (state === NEED_INPUT) {
         var piece = ended ? null : await source.next(x.web_text_bytes());
+        mine();
         if (piece && piece.length) this.check(x.web_feed(this.put(piece)), "feed");
         else { ended = true; this.check(x.web_end_input(), "end of input"); }
       } else if (performance.now() - last > sliceMs) {
@@ -118,6 +123,7 @@ var dexmill = (function () {
           drawCost = drawn - t;
         }
         await yieldToPage();
+        mine();
         last = performance.now();
       }
     }
