@@ -10,6 +10,8 @@
 var dexmill = (function () {
   var READY = 0, NEED_INPUT = 1, DONE = 2, STOPPED = 3;
   var VIEWS = { iso: 0, top: 1, front: 2, right: 3 };
+  /* The presets' eye directions, [azimuth, elevation] in degrees: where an orbit starts. */
+  var PRESET_ANGLES = { iso: [-45, 35.264], top: [-90, 90], front: [-90, 0], right: [0, 0] };
   var STATES = ["ready", "need input", "done", "stopped", "input error"];
 
   function wasmBytes() {
@@ -131,6 +133,15 @@ var dexmill = (function () {
     return this.progress();
   };
 
+  /* The eye's azimuth (around +z from +x) and elevation in degrees, as the
+   * CLI's --azimuth and --elevation, redrawn whole; a preset's are PRESET_ANGLES
+   * (display/raster/camera.h). */
+  Engine.prototype.orbit = function (azimuthDeg, elevationDeg) {
+    var el = Math.max(-90, Math.min(90, elevationDeg));
+    this.check(this.x.web_set_camera(0, 1, Math.round(azimuthDeg * 1000), Math.round(el * 1000)), "camera");
+    this.render();
+  };
+
   Engine.prototype.render = function () {
     var n = this.x.web_render();
     if (n < 0) this.check(-n, "render");
@@ -191,5 +202,6 @@ var dexmill = (function () {
     return WebAssembly.instantiate(wasmBytes(), {}).then(function (r) { return new Engine(r.instance.exports); });
   }
 
-  return { load: load, blobSource: blobSource, fnv1aRgb: fnv1aRgb, DONE: DONE, STOPPED: STOPPED };
+  return { load: load, blobSource: blobSource, fnv1aRgb: fnv1aRgb, PRESET_ANGLES: PRESET_ANGLES, DONE: DONE,
+           STOPPED: STOPPED };
 })();

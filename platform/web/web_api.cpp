@@ -99,6 +99,15 @@ WEB_EXPORT(web_create) int32_t web_create(int32_t w, int32_t h, int32_t preset, 
   return dm_view_set_decorations(g.view, decorations);
 }
 
+// The camera: a DM_VIEW_* preset, or (angles non-zero) the eye's azimuth
+// around +z from +x and elevation, in millidegrees (the page's orbit); the
+// next web_render draws the whole frame.
+WEB_EXPORT(web_set_camera) int32_t web_set_camera(int32_t preset, int32_t angles, int32_t azimuth_mdeg,
+                                                  int32_t elevation_mdeg) {
+  const dm_camera camera{preset, angles, azimuth_mdeg, elevation_mdeg};
+  return dm_view_set_camera(g.view, &camera);
+}
+
 // Program text: web_text()[0, n), lent until web_input_taken() is 1.
 WEB_EXPORT(web_feed) int32_t web_feed(int32_t n) {
   if (n < 0 || static_cast<size_t>(n) > kTextBytes) return DM_E_ARGUMENT;

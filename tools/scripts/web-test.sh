@@ -24,9 +24,13 @@ web=${2:-build/web}
 web_setup web-test "$web"
 
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
-# triad or scale bar: --no-antialias --no-decorations) or cli (run's default)
+# triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
+# A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
+# (the page's orbit: synthetic pointer events), against dexmill run's
+# --azimuth and --elevation of iso's turned half a degree a pixel.
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
 tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso+30+10|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
@@ -47,8 +51,19 @@ window.dexmillTest = (async function () {
     var s = atob(c.program), b = new Uint8Array(s.length);
     for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
-    $("view").value = c.view; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
-    out.push(dexmillProbe(await dexmillPage.run(dexmill.blobSource(new Blob([b])))));
+    var view = c.view.split("+");
+    $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
+    if (view.length === 3) {  /* a drag across the canvas, as a finger or mouse makes it */
+      var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
+      canvas.dispatchEvent(new PointerEvent("pointerdown", at(0, 0)));
+      canvas.dispatchEvent(new PointerEvent("pointermove", at(+view[1], +view[2])));
+      await new Promise(function (done) { requestAnimationFrame(done); });
+      canvas.dispatchEvent(new PointerEvent("pointerup", at(+view[1], +view[2])));
+      await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
+      r.hash = $("hash").textContent;
+    }
+    out.push(dexmillProbe(r));
   }
   return out;
 })();
@@ -63,7 +78,13 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 n=0
 while IFS='|' read -r prog stock tool grid size view look; do
   n=$((n + 1))
-  opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size" --view "$view")
+  opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size")
+  case $view in
+    iso+*) IFS=+ read -r _ dx dy <<< "$view"
+           opts+=(--azimuth "$(awk -v d="$dx" 'BEGIN { printf "%.3f", -45 - d / 2 }')"
+                  --elevation "$(awk -v d="$dy" 'BEGIN { printf "%.3f", 35.264 + d / 2 }')");;
+    *) opts+=(--view "$view");;
+  esac
   [ "$look" = cli ] || opts+=(--no-antialias --no-decorations)
   t0=$(date +%s%N)
   "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
