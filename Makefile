@@ -362,7 +362,7 @@ $(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
 	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
 $(WEB)/index.html: platform/web/index.html
 	$(Q)cp $< $@
-# In `make test`: built only where the toolchain and Chromium are (Debian's
+# In `make test` (about 8 s): built only where the toolchain and Chromium are (Debian's
 # paths, as install-deps.sh web puts them); the script says SKIPPED otherwise.
 WEB_CAN  := $(and $(wildcard /usr/lib/wasm32-wasi/libc.a),$(shell command -v wasm-ld),$(shell command -v chromium))
 test-web: $(BIN) $(if $(WEB_CAN),web)

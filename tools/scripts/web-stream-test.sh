@@ -43,7 +43,7 @@ expr="$(cat tools/scripts/web_probe.js)
 })()"
 for prog in short long; do
   WEB_PAGE_FILE="#file=$tmp/$prog.ngc" WEB_PAGE_MEMORY="$tmp/$prog.mem" python3 tools/scripts/web_page.py "$browser" \
-    "file://$(realpath "$tmp/index.html")" "$expr" 600 "${web_flags[@]}" > "$tmp/$prog.json" || fail "the page did not run $prog.ngc"
+    "file://$(realpath "$tmp/index.html")" "$expr" 600 "${web_flags[@]}" "$web_no_hosts" > "$tmp/$prog.json" || fail "the page did not run $prog.ngc"
 done
 mv "$tmp/long.json" "$tmp/page.json"
 

@@ -71,7 +71,7 @@ EOF
 } > "$tmp/job.js"
 sed 's|</body>|<script src="job.js"></script></body>|' "$web/index.html" > "$tmp/test.html"
 
-python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html")" window.dexmillTest 300 "${web_flags[@]}" \
+python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html")" window.dexmillTest 300 "${web_flags[@]}" "$web_no_hosts" \
   > "$tmp/page.json" || fail "the page did not run"
 
 # The native runs, timed, each as the CLI draws it.
@@ -93,6 +93,22 @@ while IFS='|' read -r prog stock tool grid size view look; do
 done <<< "$cases"
 
 python3 tools/scripts/web_compare.py "$tmp" || fail "the page's pixels are not dexmill run's"
+
+# The same page from a static server (Python's, on a free local port): the
+# same frames, and no request but to that server.
+port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+python3 -m http.server --bind 127.0.0.1 --directory "$tmp" "$port" > /dev/null 2>&1 &
+server=$!
+trap 'kill "$server" 2> /dev/null; rm -rf "$tmp"' EXIT
+for _ in $(seq 50); do python3 -c "import socket; socket.create_connection(('127.0.0.1', $port))" 2> /dev/null && break; sleep 0.1; done
+WEB_PAGE_ALLOW="http://127.0.0.1:$port/" python3 tools/scripts/web_page.py "$browser" "http://127.0.0.1:$port/test.html" \
+  window.dexmillTest 300 "${web_flags[@]}" "$web_no_hosts, EXCLUDE 127.0.0.1" > "$tmp/page-http.json" || fail "the page did not run from http://127.0.0.1:$port/"
+python3 - "$tmp" <<'PY' || fail "the page's frames from a server are not those from file://"
+import json, sys
+a, b = (json.load(open(sys.argv[1] + f)) for f in ("/page.json", "/page-http.json"))
+sys.exit(0 if [r["rgb"] for r in a] == [r["rgb"] for r in b] else 1)
+PY
+echo "ok: web-test: the page from a static server (http://127.0.0.1:$port/) draws the same $(grep -c . <<< "$cases") frames"
 js=$(wc -c < "$web/dexmill.js"); html=$(wc -c < "$web/index.html"); wasm=$(wc -c < "$web/dexmill.wasm")
 gz=$(( $(gzip -9c "$web/index.html" | wc -c) + $(gzip -9c "$web/dexmill.js" | wc -c) ))
 echo "ok: web-test: no request left the page; dexmill.wasm $wasm B; the page (index.html + dexmill.js) $((js + html)) B, $gz B gzipped (each file gzip -9)"

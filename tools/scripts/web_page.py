@@ -4,7 +4,8 @@ protocol on a pipe (--remote-debugging-pipe: fd 3 in, fd 4 out, messages
 ended by NUL; no port, no package), waits for its load, then evaluates an
 expression, awaits it if it is a promise, and prints its value as JSON.
 Every request the page makes is watched: one that is not file:, data: or
-blob: fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log;
+blob: (or under WEB_PAGE_ALLOW, a URL prefix: the server the page is loaded
+from) fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log;
 WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated;
 WEB_PAGE_FILE="SELECTOR=PATH" gives a file input that file (as a user
 choosing it), before the expression runs; WEB_PAGE_MEMORY=FILE writes the
@@ -65,7 +66,8 @@ class Pipe:
         msg = json.loads(raw)
         if msg.get("method") == "Network.requestWillBeSent":
             url = msg["params"]["request"]["url"]
-            if not url.startswith(("file:", "data:", "blob:")):
+            allowed = ("file:", "data:", "blob:") + ((os.environ["WEB_PAGE_ALLOW"],) if os.environ.get("WEB_PAGE_ALLOW") else ())
+            if not url.startswith(allowed):
                 self.requests.append(url)
         return msg
 
