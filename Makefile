@@ -355,12 +355,14 @@ build/wasm32/obj/%.o: %.cpp
 # 128-bit arithmetic; never malloc or the C++ runtime (no heap, as on Cortex-M).
 # An import would fail dexmill.js's instantiation (it gives none).
 $(WEB)/dexmill.wasm: $(WEB_OBJ)
+	@mkdir -p $(WEB)
 	$(call say,LINK,$@)
 	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@ -Wl,--trace > build/wasm32/link.trace
 	$(Q)! grep -E 'malloc|libc\+\+' build/wasm32/link.trace || { echo "make web: the module links the heap or the C++ runtime (above)"; rm -f $@; exit 1; }
 $(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
 	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
 $(WEB)/index.html: platform/web/index.html
+	@mkdir -p $(WEB)
 	$(Q)cp $< $@
 # In `make test` (about 8 s): built only where the toolchain and Chromium are (Debian's
 # paths, as install-deps.sh web puts them); the script says SKIPPED otherwise.
