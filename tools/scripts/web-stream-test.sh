@@ -13,8 +13,9 @@
 #   tools/scripts/web-stream-test.sh BIN [WEBDIR]   (WEBDIR default build/web)
 set -eu
 bin=$(realpath "${1:?usage: web-stream-test.sh BIN [WEBDIR]}")
+web=${2:+$(realpath "$2")}
 cd "$(dirname "$0")/../.."
-web=${2:-build/web}
+web=${web:-build/web}
 . tools/scripts/web_common.sh
 web_setup web-stream-test "$web"
 

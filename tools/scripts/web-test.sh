@@ -6,8 +6,9 @@
 # hashes the canvas's pixels (getImageData, FNV-1a of the R, G, B bytes, in
 # the page); the native run's PPM is hashed the same way, and the two RGB
 # byte strings are compared whole, the first differing pixel named. No
-# request may leave the page (tools/scripts/web_page.py watches). Also the
-# times of the job in the page and natively, and the page's size.
+# request may leave the page (tools/scripts/web_page.py watches). Then the
+# same page from a static server on 127.0.0.1 draws the same frames. Also
+# the times of the job in the page and natively, and the page's size.
 # SKIPPED, said so, where the wasm build or Chromium is missing
 # (tools/scripts/install-deps.sh web). WEB_PAGE_SCREENSHOT=FILE.png keeps a
 # picture of the page after the last case (web_page.py).
@@ -18,8 +19,9 @@ set -eu
 bin=${1:?usage: web-test.sh BIN [WEBDIR [CASE...]]}
 bin=$(realpath "$bin")
 extra=("${@:3}")
+web=${2:+$(realpath "$2")}
 cd "$(dirname "$0")/../.."
-web=${2:-build/web}
+web=${web:-build/web}
 . tools/scripts/web_common.sh
 web_setup web-test "$web"
 
