@@ -137,8 +137,8 @@ var dexmill = (function () {
    * CLI's --azimuth and --elevation, redrawn whole; a preset's are PRESET_ANGLES
    * (display/raster/camera.h). */
   Engine.prototype.orbit = function (azimuthDeg, elevationDeg) {
-    var el = Math.max(-90, Math.min(90, elevationDeg));
-    this.check(this.x.web_set_camera(0, 1, Math.round(azimuthDeg * 1000), Math.round(el * 1000)), "camera");
+    var el = Math.max(-90, Math.min(90, elevationDeg)), az = ((azimuthDeg % 360) + 540) % 360 - 180;  /* -180..180 */
+    this.check(this.x.web_set_camera(0, 1, Math.round(az * 1000), Math.round(el * 1000)), "camera");
     this.render();
   };
 
