@@ -19,6 +19,9 @@
 #   make GLFW=1       build/glfw/dexmill, with the live window of `dexmill run --window`
 #                     (libglfw3-dev: tools/scripts/install-deps.sh window); its own
 #                     build folder, so switching does not rebuild the rest
+#   make web          build/web/: the page that cuts and draws in a browser
+#                     (WebAssembly; tools/scripts/install-deps.sh web), and
+#                     make test-web its pixels against dexmill run's in Chromium
 #
 # core/ and display/ are compiled with -fno-exceptions -fno-rtti and with
 # core/integer_only.h forced in, which poisons float and double (core/README.md,
@@ -78,7 +81,7 @@ endif
 rwildcard = $(foreach d,$(wildcard $(1:=/*)),$(call rwildcard,$(d),$(2)) $(filter $(subst *,%,$(2)),$(d)))
 CORE_SRC     := $(sort $(call rwildcard,core,*.cpp))
 DISPLAY_SRC  := $(sort $(call rwildcard,display,*.cpp))
-PLATFORM_SRC := $(sort $(call rwildcard,platform,*.cpp))
+PLATFORM_SRC := $(sort $(filter-out platform/web/%,$(call rwildcard,platform,*.cpp)))  # web/: wasm32 only (make web)
 TOOLS_SRC    := $(sort $(filter-out tools/cli/main.cpp tools/panel/%,$(call rwildcard,tools,*.cpp)))
 TEST_SRC     := $(sort $(wildcard tests/*.cpp))
 INT_HEADERS  := $(sort $(call rwildcard,core display,*.h))
@@ -192,7 +195,7 @@ check-bless: $(GOLDEN_BIN) $(TEST_BIN) $(BIN)
 
 test: check-headers check-poison check-layers check-function-length check-comments check-c-api check-lib test-unit \
       check-golden-out \
-      check-bless test-embed test-python test-install test-sheet check-readme
+      check-bless test-embed test-python test-install test-sheet test-web check-readme
 
 run: $(BIN)
 	$(BIN) run --demo pocket
@@ -324,6 +327,53 @@ panel:
 	$(EMBEDDED_ENV) tools/scripts/panel.sh $(PANEL_ARGS)
 panel-w3:
 	$(EMBEDDED_ENV) tools/scripts/panel_w3.sh $(PANEL_ARGS)
+
+# ---- the browser (platform/web/README.md) ------------------------------------
+#   make web       build/web/: dexmill.wasm (core/, display/ and the C API,
+#                  integer-only, with the glue of platform/web/), dexmill.js
+#                  (the loader with the module inside as base64, so the page
+#                  works from file://) and index.html
+#   make test-web  the page in headless Chromium: its canvas's pixels hashed
+#                  in the page against `dexmill run --image`'s (SKIPPED, said
+#                  so, without Chromium or the wasm32 toolchain)
+#   make test-web-stream  a 35 MB program read in pieces through the page's
+#                  file input: the same bytes, the tab's peak memory
+# Debian's clang and wasm-ld with wasi-libc for memcpy and the like; no
+# start files, no entry: the page calls the exports of platform/web/web_api.cpp.
+WEB      := build/web
+WEB_CXX  ?= clang++ --target=wasm32-wasi
+WEB_OPT  ?= -O2
+WEB_SRC  := $(CORE_SRC) $(DISPLAY_SRC) $(sort $(wildcard platform/web/*.cpp))
+WEB_OBJ  := $(patsubst %.cpp,build/wasm32/obj/%.o,$(WEB_SRC))  # not in $(WEB): that folder is what a panel serves
+WEB_LDFLAGS := -nostartfiles -Wl,--no-entry -Wl,--gc-sections -Wl,--stack-first -Wl,-z,stack-size=1048576 -Wl,--strip-all
+.PHONY: web test-web test-web-stream
+web: $(WEB)/dexmill.wasm $(WEB)/dexmill.js $(WEB)/index.html
+build/wasm32/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(Q)$(WEB_CXX) -std=c++17 $(WEB_OPT) $(WARN) -I. $(INTFLAGS) -MMD -MP -ffunction-sections -fdata-sections -c $< -o $@
+# The libraries' members it links (--trace): string and memory functions and
+# 128-bit arithmetic; never malloc or the C++ runtime (no heap, as on Cortex-M).
+# An import would fail dexmill.js's instantiation (it gives none).
+$(WEB)/dexmill.wasm: $(WEB_OBJ)
+	@mkdir -p $(WEB)
+	$(call say,LINK,$@)
+	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@ -Wl,--trace > build/wasm32/link.trace
+	$(Q)! grep -E 'malloc|libc\+\+' build/wasm32/link.trace || { echo "make web: the module links the heap or the C++ runtime (above)"; rm -f $@; exit 1; }
+$(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
+	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
+$(WEB)/index.html: platform/web/index.html
+	@mkdir -p $(WEB)
+	$(Q)cp $< $@
+# In `make test` (about 8 s): built only where the toolchain and Chromium are (Debian's
+# paths, as install-deps.sh web puts them); the script says SKIPPED otherwise.
+WEB_CAN  := $(and $(wildcard /usr/lib/wasm32-wasi/libc.a),$(shell command -v wasm-ld),$(shell command -v chromium))
+test-web: $(BIN) $(if $(WEB_CAN),web)
+	$(Q)tools/scripts/web-test.sh $(abspath $(BIN))
+# Not in `make test` (about 20 s): a 35 MB program through the page's
+# file input, its frame against dexmill run's, the tab's peak memory.
+test-web-stream: $(BIN) $(if $(WEB_CAN),web)
+	$(Q)tools/scripts/web-stream-test.sh $(abspath $(BIN))
+-include $(shell find build/wasm32 -name '*.d' 2>/dev/null)
 
 # ---- fuzzing (libFuzzer, clang; Debian libclang-rt-14-dev) ------------------
 #   make fuzz SECONDS=N           the pipeline target N seconds (default 60)

@@ -5,6 +5,8 @@
 #   tools/scripts/install-deps.sh cross      + cross compilers, qemu, Cortex-M toolchain
 #   tools/scripts/install-deps.sh oracle     + LinuxCNC's stand-alone interpreter rs274 (oracle-check.sh --rs274)
 #   tools/scripts/install-deps.sh browser    + Chromium and its fonts for the sheet's browser test (sheet-test.sh)
+#   tools/scripts/install-deps.sh web        + clang's wasm32 target (wasm-ld, wasi-libc, libc++, builtins) for
+#                                              `make web`, and Chromium for its browser test (web-test.sh)
 # Never installs g++-multilib: it removes the cross compilers (g++-12-multilib does not).
 set -eu
 pkgs="g++ clang make"
@@ -17,6 +19,7 @@ for extra in "$@"; do
     fuzz) pkgs="$pkgs libclang-rt-14-dev";;
     oracle) pkgs="$pkgs linuxcnc-uspace";;
     browser) pkgs="$pkgs chromium fonts-dejavu-core python3";;
+    web) pkgs="$pkgs lld wasi-libc libc++-14-dev-wasm32 libclang-rt-14-dev-wasm32 chromium python3";;
     *) echo "install-deps.sh: unknown set '$extra'" >&2; exit 2;;
   esac
 done
