@@ -27,8 +27,8 @@ constexpr int64_t mm = 1000000;
 // next line cuts is the previous line's), and a cycle whose pecks start
 // below the stock's top.
 const char* const kPrograms[] = {
-    "G21 G90 G17\nG0 X2 Y2 Z5\nM3 S10000\nG98 G83 X2 Y2 Z-6.5 R0.5 Q0.37 F300\nX7.3 Y3.1\n"
-    "G99 G83 X4.05 Y7 Z-3.3 R1 Q0.05\nG80\nG0 Z5\nG1 X6 Z-2 F200\nG0 Z5\nM30\n",
+    ("G21 G90 G17\nG0 X2 Y2 Z5\nM3 S10000\nG98 G83 X2 Y2 Z-6.5 R0.5 Q0.37 F300\nX7.3 Y3.1\n"
+    "G99 G83 X4.05 Y7 Z-3.3 R1 Q0.05\nG80\nG0 Z5\nG1 X6 Z-2 F200\nG0 Z5\nM30\n"),
     "G21 G90 G17\nG0 X5 Y5 Z3\nM3 S9000\nG98 G73 X5 Y5 Z-5.2 R0.2 Q0.3 F250\nG91 X-1.7 L2\nG90 G80\nG0 Z3\nM30\n",
     "G21 G90\nG0 X3.3 Y6.6 Z2\nM3 S8000\nG1 Z-1 F100\nG1 Z-2.5\nG0 Z1\nG1 Z-3.77\nG1 Z-3.77\nG0 Z2\nM30\n",
     "G21 G90\nG0 X-3 Y5 Z-1.5\nM3 S8000\nG1 X5 F300\nG99 G83 X5 Y5 Z-4.4 R-1.5 Q0.21 F150\nG80\nG1 X9 Y9\nG0 Z4\nM30\n",

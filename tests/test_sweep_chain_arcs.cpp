@@ -46,12 +46,12 @@ std::vector<CanonRecord> records_of(const char* text) {
 // Profiles in XZ and YZ of arcs and lines (as a CAM's lathe-like finish
 // writes them), XY arcs and a tight helix: every way an arc goes to chords.
 const char* const kPrograms[] = {
-    "G21 G90 G18\nG0 X4 Y9.3 Z30\nG1 Z24 F500\nG3 X8 Z20.5 R4\nG1 X14.2\nG2 X20 Z23.1 R5\nG1 X26 Z21.7\n"
-    "G3 X31.5 Z18 R4.5\nG1 Y12.1\nG2 X24 Z22 R5.5\nG1 X9\nM2\n",
-    "G21 G90 G19\nG0 X20.5 Y3 Z30\nG1 Z22 F500\nG2 Y9 Z19 R4\nG1 Y15 Z20\nG3 Y23.7 Z24 R6\nG1 X25.1\n"
-    "G2 Y14 Z18.2 R7.9\nM2\n",
-    "G21 G90 G17\nG0 X10 Y10 Z30\nG1 Z22 F500\nG2 X22 Y14 I6 J2\nG3 X30 Y20 R7\nG1 X18 Y22\n"
-    "G2 X18 Y22 I-3 J-2.5 Z19\nM2\n",
+    ("G21 G90 G18\nG0 X4 Y9.3 Z30\nG1 Z24 F500\nG3 X8 Z20.5 R4\nG1 X14.2\nG2 X20 Z23.1 R5\nG1 X26 Z21.7\n"
+    "G3 X31.5 Z18 R4.5\nG1 Y12.1\nG2 X24 Z22 R5.5\nG1 X9\nM2\n"),
+    ("G21 G90 G19\nG0 X20.5 Y3 Z30\nG1 Z22 F500\nG2 Y9 Z19 R4\nG1 Y15 Z20\nG3 Y23.7 Z24 R6\nG1 X25.1\n"
+    "G2 Y14 Z18.2 R7.9\nM2\n"),
+    ("G21 G90 G17\nG0 X10 Y10 Z30\nG1 Z22 F500\nG2 X22 Y14 I6 J2\nG3 X30 Y20 R7\nG1 X18 Y22\n"
+    "G2 X18 Y22 I-3 J-2.5 Z19\nM2\n"),
     "G21 G90 G17\nG0 X15.5 Y15 Z30\nG1 Z24 F500\nG2 X15.5 Y15 I2 J0 Z21\nG1 X25 Z23\nM2\n",
 };
 
