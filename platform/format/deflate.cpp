@@ -324,13 +324,17 @@ struct CodeIndexTables {
 
 constexpr CodeIndexTables make_code_index_tables() {
   CodeIndexTables t;
-  for (int code = 0; code < kLengthCodes; ++code)
-    for (int len = kLengthBase[code]; len <= kMaxMatchBytes; ++len) t.length[len] = static_cast<uint8_t>(code);
-  for (int code = 0; code < kDistSymbols; ++code)
-    for (int d = kDistBase[code]; d <= static_cast<int>(kWindowBytes); ++d) {
-      if (d <= 256) t.dist_near[d - 1] = static_cast<uint8_t>(code);
-      else t.dist_far[(d - 1) >> 7] = static_cast<uint8_t>(code);
-    }
+  int code = 0;
+  for (int len = kMinMatchBytes; len <= kMaxMatchBytes; ++len) {
+    while (code + 1 < kLengthCodes && kLengthBase[code + 1] <= len) ++code;
+    t.length[len] = static_cast<uint8_t>(code);
+  }
+  code = 0;
+  for (int d = 1; d <= static_cast<int>(kWindowBytes); ++d) {
+    while (code + 1 < kDistSymbols && kDistBase[code + 1] <= d) ++code;
+    if (d <= 256) t.dist_near[d - 1] = static_cast<uint8_t>(code);
+    else t.dist_far[(d - 1) >> 7] = static_cast<uint8_t>(code);
+  }
   return t;
 }
 
@@ -602,12 +606,15 @@ struct Effort {
   int lazy_below_bytes;
 };
 
-// Chosen on heightmaps (tools/bench/bench_image.cpp's, and a carved
-// relief's of 4503² dexels at 0.02 mm): with the 5-byte hash below, a chain of 128 costs about a tenth more
-// time than one of 64 and takes about 1 % off the size. Leaving the inside
-// of matches longer than 64 bytes out of the chains saved as much time but
-// cost 0.5 %, so every position is inserted.
-constexpr Effort kEffort = {128, 8, 128, 32};
+// Chosen on heightmaps (tools/bench/bench_image.cpp's, a carved relief's
+// of 4503² dexels at 0.02 mm and tests/test_png.cpp's milled part): with
+// the hashes below, chains of 64 (not 128) took 10-15 % off the time and
+// left each heightmap smaller than the three-byte chains of 128 before
+// them wrote (scale-4k's 8 632 443 bytes against 8 811 886, the relief's
+// 2 074 439 against 2 088 738, the part's 29 930 against 29 951); 48 made
+// the part's larger. Leaving the inside of matches longer than 64 bytes out
+// of the chains saved little and cost 0.5 %, so every position is inserted.
+constexpr Effort kEffort = {64, 16, 128, 32};
 
 // The chains' positions are 32-bit offsets from the start of a span of at
 // most this many bytes; a longer input is searched span by span (a match
@@ -627,10 +634,10 @@ constexpr uint32_t kNoPosition = 0xFFFFFFFFu;
 // Matches of 3 or 4 bytes come from a second table, of each 3-byte hash's
 // latest position (no chain), and only from this near: farther, their
 // distance codes cost about what their literals would. Against no such
-// table: the synthetic milled part of tests/test_png.cpp 2.7 % smaller,
-// the carved relief 0.6 % smaller, scale-4k's heightmap
-// (tools/bench/bench_image.cpp) 0.3 % larger; reaching 4096 bytes, all
-// three came out larger than at 128.
+// table (with chains of 128): the synthetic milled part of
+// tests/test_png.cpp 2.7 % smaller, the carved relief 0.6 % smaller,
+// scale-4k's heightmap (tools/bench/bench_image.cpp) 0.3 % larger;
+// reaching 4096 bytes, all three came out larger than at 128.
 constexpr int kShortHashBits = 14;
 constexpr std::size_t kShortMatchFarBytes = 128;
 
