@@ -53,16 +53,17 @@ uint32_t crc32_bitwise(const uint8_t* p, std::size_t n) {
 uint32_t crc_of(const char* s) { return crc32_update(0, reinterpret_cast<const uint8_t*>(s), std::strlen(s)); }
 uint32_t adler_of(const char* s) { return adler32_update(1, reinterpret_cast<const uint8_t*>(s), std::strlen(s)); }
 
-Bytes compress(const Bytes& in) {
+Bytes compress(const Bytes& in, DeflateTuning tuning = DeflateTuning::kGeneral) {
   Bytes out;
-  zlib_compress(in.data(), in.size(), &out);
+  zlib_compress(in.data(), in.size(), &out, tuning);
   return out;
 }
 
 // Compresses `in`, checks the zlib frame by hand and the round trip through
 // the oracle; returns the compressed size and the oracle's counts.
-std::size_t round_trip(const Bytes& in, oracle::InflateStats* st = nullptr) {
-  const Bytes z = compress(in);
+std::size_t round_trip(const Bytes& in, oracle::InflateStats* st = nullptr,
+                       DeflateTuning tuning = DeflateTuning::kGeneral) {
+  const Bytes z = compress(in, tuning);
   CHECK_GE(z.size(), std::size_t{6});
   if (z.size() < 6) return 0;
   CHECK_EQ(z[0], 0x78);  // deflate, 32 KiB window
@@ -446,38 +447,51 @@ TEST(zlib_output_is_deterministic) {
   CHECK(compress(in) == compress(in));
 }
 
+const DeflateTuning kTunings[] = {DeflateTuning::kGeneral, DeflateTuning::kFilteredSamples16};
+
 TEST(zlib_heightmap_rows_round_trip) {
   // A heightmap's rows as PNG filters leave them: most of them runs at
   // distance 1 or 2 (flat top, floor, holes), the rest short repeats.
   const int32_t w = 480, h = 360;
   const std::vector<uint16_t> img = milled_heightmap(w, h);
-  for (bool up : {false, true}) {
-    const Bytes rows = heightmap_rows(img, w, h, up);
-    oracle::InflateStats st;
-    const std::size_t size = round_trip(rows, &st);
-    CHECK_LE(size * 4, rows.size());
-    CHECK_EQ(st.stored_blocks, 0);
-    CHECK_EQ(st.max_length, 258u);
-  }
+  for (DeflateTuning tuning : kTunings)
+    for (bool up : {false, true}) {
+      const Bytes rows = heightmap_rows(img, w, h, up);
+      oracle::InflateStats st;
+      const std::size_t size = round_trip(rows, &st, tuning);
+      CHECK_LE(size * 4, rows.size());
+      CHECK_EQ(st.stored_blocks, 0);
+      CHECK_EQ(st.max_length, 258u);
+    }
 }
 
-TEST(zlib_runs_and_repeats_of_every_short_length_up_to_the_end) {
+TEST(zlib_every_tuning_round_trips_random_runs_tiny_and_incompressible_inputs) {
   // The last bytes of the input start no match (the hash reads eight), and
-  // matches of 3 or 4 bytes come from their own table within a short
-  // reach: every length of runs, of 2-byte patterns and of repeats at
-  // distances on both sides of that reach round-trips.
+  // with kFilteredSamples16 matches of 3 or 4 bytes come from their own
+  // table within a short reach: every length of runs, of 2-byte patterns
+  // and of repeats at distances on both sides of that reach round-trips;
+  // random bytes go out stored within deflate.h's bound.
   t::Rng rng(11);
-  for (std::size_t n = 0; n <= 40; ++n) {
-    round_trip(Bytes(n, static_cast<uint8_t>(n)));
-    Bytes pairs(n);
-    for (std::size_t i = 0; i < n; ++i) pairs[i] = i % 2 ? 0xFF : 0x01;
-    round_trip(pairs);
-    for (std::size_t dist : {std::size_t{3}, std::size_t{100}, std::size_t{128}, std::size_t{129}, std::size_t{200}}) {
-      Bytes in = random_bytes(dist, n * 7 + dist);
-      for (std::size_t i = 0; i < n; ++i) in.push_back(in[in.size() - dist]);
-      in.push_back(static_cast<uint8_t>(rng.next() >> 56));
-      round_trip(in);
+  for (DeflateTuning tuning : kTunings) {
+    CHECK_LE(round_trip(Bytes{}, nullptr, tuning), std::size_t{8});
+    for (std::size_t n = 0; n <= 40; ++n) {
+      round_trip(Bytes(n, static_cast<uint8_t>(n)), nullptr, tuning);
+      Bytes pairs(n);
+      for (std::size_t i = 0; i < n; ++i) pairs[i] = i % 2 ? 0xFF : 0x01;
+      round_trip(pairs, nullptr, tuning);
+      for (std::size_t dist : {std::size_t{3}, std::size_t{100}, std::size_t{128}, std::size_t{129}, std::size_t{200}}) {
+        Bytes in = random_bytes(dist, n * 7 + dist);
+        for (std::size_t i = 0; i < n; ++i) in.push_back(in[in.size() - dist]);
+        in.push_back(static_cast<uint8_t>(rng.next() >> 56));
+        round_trip(in, nullptr, tuning);
+      }
     }
+    for (std::size_t n : {std::size_t{1}, std::size_t{65536}, std::size_t{200000}}) {
+      oracle::InflateStats st;
+      CHECK_LE(round_trip(random_bytes(n, n + 3), &st, tuning), worst_size(n));
+      if (n > 1) CHECK_GE(st.stored_blocks, 1);  // one byte goes out shorter in a fixed block
+    }
+    round_trip(text_like(100000, 12), nullptr, tuning);
   }
 }
 

@@ -593,51 +593,55 @@ struct Match {
   std::size_t distance_bytes = 0;
 };
 
-// How hard the match finder looks, bounds that keep time near linear:
-// candidates examined per position, the length from which a second (lazy)
-// search gets only a quarter of them (it only has to beat the first), a
-// length that ends the search at once, the length below which the next
-// position is searched too before a match is taken (lazy matching, section
-// 4).
+// How the match finder looks: the bytes at a position whose hash selects
+// its chain (3, section 4's minimum, to 8), and bounds that keep time near
+// linear: candidates examined per position, the length from which a
+// second (lazy) search gets only a quarter of them (it only has to beat
+// the first), a length that ends the search at once, the length below
+// which the next position is searched too before a match is taken (lazy
+// matching, section 4).
 struct Effort {
+  int hash_bytes;
   int max_chain_steps;
   int good_match_bytes;
   int nice_match_bytes;
   int lazy_below_bytes;
 };
 
-// Chosen on heightmaps (tools/bench/bench_image.cpp's, a carved relief's
-// of 4503² dexels at 0.02 mm and tests/test_png.cpp's milled part): with
-// the hashes below, chains of 64 (not 128) took 10-15 % off the time and
-// left each heightmap smaller than the three-byte chains of 128 before
-// them wrote (scale-4k's 8 632 443 bytes against 8 811 886, the relief's
-// 2 074 439 against 2 088 738, the part's 29 930 against 29 951); 48 made
-// the part's larger. Leaving the inside of matches longer than 64 bytes out
-// of the chains saved little and cost 0.5 %, so every position is inserted.
-constexpr Effort kEffort = {64, 16, 128, 32};
+// kGeneral: every 3-byte match on the chains, 128 candidates a position
+// (the demo's frames, unfiltered RGB: five-byte hashes made them 4 % larger).
+constexpr Effort kGeneralEffort = {3, 128, 8, 128, 32};
+// kFilteredSamples16: a hash of three bytes put the small residues of
+// filtered 16-bit rows (00 01 00 ...) on long chains of candidates that
+// seldom matched further, and short matches of such data save little over
+// its cheap literals. Found on heightmaps (tools/bench/bench_image.cpp's
+// scale-4k, a carved relief's of 4503² dexels at 0.02 mm, tests/test_png.cpp's
+// milled part): at chains of 128, scale-4k's took 1.6 s with three bytes,
+// 1.2 s with four, 0.84 s with five, each 1-2 % smaller than the one
+// before (the relief's 1 % smaller with four or five than with three);
+// with five, chains of 64 took another 10-15 % off and left each
+// heightmap smaller than kGeneralEffort's of the encoder before (scale-4k
+// 8 632 443 bytes against 8 811 886, the relief 2 074 439 against
+// 2 088 738, the part 29 930 against 29 951); 48 made the part's larger.
+// Leaving the inside of matches longer than 64 bytes out of the chains
+// saved little and cost 0.5 %, so every position is inserted.
+constexpr Effort kFilteredSamples16Effort = {5, 64, 16, 128, 32};
 
 // The chains' positions are 32-bit offsets from the start of a span of at
 // most this many bytes; a longer input is searched span by span (a match
 // never reaches into the span before: a loss of one window a GiB).
 constexpr std::size_t kSpanBytes = std::size_t{1} << 30;
-// The five bytes at a position select its chain: a hash of three bytes
-// (section 4's minimum) put the small residues of filtered 16-bit images
-// (00 01 00 ...) on long chains of candidates that seldom matched further,
-// and short matches of such data save little over its cheap literals (a
-// heightmap, scale-4k's: 1.6 s with three bytes, 1.2 s with four, 0.84 s
-// with five, each 1-2 % smaller than the one before; the carved relief's:
-// 1 % smaller with four or five than with three). No match starts in the
-// last kHashReadBytes - 1 bytes.
-constexpr int kHashBytes = 5;
-constexpr int kHashReadBytes = 8;  // read as one word, the first kHashBytes hashed
+// Hashes of more than 3 bytes read one word: with them no match starts in
+// the last kHashReadBytes - 1 bytes (with 3, in the last 2).
+constexpr int kHashReadBytes = 8;
 constexpr uint32_t kNoPosition = 0xFFFFFFFFu;
-// Matches of 3 or 4 bytes come from a second table, of each 3-byte hash's
-// latest position (no chain), and only from this near: farther, their
-// distance codes cost about what their literals would. Against no such
-// table (with chains of 128): the synthetic milled part of
-// tests/test_png.cpp 2.7 % smaller, the carved relief 0.6 % smaller,
-// scale-4k's heightmap (tools/bench/bench_image.cpp) 0.3 % larger;
-// reaching 4096 bytes, all three came out larger than at 128.
+// With hashes of more than 3 bytes, matches of 3 up to hash_bytes - 1
+// bytes come from a second table, of each 3-byte hash's latest position
+// (no chain), and only from this near: farther, their distance codes cost
+// about what their literals would. Against no such table (five-byte
+// hashes, chains of 128): the milled part of tests/test_png.cpp 2.7 %
+// smaller, the carved relief 0.6 % smaller, scale-4k's heightmap 0.3 %
+// larger; reaching 4096 bytes, all three came out larger than at 128.
 constexpr int kShortHashBits = 14;
 constexpr std::size_t kShortMatchFarBytes = 128;
 
@@ -652,13 +656,15 @@ class MatchFinder {
         effort_(effort),
         head_(std::size_t{1} << kHashBits, kNoPosition),
         prev_(kWindowBytes, kNoPosition),
-        short_head_(std::size_t{1} << kShortHashBits, kNoPosition) {}
+        hash_mask_(effort.hash_bytes >= 8 ? ~uint64_t{0} : (uint64_t{1} << (8 * effort.hash_bytes)) - 1),
+        hashed_bytes_min_(effort.hash_bytes == kMinMatchBytes ? kMinMatchBytes : kHashReadBytes),
+        short_head_(uses_short_table() ? std::size_t{1} << kShortHashBits : 0, kNoPosition) {}
 
   // The longest match for the bytes at pos among earlier positions in the
   // window (the nearest of equal length) if longer than longer_than_bytes,
   // or none.
   Match longest(std::size_t pos, int longer_than_bytes) const {
-    if (n_ - pos < static_cast<std::size_t>(kHashReadBytes)) return Match{};
+    if (n_ - pos < hashed_bytes_min_) return Match{};
     const int max_len = static_cast<int>(std::min<std::size_t>(kMaxMatchBytes, n_ - pos));
     int best_len = std::max(kMinMatchBytes - 1, longer_than_bytes);
     if (best_len >= max_len) return Match{};
@@ -681,7 +687,7 @@ class MatchFinder {
       if (next == kNoPosition || next >= cand) break;  // chains only run backwards
       cand = next;
     }
-    if (best_len < kHashBytes) shorter(pos, here, max_len, best_len, &best);
+    if (best_len < effort_.hash_bytes && uses_short_table()) shorter(pos, here, max_len, best_len, &best);
     if (best.length_bytes == kMinMatchBytes && best.distance_bytes > kFarShortMatchBytes) return Match{};
     return best;
   }
@@ -690,11 +696,11 @@ class MatchFinder {
   // searching it: its slot in prev_ is the one of pos - 32768, still needed
   // by that search.
   void insert(std::size_t pos) {
-    if (n_ - pos < static_cast<std::size_t>(kHashReadBytes)) return;
+    if (n_ - pos < hashed_bytes_min_) return;
     const uint32_t h = hash(pos);
     prev_[pos % kWindowBytes] = head_[h];
     head_[h] = static_cast<uint32_t>(pos);
-    short_head_[short_hash(pos)] = static_cast<uint32_t>(pos);
+    if (uses_short_table()) short_head_[short_hash(pos)] = static_cast<uint32_t>(pos);
   }
 
   // Searches then inserts pos; none past the end.
@@ -706,16 +712,26 @@ class MatchFinder {
   }
 
  private:
-  // Multiplicative hashing (2^64 / golden ratio, as Knuth's 2654435761 for
-  // 32 bits) spreads the 40 bits of five bytes over the table; the word is
-  // put together byte by byte, so the hash is the same on any byte order.
+  // Multiplicative hashing (Knuth's 2654435761, near 2^32 / golden ratio,
+  // and 2^64 / golden ratio for longer hashes) spreads the hashed bytes
+  // over the table; words are put together byte by byte, so the hash is
+  // the same on any byte order. Three bytes hash as in the encoder before
+  // kFilteredSamples16 (the same chains, so the same stream: the golden
+  // pictures of tests/golden/frames/ keep their bytes).
   uint32_t hash(std::size_t pos) const {
-    const uint64_t hashed = load_le64(data_ + pos) & ((uint64_t{1} << (8 * kHashBytes)) - 1);
+    if (effort_.hash_bytes == kMinMatchBytes) {
+      const uint8_t* p = data_ + pos;
+      const uint32_t three = static_cast<uint32_t>(p[0]) << 16 | static_cast<uint32_t>(p[1]) << 8 | p[2];
+      return (three * 2654435761u) >> (32 - kHashBits);
+    }
+    const uint64_t hashed = load_le64(data_ + pos) & hash_mask_;
     return static_cast<uint32_t>((hashed * 0x9E3779B97F4A7C15ull) >> (64 - kHashBits));
   }
 
+  bool uses_short_table() const { return effort_.hash_bytes > kMinMatchBytes; }
+
   // The last position whose first kMinMatchBytes bytes hash as pos's: the
-  // match of 3 or 4 bytes that the chains of 5-byte hashes cannot hold.
+  // short match that chains of longer hashes cannot hold.
   uint32_t short_hash(std::size_t pos) const {
     const uint64_t hashed = load_le64(data_ + pos) & ((uint64_t{1} << (8 * kMinMatchBytes)) - 1);
     return static_cast<uint32_t>((hashed * 0x9E3779B97F4A7C15ull) >> (64 - kShortHashBits));
@@ -761,6 +777,8 @@ class MatchFinder {
   Effort effort_;
   std::vector<uint32_t> head_;
   std::vector<uint32_t> prev_;
+  uint64_t hash_mask_;            // the hashed bytes of a little-endian word
+  std::size_t hashed_bytes_min_;  // bytes a position needs to be hashed
   std::vector<uint32_t> short_head_;
 };
 
@@ -796,8 +814,9 @@ void parse_span(const uint8_t* data, std::size_t n, const Effort& effort, BlockW
   }
 }
 
-void parse_lz77(const uint8_t* data, std::size_t n, BlockWriter* out) {
-  for (std::size_t at = 0; at < n; at += kSpanBytes) parse_span(data + at, std::min(kSpanBytes, n - at), kEffort, out);
+void parse_lz77(const uint8_t* data, std::size_t n, DeflateTuning tuning, BlockWriter* out) {
+  const Effort& effort = tuning == DeflateTuning::kFilteredSamples16 ? kFilteredSamples16Effort : kGeneralEffort;
+  for (std::size_t at = 0; at < n; at += kSpanBytes) parse_span(data + at, std::min(kSpanBytes, n - at), effort, out);
 }
 
 // RFC 1950 section 2.2: CMF 0x78 is method 8 (deflate) with CINFO 7 (a
@@ -809,14 +828,14 @@ static_assert((kZlibCmf * 256 + kZlibFlg) % 31 == 0, "FCHECK");
 
 }  // namespace
 
-void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out) {
+void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out, DeflateTuning tuning) {
   out->clear();
   out->reserve(n / 4 + 64);
   out->push_back(kZlibCmf);
   out->push_back(kZlibFlg);
   BitWriter bits(out);
   BlockWriter blocks(data, &bits);
-  if (n > 0) parse_lz77(data, n, &blocks);
+  if (n > 0) parse_lz77(data, n, tuning, &blocks);
   blocks.finish();
   bits.finish();
   // RFC 1950 section 2.2: ADLER32 of the uncompressed data, most significant
