@@ -3,8 +3,12 @@
 // pocket, swept) encoded as PGM and as PNG (platform/format/), in memory
 // (pgm_s, png_s) and written to a file in $TMPDIR as `dexmill run
 // --heightmap` writes it (pgm_file_s, png_file_s; the file is removed).
-// ratio is png_s / pgm_s, file_ratio png_file_s / pgm_file_s; compression
-// is pgm_bytes / png_bytes.
+// seconds is png_s; ratio is png_s / pgm_s, file_ratio png_file_s / pgm_file_s; compression
+// is pgm_bytes / png_bytes; size_vs_before is png_bytes over
+// png_bytes_before, the size this heightmap's PNG had when heightmaps were
+// compressed with three-byte hash chains of 128 (DeflateTuning::kGeneral,
+// platform/format/deflate.h), so a change of the encoder shows whether the
+// ratio got worse.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +25,9 @@
 
 namespace dexmill {
 namespace {
+
+// scale-4k's heightmap as a PNG with three-byte chains of 128 (2.6 s then).
+constexpr size_t kPngBytesBefore = 8811886;
 
 // The scale-4k job swept (tools/bench/bench_cut.cpp cuts it the same way),
 // its heightmap into img.
@@ -72,9 +79,10 @@ void run_png_heightmap(const char* name) {
   const double pgm_file_s = best_file_s(base + ".pgm", ImageFormat::kPgm, j, img, min_s);
   const double png_file_s = best_file_s(base + ".png", ImageFormat::kPng, j, img, min_s);
   bench::result(name, "grid=%dx%d pgm_s=%.4f png_s=%.4f ratio=%.2f pgm_file_s=%.4f png_file_s=%.4f file_ratio=%.2f "
-                "pgm_bytes=%zu png_bytes=%zu compression=%.2f",
+                "pgm_bytes=%zu png_bytes=%zu compression=%.2f png_bytes_before=%zu size_vs_before=%.4f seconds=%.4f",
                 j.g.nx, j.g.ny, pgm_s, png_s, png_s / pgm_s, pgm_file_s, png_file_s, png_file_s / pgm_file_s,
-                pgm.size(), png.size(), static_cast<double>(pgm.size()) / static_cast<double>(png.size()));
+                pgm.size(), png.size(), static_cast<double>(pgm.size()) / static_cast<double>(png.size()),
+                kPngBytesBefore, static_cast<double>(png.size()) / static_cast<double>(kPngBytesBefore), png_s);
 }
 
 }  // namespace
