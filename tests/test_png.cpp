@@ -768,7 +768,7 @@ TEST(png_gray16_milled_part_round_trips_no_larger_than_before) {
   // The match finder of five-byte hash chains and a short table
   // (platform/format/deflate.cpp): the same pixels back, in no more bytes
   // than the one of three-byte chains before it wrote (29 951; this one
-  // writes 29 930).
+  // writes 29 904).
   const int32_t w = 480, h = 360;
   int filters[5] = {};
   const std::size_t size = check_gray16(milled_heightmap(w, h), w, h, filters);
