@@ -36,7 +36,18 @@ uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n) {
   uint32_t s2 = adler >> 16;
   while (n > 0) {
     const std::size_t run = std::min(n, kAdlerBytesPerReduction);
-    for (std::size_t i = 0; i < run; ++i) {
+    std::size_t i = 0;
+    for (; i + 4 <= run; i += 4) {  // four at a time: the loop's own work was half the sum's
+      s1 += p[i];
+      s2 += s1;
+      s1 += p[i + 1];
+      s2 += s1;
+      s1 += p[i + 2];
+      s2 += s1;
+      s1 += p[i + 3];
+      s2 += s1;
+    }
+    for (; i < run; ++i) {
       s1 += p[i];
       s2 += s1;
     }
