@@ -27,8 +27,9 @@ uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n);
 // (deflate.cpp's efforts say what each costs and saves):
 //   kGeneral           chains of every 3-byte hash (text, unfiltered RGB)
 //   kFilteredSamples16 PNG's filtered rows of 16-bit samples (heightmaps):
-//                      chains of 5-byte hashes, and the latest of each
-//                      3-byte hash within 128 bytes for shorter matches
+//                      chains of 5-byte hashes, the latest of each 3-byte
+//                      hash within 128 bytes for shorter matches, and the
+//                      inside of long runs of one byte left off the chains
 enum class DeflateTuning : uint8_t { kGeneral, kFilteredSamples16 };
 
 // Replaces *out with a zlib stream (RFC 1950: header 0x78 0x9C, DEFLATE data,
