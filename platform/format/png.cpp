@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 
 #include "platform/format/deflate.h"
 
@@ -186,17 +187,20 @@ struct PngFormat {
 template <class RowAt>
 void encode(RowAt row_at, std::size_t row_bytes, int32_t width, int32_t height, PngFormat format,
             std::vector<uint8_t>* out) {
-  std::vector<uint8_t> filtered((row_bytes + 1) * static_cast<std::size_t>(height));
+  // Every byte is written by the filters, so the buffer is not zeroed first
+  // (a vector's would be a pass over the whole image data).
+  const std::size_t filtered_bytes = (row_bytes + 1) * static_cast<std::size_t>(height);
+  const std::unique_ptr<uint8_t[]> filtered(new uint8_t[filtered_bytes]);
   const std::vector<uint8_t> zero_row(row_bytes, 0);
   const uint8_t* prior = zero_row.data();
   for (int32_t y = 0; y < height; ++y) {
     const uint8_t* row = row_at(y);
     filter_row_adaptive(row, prior, row_bytes, format.bytes_per_pixel, format.adaptive,
-                        filtered.data() + static_cast<std::size_t>(y) * (row_bytes + 1));
+                        filtered.get() + static_cast<std::size_t>(y) * (row_bytes + 1));
     prior = row;
   }
   std::vector<uint8_t> compressed;
-  zlib_compress(filtered.data(), filtered.size(), &compressed, format.tuning);
+  zlib_compress(filtered.get(), filtered_bytes, &compressed, format.tuning);
 
   out->assign(kPngSignature, kPngSignature + sizeof kPngSignature);
   put_ihdr(width, height, format.bit_depth, format.colour_type, out);
