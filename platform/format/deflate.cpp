@@ -696,8 +696,9 @@ class MatchFinder {
     uint32_t cand = head_[hash(pos)];
     for (int steps = 0; cand != kNoPosition && pos - cand <= kWindowBytes && steps < max_steps; ++steps) {
       const uint8_t* there = data_ + cand;
-      // Only a candidate that also agrees one byte past the best can beat it.
-      if (there[best_len] == here[best_len]) {
+      // Only a candidate that also agrees at the best's last byte and one
+      // past it can beat it (the two compared at once).
+      if (load_le16(there + best_len - 1) == load_le16(here + best_len - 1)) {
         const int len = common_prefix(there, here, max_len);
         if (len > best_len) {
           best_len = len;
@@ -767,6 +768,8 @@ class MatchFinder {
     const int len = common_prefix(data_ + cand, here, max_len);
     if (len > best_len) *best = Match{len, pos - cand};
   }
+
+  static uint16_t load_le16(const uint8_t* p) { return static_cast<uint16_t>(p[0] | p[1] << 8); }
 
   // Eight bytes as a little-endian number, byte by byte (compilers make it
   // one load where the host is little-endian).
