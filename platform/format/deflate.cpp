@@ -604,8 +604,8 @@ struct Match {
   std::size_t distance_bytes = 0;
 };
 
-// How the match finder looks: the bytes at a position whose hash selects
-// its chain (3, section 4's minimum, to 8), and bounds that keep time near
+// How the match finder looks (besides the bytes at a position whose hash
+// selects its chain, MatchFinder's HashBytes), bounds that keep time near
 // linear: candidates examined per position, the length from which a
 // second (lazy) search gets only a quarter of them (it only has to beat
 // the first), a length that ends the search at once, the length below
@@ -614,7 +614,6 @@ struct Match {
 // distance 1: one byte repeated) leaves its inside out of the chains, all
 // but its last kRunTailInserts positions (0: every position goes in).
 struct Effort {
-  int hash_bytes;
   int max_chain_steps;
   int good_match_bytes;
   int nice_match_bytes;
@@ -624,7 +623,8 @@ struct Effort {
 
 // kGeneral: every 3-byte match on the chains, 128 candidates a position
 // (the demo's frames, unfiltered RGB: five-byte hashes made them 4 % larger).
-constexpr Effort kGeneralEffort = {3, 128, 8, 128, 32, 0};
+constexpr int kGeneralHashBytes = 3;
+constexpr Effort kGeneralEffort = {128, 8, 128, 32, 0};
 // kFilteredSamples16: a hash of three bytes put the small residues of
 // filtered 16-bit rows (00 01 00 ...) on long chains of candidates that
 // seldom matched further, and short matches of such data save little over
@@ -644,7 +644,8 @@ constexpr Effort kGeneralEffort = {3, 128, 8, 128, 32, 0};
 // took 20 % off its instructions (callgrind: 3.98 G -> 3.18 G with a
 // driver that reads its PGM), left the relief's and the part's a little
 // smaller (2 074 214 and 29 904 bytes) and scale-4k's 11 bytes larger.
-constexpr Effort kFilteredSamples16Effort = {5, 64, 16, 128, 32, 64};
+constexpr int kFilteredSamples16HashBytes = 5;
+constexpr Effort kFilteredSamples16Effort = {64, 16, 128, 32, 64};
 
 // The chains' positions are 32-bit offsets from the start of a span of at
 // most this many bytes; a longer input is searched span by span (a match
@@ -657,7 +658,7 @@ constexpr int kRunTailInserts = 4;
 // the last kHashReadBytes - 1 bytes (with 3, in the last 2).
 constexpr int kHashReadBytes = 8;
 constexpr uint32_t kNoPosition = 0xFFFFFFFFu;
-// With hashes of more than 3 bytes, matches of 3 up to hash_bytes - 1
+// With hashes of more than 3 bytes, matches of 3 up to HashBytes - 1
 // bytes come from a second table, of each 3-byte hash's latest position
 // (no chain), and only from this near: farther, their distance codes cost
 // about what their literals would. Against no such table (five-byte
@@ -668,9 +669,18 @@ constexpr int kShortHashBits = 14;
 constexpr std::size_t kShortMatchFarBytes = 128;
 
 // Hash chains over the window: head_ holds the latest position of each
-// hash, prev_ (indexed by position modulo the window) the position before
-// it with the same hash, kNoPosition for none.
+// hash of the HashBytes (3 to 7) bytes at a position, prev_ (indexed by
+// position modulo the window) the position before it with the same hash,
+// kNoPosition for none. A template, so that the hash and the short table
+// cost nothing where they are not used.
+template <int HashBytes>
 class MatchFinder {
+  static_assert(HashBytes >= kMinMatchBytes && HashBytes < kHashReadBytes, "hashed bytes");
+  static constexpr bool kShortTable = HashBytes > kMinMatchBytes;
+  // Bytes a position needs to be hashed.
+  static constexpr std::size_t kHashedBytesMin = kShortTable ? kHashReadBytes : kMinMatchBytes;
+  static constexpr uint64_t kHashMask = (uint64_t{1} << (8 * HashBytes)) - 1;
+
  public:
   MatchFinder(const uint8_t* data, std::size_t n, const Effort& effort)
       : data_(data),
@@ -678,15 +688,13 @@ class MatchFinder {
         effort_(effort),
         head_(std::size_t{1} << kHashBits, kNoPosition),
         prev_(kWindowBytes, kNoPosition),
-        hash_mask_(effort.hash_bytes >= 8 ? ~uint64_t{0} : (uint64_t{1} << (8 * effort.hash_bytes)) - 1),
-        hashed_bytes_min_(effort.hash_bytes == kMinMatchBytes ? kMinMatchBytes : kHashReadBytes),
-        short_head_(uses_short_table() ? std::size_t{1} << kShortHashBits : 0, kNoPosition) {}
+        short_head_(kShortTable ? std::size_t{1} << kShortHashBits : 0, kNoPosition) {}
 
   // The longest match for the bytes at pos among earlier positions in the
   // window (the nearest of equal length) if longer than longer_than_bytes,
   // or none.
   Match longest(std::size_t pos, int longer_than_bytes) const {
-    if (n_ - pos < hashed_bytes_min_) return Match{};
+    if (n_ - pos < kHashedBytesMin) return Match{};
     const int max_len = static_cast<int>(std::min<std::size_t>(kMaxMatchBytes, n_ - pos));
     int best_len = std::max(kMinMatchBytes - 1, longer_than_bytes);
     if (best_len >= max_len) return Match{};
@@ -710,7 +718,7 @@ class MatchFinder {
       if (next == kNoPosition || next >= cand) break;  // chains only run backwards
       cand = next;
     }
-    if (best_len < effort_.hash_bytes && uses_short_table()) shorter(pos, here, max_len, best_len, &best);
+    if (kShortTable && best_len < HashBytes) shorter(pos, here, max_len, best_len, &best);
     if (best.length_bytes == kMinMatchBytes && best.distance_bytes > kFarShortMatchBytes) return Match{};
     return best;
   }
@@ -719,11 +727,11 @@ class MatchFinder {
   // searching it: its slot in prev_ is the one of pos - 32768, still needed
   // by that search.
   void insert(std::size_t pos) {
-    if (n_ - pos < hashed_bytes_min_) return;
+    if (n_ - pos < kHashedBytesMin) return;
     const uint32_t h = hash(pos);
     prev_[pos % kWindowBytes] = head_[h];
     head_[h] = static_cast<uint32_t>(pos);
-    if (uses_short_table()) short_head_[short_hash(pos)] = static_cast<uint32_t>(pos);
+    if (kShortTable) short_head_[short_hash(pos)] = static_cast<uint32_t>(pos);
   }
 
   // Searches then inserts pos; none past the end.
@@ -742,16 +750,14 @@ class MatchFinder {
   // kFilteredSamples16 (the same chains, so the same stream: the golden
   // pictures of tests/golden/frames/ keep their bytes).
   uint32_t hash(std::size_t pos) const {
-    if (effort_.hash_bytes == kMinMatchBytes) {
+    if (HashBytes == kMinMatchBytes) {
       const uint8_t* p = data_ + pos;
       const uint32_t three = static_cast<uint32_t>(p[0]) << 16 | static_cast<uint32_t>(p[1]) << 8 | p[2];
       return (three * 2654435761u) >> (32 - kHashBits);
     }
-    const uint64_t hashed = load_le64(data_ + pos) & hash_mask_;
+    const uint64_t hashed = load_le64(data_ + pos) & kHashMask;
     return static_cast<uint32_t>((hashed * 0x9E3779B97F4A7C15ull) >> (64 - kHashBits));
   }
-
-  bool uses_short_table() const { return effort_.hash_bytes > kMinMatchBytes; }
 
   // The last position whose first kMinMatchBytes bytes hash as pos's: the
   // short match that chains of longer hashes cannot hold.
@@ -802,8 +808,6 @@ class MatchFinder {
   Effort effort_;
   std::vector<uint32_t> head_;
   std::vector<uint32_t> prev_;
-  uint64_t hash_mask_;            // the hashed bytes of a little-endian word
-  std::size_t hashed_bytes_min_;  // bytes a position needs to be hashed
   std::vector<uint32_t> short_head_;
 };
 
@@ -811,8 +815,9 @@ class MatchFinder {
 // at pos is deferred when pos + 1 has a longer one, pos then going out as a
 // literal. Every position is inserted into the chains once, but the
 // inside of a long run where the effort says so.
+template <int HashBytes>
 void parse_span(const uint8_t* data, std::size_t n, const Effort& effort, BlockWriter* out) {
-  MatchFinder finder(data, n, effort);
+  MatchFinder<HashBytes> finder(data, n, effort);
   std::size_t pos = 0;
   Match cur = finder.step(0);
   while (pos < n) {
@@ -843,8 +848,13 @@ void parse_span(const uint8_t* data, std::size_t n, const Effort& effort, BlockW
 }
 
 void parse_lz77(const uint8_t* data, std::size_t n, DeflateTuning tuning, BlockWriter* out) {
-  const Effort& effort = tuning == DeflateTuning::kFilteredSamples16 ? kFilteredSamples16Effort : kGeneralEffort;
-  for (std::size_t at = 0; at < n; at += kSpanBytes) parse_span(data + at, std::min(kSpanBytes, n - at), effort, out);
+  for (std::size_t at = 0; at < n; at += kSpanBytes) {
+    const std::size_t span = std::min(kSpanBytes, n - at);
+    if (tuning == DeflateTuning::kFilteredSamples16)
+      parse_span<kFilteredSamples16HashBytes>(data + at, span, kFilteredSamples16Effort, out);
+    else
+      parse_span<kGeneralHashBytes>(data + at, span, kGeneralEffort, out);
+  }
 }
 
 // RFC 1950 section 2.2: CMF 0x78 is method 8 (deflate) with CINFO 7 (a
