@@ -23,14 +23,25 @@ namespace dexmill {
 // adler32_update(1, "Wikipedia", 9) == 0x11E60398.
 uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n);
 
+// What the data is, which sets how the match finder looks for repeats
+// (deflate.cpp's efforts say what each costs and saves):
+//   kGeneral           chains of every 3-byte hash (text, unfiltered RGB)
+//   kFilteredSamples16 PNG's filtered rows of 16-bit samples (heightmaps):
+//                      chains of 5-byte hashes, the latest of each 3-byte
+//                      hash within 128 bytes for shorter matches, and the
+//                      inside of long runs of one byte left off the chains
+enum class DeflateTuning : uint8_t { kGeneral, kFilteredSamples16 };
+
 // Replaces *out with a zlib stream (RFC 1950: header 0x78 0x9C, DEFLATE data,
 // Adler-32 of the input) of the n bytes at data (data may be null when n is
 // 0). The DEFLATE data is LZ77 over a 32 KiB window with hash chains and
-// one-step lazy matching; each block is written as dynamic Huffman, fixed
+// one-step lazy matching (with kFilteredSamples16 no match starts in the
+// last 7 bytes); each block is written as dynamic Huffman, fixed
 // Huffman or stored, whichever is smallest (a block holds 16384 symbols, so
 // at least 16 KiB but the last), so the stream never exceeds
 // n + 11 + 5 * (n / 16384) bytes.
-void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out);
+void zlib_compress(const uint8_t* data, std::size_t n, std::vector<uint8_t>* out,
+                   DeflateTuning tuning = DeflateTuning::kGeneral);
 
 // The Huffman code lengths zlib_compress uses (public so tests can reach
 // them): for symbols 0..symbols-1 seen freq[s] times, writes into bits[s]

@@ -12,19 +12,25 @@
 
 namespace dexmill {
 
+void pgm16_encode(int width, int height, const uint16_t* samples, std::vector<uint8_t>* out) {
+  char header[64];
+  const int header_bytes = std::snprintf(header, sizeof header, "P5\n%d %d\n65535\n", width, height);
+  const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  out->resize(static_cast<std::size_t>(header_bytes) + 2 * count);
+  std::memcpy(out->data(), header, static_cast<std::size_t>(header_bytes));
+  uint8_t* p = out->data() + header_bytes;
+  for (std::size_t i = 0; i < count; ++i) {
+    p[2 * i] = static_cast<uint8_t>(samples[i] >> 8);
+    p[2 * i + 1] = static_cast<uint8_t>(samples[i]);
+  }
+}
+
 bool write_pgm16(const char* path, int width, int height, const uint16_t* samples, char* err, std::size_t errn) {
   OutputFile f;
   if (f.open(path)) {
-    f.printf("P5\n%d %d\n65535\n", width, height);
-    std::vector<uint8_t> row(static_cast<std::size_t>(width) * 2);
-    for (int y = 0; y < height; ++y) {
-      const uint16_t* s = samples + static_cast<std::size_t>(y) * width;
-      for (int x = 0; x < width; ++x) {
-        row[2 * x] = static_cast<uint8_t>(s[x] >> 8);
-        row[2 * x + 1] = static_cast<uint8_t>(s[x]);
-      }
-      f.write(row.data(), row.size());
-    }
+    std::vector<uint8_t> bytes;
+    pgm16_encode(width, height, samples, &bytes);
+    f.write(bytes.data(), bytes.size());
     if (f.commit()) return true;
   }
   std::snprintf(err, errn, "%s", f.error());

@@ -11,8 +11,12 @@
 
 namespace dexmill {
 
-// Writes `width` x `height` samples, row 0 first (the top row of the image),
-// atomically. On failure returns false with a message in err.
+// The whole file of `width` x `height` samples, row 0 first (the top row of
+// the image), replacing *out: the "P5" header, then each sample most
+// significant byte first.
+void pgm16_encode(int width, int height, const uint16_t* samples, std::vector<uint8_t>* out);
+
+// Writes the same bytes as `path`, atomically. On failure returns false with a message in err.
 bool write_pgm16(const char* path, int width, int height, const uint16_t* samples, char* err, std::size_t errn);
 
 // A grey image as read: row 0 first (the top of the picture).

@@ -16,6 +16,7 @@
 #include "platform/format/stock_io.h"
 #include "platform/os/clock.h"
 #include "platform/input/gcode_file.h"
+#include "platform/format/heightmap.h"
 #include "platform/format/image_file.h"
 #include "platform/os/memory.h"
 #include "platform/os/output_file.h"
@@ -69,8 +70,6 @@ struct Run {
 };
 
 bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<height_t>& g, char* err, size_t errn) {
-  // Row 0 of the image is the grid's last row (north up); samples are the
-  // top heights in LSB (the report gives the LSB), holes 0.
   const size_t n = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
   ZeroedBlock block;
   if (!block.allocate(n * sizeof(uint16_t))) {
@@ -79,12 +78,7 @@ bool write_heightmap(const char* path, ImageFormat format, const DexelGrid<heigh
     return false;
   }
   uint16_t* img = static_cast<uint16_t*>(block.data());
-  for (int32_t j = 0; j < g.ny; ++j)
-    for (int32_t i = 0; i < g.nx; ++i) {
-      const uint64_t h = g.top[g.index(i, j)];
-      img[static_cast<size_t>(g.ny - 1 - j) * static_cast<size_t>(g.nx) + static_cast<size_t>(i)] =
-          static_cast<uint16_t>(h > 65535 ? 65535 : h);
-    }
+  heightmap_samples(g, img);
   return write_grey16_image(path, format, g.nx, g.ny, img, err, errn);
 }
 
