@@ -18,6 +18,7 @@
 #include "core/interp/interp.h"
 #include "core/tool/tool.h"
 #include "tests/cut_fixtures.h"
+#include "tests/gcode_test_util.h"
 #include "tests/runner.h"
 #include "tests/sweep_oracle.h"
 
@@ -27,20 +28,16 @@ namespace {
 
 using fixtures::mm;
 
-class Recorder : public CanonSink {
- public:
-  void emit(const CanonRecord& r) override {
-    if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kTraverse || r.kind == CanonKind::kArc) records.push_back(r);
-  }
-  std::vector<CanonRecord> records;
-};
-
+// The program's moves (lines and arcs), as the interpreter gives them.
 std::vector<CanonRecord> records_of(const char* text) {
-  Recorder rec;
+  t::Recorder rec;
   InterpOptions opt;
   Interp interp(&rec, opt);
   CHECK_EQ(interp_run_text(&interp, text, std::strlen(text), nullptr), 0u);
-  return rec.records;
+  std::vector<CanonRecord> moves;
+  for (const CanonRecord& r : rec.records)
+    if (r.kind == CanonKind::kFeed || r.kind == CanonKind::kTraverse || r.kind == CanonKind::kArc) moves.push_back(r);
+  return moves;
 }
 
 // Profiles in XZ and YZ of arcs and lines (as a CAM's lathe-like finish

@@ -24,6 +24,7 @@
 #include <stdint.h>
 
 #include "core/canon/canon.h"
+#include "core/math/fixed.h"
 #include "core/point.h"
 
 namespace dexmill {
@@ -43,10 +44,8 @@ inline bool peck_fold_vertical(const CanonRecord& r) {
 }
 
 inline void peck_fold_span(PeckFold* f, const CanonRecord& r) {
-  f->lo_nm = r.start.z_nm < f->lo_nm ? r.start.z_nm : f->lo_nm;
-  f->lo_nm = r.end.z_nm < f->lo_nm ? r.end.z_nm : f->lo_nm;
-  f->hi_nm = r.start.z_nm > f->hi_nm ? r.start.z_nm : f->hi_nm;
-  f->hi_nm = r.end.z_nm > f->hi_nm ? r.end.z_nm : f->hi_nm;
+  f->lo_nm = min_of(f->lo_nm, min_of(r.start.z_nm, r.end.z_nm));
+  f->hi_nm = max_of(f->hi_nm, max_of(r.start.z_nm, r.end.z_nm));
   f->at = r.end;
 }
 

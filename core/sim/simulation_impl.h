@@ -431,8 +431,8 @@ void SimulationT<H>::process(const Queued& q) {
     return;
   }
   const bool move = sim_detail::is_move(r);
-  const bool held = fold_.active && peck_fold_add(&fold_, r);
-  if (fold_.active && !held) settle_fold();
+  const bool held = peck_fold_add(&fold_, r);  // false when nothing is held
+  if (!held) settle_fold();
   // Where the line before left the tool: a deferred end cap cut now is its.
   if (move && r.line != last_move_line_) {
     const PointNm at = mill_.position();

@@ -6,7 +6,7 @@
 // so nothing but integers crosses the boundary. No heap, no import: the
 // module needs nothing from the page.
 #include "display/api/dexmill.h"
-#include "web_arena.h"
+#include "platform/web/web_arena.h"
 
 #include <string.h>
 

@@ -1,5 +1,5 @@
 // web_arena.cpp - the arena of web_arena.h over wasm32's linear memory.
-#include "web_arena.h"
+#include "platform/web/web_arena.h"
 
 // Defined by wasm-ld: the first byte past the module's data and stack.
 extern "C" unsigned char __heap_base;

@@ -33,14 +33,6 @@ double paper_cut_seconds(const char* name) {
   return 0;
 }
 
-// Moves from .. to - 1 of the path (move k ends at path[k]) as one chain.
-void sweep_moves(Job* j, size_t from, size_t to, CutStats* st) {
-  const std::vector<PointNm>& path = j->w.path;
-  SweepChain chain;
-  for (size_t k = from; k < to; ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
-  sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
-}
-
 // The path as one polyline, as core/cut/mill.h cuts a program: stamping leaves
 // out each joint's repeated instance, sweeping chains the moves.
 void cut(Job* j, bool sweep, CutStats* st) {

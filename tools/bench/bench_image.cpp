@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "core/cut/sweep.h"
 #include "platform/format/heightmap.h"
 #include "platform/format/image_file.h"
 #include "platform/format/pgm.h"
@@ -29,15 +28,11 @@ namespace {
 // scale-4k's heightmap as a PNG with three-byte chains of 128 (2.6 s then).
 constexpr size_t kPngBytesBefore = 8811886;
 
-// The scale-4k job swept (tools/bench/bench_cut.cpp cuts it the same way),
-// its heightmap into img.
+// The scale-4k job swept as bench scale-4k sweeps it, its heightmap into img.
 bool cut_heightmap(const char* name, Job* j, std::vector<uint16_t>* img) {
   if (!setup(name, "scale-4k", j)) return false;
   CutStats st;
-  SweepChain chain;
-  const std::vector<PointNm>& path = j->w.path;
-  for (size_t k = 1; k < path.size(); ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], &st, &chain);
-  sweep_chain_end(&j->g, j->sweep_tool, &st, &chain);
+  sweep_moves(j, 1, j->w.path.size(), &st);
   img->resize(static_cast<size_t>(j->g.nx) * static_cast<size_t>(j->g.ny));
   heightmap_samples(j->g, img->data());
   return true;

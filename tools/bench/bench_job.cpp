@@ -30,6 +30,13 @@ bool setup(const char* bench, const char* name, Job* j) {
   return false;
 }
 
+void sweep_moves(Job* j, size_t from, size_t to, CutStats* st) {
+  const std::vector<PointNm>& path = j->w.path;
+  SweepChain chain;
+  for (size_t k = from; k < to; ++k) sweep_chain_line(&j->g, j->sweep_tool, path[k - 1], path[k], st, &chain);
+  sweep_chain_end(&j->g, j->sweep_tool, st, &chain);
+}
+
 void reset(Job* j) {
   j->top = j->stock;
   std::fill(j->bottom.begin(), j->bottom.end(), 0);

@@ -27,6 +27,10 @@ struct Job {
 // be set up.
 bool setup(const char* bench, const char* name, Job* j);
 
+// Moves from .. to - 1 of the path (move k ends at path[k]) swept as one
+// chain, as core/cut/mill.h cuts a polyline.
+void sweep_moves(Job* j, size_t from, size_t to, CutStats* st);
+
 // Back to the uncut stock, nothing dirty.
 void reset(Job* j);
 
