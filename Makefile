@@ -364,8 +364,11 @@ $(WEB)/dexmill.wasm: $(WEB_OBJ)
 	$(call say,LINK,$@)
 	$(Q)$(WEB_CXX) $(WEB_OPT) $(WEB_LDFLAGS) $^ -o $@ -Wl,--trace > build/wasm32/link.trace
 	$(Q)! grep -E 'malloc|libc\+\+' build/wasm32/link.trace || { echo "make web: the module links the heap or the C++ runtime (above)"; rm -f $@; exit 1; }
-$(WEB)/dexmill.js: $(WEB)/dexmill.wasm platform/web/dexmill.js
-	$(Q)tools/scripts/web_embed.sh $^ > $@.tmp && mv $@.tmp $@
+# The scripts in order: the loader and its topics, then the page and its.
+WEB_JS   := platform/web/dexmill.js $(sort $(wildcard platform/web/engine_*.js)) platform/web/page.js \
+            $(sort $(wildcard platform/web/page_*.js))
+$(WEB)/dexmill.js: $(WEB)/dexmill.wasm $(WEB_JS) tools/scripts/web_embed.sh
+	$(Q)tools/scripts/web_embed.sh $(WEB)/dexmill.wasm $(WEB_JS) > $@.tmp && mv $@.tmp $@
 $(WEB)/index.html: platform/web/index.html
 	@mkdir -p $(WEB)
 	$(Q)cp $< $@

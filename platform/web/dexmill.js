@@ -202,6 +202,8 @@ var dexmill = (function () {
     return WebAssembly.instantiate(wasmBytes(), {}).then(function (r) { return new Engine(r.instance.exports); });
   }
 
+  /* Engine: a topic of the loader (engine_*.js, after this file in the
+   * built dexmill.js) adds its methods to Engine.prototype. */
   return { load: load, blobSource: blobSource, fnv1aRgb: fnv1aRgb, PRESET_ANGLES: PRESET_ANGLES, DONE: DONE,
-           STOPPED: STOPPED };
+           STOPPED: STOPPED, Engine: Engine };
 })();

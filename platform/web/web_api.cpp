@@ -7,36 +7,30 @@
 // module needs nothing from the page.
 #include "display/api/dexmill.h"
 #include "platform/web/web_arena.h"
+#include "platform/web/web_job.h"
 
 #include <string.h>
 
-#define WEB_EXPORT(name) extern "C" __attribute__((export_name(#name)))
+using namespace dexmill::web;
+
+namespace dexmill {
+namespace web {
+alignas(8) char g_text[kTextBytes];
+WebJob g;
+}  // namespace web
+}  // namespace dexmill
 
 namespace {
 
-// The program's pieces (dexmill.js slices the file at this size); lent to
-// dm_feed until dm_input_taken, as dexmill.h says.
-constexpr size_t kTextBytes = 64 * 1024;
-alignas(8) char g_text[kTextBytes];
 char g_tool[DM_LINE_MAX + 1];  // the tool's spec, NUL terminated: dm_job.tool.spec
 char g_message[256];           // the last message asked for
-
-struct WebJob {
-  dm_job job;
-  dm_sim* sim;
-  dm_view* view;
-  dm_frame frame;
-  dm_progress progress;
-};
-WebJob g;
-
-size_t round8(size_t n) { return (n + 7) & ~static_cast<size_t>(7); }
 
 void end_job() {
   dm_view_destroy(g.view);
   dm_destroy(g.sim);
   g.view = nullptr;
   g.sim = nullptr;
+  g.arena_used = 0;
 }
 
 }  // namespace
@@ -96,6 +90,7 @@ WEB_EXPORT(web_create) int32_t web_create(int32_t w, int32_t h, int32_t preset, 
   const dm_camera camera{preset, 0, 0, 0};
   if (const dm_status s = dm_view_create_flags(g.sim, &g.frame, &camera, static_cast<uint32_t>(flags),
                                                pixels + round8(frame_bytes), view_bytes, &g.view)) return s;
+  g.arena_used = round8(sim_bytes) + round8(frame_bytes) + round8(view_bytes);
   return dm_view_set_decorations(g.view, decorations);
 }
 
