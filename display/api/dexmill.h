@@ -387,6 +387,17 @@ DM_API dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera);
  * corner, as `dexmill run` draws them (off after dm_view_create; a panel
  * may keep them off). The camera is framed again, clear of them. */
 DM_API dm_status dm_view_set_decorations(dm_view* view, int32_t on);
+/* Zooms `steps` steps (> 0 towards the scene; each shows 9/10 of the
+ * height the last showed) about the frame's pixel (x_px, y_px): the point
+ * drawn there stays there. The zoom stays through dm_view_set_camera (an
+ * orbit keeps it) until dm_view_zoom_reset; zooming back out about the same
+ * pixel gives the frame before, byte for byte. Stops at 60 steps in and 20
+ * out (DM_OK, nothing changes past them). The live window's wheel is the
+ * same code (display/view/view_zoom.h). DM_E_ARGUMENT: a pixel outside the
+ * frame, |steps| over 1000. */
+DM_API dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px);
+/* No zoom: the camera as dm_view_set_camera (or dm_view_create) gave it. */
+DM_API dm_status dm_view_zoom_reset(dm_view* view);
 /* NULL is ignored. */
 DM_API void dm_view_destroy(dm_view* view);
 

@@ -154,6 +154,22 @@ dm_status dm_view_set_decorations(dm_view* view, int32_t on) {
   return DM_OK;
 }
 
+dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  if (steps < -1000 || steps > 1000 || x_px < 0 || y_px < 0 || x_px >= view->v.fb.width || y_px >= view->v.fb.height)
+    return DM_E_ARGUMENT;
+  (void)stock_view_zoom(&view->v, steps, x_px, y_px);
+  return DM_OK;
+}
+
+dm_status dm_view_zoom_reset(dm_view* view) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  stock_view_zoom_reset(&view->v);
+  return DM_OK;
+}
+
 void dm_view_destroy(dm_view* view) {
   if (!view || view->tag != kViewTag) return;
   if (live(view->sim))

@@ -1,0 +1,123 @@
+// The embedding API's view controls (display/api/dexmill.h): dm_view_zoom
+// about a pixel keeps the point drawn there and zooming back out about it
+// gives the frame before, byte for byte; an orbit keeps the zoom; bad
+// arguments are statuses.
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "display/api/dexmill.h"
+#include "display/api/handles.h"
+#include "display/view/pick.h"
+#include "tests/run_cli_util.h"
+#include "tests/runner.h"
+
+namespace {
+
+constexpr int64_t kMm = DM_NM_PER_MM;
+constexpr int32_t kW = 160, kH = 120;
+
+// tests/run/pocket.ngc cut on its stock (0..33 x 0..23 x -10..0 mm at
+// 0.1 mm, flat:6), viewed iso at kW x kH: the frame's bytes after each render.
+struct Cut {
+  std::vector<uint64_t> sim_mem, view_mem;
+  std::vector<uint32_t> px = std::vector<uint32_t>(kW * kH);
+  dm_sim* sim = nullptr;
+  dm_view* view = nullptr;
+  std::string text = run_cli::slurp(std::string(t::tests_dir()) + "/run/pocket.ngc");
+  explicit Cut(uint32_t flags) {
+    dm_job j;
+    CHECK_EQ(dm_job_init(&j, DEXMILL_API_VERSION), DM_OK);
+    const int64_t lo[3] = {0, 0, -10 * kMm}, hi[3] = {33 * kMm, 23 * kMm, 0};
+    std::memcpy(j.stock.lo_nm, lo, sizeof lo);
+    std::memcpy(j.stock.hi_nm, hi, sizeof hi);
+    j.pitch_nm = 100000;
+    j.tool.spec = "flat:6";
+    size_t n = 0, vn = 0;
+    CHECK_EQ(dm_required_bytes(&j, &n), DM_OK);
+    sim_mem.assign(n / 8 + 1, 0);
+    CHECK_EQ(dm_create(&j, sim_mem.data(), n, &sim), DM_OK);
+    CHECK_EQ(dm_view_bytes_flags(sim, kW, kH, DM_XRGB8888, flags, &vn), DM_OK);
+    view_mem.assign(vn / 8 + 1, 0);
+    const dm_frame f{px.data(), kW, kH, kW * 4, DM_XRGB8888};
+    CHECK_EQ(dm_view_create_flags(sim, &f, nullptr, flags, view_mem.data(), vn, &view), DM_OK);
+    CHECK_EQ(dm_feed(sim, text.data(), text.size()), DM_OK);
+    int32_t state = DM_READY;
+    for (int guard = 0; guard < 1000 && (state == DM_READY || state == DM_NEED_INPUT); ++guard) {
+      CHECK_EQ(dm_step(sim, nullptr, &state), DM_OK);
+      if (state == DM_NEED_INPUT) CHECK_EQ(dm_end_input(sim), DM_OK);
+    }
+    CHECK_EQ(state, DM_DONE);
+  }
+  ~Cut() { dm_destroy(sim); }
+  std::vector<uint32_t> frame() {
+    int32_t n = 0;
+    CHECK_EQ(dm_render(view, nullptr, 0, &n), DM_OK);
+    return px;
+  }
+  dexmill::PickHit pick(int32_t x, int32_t y) const {
+    return dexmill::pick_dexel(dexmill::stock_view_picture_view(view->v), sim->sim->grid(), x, y);
+  }
+};
+
+void check_zoom_round_trip(uint32_t flags) {
+  Cut c(flags);
+  const std::vector<uint32_t> before = c.frame();
+  const dexmill::PickHit at = c.pick(100, 70), corner = c.pick(60, 50);
+  CHECK(at.hit && corner.hit);
+  CHECK_EQ(dm_view_zoom(c.view, 5, 100, 70), DM_OK);
+  const std::vector<uint32_t> in = c.frame();
+  CHECK(in != before);
+  // The point under the pixel stays (the dexel drawn there, or the one
+  // beside it: pick's bound); one 40 px away does not.
+  const dexmill::PickHit still = c.pick(100, 70), moved = c.pick(60, 50);
+  CHECK(still.hit && still.i - at.i <= 1 && at.i - still.i <= 1 && still.j - at.j <= 1 && at.j - still.j <= 1);
+  CHECK(moved.i != corner.i || moved.j != corner.j);
+  CHECK_EQ(dm_view_zoom(c.view, -2, 100, 70), DM_OK);
+  CHECK_EQ(dm_view_zoom(c.view, -3, 100, 70), DM_OK);
+  CHECK(c.frame() == before);
+  // Zoom about another pixel, then reset: the frame before.
+  CHECK_EQ(dm_view_zoom(c.view, 7, 3, 110), DM_OK);
+  CHECK(c.frame() != before);
+  CHECK_EQ(dm_view_zoom_reset(c.view), DM_OK);
+  CHECK(c.frame() == before);
+}
+
+}  // namespace
+
+TEST(api_view_zoom_about_a_pixel_and_back) { check_zoom_round_trip(0); }
+TEST(api_view_zoom_antialiased_about_a_pixel_and_back) { check_zoom_round_trip(DM_VIEW_ANTIALIAS); }
+
+// An orbit keeps the zoom: the same angles zoomed, then orbited away and
+// back, draw the same frame; the preset with the zoom reset is the first.
+TEST(api_view_zoom_kept_by_an_orbit) {
+  Cut c(0);
+  const std::vector<uint32_t> plain = c.frame();
+  CHECK_EQ(dm_view_zoom(c.view, 3, 20, 30), DM_OK);
+  const std::vector<uint32_t> zoomed = c.frame();
+  const dm_camera away{DM_VIEW_ISO, 1, -10000, 50000}, iso{DM_VIEW_ISO, 0, 0, 0};
+  CHECK_EQ(dm_view_set_camera(c.view, &away), DM_OK);
+  CHECK(c.frame() != zoomed);
+  CHECK_EQ(dm_view_set_camera(c.view, &iso), DM_OK);
+  CHECK(c.frame() == zoomed);
+  CHECK_EQ(dm_view_zoom_reset(c.view), DM_OK);
+  CHECK(c.frame() == plain);
+}
+
+// The limits: 60 steps in at most; past them nothing changes. Bad
+// arguments: a pixel outside the frame, too many steps, no view.
+TEST(api_view_zoom_limits_and_bad_arguments) {
+  Cut c(0);
+  CHECK_EQ(dm_view_zoom(c.view, 60, 80, 60), DM_OK);
+  const std::vector<uint32_t> deepest = c.frame();
+  CHECK_EQ(dm_view_zoom(c.view, 1, 80, 60), DM_OK);
+  CHECK(c.frame() == deepest);
+  CHECK_EQ(dm_view_zoom(c.view, 1, -1, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom(c.view, 1, 0, kH), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom(c.view, 1, kW, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom(c.view, 1001, 0, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom(c.view, -1001, 0, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom(nullptr, 1, 0, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_zoom_reset(nullptr), DM_E_ARGUMENT);
+  CHECK(c.frame() == deepest);  // refused calls change nothing
+}
