@@ -18,20 +18,23 @@ constexpr int64_t kMm = DM_NM_PER_MM;
 constexpr int32_t kW = 160, kH = 120;
 
 // tests/run/pocket.ngc cut on its stock (0..33 x 0..23 x -10..0 mm at
-// 0.1 mm, flat:6), viewed iso at kW x kH: the frame's bytes after each render.
+// 0.1 mm, flat:6), with a path or none, viewed iso at kW x kH: the frame's bytes after each render.
 struct Cut {
   std::vector<uint64_t> sim_mem, view_mem;
   std::vector<uint32_t> px = std::vector<uint32_t>(kW * kH);
   dm_sim* sim = nullptr;
   dm_view* view = nullptr;
   std::string text = run_cli::slurp(std::string(t::tests_dir()) + "/run/pocket.ngc");
-  explicit Cut(uint32_t flags) {
+  std::vector<uint64_t> path_mem;
+  // path_segments > 0: a path of room for so many pieces, set before the cut.
+  explicit Cut(uint32_t flags, uint32_t path_segments = 0) {
     dm_job j;
     CHECK_EQ(dm_job_init(&j, DEXMILL_API_VERSION), DM_OK);
     const int64_t lo[3] = {0, 0, -10 * kMm}, hi[3] = {33 * kMm, 23 * kMm, 0};
     std::memcpy(j.stock.lo_nm, lo, sizeof lo);
     std::memcpy(j.stock.hi_nm, hi, sizeof hi);
-    j.pitch_nm = 100000;
+    j.grid_nx = 330;  // the CLI's --grid 330x230: a 0.1 mm pitch
+    j.grid_ny = 230;
     j.tool.spec = "flat:6";
     size_t n = 0, vn = 0;
     CHECK_EQ(dm_required_bytes(&j, &n), DM_OK);
@@ -41,6 +44,10 @@ struct Cut {
     view_mem.assign(vn / 8 + 1, 0);
     const dm_frame f{px.data(), kW, kH, kW * 4, DM_XRGB8888};
     CHECK_EQ(dm_view_create_flags(sim, &f, nullptr, flags, view_mem.data(), vn, &view), DM_OK);
+    if (path_segments) {
+      path_mem.assign(dm_path_bytes(path_segments) / 8 + 1, 0);
+      CHECK_EQ(dm_view_set_path(view, path_mem.data(), dm_path_bytes(path_segments)), DM_OK);
+    }
     CHECK_EQ(dm_feed(sim, text.data(), text.size()), DM_OK);
     int32_t state = DM_READY;
     for (int guard = 0; guard < 1000 && (state == DM_READY || state == DM_NEED_INPUT); ++guard) {
@@ -120,4 +127,53 @@ TEST(api_view_zoom_limits_and_bad_arguments) {
   CHECK_EQ(dm_view_zoom(nullptr, 1, 0, 0), DM_E_ARGUMENT);
   CHECK_EQ(dm_view_zoom_reset(nullptr), DM_E_ARGUMENT);
   CHECK(c.frame() == deepest);  // refused calls change nothing
+}
+
+// The path collected as the simulation cuts draws `dexmill run
+// --path-overlay`'s frame, byte for byte; hidden, the frame without a path.
+TEST(api_view_path_is_run_path_overlay) {
+  if (run_cli::skip()) return;
+  Cut with(0, 4096), without(0);
+  const std::vector<uint32_t> px = with.frame();
+  uint32_t n = 0, cap = 0;
+  uint64_t dropped = 0;
+  CHECK_EQ(dm_view_path_info(with.view, &n, &cap, &dropped), DM_OK);
+  CHECK_EQ(cap, 4096u);
+  CHECK_EQ(dropped, 0u);
+  CHECK_GT(n, 10u);
+  const run_cli::Result r = run_cli::run(
+      "pocket.ngc -q --stock 0,0,-10,33,23,0 --tool flat:6 --grid 330x230 --size 160x120 --no-antialias "
+      "--no-decorations --path-overlay --image %/path.ppm",
+      nullptr, false);
+  CHECK_EQ(r.code, 0);
+  const std::vector<unsigned char> cli = run_cli::ppm_rgb(run_cli::slurp(run_cli::tmp_dir() + "/path.ppm"));
+  CHECK_EQ(cli.size(), px.size() * 3);
+  size_t differ = 0;
+  for (size_t k = 0; k < px.size() && cli.size() == px.size() * 3; ++k)
+    differ += ((px[k] >> 16) & 255) != cli[3 * k] || ((px[k] >> 8) & 255) != cli[3 * k + 1] || (px[k] & 255) != cli[3 * k + 2];
+  CHECK_EQ(differ, 0u);
+  CHECK(px != without.frame());
+  CHECK_EQ(dm_view_show_path(with.view, 0), DM_OK);
+  CHECK(with.frame() == without.frame());
+}
+
+// A path too small for the program: full, the rest dropped and counted,
+// nothing written past it; bad arguments.
+TEST(api_view_path_full_and_bad_arguments) {
+  Cut c(0, 5);
+  (void)c.frame();
+  uint32_t n = 0, cap = 0;
+  uint64_t dropped = 0;
+  CHECK_EQ(dm_view_path_info(c.view, &n, &cap, &dropped), DM_OK);
+  CHECK_EQ(n, 5u);
+  CHECK_EQ(cap, 5u);
+  CHECK_GT(dropped, 0u);
+  CHECK_EQ(dm_path_bytes(5), 5 * sizeof(dexmill::PathSegment));
+  CHECK_EQ(dm_view_set_path(c.view, reinterpret_cast<char*>(c.path_mem.data()) + 4, 64), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_set_path(nullptr, nullptr, 0), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_path_info(c.view, nullptr, &cap, &dropped), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_show_path(nullptr, 1), DM_E_ARGUMENT);
+  CHECK_EQ(dm_view_set_path(c.view, nullptr, 0), DM_OK);  // no path
+  CHECK_EQ(dm_view_path_info(c.view, &n, &cap, &dropped), DM_OK);
+  CHECK_EQ(n + cap, 0u);
 }

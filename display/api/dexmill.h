@@ -387,6 +387,19 @@ DM_API dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera);
  * corner, as `dexmill run` draws them (off after dm_view_create; a panel
  * may keep them off). The camera is framed again, clear of them. */
 DM_API dm_status dm_view_set_decorations(dm_view* view, int32_t on);
+/* The toolpath over the picture, as `dexmill run --path-overlay` draws it
+ * (rapids dashed, feeds solid, arcs as chords of 0.01 mm sagitta): the moves
+ * cut from now on, collected as the simulation cuts them into mem (8-byte
+ * aligned; NULL: no path), dm_path_bytes(segments) for room for that many
+ * pieces (a straight move is one, an arc its chords). When it is full the
+ * rest is dropped and counted (dm_view_path_info), never written past it.
+ * Set it before the first step for the whole path; shown until
+ * dm_view_show_path(view, 0). */
+DM_API size_t dm_path_bytes(uint32_t segments);
+DM_API dm_status dm_view_set_path(dm_view* view, void* mem, size_t bytes);
+DM_API dm_status dm_view_show_path(dm_view* view, int32_t on);
+/* The pieces held, the room for them, and the pieces dropped once full. */
+DM_API dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* capacity, uint64_t* dropped);
 /* Zooms `steps` steps (> 0 towards the scene; each shows 9/10 of the
  * height the last showed) about the frame's pixel (x_px, y_px): the point
  * drawn there stays there. The zoom stays through dm_view_set_camera (an

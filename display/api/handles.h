@@ -44,6 +44,7 @@ class ViewFan final : public SimObserver {
  public:
   void tool_loaded(const Tool& t) override;
   void changed(const GridRect& r) override;
+  void record(const CanonRecord& r) override;  // the views' paths (dm_view_set_path)
   dm_view* first = nullptr;
   Tool current{};  // the tool in the spindle, for a view made now
 };
@@ -82,6 +83,10 @@ struct dm_view {
   dm_sim* sim;   // null once the simulation is destroyed
   dm_view* next; // the simulation's next view
   dexmill::StockView v;
+  // dm_view_set_path: the toolpath cut so far, in the caller's memory.
+  dexmill::PathSegment* path;
+  uint32_t path_n, path_cap;
+  uint64_t path_dropped;  // pieces that did not fit
 };
 
 // Ending a handle is clearing its tag: nothing in it needs a destructor
