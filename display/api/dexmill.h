@@ -400,6 +400,10 @@ DM_API dm_status dm_view_set_path(dm_view* view, void* mem, size_t bytes);
 DM_API dm_status dm_view_show_path(dm_view* view, int32_t on);
 /* The pieces held, the room for them, and the pieces dropped once full. */
 DM_API dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* capacity, uint64_t* dropped);
+/* A marker (magenta, as `dexmill run` marks safety findings) at the machine
+ * point at_nm[0..2] (x, y, z; a finding's at_nm) over every frame; NULL:
+ * none. The next render draws the whole frame. */
+DM_API dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm);
 /* Zooms `steps` steps (> 0 towards the scene; each shows 9/10 of the
  * height the last showed) about the frame's pixel (x_px, y_px): the point
  * drawn there stays there. The zoom stays through dm_view_set_camera (an

@@ -87,6 +87,9 @@ struct dm_view {
   dexmill::PathSegment* path;
   uint32_t path_n, path_cap;
   uint64_t path_dropped;  // pieces that did not fit
+  // dm_view_set_mark: one point marked over the picture.
+  dexmill::PointNm mark_at;
+  dexmill::ViewMarks mark;
 };
 
 // Ending a handle is clearing its tag: nothing in it needs a destructor

@@ -193,6 +193,16 @@ dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* c
   return DM_OK;
 }
 
+dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  if (at_nm) view->mark_at = PointNm{at_nm[0], at_nm[1], at_nm[2]};
+  view->mark = ViewMarks{&view->mark_at, 1, Rgb{255, 40, 255}};  // the CLI's colour of safety findings
+  stock_view_set_marks(&view->v, &view->mark, at_nm ? 1 : 0);
+  view->v.r.need_full = true;  // a mark taken away leaves the picture under it to draw
+  return DM_OK;
+}
+
 dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px) {
   if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
   if (!live(view)) return DM_E_STATE;
