@@ -177,3 +177,45 @@ TEST(api_view_path_full_and_bad_arguments) {
   CHECK_EQ(dm_view_path_info(c.view, &n, &cap, &dropped), DM_OK);
   CHECK_EQ(n + cap, 0u);
 }
+
+// Warnings kept with their lines and columns, their text as `dexmill
+// check` prints it; the first 16 kept, all counted; bad indexes.
+TEST(api_warnings_kept_with_their_text) {
+  std::string text = "G21 G90\nG0 X0 Y0 Z5\n";
+  for (int k = 0; k < 20; ++k) text += "$H\n";  // a Grbl command skipped: a warning each
+  text += "M2\n";
+  const std::string path = run_cli::write_tmp("warned.ngc", text.c_str());
+  dm_job j;
+  CHECK_EQ(dm_job_init(&j, DEXMILL_API_VERSION), DM_OK);
+  j.stock.hi_nm[0] = j.stock.hi_nm[1] = 10 * kMm;
+  j.stock.lo_nm[2] = -5 * kMm;
+  j.tool.spec = "flat:3";
+  size_t n = 0;
+  CHECK_EQ(dm_required_bytes(&j, &n), DM_OK);
+  std::vector<uint64_t> mem(n / 8 + 1);
+  dm_sim* sim = nullptr;
+  CHECK_EQ(dm_create(&j, mem.data(), n, &sim), DM_OK);
+  CHECK_EQ(dm_feed(sim, text.data(), text.size()), DM_OK);
+  int32_t state = DM_READY;
+  for (int guard = 0; guard < 100 && (state == DM_READY || state == DM_NEED_INPUT); ++guard) {
+    CHECK_EQ(dm_step(sim, nullptr, &state), DM_OK);
+    if (state == DM_NEED_INPUT) CHECK_EQ(dm_end_input(sim), DM_OK);
+  }
+  const uint32_t count = dm_warning_count(sim);
+  CHECK_GE(count, 17u);
+  dm_input_error w{};
+  CHECK_EQ(dm_warning_get(sim, 0, &w), DM_OK);
+  CHECK_EQ(w.line, 3u);
+  CHECK_EQ(w.col, 1u);
+  char msg[256];
+  CHECK_GT(dm_warning_message(sim, 0, msg, sizeof msg), 0u);
+  const run_cli::Result r = run_cli::run_command("check " + path);
+  CHECK(run_cli::has(r.err, (path + ":3:1: warning: " + msg).c_str()));
+  CHECK_EQ(dm_warning_get(sim, 15, &w), DM_OK);
+  CHECK_EQ(w.line, 18u);
+  CHECK_EQ(dm_warning_get(sim, 16, &w), DM_E_INDEX);
+  CHECK_EQ(dm_warning_message(sim, 16, msg, sizeof msg), 0u);
+  CHECK_EQ(dm_warning_get(sim, 0, nullptr), DM_E_ARGUMENT);
+  CHECK_EQ(dm_warning_count(nullptr), 0u);
+  dm_destroy(sim);
+}

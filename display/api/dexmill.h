@@ -330,6 +330,14 @@ DM_API dm_status dm_error_get(const dm_sim* sim, uint32_t index, dm_input_error*
  * (0 for a bad index). */
 DM_API size_t dm_error_message(const dm_sim* sim, uint32_t index, char* buf, size_t n);
 
+/* Warnings (the first 16 kept; dm_warning_count and dm_progress.warnings
+ * count all), as `dexmill check` prints them (FILE:LINE:COL: warning: ...):
+ * the fields of an input error (code, line, col) and the message, as
+ * dm_error_get and dm_error_message. */
+DM_API uint32_t dm_warning_count(const dm_sim* sim);
+DM_API dm_status dm_warning_get(const dm_sim* sim, uint32_t index, dm_input_error* out);
+DM_API size_t dm_warning_message(const dm_sim* sim, uint32_t index, char* buf, size_t n);
+
 /* ---- the picture ---- */
 typedef struct dm_view dm_view;
 enum { DM_XRGB8888 = 0, DM_RGB565 = 1 };

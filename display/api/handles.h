@@ -49,6 +49,17 @@ class ViewFan final : public SimObserver {
   Tool current{};  // the tool in the spindle, for a view made now
 };
 
+// The program's first warnings, kept as they come (dm_warning_get).
+constexpr uint32_t kWarningsKept = 16;
+class KeptWarnings final : public GcodeDiagSink {
+ public:
+  void warning(const GcodeDiag& d) override {
+    if (n < kWarningsKept) kept[n++] = d;
+  }
+  GcodeDiag kept[kWarningsKept];
+  uint32_t n = 0;
+};
+
 // What a job becomes before the engine is made: the engine's job and the
 // inputs it points to (inside the dm_sim once created).
 struct JobInputs {
@@ -73,6 +84,7 @@ struct dm_sim {
   dexmill::api::JobInputs in;
   dexmill::StockComposition material;
   dexmill::api::ViewFan views;
+  dexmill::api::KeptWarnings warnings;
   char line[DM_LINE_MAX + 1];  // dm_feed_line's copy and its line end
   bool ended;                  // dm_end_input was called
   dexmill::Simulation* sim;

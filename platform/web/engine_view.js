@@ -52,6 +52,13 @@
     }
     return out;
   };
+  /* The warnings kept (the first 16): {line, col, message}. */
+  P.warnings = function () {
+    var out = [], x = this.x;
+    for (var k = 0; x.web_warning(k) > 0; ++k)
+      out.push({ line: x.web_warning_line(), col: x.web_warning_col(), message: this.cstring(x.web_warning_text()) });
+    return out;
+  };
   /* A marker at finding k (k < 0: none); redrawn. */
   P.markFinding = function (k) {
     this.check(this.x.web_mark_finding(k), "mark");

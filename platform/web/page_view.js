@@ -55,6 +55,7 @@
       var info = e.pathInfo();
       result.pathSegments = info.segments;
       result.findings = e.findings();
+      result.warnings = e.warnings();
       if (info.dropped) dexmillPage.status($("status").textContent + "; the toolpath is full at " + info.segments +
                                            " pieces, " + info.dropped + " more not drawn");
     }
@@ -85,8 +86,9 @@
       add(name + ":" + lines + ": " + f.name + " at X" + f.atMm[0].toFixed(3) + " Y" + f.atMm[1].toFixed(3) + " Z" +
           f.atMm[2].toFixed(3) + " mm, " + f.depthMm.toFixed(3) + " mm deep", k);
     });
-    var p = e.progress();
-    if (p.warnings) add(p.warnings + " warnings (their text: dexmill check " + name + ")", -1);
+    var warnings = e.warnings(), p = e.progress();
+    warnings.forEach(function (w) { add(name + ":" + w.line + ":" + w.col + ": warning: " + w.message, -1); });
+    if (p.warnings > warnings.length) add(name + ": " + (p.warnings - warnings.length) + " more warnings not listed", -1);
   }
 
   $("path-overlay").addEventListener("change", function () {

@@ -1,7 +1,7 @@
 // web_view.cpp - the page's view controls and findings over the C API
 // (display/api/dexmill.h): the zoom about a pixel, the toolpath overlay in
 // the arena behind the job (sized by the page before the cut), the safety
-// checks, the findings and a marker at one of them.
+// checks, the warnings, the findings and a marker at one of them.
 #include "display/api/dexmill.h"
 #include "platform/web/web_arena.h"
 #include "platform/web/web_job.h"
@@ -9,7 +9,9 @@
 using namespace dexmill::web;
 
 namespace {
-dm_finding g_finding;  // the finding web_finding read last
+dm_finding g_finding;        // the finding web_finding read last
+dm_input_error g_warning;    // the warning web_warning read last
+char g_warning_text[256];    // and its message, NUL terminated
 }  // namespace
 
 WEB_EXPORT(web_zoom) int32_t web_zoom(int32_t steps, int32_t x_px, int32_t y_px) {
@@ -68,3 +70,15 @@ WEB_EXPORT(web_mark_finding) int32_t web_mark_finding(int32_t k) {
   if (const dm_status s = dm_finding_get(g.sim, static_cast<uint32_t>(k), &f)) return s;
   return dm_view_set_mark(g.view, f.at_nm);
 }
+
+// Warning k kept: its message's length (0 past the kept ones), the line,
+// column and text (NUL terminated) read after it.
+WEB_EXPORT(web_warning) int32_t web_warning(uint32_t k) {
+  g_warning = dm_input_error{};
+  g_warning_text[0] = '\0';
+  if (dm_warning_get(g.sim, k, &g_warning) != DM_OK) return 0;
+  return static_cast<int32_t>(dm_warning_message(g.sim, k, g_warning_text, sizeof g_warning_text));
+}
+WEB_EXPORT(web_warning_line) uint32_t web_warning_line() { return g_warning.line; }
+WEB_EXPORT(web_warning_col) uint32_t web_warning_col() { return g_warning.col; }
+WEB_EXPORT(web_warning_text) const char* web_warning_text() { return g_warning_text; }

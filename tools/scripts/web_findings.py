@@ -6,7 +6,9 @@ native run's standard error, whose findings are warnings
 "FILE:LINE:COL: warning: ... at XN YN ZN". For every case whose native run
 warned of findings, the page's list holds the same lines and places (to the
 micrometre the CLI prints), no more and no fewer; a case with findings must
-have some (a check that finds nothing tests nothing).
+have some (a check that finds nothing tests nothing). The page's warnings
+(line, column, message) are the others dexmill run prints, each
+"FILE:LINE:COL: warning: MESSAGE" (a repeated one folded: its first).
 Exit: 0 all equal, 1 otherwise.
 """
 import json
@@ -20,11 +22,20 @@ bad = 0
 for k, r in enumerate(page, 1):
     cli = [(int(m.group(1)), tuple(float(v) for v in m.group(3, 4, 5)))
            for m in WARN.finditer(open("%s/cli%d.err" % (tmp, k)).read())]
+    err = open("%s/cli%d.err" % (tmp, k)).read()
     got = [(f["line"], tuple(round(v, 3) for v in f["atMm"])) for f in r.get("findings", [])]
+    cli_warned = set((int(m.group(1)), int(m.group(2))) for m in re.finditer(r":(\d+):(\d+): warning: ", err)) - \
+        set((l, 1) for l, _ in cli)
+    page_warned = set((w["line"], w["col"]) for w in r.get("warnings", []))
+    texts = all(":%d:%d: warning: %s" % (w["line"], w["col"], w["message"]) in err for w in r.get("warnings", []))
+    if cli_warned != page_warned or not texts:
+        print("web-test: case %d: the page's warnings %s, dexmill run's at %s" % (k, r.get("warnings"), sorted(cli_warned)),
+              file=sys.stderr)
+        bad = 1
     if sorted(cli) != sorted(got):
         print("web-test: case %d: the page's findings %s, dexmill run's %s" % (k, got, cli), file=sys.stderr)
         bad = 1
     elif cli:
-        print("ok: web-test: case %d: %d findings, lines and places as dexmill run's (%s)"
-              % (k, len(cli), ", ".join("line %d" % l for l, _ in cli)))
+        print("ok: web-test: case %d: %d findings, lines and places as dexmill run's (%s); %d warnings, its text"
+              % (k, len(cli), ", ".join("line %d" % l for l, _ in cli), len(page_warned)))
 sys.exit(bad)
