@@ -61,34 +61,37 @@
     }
   });
 
-  /* The findings list: the input errors and the findings, each a button. */
+  /* The findings list: the input errors, the warnings and the findings in
+   * the program's order, each a button: a finding's marks it in the view. */
   function list(e) {
-    var ul = $("findings"), name = (source && source.name) || "program";
-    ul.textContent = "";
-    function add(text, mark) {
-      var li = document.createElement("li"), b = document.createElement("button");
-      b.type = "button";
-      b.textContent = text;
-      b.dataset.mark = mark;
-      b.addEventListener("click", function () {
-        e.markFinding(mark);
-        redraw();
-        dexmillPage.status(text);
-      });
-      li.appendChild(b);
-      ul.appendChild(li);
-    }
+    var ul = $("findings"), name = (source && source.name) || "program", items = [];
     e.inputErrors().forEach(function (err) {
-      add(name + ":" + err.line + ":" + err.col + ": error: " + err.message, -1);
+      items.push({ line: err.line, mark: -1, text: name + ":" + err.line + ":" + err.col + ": error: " + err.message });
+    });
+    e.warnings().forEach(function (w) {
+      items.push({ line: w.line, mark: -1, text: name + ":" + w.line + ":" + w.col + ": warning: " + w.message });
     });
     e.findings().forEach(function (f, k) {
       var lines = f.lastLine > f.line ? f.line + "-" + f.lastLine : "" + f.line;
-      add(name + ":" + lines + ": " + f.name + " at X" + f.atMm[0].toFixed(3) + " Y" + f.atMm[1].toFixed(3) + " Z" +
-          f.atMm[2].toFixed(3) + " mm, " + f.depthMm.toFixed(3) + " mm deep", k);
+      items.push({ line: f.line, mark: k, text: name + ":" + lines + ": " + f.name + " at X" + f.atMm[0].toFixed(3) +
+                   " Y" + f.atMm[1].toFixed(3) + " Z" + f.atMm[2].toFixed(3) + " mm, " + f.depthMm.toFixed(3) + " mm deep" });
     });
-    var warnings = e.warnings(), p = e.progress();
-    warnings.forEach(function (w) { add(name + ":" + w.line + ":" + w.col + ": warning: " + w.message, -1); });
-    if (p.warnings > warnings.length) add(name + ": " + (p.warnings - warnings.length) + " more warnings not listed", -1);
+    var p = e.progress(), shown = items.filter(function (i) { return i.mark < 0; }).length - e.inputErrors().length;
+    if (p.warnings > shown) items.push({ line: Infinity, mark: -1, text: name + ": " + (p.warnings - shown) + " more warnings not listed" });
+    ul.textContent = "";
+    items.sort(function (a, b) { return a.line - b.line; }).forEach(function (item) {
+      var li = document.createElement("li"), button = document.createElement("button");
+      button.type = "button";
+      button.textContent = item.text;
+      button.dataset.mark = item.mark;
+      button.addEventListener("click", function () {
+        e.markFinding(item.mark);
+        redraw();
+        dexmillPage.status(item.text);
+      });
+      li.appendChild(button);
+      ul.appendChild(li);
+    });
   }
 
   $("path-overlay").addEventListener("change", function () {
