@@ -5,7 +5,7 @@
 #include "core/math/trig.h"
 #include "display/api/frame.h"
 #include "display/api/handles.h"
-#include "display/overlay/path_pieces.h"
+#include "display/api/path_pieces.h"
 
 using namespace dexmill;
 using namespace dexmill::api;

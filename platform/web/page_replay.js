@@ -1,4 +1,4 @@
-/* page_replay.js - play/pause and speed (issue 42): the cut held to machine
+/* page_replay.js - play/pause and speed: the cut held to machine
  * time at 1x, 10x or 100x, or as fast as it goes (max, the default: Run as
  * before); pause/resume (the button or space), the speed changed on the
  * way; Replay runs the last program again at the chosen speed. The pacing

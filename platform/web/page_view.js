@@ -1,4 +1,4 @@
-/* page_view.js - the page's view and findings (issue 42): the wheel zooms
+/* page_view.js - the page's view and findings: the wheel zooms
  * about the pointer, two fingers pinch-zoom (one orbits: page.js), the
  * views 1-4, a reset; the toolpath overlay (a checkbox and p); the safety
  * checks (--check) and the findings listed under the view with the input

@@ -1,5 +1,5 @@
 // The toolpath of `dexmill run --path-overlay` in a growing list: the
-// pieces are display/overlay/path_pieces.h's (the embedding API's views
+// pieces are display/api/path_pieces.h's (the embedding API's views
 // build theirs with the same code).
 #ifndef DEXMILL_TOOLS_RUN_RUN_PATH_H
 #define DEXMILL_TOOLS_RUN_RUN_PATH_H
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/canon/canon.h"
-#include "display/overlay/path_pieces.h"
+#include "display/api/path_pieces.h"
 
 namespace dexmill {
 namespace cli {

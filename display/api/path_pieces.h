@@ -3,9 +3,11 @@
 // kBackplotSagittaNm (a tenth of the finest pitch a frame shows them at is
 // far more than enough: this is a picture, not a cut). `dexmill run
 // --path-overlay` (tools/run/run_path.h) and the embedding API's views
-// (dm_view_set_path) build their paths with it. Integer only, no heap.
-#ifndef DEXMILL_DISPLAY_OVERLAY_PATH_PIECES_H
-#define DEXMILL_DISPLAY_OVERLAY_PATH_PIECES_H
+// (dm_view_set_path) build their paths with it; here beside the API, the
+// layer of display/ that reads records (tests/check_layers.sh). Integer
+// only, no heap.
+#ifndef DEXMILL_DISPLAY_API_PATH_PIECES_H
+#define DEXMILL_DISPLAY_API_PATH_PIECES_H
 
 #include <stdint.h>
 

@@ -1,5 +1,5 @@
 // The backplot's pieces of a record; see path_pieces.h.
-#include "display/overlay/path_pieces.h"
+#include "display/api/path_pieces.h"
 
 #include "core/canon/arc_chords.h"
 
