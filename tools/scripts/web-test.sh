@@ -48,7 +48,7 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|400x300|iso|cli|path
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain|speed=100
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|zoom
-tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|top|plain|path;check=rapid'
+tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|480x360|iso|cli|path;check=rapid'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
