@@ -1,7 +1,8 @@
 """The Python wrapper (tools/python/dexmill.py) over libdexmill.so: a program
 simulated, its heights and findings read (a rapid into the stock, a gouge
-under a design), input errors with their messages, bad input raised as
-DexmillError, and a view's frame equal to `dexmill run --image`'s.
+under a design), input errors and warnings with their messages, bad input
+raised as DexmillError, a view's frame equal to `dexmill run --image`'s, its
+zoom, toolpath and mark.
 
 Run by `make test` (DEXMILL_LIB: the library; DEXMILL: the binary, for the
 frame comparison). Standard library only.
@@ -73,6 +74,13 @@ class Errors(unittest.TestCase):
             self.assertIn("'Q'", e[0]["message"])
             self.assertEqual(sim.progress()["stop_reason"], "input_error")
 
+    def test_warnings(self):
+        with dexmill.Simulation(STOCK, pitch_mm=0.5) as sim:
+            self.assertEqual(sim.run("G21 G90\n$H\nG0 X1\nM2\n"), "done")
+            w = sim.warnings()
+            self.assertEqual((w[0]["line"], w[0]["col"]), (2, 1))
+            self.assertIn("'$H'", w[0]["message"])
+
     def test_bad_job_raises(self):
         with self.assertRaises(dexmill.DexmillError) as c:
             dexmill.Simulation(STOCK, tool="spoon:6")
@@ -107,6 +115,36 @@ class Views(unittest.TestCase):
                 with open(out, "rb") as f:
                     ppm = f.read()
             self.assertEqual(ppm, b"P6\n160 120\n255\n" + rgb)
+
+    def test_zoom_path_and_mark(self):
+        # Zoomed in about a pixel and back out: the frame before; the path
+        # is `dexmill run --path-overlay`'s (tests/test_api_view.cpp holds it
+        # byte for byte); a mark changes the frame and none gives it back.
+        with dexmill.Simulation(STOCK, tool="flat:6", grid=(330, 230), checks=("rapid",)) as sim:
+            view = sim.view(160, 120)
+            view.set_path(4096)
+            self.assertEqual(sim.run(RAPID_INTO_STOCK), "done")
+            view.render()
+            before = view.rgb()
+            view.zoom(4, 30, 40)
+            view.render()
+            self.assertNotEqual(view.rgb(), before)
+            view.zoom(-4, 30, 40)
+            view.render()
+            self.assertEqual(view.rgb(), before)
+            self.assertEqual(view.path_info()[1:], (4096, 0))
+            self.assertGreater(view.path_info()[0], 3)
+            view.set_mark(sim.findings()[0]["at_mm"])
+            view.render()
+            self.assertNotEqual(view.rgb(), before)
+            view.set_mark(None)
+            view.render()
+            self.assertEqual(view.rgb(), before)
+            view.show_path(False)
+            view.render()
+            self.assertNotEqual(view.rgb(), before)
+            with self.assertRaises(dexmill.DexmillError):
+                view.zoom(1, 160, 0)
 
     def test_decorated_antialiased_frame_is_the_clis(self):
         # With the triad and scale bar on and anti-aliased, the frame

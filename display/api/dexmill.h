@@ -330,6 +330,14 @@ DM_API dm_status dm_error_get(const dm_sim* sim, uint32_t index, dm_input_error*
  * (0 for a bad index). */
 DM_API size_t dm_error_message(const dm_sim* sim, uint32_t index, char* buf, size_t n);
 
+/* Warnings (the first 16 kept; dm_warning_count and dm_progress.warnings
+ * count all), as `dexmill check` prints them (FILE:LINE:COL: warning: ...):
+ * the fields of an input error (code, line, col) and the message, as
+ * dm_error_get and dm_error_message. */
+DM_API uint32_t dm_warning_count(const dm_sim* sim);
+DM_API dm_status dm_warning_get(const dm_sim* sim, uint32_t index, dm_input_error* out);
+DM_API size_t dm_warning_message(const dm_sim* sim, uint32_t index, char* buf, size_t n);
+
 /* ---- the picture ---- */
 typedef struct dm_view dm_view;
 enum { DM_XRGB8888 = 0, DM_RGB565 = 1 };
@@ -387,6 +395,34 @@ DM_API dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera);
  * corner, as `dexmill run` draws them (off after dm_view_create; a panel
  * may keep them off). The camera is framed again, clear of them. */
 DM_API dm_status dm_view_set_decorations(dm_view* view, int32_t on);
+/* The toolpath over the picture, as `dexmill run --path-overlay` draws it
+ * (rapids dashed, feeds solid, arcs as chords of 0.01 mm sagitta): the moves
+ * cut from now on, collected as the simulation cuts them into mem (8-byte
+ * aligned; NULL: no path), dm_path_bytes(segments) for room for that many
+ * pieces (a straight move is one, an arc its chords). When it is full the
+ * rest is dropped and counted (dm_view_path_info), never written past it.
+ * Set it before the first step for the whole path; shown until
+ * dm_view_show_path(view, 0). */
+DM_API size_t dm_path_bytes(uint32_t segments);
+DM_API dm_status dm_view_set_path(dm_view* view, void* mem, size_t bytes);
+DM_API dm_status dm_view_show_path(dm_view* view, int32_t on);
+/* The pieces held, the room for them, and the pieces dropped once full. */
+DM_API dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* capacity, uint64_t* dropped);
+/* A marker (magenta, as `dexmill run` marks safety findings) at the machine
+ * point at_nm[0..2] (x, y, z; a finding's at_nm) over every frame; NULL:
+ * none. The next render draws the whole frame. */
+DM_API dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm);
+/* Zooms `steps` steps (> 0 towards the scene; each shows 9/10 of the
+ * height the last showed) about the frame's pixel (x_px, y_px): the point
+ * drawn there stays there. The zoom stays through dm_view_set_camera (an
+ * orbit keeps it) until dm_view_zoom_reset; zooming back out about the same
+ * pixel gives the frame before, byte for byte. Stops at 60 steps in and 20
+ * out (DM_OK, nothing changes past them). The live window's wheel is the
+ * same code (display/view/view_zoom.h). DM_E_ARGUMENT: a pixel outside the
+ * frame, |steps| over 1000. */
+DM_API dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px);
+/* No zoom: the camera as dm_view_set_camera (or dm_view_create) gave it. */
+DM_API dm_status dm_view_zoom_reset(dm_view* view);
 /* NULL is ignored. */
 DM_API void dm_view_destroy(dm_view* view);
 

@@ -44,8 +44,20 @@ class ViewFan final : public SimObserver {
  public:
   void tool_loaded(const Tool& t) override;
   void changed(const GridRect& r) override;
+  void record(const CanonRecord& r) override;  // the views' paths (dm_view_set_path)
   dm_view* first = nullptr;
   Tool current{};  // the tool in the spindle, for a view made now
+};
+
+// The program's first warnings, kept as they come (dm_warning_get).
+constexpr uint32_t kWarningsKept = 16;
+class KeptWarnings final : public GcodeDiagSink {
+ public:
+  void warning(const GcodeDiag& d) override {
+    if (n < kWarningsKept) kept[n++] = d;
+  }
+  GcodeDiag kept[kWarningsKept];
+  uint32_t n = 0;
 };
 
 // What a job becomes before the engine is made: the engine's job and the
@@ -72,6 +84,7 @@ struct dm_sim {
   dexmill::api::JobInputs in;
   dexmill::StockComposition material;
   dexmill::api::ViewFan views;
+  dexmill::api::KeptWarnings warnings;
   char line[DM_LINE_MAX + 1];  // dm_feed_line's copy and its line end
   bool ended;                  // dm_end_input was called
   dexmill::Simulation* sim;
@@ -82,6 +95,13 @@ struct dm_view {
   dm_sim* sim;   // null once the simulation is destroyed
   dm_view* next; // the simulation's next view
   dexmill::StockView v;
+  // dm_view_set_path: the toolpath cut so far, in the caller's memory.
+  dexmill::PathSegment* path;
+  uint32_t path_n, path_cap;
+  uint64_t path_dropped;  // pieces that did not fit
+  // dm_view_set_mark: one point marked over the picture.
+  dexmill::PointNm mark_at;
+  dexmill::ViewMarks mark;
 };
 
 // Ending a handle is clearing its tag: nothing in it needs a destructor

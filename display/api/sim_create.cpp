@@ -257,6 +257,7 @@ dm_status set_up(const dm_job& in, dm_sim* s, size_t bytes) {
     return DM_E_MATERIAL;
   if (j.design)
     if (const dm_status st = design_of(in, b, &s->in.design)) return st;
+  j.warnings = &s->warnings;
   SimSetup why;
   s->sim = Simulation::create(j, b.engine, b.engine_bytes, &why);
   if (!s->sim) return status_of(why.error);

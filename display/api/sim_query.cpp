@@ -45,6 +45,25 @@ size_t rules_kept(const Simulation& s) { return s.process() ? s.process()->nkept
 
 }  // namespace
 
+namespace {
+
+// An input error's or a warning's fields and message (dm_error_get, dm_warning_get).
+dm_status diag_out(const GcodeDiag* d, uint32_t kept, uint32_t index, dm_input_error* out) {
+  if (index >= kept) return DM_E_INDEX;
+  *out = dm_input_error();
+  out->code = gcode_error_number(d[index].code);
+  out->line = d[index].line;
+  out->col = d[index].col;
+  out->follow_on = d[index].follow_on ? 1 : 0;
+  return DM_OK;
+}
+
+size_t diag_message(const GcodeDiag* d, uint32_t kept, uint32_t index, char* buf, size_t n) {
+  return index < kept ? gcode_format_message(d[index], buf, n) : 0;
+}
+
+}  // namespace
+
 extern "C" {
 
 dm_status dm_get_progress(const dm_sim* sim, dm_progress* out) {
@@ -185,13 +204,7 @@ dm_status dm_error_get(const dm_sim* sim, uint32_t index, dm_input_error* out) {
   if (!live(sim) || !out) return DM_E_ARGUMENT;
   int n = 0;
   const GcodeDiag* d = sim->sim->diags(&n);
-  if (index >= static_cast<uint32_t>(n)) return DM_E_INDEX;
-  *out = dm_input_error();
-  out->code = gcode_error_number(d[index].code);
-  out->line = d[index].line;
-  out->col = d[index].col;
-  out->follow_on = d[index].follow_on ? 1 : 0;
-  return DM_OK;
+  return diag_out(d, static_cast<uint32_t>(n), index, out);
 }
 
 size_t dm_error_message(const dm_sim* sim, uint32_t index, char* buf, size_t n) {
@@ -199,7 +212,20 @@ size_t dm_error_message(const dm_sim* sim, uint32_t index, char* buf, size_t n) 
   buf[0] = 0;
   int kept = 0;
   const GcodeDiag* d = sim->sim->diags(&kept);
-  return index < static_cast<uint32_t>(kept) ? gcode_format_message(d[index], buf, n) : 0;
+  return diag_message(d, static_cast<uint32_t>(kept), index, buf, n);
+}
+
+uint32_t dm_warning_count(const dm_sim* sim) { return live(sim) ? sim->sim->warnings() : 0; }
+
+dm_status dm_warning_get(const dm_sim* sim, uint32_t index, dm_input_error* out) {
+  if (!live(sim) || !out) return DM_E_ARGUMENT;
+  return diag_out(sim->warnings.kept, sim->warnings.n, index, out);
+}
+
+size_t dm_warning_message(const dm_sim* sim, uint32_t index, char* buf, size_t n) {
+  if (!live(sim) || !buf || n == 0) return 0;
+  buf[0] = 0;
+  return diag_message(sim->warnings.kept, sim->warnings.n, index, buf, n);
 }
 
 }  // extern "C"

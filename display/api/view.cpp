@@ -5,6 +5,7 @@
 #include "core/math/trig.h"
 #include "display/api/frame.h"
 #include "display/api/handles.h"
+#include "display/api/path_pieces.h"
 
 using namespace dexmill;
 using namespace dexmill::api;
@@ -17,6 +18,14 @@ namespace api {
 void ViewFan::tool_loaded(const Tool& t) {
   current = t;
   for (dm_view* v = first; v; v = v->next) stock_view_set_tool(&v->v, t);
+}
+
+void ViewFan::record(const CanonRecord& r) {
+  for (dm_view* v = first; v; v = v->next) {
+    if (!v->path) continue;
+    v->path_dropped += path_append(r, v->path, &v->path_n, v->path_cap);
+    stock_view_path_progress(&v->v, v->path, v->path_n, v->path_n);  // each piece is cut as it comes
+  }
 }
 
 void ViewFan::changed(const GridRect& r) {
@@ -151,6 +160,62 @@ dm_status dm_view_set_decorations(dm_view* view, int32_t on) {
   if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
   if (!live(view)) return DM_E_STATE;
   stock_view_set_decorations(&view->v, on != 0);
+  return DM_OK;
+}
+
+size_t dm_path_bytes(uint32_t segments) { return static_cast<size_t>(segments) * sizeof(PathSegment); }
+
+dm_status dm_view_set_path(dm_view* view, void* mem, size_t bytes) {
+  if (!view || view->tag != kViewTag || (mem && (reinterpret_cast<uintptr_t>(mem) & 7) != 0)) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  const size_t cap = mem ? bytes / sizeof(PathSegment) : 0;
+  view->path = cap > 0 ? static_cast<PathSegment*>(mem) : nullptr;
+  view->path_cap = static_cast<uint32_t>(cap < UINT32_MAX ? cap : UINT32_MAX);
+  view->path_n = 0;
+  view->path_dropped = 0;
+  if (view->path) stock_view_set_path(&view->v, view->path, 0, 0);
+  else stock_view_remove_path(&view->v);
+  return DM_OK;
+}
+
+dm_status dm_view_show_path(dm_view* view, int32_t on) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  stock_view_show_path(&view->v, on != 0);
+  return DM_OK;
+}
+
+dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* capacity, uint64_t* dropped) {
+  if (!view || view->tag != kViewTag || !segments || !capacity || !dropped) return DM_E_ARGUMENT;
+  *segments = view->path_n;
+  *capacity = view->path_cap;
+  *dropped = view->path_dropped;
+  return DM_OK;
+}
+
+dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  if (at_nm) view->mark_at = PointNm{at_nm[0], at_nm[1], at_nm[2]};
+  view->mark = ViewMarks{&view->mark_at, 1, Rgb{255, 40, 255}};  // the CLI's colour of safety findings
+  stock_view_set_marks(&view->v, &view->mark, at_nm ? 1 : 0);
+  view->v.r.need_full = true;  // a mark taken away leaves the picture under it to draw
+  return DM_OK;
+}
+
+dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  if (steps < -1000 || steps > 1000 || x_px < 0 || y_px < 0 || x_px >= view->v.fb.width || y_px >= view->v.fb.height)
+    return DM_E_ARGUMENT;
+  (void)stock_view_zoom(&view->v, steps, x_px, y_px);
+  return DM_OK;
+}
+
+dm_status dm_view_zoom_reset(dm_view* view) {
+  if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
+  if (!live(view)) return DM_E_STATE;
+  stock_view_zoom_reset(&view->v);
   return DM_OK;
 }
 

@@ -125,7 +125,7 @@ Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const Frame
                          size_t scratch_bytes) {
   Renderer<height_t>* r = &v->r;
   const bool had_camera = r->fb.pixels != nullptr;
-  const Camera keep = r->cam;
+  const Camera keep = v->given;
   FrameView scene = fb;
   if (v->big_pixels) {
     scene.pixels = v->big_pixels;
@@ -139,7 +139,7 @@ Status stock_view_resize(StockView* v, const DexelGrid<height_t>& g, const Frame
   v->fb = fb;
   v->big = scene;
   // Keep direction and zoom; refit only the target to the new aspect.
-  if (had_camera) renderer_set_camera(r, keep);
+  if (had_camera) renderer_set_camera(r, view_zoom_apply(keep, v->zoom, fb.height));
   if (v->have_tool) renderer_set_tool(r, &v->profile);
   renderer_set_colours(r, v->colours);
   if (v->fixtures) (void)renderer_set_fixtures(r, v->fixtures, v->nfixtures);
@@ -265,13 +265,27 @@ DepthView stock_view_depth(const StockView& v) {
 
 void stock_view_share_frame(StockView* v, const StockView& other) {
   renderer_share_frame(&v->r, other.r);
-  renderer_set_camera(&v->r, stock_view_camera(other));
+  v->given = stock_view_camera(other);
+  v->zoom = ViewZoom{};
+  renderer_set_camera(&v->r, v->given);
 }
 
 void stock_view_set_camera(StockView* v, const Camera& c) {
-  renderer_set_camera(&v->r, c);
+  v->given = c;
+  renderer_set_camera(&v->r, view_zoom_apply(c, v->zoom, v->fb.height));
   v->legend_fitted = v->legend != nullptr;
   v->legend_rows = legend_has_captions(v->legend);
+}
+
+bool stock_view_zoom(StockView* v, int32_t steps, int32_t x_px, int32_t y_px) {
+  if (!view_zoom_about(&v->zoom, steps, x_px, y_px, v->fb.width, v->fb.height)) return false;
+  renderer_set_camera(&v->r, view_zoom_apply(v->given, v->zoom, v->fb.height));
+  return true;
+}
+
+void stock_view_zoom_reset(StockView* v) {
+  v->zoom = ViewZoom{};
+  renderer_set_camera(&v->r, v->given);
 }
 
 Camera stock_view_initial_camera(const StockView& v) {

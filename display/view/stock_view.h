@@ -30,6 +30,7 @@
 #include "display/overlay/legend.h"
 #include "display/overlay/overlay.h"
 #include "display/surface/render.h"
+#include "display/view/view_zoom.h"
 
 namespace dexmill {
 
@@ -96,6 +97,8 @@ struct StockView {
   uint32_t path_n = 0;
   uint32_t path_done = 0;        // pieces cut so far
   uint32_t path_drawn_done = 0;  // path_done when the path was last drawn
+  Camera given{};   // the camera last set, before the zoom (display/view/view_zoom.h)
+  ViewZoom zoom{};  // applied to `given`: kept across camera changes
 };
 
 // Scratch bytes for drawing grid g into a width x height frame; supersampled,
@@ -181,7 +184,16 @@ inline Camera stock_view_camera(const StockView& v) { return v.r.cam; }
 // scene's camera and scene frame at 1x): what turns a pixel of the picture
 // back into the dexel drawn there (display/view/pick.h).
 inline const View& stock_view_picture_view(const StockView& v) { return v.view_1x; }
+// The camera, zoomed by the view's zoom (stock_view_zoom) before it is drawn.
 void stock_view_set_camera(StockView* v, const Camera& c);
+// The camera last set, without the zoom (what an orbit turns).
+inline const Camera& stock_view_given_camera(const StockView& v) { return v.given; }
+// `steps` zoom steps (> 0 towards the scene) about the frame's pixel
+// (x_px, y_px): the point drawn there stays (display/view/view_zoom.h); the
+// next frame is drawn whole. False when at the zoom's limit.
+bool stock_view_zoom(StockView* v, int32_t steps, int32_t x_px, int32_t y_px);
+// No zoom (the camera as it was set).
+void stock_view_zoom_reset(StockView* v);
 // The chosen camera fitted to the stock and the fixtures, inside the
 // picture's area (stock_view_picture_area) with a margin and, with
 // decorations on, above them when they would cover it and that leaves the

@@ -70,6 +70,7 @@ var dexmill = (function () {
     this.check(x.web_set_tool(this.put(o.tool || "flat:6")), "tool");
     var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
     this.check(x.web_set_grid(g[0], g[1]), "grid");
+    this.check(x.web_set_checks(o.checks || 0), "--check");  /* DM_CHECK_* bits (engine_view.js checkBits) */
     var view = VIEWS[o.view || "iso"];
     if (view === undefined) throw new Error("view: iso, top, front or right");
     this.check(x.web_create(s[0], s[1], view, o.antialias ? 1 : 0, o.decorations ? 1 : 0), "the job");
@@ -101,15 +102,34 @@ var dexmill = (function () {
    * unless the last drawing took more than a quarter of the time since it: a
    * fine grid's redraw can cost more than the cut (drawn every slice,
    * KB-850's at 1012 x 1024 dexels took 5x as long). o.moves is a step's
-   * budget (default 256). */
+   * budget (default 256). A pace (o.pace or this.pace, engine_replay.js:
+   * wait(engine) -> ms ahead of the wall clock or paused, 0 due, -1 not
+   * pacing) holds the cut
+   * to machine time: a move a step, and while it is ahead (to the last
+   * move's end) the frame is drawn and the page runs; none, or one at full
+   * speed, cuts as before. */
   Engine.prototype.run = async function (source, o) {
     o = o || {};
+    var pace = o.pace || this.pace || null;
     var x = this.x, moves = o.moves || 256, sliceMs = o.sliceMs || 30, state = READY, ended = false;
     var last = performance.now(), drawn = -Infinity, drawCost = 0, generation = this.generation, self = this;
     /* After each await: the module may hold another job now (Run again). */
     function mine() { if (self.generation !== generation) throw new Error("replaced by a new job"); }
+    /* Ahead of machine time, or paused: the frame shown, the page runs a while. */
+    async function hold(ms) {
+      self.render();
+      if (o.onSlice) o.onSlice(self.progress(), true);
+      await new Promise(function (r) { setTimeout(r, Math.min(ms, sliceMs)); });
+      mine();
+      last = performance.now();
+    }
     while (state === READY || state === NEED_INPUT) {
-      state = x.web_step(moves);
+      var ahead = pace ? pace.wait(this) : -1;
+      if (ahead > 0) {
+        await hold(ahead);
+        continue;
+      }
+      state = x.web_step(ahead < 0 ? moves : 1);
       if (state < 0) this.check(-state, "step");
       if (state === NEED_INPUT) {
         var piece = ended ? null : await source.next(x.web_text_bytes());
@@ -129,6 +149,7 @@ var dexmill = (function () {
         last = performance.now();
       }
     }
+    for (var wait; pace && (wait = pace.wait(this)) > 0;) await hold(wait);  /* the last move's time */
     this.render();
     return this.progress();
   };

@@ -108,7 +108,7 @@ class Steps final : public SimObserver {
     if (draw_) draw_->set_tool(&profile_);
   }
   void changed(const GridRect& r) override { pending_.include(r); }
-  void record(const CanonRecord& r) override { path_done += cli::path_pieces(r, sagitta_nm_); }
+  void record(const CanonRecord& r) override { path_done += path_pieces(r, sagitta_nm_); }
   void moved(uint64_t moves) override {
     if (moves % every_ == 0) step();
   }

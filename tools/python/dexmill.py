@@ -180,6 +180,16 @@ def _load():
         "dm_view_set_camera": (st, [view, P(_Camera)]),
         "dm_view_set_decorations": (st, [view, ctypes.c_int32]),
         "dm_view_destroy": (None, [view]),
+        "dm_warning_count": (ctypes.c_uint32, [sim]),
+        "dm_warning_get": (st, [sim, ctypes.c_uint32, P(_InputError)]),
+        "dm_warning_message": (ctypes.c_size_t, [sim, ctypes.c_uint32, ctypes.c_char_p, ctypes.c_size_t]),
+        "dm_view_zoom": (st, [view, ctypes.c_int32, ctypes.c_int32, ctypes.c_int32]),
+        "dm_view_zoom_reset": (st, [view]),
+        "dm_path_bytes": (ctypes.c_size_t, [ctypes.c_uint32]),
+        "dm_view_set_path": (st, [view, ctypes.c_void_p, ctypes.c_size_t]),
+        "dm_view_show_path": (st, [view, ctypes.c_int32]),
+        "dm_view_path_info": (st, [view, P(ctypes.c_uint32), P(ctypes.c_uint32), P(ctypes.c_uint64)]),
+        "dm_view_set_mark": (st, [view, P(ctypes.c_int64)]),
         "dm_mm_to_nm": (st, [ctypes.c_char_p, ctypes.c_size_t, P(ctypes.c_int64)]),
     }
     for name, (res, args) in sigs.items():
@@ -392,13 +402,20 @@ class Simulation:
         return _lib.dm_finding_total(self._sim)
 
     def errors(self):
+        return self._diags(_lib.dm_error_count, _lib.dm_error_get, _lib.dm_error_message)
+
+    def warnings(self):
+        """The first 16 warnings, as errors() (the text `dexmill check` prints)."""
+        return self._diags(_lib.dm_warning_count, _lib.dm_warning_get, _lib.dm_warning_message)
+
+    def _diags(self, count, get, message):
         out = []
-        for k in range(min(_lib.dm_error_count(self._sim), 16)):
+        for k in range(min(count(self._sim), 16)):
             e = _InputError()
-            if _lib.dm_error_get(self._sim, k, ctypes.byref(e)) != 0:
+            if get(self._sim, k, ctypes.byref(e)) != 0:
                 break
             msg = ctypes.create_string_buffer(512)
-            _lib.dm_error_message(self._sim, k, msg, len(msg))
+            message(self._sim, k, msg, len(msg))
             out.append({"code": e.code, "line": e.line, "col": e.col, "follow_on": bool(e.follow_on),
                         "message": msg.value.decode(errors="replace")})
         return out
@@ -450,6 +467,33 @@ class View:
     def set_decorations(self, on=True):
         """The axis triad and scale bar, as `dexmill run` draws them (off at first)."""
         _check(_lib.dm_view_set_decorations(self._view, 1 if on else 0))
+
+    def zoom(self, steps, x, y):
+        """steps (> 0 in, 9/10 of the height each) about pixel (x, y), which stays put."""
+        _check(_lib.dm_view_zoom(self._view, steps, x, y))
+
+    def zoom_reset(self):
+        _check(_lib.dm_view_zoom_reset(self._view))
+
+    def set_path(self, segments):
+        """The toolpath (`--path-overlay`) collected from now on, room for `segments` pieces (0: none)."""
+        n = _lib.dm_path_bytes(segments)
+        self._path_mem = _block(n) if segments else None
+        _check(_lib.dm_view_set_path(self._view, ctypes.cast(self._path_mem, ctypes.c_void_p) if segments else None, n))
+
+    def show_path(self, on=True):
+        _check(_lib.dm_view_show_path(self._view, 1 if on else 0))
+
+    def path_info(self):
+        """(pieces held, room, pieces dropped once full)."""
+        n, cap, dropped = ctypes.c_uint32(), ctypes.c_uint32(), ctypes.c_uint64()
+        _check(_lib.dm_view_path_info(self._view, ctypes.byref(n), ctypes.byref(cap), ctypes.byref(dropped)))
+        return n.value, cap.value, dropped.value
+
+    def set_mark(self, at_mm=None):
+        """A marker at (x, y, z) mm (a finding's at_mm); None: none."""
+        at = (ctypes.c_int64 * 3)(*(nm(v) for v in at_mm)) if at_mm is not None else None
+        _check(_lib.dm_view_set_mark(self._view, at))
 
     @property
     def pixels(self):

@@ -217,15 +217,8 @@ bool LiveView::handle_input(DexelGrid<height_t>* g, double wait_s, bool* redraw)
       c.azimuth_bam -= static_cast<uint32_t>(in.drag_dx) * static_cast<uint32_t>(kBamPerPixel);
       const int64_t el = static_cast<int64_t>(c.elevation_bam) + static_cast<int64_t>(in.drag_dy) * kBamPerPixel;
       c.elevation_bam = static_cast<int32_t>(clamp<int64_t>(el, -kElevationLimitBam, kElevationLimitBam));
-      for (int k = 0; k < in.zoom_steps; ++k) {
-        c.view_height_nm = max_of<int64_t>(c.view_height_nm * 9 / 10, 1000);
-        c.distance_nm = max_of<int64_t>(c.distance_nm * 9 / 10, 1000);
-      }
-      for (int k = 0; k > in.zoom_steps; --k) {
-        c.view_height_nm = min_of<int64_t>(c.view_height_nm * 10 / 9, int64_t{1} << 50);
-        c.distance_nm = min_of<int64_t>(c.distance_nm * 10 / 9, int64_t{1} << 50);
-      }
     }
+    out_.zoom(in.zoom_steps, in.reset_view);  // the API's zoom too (display/view/view_zoom.h)
     out_.set_camera(c);
     *redraw = true;
   }

@@ -89,7 +89,12 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
   return stock_view_draw(v_.get(), g, pose);
 }
 
-Camera RenderOutput::camera() const { return stock_view_camera(*v_); }
+Camera RenderOutput::camera() const { return stock_view_given_camera(*v_); }
+
+void RenderOutput::zoom(int32_t steps, bool reset) {
+  if (reset) stock_view_zoom_reset(v_.get());
+  else (void)stock_view_zoom(v_.get(), steps, v_->fb.width / 2, v_->fb.height / 2);
+}
 
 void RenderOutput::set_path(const std::vector<PathSegment>* path, const uint32_t* done) {
   path_ = path;

@@ -88,8 +88,11 @@ class RenderOutput {
   // top's last drawing blended over this one's where it is nearer
   // (display/view/stock_view.h stock_view_blend); false if they do not match.
   bool blend(const RenderOutput& top) { return stock_view_blend(v_.get(), *top.v_); }
+  // The camera as set (an orbit turns it), before the zoom.
   Camera camera() const;
   void set_camera(const Camera& c);
+  // Zoom steps about the frame's centre (display/view/view_zoom.h), or none (reset).
+  void zoom(int32_t steps, bool reset);
   // The view the last frame was drawn with, at the picture's size (for
   // picking what a pixel shows).
   const View& picture_view() const { return stock_view_picture_view(*v_); }

@@ -29,20 +29,36 @@ web_setup web-test "$web"
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
-# --azimuth and --elevation of iso's turned half a degree a pixel.
+# --azimuth and --elevation of iso's turned half a degree a pixel. An
+# optional eighth column, extras separated by ';': path (the page's
+# --path-overlay box and the CLI's option), check=NAMES (the page's --check
+# field and the CLI's; its findings, kind, line and place, must be those
+# dexmill run warns of, and the first clicked in the list marks the view
+# where dexmill run marks it: one finding in such a case), speed=N (a live
+# replay at N times machine time (Replay after a run at full speed), paused
+# for 300 ms on the way: the same
+# last frame, no cut while paused, and at least machine time / N long),
+# zoom (after the cut: 10 wheel notches in about a point and 10 out give
+# the frame before; a pinch of 3x about the same point gives the wheel's
+# frame, not an orbit; reset view the frame before).
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
 tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso+30+10|cli
-tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli'
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|400x300|iso|cli|path
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain|speed=100
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|zoom
+tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|480x360|iso|cli|path;check=rapid'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
 {
   echo "var DEXMILL_CASES = ["
-  while IFS='|' read -r prog stock tool grid size view look; do
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)"
+  while IFS='|' read -r prog stock tool grid size view look extra; do
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, extra: "%s"},\n' \
+      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
+      "$extra"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -55,7 +71,46 @@ window.dexmillTest = (async function () {
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     var view = c.view.split("+");
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
-    var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
+    var extra = c.extra.split(";"), check = extra.filter(function (w) { return /^check=/.test(w); })[0];
+    $("path-overlay").checked = extra.indexOf("path") >= 0;
+    $("check").value = check ? check.slice(6) : "";
+    var speed = extra.filter(function (w) { return /^speed=/.test(w); })[0];
+    $("speed").value = "0";
+    var running = dexmillPage.run(dexmill.blobSource(new Blob([b]))), sleep = function (ms) {
+      return new Promise(function (done) { setTimeout(done, ms); });
+    };
+    if (speed) {  /* Replay, paced, paused on the way: the status line (the cut's progress) stands still */
+      await running;
+      $("speed").value = speed.slice(6);
+      $("replay").click();
+      running = dexmillPage.running;
+      await sleep(150);
+      $("pause").click();
+      await sleep(100);
+      var before = $("status").textContent;
+      await sleep(300);
+      var paused = { before: before, after: $("status").textContent };
+      $("pause").click();
+    }
+    var r = await running;
+    if (speed) { r.paused = paused; r.speed = +speed.slice(6); }
+    if (extra.indexOf("zoom") >= 0) {
+      var cv = $("view-canvas"), h = function () { return $("hash").textContent; }, z = { before: h() };
+      var wheel = function (dy) { cv.dispatchEvent(new WheelEvent("wheel", { bubbles: true, cancelable: true, deltaY: dy, clientX: 125, clientY: 125 })); };
+      var pointer = function (type, id, x) { cv.dispatchEvent(new PointerEvent(type, { bubbles: true, pointerId: id, clientX: x, clientY: x })); };
+      for (var k = 0; k < 10; ++k) wheel(-100);
+      z.wheelIn = h();
+      for (k = 0; k < 10; ++k) wheel(100);
+      z.wheelOut = h();
+      pointer("pointerdown", 11, 50); pointer("pointerdown", 12, 100); pointer("pointermove", 12, 200);
+      await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
+      z.pinch = h();
+      pointer("pointerup", 12, 200); pointer("pointerup", 11, 50);
+      $("zoom-reset").click();
+      z.reset = h();
+      r.zoom = z;
+      r.hash = h();
+    }
     if (view.length === 3) {  /* a drag across the canvas, as a finger or mouse makes it */
       var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
       canvas.dispatchEvent(new PointerEvent("pointerdown", at(0, 0)));
@@ -64,6 +119,12 @@ window.dexmillTest = (async function () {
       canvas.dispatchEvent(new PointerEvent("pointerup", at(+view[1], +view[2])));
       await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
       r.hash = $("hash").textContent;
+    }
+    var marked = document.querySelector("#findings button[data-mark='0']");
+    if (check && marked) {  /* the first finding clicked: marked where dexmill run marks it */
+      marked.click();
+      r.hash = $("hash").textContent;
+      r.status = $("status").textContent;
     }
     out.push(dexmillProbe(r));
   }
@@ -78,7 +139,7 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 
 # The native runs, timed, each as the CLI draws it.
 n=0
-while IFS='|' read -r prog stock tool grid size view look; do
+while IFS='|' read -r prog stock tool grid size view look extra; do
   n=$((n + 1))
   opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size")
   case $view in
@@ -88,13 +149,19 @@ while IFS='|' read -r prog stock tool grid size view look; do
     *) opts+=(--view "$view");;
   esac
   [ "$look" = cli ] || opts+=(--no-antialias --no-decorations)
+  IFS=';' read -ra extras <<< "$extra"
+  for x in "${extras[@]}"; do
+    case $x in path) opts+=(--path-overlay);; check=*) opts+=(--check "${x#check=}");; esac
+  done
   t0=$(date +%s%N)
-  "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
+  "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err" || fail "dexmill run $prog failed"
   t1=$(date +%s%N)
   echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
 done <<< "$cases"
 
 python3 tools/scripts/web_compare.py "$tmp" || fail "the page's pixels are not dexmill run's"
+python3 tools/scripts/web_findings.py "$tmp" || fail "the page's findings are not those dexmill run warns of"
+python3 tools/scripts/web_controls.py "$tmp" || fail "a paced replay did not keep to machine time or pause, or a zoom did not come back"
 
 # The same page from a static server (Python's, on a free local port): the
 # same frames, and no request but to that server.
