@@ -394,11 +394,80 @@ DM_API void dm_view_destroy(dm_view* view);
  * "12", "0.000001"; spaces allowed) in nm, rounded to nearest. */
 DM_API dm_status dm_mm_to_nm(const char* text, size_t n, int64_t* nm);
 
+/* ---- the first pass: what `dexmill run FILE` chooses when not told ---- */
+/* The program read once, nothing cut: the stock and grid `dexmill run`
+ * takes with no --stock, --pitch or --grid (the program's (WORKPIECE,...)
+ * or BLK FORM comments' box, else its motion's box widened by the largest
+ * tool; the pitch from the smallest tool loaded: core/sim/stock_plan.h),
+ * the units, the motion's box, the counts and the tools it loads. Fed and
+ * stepped as a dm_sim is (the same lending of text); it stops at the
+ * first input error or at an M6 of a T the job's tools lack, as the CLI's
+ * pass does. A job's stock and grid are not read. */
+typedef struct dm_scan dm_scan;
+enum {  /* dm_scan_result.stock_from */
+  DM_STOCK_FROM_PROGRAM = 0,       /* the motion's box */
+  DM_STOCK_FROM_WORKPIECE = 1,     /* a (WORKPIECE,box,...) comment */
+  DM_STOCK_FROM_WORKPIECE_BOX = 2, /* the box of a cylinder's or tube's (WORKPIECE,...) comment */
+  DM_STOCK_FROM_BLK_FORM = 3       /* BLK FORM 0.1 / 0.2 comments */
+};
+enum { DM_UNITS_NONE = -1, DM_UNITS_MIXED = 2 };  /* dm_scan_result.units besides DM_UNITS_MM, DM_UNITS_INCH */
+typedef struct dm_scan_result {
+  dm_box stock;               /* the default stock, machine coordinates */
+  int32_t stock_from;         /* DM_STOCK_FROM_* */
+  int32_t units;              /* what its moves were written in: DM_UNITS_*, DM_UNITS_MIXED, DM_UNITS_NONE (no move) */
+  int64_t pitch_nm;           /* the default pitch for that stock */
+  int32_t grid_nx, grid_ny;   /* the grid it gives, dexels (dm_grid_info's, the ring of empty ones included) */
+  int32_t has_extents;        /* non-zero: extents holds the motion's box */
+  int32_t ntools;             /* tools loaded (dm_scan_tool_get), [0] the one before any M6 */
+  dm_box extents;             /* every move's box (rapids included), machine coordinates */
+  uint64_t rapids, feeds, arcs, dwells, tool_changes; /* records counted */
+  uint32_t lines;             /* program lines read */
+  uint32_t errors;            /* input errors: the pass stops at the first (0 or 1) */
+  uint32_t error_line, error_col; /* the first one's, 1-based (0: none) */
+  int32_t error_code;         /* its stable G-code error number */
+  uint32_t bad_tool_line;     /* the M6 of a T the job's tools lack (0: none); the cut stops there too */
+  int32_t bad_tool;           /* that T */
+  uint32_t workpiece_bad_line; /* a (WORKPIECE,...) or BLK FORM comment not read (0: none): the CLI's warning */
+  int64_t estimated_us;       /* the time model's estimate (no look-ahead) */
+} dm_scan_result;
+typedef struct dm_scan_tool {
+  int32_t number;             /* the T number; -1 for the job's tool before any M6 */
+  int32_t shape;              /* DM_TOOL_* */
+  int64_t diameter_nm;
+  uint32_t first_line;        /* the M6 that first loaded it ([0]: its first cutting move's line; 0: none) */
+  uint32_t last_line;         /* its last feed or arc move's line (0: none) */
+} dm_scan_tool;
+
+/* Bytes a scan of the job needs (its tool, tools, units, max_blocks and
+ * input_buffer_bytes are read; not its stock or grid). */
+DM_API dm_status dm_scan_bytes(const dm_job* job, size_t* bytes);
+/* Sets the scan up in mem (8-byte aligned, at least dm_scan_bytes). */
+DM_API dm_status dm_scan_create(const dm_job* job, void* mem, size_t bytes, dm_scan** out);
+/* As dm_feed, dm_input_taken and dm_end_input. */
+DM_API dm_status dm_scan_feed(dm_scan* scan, const char* text, size_t n);
+DM_API int32_t dm_scan_input_taken(const dm_scan* scan);
+DM_API dm_status dm_scan_end_input(dm_scan* scan);
+/* Reads until budget->lines lines (NULL or 0: no limit; the other counts
+ * are not read) or input is needed: *state DM_READY, DM_NEED_INPUT, DM_DONE,
+ * or DM_IO_ERROR (the input could not be read again for an o-word jump). */
+DM_API dm_status dm_scan_step(dm_scan* scan, const dm_budget* budget, int32_t* state);
+/* What it found, once DM_DONE (else DM_E_STATE). DM_E_GRID (the rest
+ * filled, grid_nx and grid_ny 0) when the default stock makes no grid
+ * (over 65535 dexels a side), as `dexmill run` then refuses. */
+DM_API dm_status dm_scan_get_result(const dm_scan* scan, dm_scan_result* out);
+/* Tool k (0 .. ntools - 1) it loaded; DM_E_INDEX past them. */
+DM_API dm_status dm_scan_tool_get(const dm_scan* scan, int32_t k, dm_scan_tool* out);
+/* The job's stock and pitch (grid_nx, grid_ny 0) to the scan's defaults:
+ * the job `dexmill run` makes of the program with no --stock or --grid. */
+DM_API dm_status dm_scan_apply(const dm_scan* scan, dm_job* job);
+/* NULL is ignored. */
+DM_API void dm_scan_destroy(dm_scan* scan);
+
 /* ---- for bindings: the size of each struct as this library has it ---- */
 enum {
   DM_STRUCT_JOB = 1, DM_STRUCT_TOOL, DM_STRUCT_BOX, DM_STRUCT_TRIANGLE, DM_STRUCT_BUDGET, DM_STRUCT_PROGRESS,
   DM_STRUCT_GRID_INFO, DM_STRUCT_COLUMN, DM_STRUCT_FINDING, DM_STRUCT_INPUT_ERROR, DM_STRUCT_FRAME,
-  DM_STRUCT_CAMERA, DM_STRUCT_RECT
+  DM_STRUCT_CAMERA, DM_STRUCT_RECT, DM_STRUCT_SCAN_RESULT = 14, DM_STRUCT_SCAN_TOOL = 15
 };
 /* 0 for an unknown one. */
 DM_API size_t dm_struct_bytes(int32_t which);
