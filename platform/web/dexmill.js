@@ -70,6 +70,7 @@ var dexmill = (function () {
     this.check(x.web_set_tool(this.put(o.tool || "flat:6")), "tool");
     var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
     this.check(x.web_set_grid(g[0], g[1]), "grid");
+    if (o.pitch) this.check(x.web_set_pitch(this.put(o.pitch)), "pitch");  /* the CLI's --pitch MM, instead of the grid (web_scan.cpp) */
     var view = VIEWS[o.view || "iso"];
     if (view === undefined) throw new Error("view: iso, top, front or right");
     this.check(x.web_create(s[0], s[1], view, o.antialias ? 1 : 0, o.decorations ? 1 : 0), "the job");
@@ -169,9 +170,19 @@ var dexmill = (function () {
    * its peak, tools/scripts/web-stream-test.sh); else by Blob.slice. */
   function blobSource(blob) {
     var at = 0, reader = null, buf = null;
-    try { reader = blob.stream().getReader({ mode: "byob" }); } catch (e) { reader = null; }
+    function open() {
+      at = 0;
+      try { reader = blob.stream().getReader({ mode: "byob" }); } catch (e) { reader = null; }
+    }
+    open();
     return {
       name: blob.name || "program",  /* a File's name, for FILE:LINE:COL */
+      size: blob.size,               /* bytes, for a progress bar */
+      /* From the start again (a first pass read it: page_scan.js). */
+      rewind: function () {
+        if (reader) reader.cancel().catch(function () { /* a finished stream: nothing to cancel */ });
+        open();
+      },
       next: async function (max) {
         if (!reader) {
           var piece = blob.slice(at, Math.min(blob.size, at + max));

@@ -27,13 +27,19 @@ web_setup web-test "$web"
 
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
+# An empty stock or grid is an empty field, and no --stock or --grid for
+# dexmill run: both choose them from the program (platform/web/page_scan.js).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel.
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
 tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso+30+10|cli
-tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli'
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
+tests/run/pocket.ngc||flat:6||320x240|iso|cli
+tests/run/arcs_inch.ngc||vbit:3:90||400x300|top|cli
+tests/run/tool_change.ngc||flat:3||320x240|iso|plain
+tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
@@ -80,7 +86,9 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 n=0
 while IFS='|' read -r prog stock tool grid size view look; do
   n=$((n + 1))
-  opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size")
+  opts=(-q --tool "$tool" --size "$size")
+  [ -z "$stock" ] || opts+=(--stock "$stock")
+  [ -z "$grid" ] || opts+=(--grid "$grid")
   case $view in
     iso+*) IFS=+ read -r _ dx dy <<< "$view"
            opts+=(--azimuth "$(awk -v d="$dx" 'BEGIN { printf "%.3f", -45 - d / 2 }')"
