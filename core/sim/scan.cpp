@@ -71,6 +71,7 @@ void ProgramScan::finish(const GcodeRunner& runner, const Interp& interp) {
   lines = runner.lines();
   probes = interp.probe_moves();
   io_error = runner.io_error();
+  table_inch = interp.tool_named() && interp.units_set_at_tool() ? interp.inch_at_tool() : job_.inch;
   interp_ = nullptr;
   also_ = nullptr;
   if (!choice_) return;

@@ -106,6 +106,10 @@ class ProgramScan final : public CanonSink, public LineWatcher, private MoveTime
   const char* workpiece_bad_form = "(WORKPIECE,...)";  // or "(BLK FORM ...)"
   bool blk_form = false;       // the stock is a BLK FORM's (else WORKPIECE's)
   bool io_error = false;
+  // The units a tool table is read in by core/sim/tool_units.h's rule: the
+  // program's at its first T word when it set them by then, else the job's.
+  // (A pass stopped by an input error before any T reads no table tool.)
+  bool table_inch = false;
 
   // The smallest diameter among the tools (0 with none).
   int64_t smallest_diameter_nm() const;

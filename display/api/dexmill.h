@@ -85,7 +85,8 @@ enum {
   DM_E_OUTSIDE = 15,    /* a point outside the grid */
   DM_E_FRAME = 16,      /* a frame the renderer cannot draw into (size, stride, format) */
   DM_E_INDEX = 17,      /* past the end of a list */
-  DM_E_IO = 18          /* a file could not be written (dexmill_io.h) */
+  DM_E_IO = 18,         /* a file could not be written (dexmill_io.h) */
+  DM_E_TOOL_TABLE = 19  /* a tool table's line does not read (dm_tool_table_parse) */
 };
 /* A sentence for a status; never NULL. */
 DM_API const char* dm_status_message(dm_status s);
@@ -429,6 +430,9 @@ typedef struct dm_scan_result {
   int32_t bad_tool;           /* that T */
   uint32_t workpiece_bad_line; /* a (WORKPIECE,...) or BLK FORM comment not read (0: none): the CLI's warning */
   int64_t estimated_us;       /* the time model's estimate (no look-ahead) */
+  int32_t table_units;        /* DM_UNITS_*: what a tool table for it is read in (core/sim/tool_units.h: the
+                                 program's at its first T word when set by then, else dm_job.units) */
+  int32_t reserved;
 } dm_scan_result;
 typedef struct dm_scan_tool {
   int32_t number;             /* the T number; -1 for the job's tool before any M6 */
@@ -457,11 +461,28 @@ DM_API dm_status dm_scan_step(dm_scan* scan, const dm_budget* budget, int32_t* s
 DM_API dm_status dm_scan_get_result(const dm_scan* scan, dm_scan_result* out);
 /* Tool k (0 .. ntools - 1) it loaded; DM_E_INDEX past them. */
 DM_API dm_status dm_scan_tool_get(const dm_scan* scan, int32_t k, dm_scan_tool* out);
-/* The job's stock and pitch (grid_nx, grid_ny 0) to the scan's defaults:
- * the job `dexmill run` makes of the program with no --stock or --grid. */
+/* Fills in what the job leaves to `dexmill run`'s defaults: the stock when
+ * its box is all 0 (no --stock), the pitch for that stock (the given one's
+ * or the default) when pitch_nm, grid_nx and grid_ny are all 0 (no --pitch
+ * or --grid). Then dm_create cuts what `dexmill run` cuts. */
 DM_API dm_status dm_scan_apply(const dm_scan* scan, dm_job* job);
 /* NULL is ignored. */
 DM_API void dm_scan_destroy(dm_scan* scan);
+
+/* ---- tool tables ---- */
+/* A LinuxCNC tool table's text (`dexmill run --tools FILE`; the format is
+ * platform/format/tool_table.h's: T, D, Z for G43, the shape in the
+ * comment) into job->tools[0, ntools) (their spec NULL, the fields set),
+ * lengths in inch when `inch` is non-zero (dm_scan_result.table_units, the
+ * rule `dexmill run` reads a table by). A row of D0 (no cutter) is left
+ * out: a T the job lacks, as `dexmill run` cannot cut with it either; a
+ * flat end mill guessed from a comment is not said here. DM_E_TOOL_TABLE:
+ * a line that does not read, *line and *col (1-based) where, message
+ * (NUL terminated, at most message_bytes - 1 bytes; may be NULL) why, as
+ * the CLI says it; DM_E_TOOL_NUMBER: more than DM_TOOLS_MAX tools (*line
+ * the first one over). job->ntools is 0 after an error. */
+DM_API dm_status dm_tool_table_parse(const char* text, size_t n, int32_t inch, dm_job* job, uint32_t* line, uint32_t* col,
+                                     char* message, size_t message_bytes);
 
 /* ---- for bindings: the size of each struct as this library has it ---- */
 enum {

@@ -84,6 +84,12 @@ void box_of(const PointNm& lo, const PointNm& hi, dm_box* out) {
   }
 }
 
+bool box_empty(const dm_box& b) {
+  for (int a = 0; a < 3; ++a)
+    if (b.lo_nm[a] || b.hi_nm[a]) return false;
+  return true;
+}
+
 int32_t units_of(const ProgramScan& s) {
   if (s.inch_moves && s.mm_moves) return DM_UNITS_MIXED;
   if (s.inch_moves) return DM_UNITS_INCH;
@@ -181,6 +187,7 @@ dm_status dm_scan_get_result(const dm_scan* scan, dm_scan_result* out) {
   r.bad_tool = s.bad_tool;
   r.workpiece_bad_line = s.workpiece_bad ? s.workpiece_bad_line : 0;
   r.estimated_us = s.summary.blended_time_us();
+  r.table_units = s.table_inch ? DM_UNITS_INCH : DM_UNITS_MM;
   GridPlan plan;
   const bool planned = plan_grid(stock, 0, 0, r.pitch_nm, &plan) == PlanError::kOk;
   if (planned) {
@@ -204,11 +211,18 @@ dm_status dm_scan_tool_get(const dm_scan* scan, int32_t k, dm_scan_tool* out) {
 dm_status dm_scan_apply(const dm_scan* scan, dm_job* job) {
   if (!job) return DM_E_ARGUMENT;
   dm_scan_result r;
-  if (const dm_status s = dm_scan_get_result(scan, &r)) return s;
-  job->stock = r.stock;
-  job->pitch_nm = r.pitch_nm;
-  job->grid_nx = 0;
-  job->grid_ny = 0;
+  if (!live(scan)) return DM_E_ARGUMENT;
+  if (scan->state != DM_DONE) return DM_E_STATE;
+  const bool no_stock = box_empty(job->stock), no_grid = !job->pitch_nm && !job->grid_nx && !job->grid_ny;
+  if (no_stock) {
+    const dm_status s = dm_scan_get_result(scan, &r);
+    if (s != DM_OK && s != DM_E_GRID) return s;
+    job->stock = r.stock;
+  }
+  if (!no_grid) return DM_OK;
+  const StockBox stock{PointNm{job->stock.lo_nm[0], job->stock.lo_nm[1], job->stock.lo_nm[2]},
+                       PointNm{job->stock.hi_nm[0], job->stock.hi_nm[1], job->stock.hi_nm[2]}};
+  job->pitch_nm = scan_default_pitch_nm(scan->scan, stock);
   return DM_OK;
 }
 

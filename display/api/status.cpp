@@ -30,6 +30,7 @@ const char* dm_status_message(dm_status s) {
     case DM_E_FRAME: return "the frame cannot be drawn into (size, stride or pixel format)";
     case DM_E_INDEX: return "past the end of the list";
     case DM_E_IO: return "the file could not be written";
+    case DM_E_TOOL_TABLE: return "a line of the tool table does not read";
     default: return "unknown status";
   }
 }
