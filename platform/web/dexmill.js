@@ -70,7 +70,8 @@ var dexmill = (function () {
     this.check(x.web_set_tool(this.put(o.tool || "flat:6")), "tool");
     var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
     this.check(x.web_set_grid(g[0], g[1]), "grid");
-    if (o.pitch) this.check(x.web_set_pitch(this.put(o.pitch)), "pitch");  /* the CLI's --pitch MM, instead of the grid (web_scan.cpp) */
+    /* Topics' settings of the job, before it is made (page_scan.js: --pitch, --tools). */
+    (o.configure || []).forEach(function (f) { f(this); }, this);
     var view = VIEWS[o.view || "iso"];
     if (view === undefined) throw new Error("view: iso, top, front or right");
     this.check(x.web_create(s[0], s[1], view, o.antialias ? 1 : 0, o.decorations ? 1 : 0), "the job");

@@ -18,11 +18,13 @@
    * through the scan with o.tool (the --tool text) and o.stock (the --stock
    * text, or none): {stock: the --stock text (o.stock's, or the program's),
    * pitch: the --pitch text for it, grid: [nx, ny] of the program's stock,
-   * stockFrom, units, lines, moves, tools}. o.lines: lines a step (default 4096). */
+   * stockFrom, units, tableInch (a tool table's units for it), lines, moves,
+   * tools}. o.table: with the tool table read (tools()). o.lines: lines a
+   * step (default 4096). */
   dexmill.Engine.prototype.scan = async function (source, o) {
     var x = this.x, self = this, generation = ++this.generation, lines = o.lines || 4096, ended = false, state, k;
     function mine() { if (self.generation !== generation) throw new Error("replaced by a new job"); }
-    this.check(x.web_scan_begin(this.put(o.tool || "flat:6")), "scan");
+    this.check(x.web_scan_begin(this.put(o.tool || "flat:6"), o.table ? 1 : 0), "scan");
     if (o.stock) {
       var v = String(o.stock).split(",");
       if (v.length !== 6) throw new Error("stock: six comma-separated numbers (mm)");
@@ -43,8 +45,17 @@
     for (k = 0; k < 6; ++k) stock.push(mmText(x.web_scan_stock_nm(k)));
     var r = { stock: stock.join(","), pitch: mmText(x.web_scan_pitch_nm()), grid: [x.web_scan_grid_nx(), x.web_scan_grid_ny()],
               stockFrom: FROM[x.web_scan_stock_from()], units: UNITS[x.web_scan_units()], lines: x.web_scan_lines(),
-              moves: Number(x.web_scan_moves()), tools: x.web_scan_tools() };
+              moves: Number(x.web_scan_moves()), tools: x.web_scan_tools(), tableInch: x.web_scan_table_units() === 1 };
     this.check(status, "the program's stock");
     return r;
+  };
+
+  /* A LinuxCNC tool table's bytes (the CLI's --tools), lengths in inch when
+   * `inch`, read in the module for the scan and the job: null, or the
+   * error {line, col, message} as the CLI says it. */
+  dexmill.Engine.prototype.tools = function (bytes, inch) {
+    var x = this.x, s = x.web_tools_parse(this.put(bytes), inch ? 1 : 0);
+    if (s === 0) return null;
+    return { line: x.web_tools_line(), col: x.web_tools_col(), message: this.cstring(x.web_tools_message()) };
   };
 })();

@@ -1,9 +1,11 @@
 /* page_scan.js - the job set up as `dexmill run FILE` sets it up: an empty
  * --stock or --grid means "from the program", the CLI's default, which
  * the engine's first pass chooses (engine_scan.js, web_scan.cpp); the file
- * is read once for it, rewound and cut. The form shows what was chosen
- * (its fields' placeholders and #scan-chosen), and #cut-progress the bytes
- * of the file read, through the first pass and then the cut. */
+ * is read once for it, rewound and cut. A --tools table (#tools-file, a
+ * LinuxCNC .tbl) is read in the module (web_tools.cpp) in the units the
+ * CLI reads it in, its errors as FILE:LINE:COL: error: .... The form shows
+ * what was chosen (its fields' placeholders and #scan-chosen), and
+ * #cut-progress the bytes of the file read, through the passes and the cut. */
 "use strict";
 dexmillPage.extend((function () {
   var $ = function (id) { return document.getElementById(id); };
@@ -21,29 +23,55 @@ dexmillPage.extend((function () {
     if (rewind) source.rewind = function () { read = 0; rewind.call(source); };
   }
 
+  /* A --tools table's error as `dexmill run` prints it, in the page's error list. */
+  function tableError(name, err) {
+    var li = document.createElement("li");
+    li.textContent = name + ":" + err.line + ":" + err.col + ": error: " + err.message;
+    $("errors").textContent = "";
+    $("errors").appendChild(li);
+    return new Error("the tool table '" + name + "' does not read");
+  }
+
+  /* The job's --pitch or --tools, set between the form's options and the job made (dexmill.js). */
+  function configure(o, f) { (o.configure = o.configure || []).push(f); }
+
   return {
+    /* The first passes: one for the units a --tools table is read in
+     * (core/sim/tool_units.h's rule), one with its tools for the stock and
+     * grid left empty; the file rewound after each. */
     prepare: async function (source, o) {
       counted(source);
-      var stock = String(o.stock || "").trim(), grid = String(o.grid || "").trim();
+      var e = await dexmillPage.engine, table = $("tools-file").files[0] || null;
+      var stock = String(o.stock || "").trim(), grid = String(o.grid || "").trim(), said = [];
       $("scan-chosen").textContent = "";
-      if (stock && grid) return;
-      if (!source.rewind) throw new Error("this program cannot be read twice: give --stock and --grid");
-      dexmillPage.status("reading " + (source.name || "the program") + " for its stock and grid…");
-      var r = await (await dexmillPage.engine).scan(source, { tool: o.tool, stock: stock });
-      source.rewind();
-      var said = [];
-      if (!stock) {
-        o.stock = r.stock;
-        $("stock").placeholder = r.stock;
-        said.push("--stock " + r.stock + " (from the " + r.stockFrom + ")");
+      if ((table || !stock || !grid) && !source.rewind)
+        throw new Error("this program cannot be read twice: give --stock and --grid, and no --tools");
+      if (table) {
+        dexmillPage.status("reading " + (source.name || "the program") + " for its tool table's units…");
+        var units = await e.scan(source, { tool: o.tool, stock: stock });
+        source.rewind();
+        var err = e.tools(new Uint8Array(await table.arrayBuffer()), units.tableInch);
+        if (err) throw tableError(table.name, err);
+        configure(o, function (eng) { eng.check(eng.x.web_set_tools(), "tools"); });
+        said.push("--tools " + table.name + " read in " + (units.tableInch ? "inch" : "mm") + " (" + e.x.web_tools_count() + " tools that cut)");
+      } else e.tools(new Uint8Array(0), false);
+      if (!stock || !grid) {
+        dexmillPage.status("reading " + (source.name || "the program") + " for its stock and grid…");
+        var r = await e.scan(source, { tool: o.tool, stock: stock, table: !!table });
+        source.rewind();
+        if (!stock) {
+          o.stock = r.stock;
+          $("stock").placeholder = r.stock;
+          said.push("--stock " + r.stock + " (from the " + r.stockFrom + ")");
+        }
+        if (!grid) {
+          configure(o, function (eng) { eng.check(eng.x.web_set_pitch(eng.put(r.pitch)), "pitch"); });
+          $("grid").placeholder = stock ? "pitch " + r.pitch : r.grid[0] + "x" + r.grid[1];
+          said.push("--pitch " + r.pitch + (stock ? "" : " (" + r.grid[0] + "x" + r.grid[1] + " dexels)"));
+        }
+        said.push(r.units + ", " + r.lines + " lines, " + r.moves + " moves, " + r.tools + (r.tools === 1 ? " tool" : " tools"));
       }
-      if (!grid) {
-        o.pitch = r.pitch;
-        $("grid").placeholder = stock ? "pitch " + r.pitch : r.grid[0] + "x" + r.grid[1];
-        said.push("--pitch " + r.pitch + (stock ? "" : " (" + r.grid[0] + "x" + r.grid[1] + " dexels)"));
-      }
-      $("scan-chosen").textContent = "from the program: " + said.join(", ") + "; " + r.units + ", " + r.lines +
-        " lines, " + r.moves + " moves, " + r.tools + (r.tools === 1 ? " tool" : " tools");
+      $("scan-chosen").textContent = said.length ? "as dexmill run chooses: " + said.join("; ") : "";
     },
     finished: function (e, result) {
       var bar = $("cut-progress");

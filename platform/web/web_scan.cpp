@@ -8,6 +8,7 @@
 #include "display/api/dexmill.h"
 #include "platform/web/web_arena.h"
 #include "platform/web/web_job.h"
+#include "platform/web/web_tools.h"
 
 #include <string.h>
 
@@ -22,14 +23,16 @@ char g_scan_tool[DM_LINE_MAX + 1];  // the scan job's tool spec, NUL terminated
 
 }  // namespace
 
-// A scan with the tool whose spec (the CLI's --tool text) is web_text()[0, n).
-WEB_EXPORT(web_scan_begin) int32_t web_scan_begin(int32_t n) {
+// A scan with the tool whose spec (the CLI's --tool text) is web_text()[0, n),
+// and the tool table's tools when `table` is non-zero (web_tools.cpp).
+WEB_EXPORT(web_scan_begin) int32_t web_scan_begin(int32_t n, int32_t table) {
   g_scan = nullptr;  // its memory may be a job's now
   if (n < 0 || n > DM_LINE_MAX) return DM_E_ARGUMENT;
   memcpy(g_scan_tool, g_text, static_cast<size_t>(n));
   g_scan_tool[n] = '\0';
   if (const dm_status s = dm_job_init(&g_scan_job, DEXMILL_API_VERSION)) return s;
   g_scan_job.tool.spec = g_scan_tool;
+  if (table) table_to_job(&g_scan_job);
   size_t bytes = 0;
   if (const dm_status s = dm_scan_bytes(&g_scan_job, &bytes)) return s;
   const size_t at = round8(g.arena_used);
@@ -90,6 +93,9 @@ WEB_EXPORT(web_scan_units) int32_t web_scan_units() { return g_result.units; }
 WEB_EXPORT(web_scan_lines) uint32_t web_scan_lines() { return g_result.lines; }
 WEB_EXPORT(web_scan_moves) uint64_t web_scan_moves() { return g_result.rapids + g_result.feeds + g_result.arcs; }
 WEB_EXPORT(web_scan_tools) int32_t web_scan_tools() { return g_result.ntools; }
+WEB_EXPORT(web_scan_table_units) int32_t web_scan_table_units() { return g_result.table_units; }
+// The M6 of a T the job's tools lack (0: none), and that T.
+WEB_EXPORT(web_scan_bad_tool_line) uint32_t web_scan_bad_tool_line() { return g_result.bad_tool_line; }
 
 // The job's pitch (the CLI's --pitch MM) from web_text()[0, n): mm text;
 // set after web_set_grid, before web_create (platform/web/dexmill.js).

@@ -29,6 +29,7 @@ web_setup web-test "$web"
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
 # An empty stock or grid is an empty field, and no --stock or --grid for
 # dexmill run: both choose them from the program (platform/web/page_scan.js).
+# An eighth column, when there, is a --tools table (the page's table input).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel.
@@ -39,16 +40,19 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/pocket.ngc||flat:6||320x240|iso|cli
 tests/run/arcs_inch.ngc||vbit:3:90||400x300|top|cli
 tests/run/tool_change.ngc||flat:3||320x240|iso|plain
-tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain'
+tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain
+tests/run/tool_change.ngc||flat:6||400x300|iso|cli|tests/run/tools.tbl
+tests/run/tool_change.ngc|-2,-4,-5,24,12,0|flat:6|120x80|320x240|top|plain|tests/run/tools.tbl'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
 {
   echo "var DEXMILL_CASES = ["
-  while IFS='|' read -r prog stock tool grid size view look; do
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)"
+  while IFS='|' read -r prog stock tool grid size view look tools; do
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, tools: "%s", toolsName: "%s"},\n' \
+      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
+      "$([ -z "$tools" ] || base64 -w0 "$tools")" "$(basename "${tools:-none}")"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -61,6 +65,9 @@ window.dexmillTest = (async function () {
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     var view = c.view.split("+");
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    var dt = new DataTransfer();  /* the table as a user would choose it (none: an empty input) */
+    if (c.tools) dt.items.add(new File([Uint8Array.from(atob(c.tools), function (ch) { return ch.charCodeAt(0); })], c.toolsName));
+    $("tools-file").files = dt.files;
     var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
     if (view.length === 3) {  /* a drag across the canvas, as a finger or mouse makes it */
       var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
@@ -84,11 +91,12 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 
 # The native runs, timed, each as the CLI draws it.
 n=0
-while IFS='|' read -r prog stock tool grid size view look; do
+while IFS='|' read -r prog stock tool grid size view look tools; do
   n=$((n + 1))
   opts=(-q --tool "$tool" --size "$size")
   [ -z "$stock" ] || opts+=(--stock "$stock")
   [ -z "$grid" ] || opts+=(--grid "$grid")
+  [ -z "$tools" ] || opts+=(--tools "$tools")
   case $view in
     iso+*) IFS=+ read -r _ dx dy <<< "$view"
            opts+=(--azimuth "$(awk -v d="$dx" 'BEGIN { printf "%.3f", -45 - d / 2 }')"
