@@ -57,6 +57,19 @@ dm_job tool_job(const char* spec) {
   return j;
 }
 
+// The grid of a simulation of the job.
+dm_grid_info grid_of(const dm_job& j) {
+  dm_grid_info g{};
+  size_t n = 0;
+  CHECK_EQ(dm_required_bytes(&j, &n), DM_OK);
+  std::vector<uint64_t> mem(n / 8 + 1);
+  dm_sim* sim = nullptr;
+  CHECK_EQ(dm_create(&j, mem.data(), n, &sim), DM_OK);
+  CHECK_EQ(dm_get_grid(sim, &g), DM_OK);
+  dm_destroy(sim);
+  return g;
+}
+
 // The text after "key": in the report, up to the first of `ends`.
 std::string field(const std::string& text, const std::string& key, const char* ends = ",}") {
   const size_t at = text.find("\"" + key + "\": ");
@@ -109,18 +122,11 @@ void check_as_run(const std::string& arg, const std::string& path, const char* s
     // The job `dexmill run` made: its simulation's grid is the report's.
     dm_job cut = tool_job(spec);
     CHECK_EQ(dm_scan_apply(s.scan, &cut), DM_OK);
-    size_t n = 0;
-    CHECK_EQ(dm_required_bytes(&cut, &n), DM_OK);
-    std::vector<uint64_t> mem(n / 8 + 1);
-    dm_sim* sim = nullptr;
-    CHECK_EQ(dm_create(&cut, mem.data(), n, &sim), DM_OK);
-    dm_grid_info g;
-    CHECK_EQ(dm_get_grid(sim, &g), DM_OK);
+    const dm_grid_info g = grid_of(cut);
     CHECK_EQ(g.nx, res.grid_nx);
     CHECK_EQ(g.ny, res.grid_ny);
     const std::string hi = "[" + mm4(g.stock.hi_nm[0]) + ", " + mm4(g.stock.hi_nm[1]) + ", " + mm4(g.stock.hi_nm[2]);
     if (!run_cli::has(field(stock, "max_mm", "]"), hi.c_str())) CHECK(false);
-    dm_destroy(sim);
   }
 }
 
@@ -154,6 +160,35 @@ TEST(api_scan_chooses_what_run_chooses) {
 }
 
 // The counts, the extents and the tools loaded.
+// A stock given and no grid: the pitch for that stock, from the program's
+// smallest tool, as `dexmill run --stock` chooses it.
+TEST(api_scan_pitch_for_a_given_stock) {
+  if (run_cli::skip()) return;
+  const run_cli::Result r = run_cli::run("tool_change.ngc --tool flat:2 --stock -5,-5,-8,95,45,1 --report %/scan.json");
+  CHECK_EQ(r.code, 0);
+  const std::string rep = run_cli::slurp(run_cli::tmp_dir() + "/scan.json");
+  const std::string grid = rep.substr(std::min(rep.find("\"grid\": "), rep.size()));
+  dm_job j = tool_job("flat:2");
+  Scan s(j);
+  CHECK_EQ(s.run(run_cli::slurp(std::string(t::tests_dir()) + "/run/tool_change.ngc"), 4096), DM_DONE);
+  const int64_t given[6] = {-5, -5, -8, 95, 45, 1};
+  for (int a = 0; a < 3; ++a) {
+    j.stock.lo_nm[a] = given[a] * DM_NM_PER_MM;
+    j.stock.hi_nm[a] = given[a + 3] * DM_NM_PER_MM;
+  }
+  CHECK_EQ(dm_scan_apply(s.scan, &j), DM_OK);
+  CHECK_EQ(j.stock.hi_nm[0], 95 * DM_NM_PER_MM);  // kept
+  const dm_grid_info g = grid_of(j);
+  CHECK_EQ(field(grid, "nx"), std::to_string(g.nx));
+  CHECK_EQ(field(grid, "ny"), std::to_string(g.ny));
+  // A grid given: the pitch is left alone.
+  dm_job k = tool_job("flat:2");
+  k.grid_nx = k.grid_ny = 100;
+  CHECK_EQ(dm_scan_apply(s.scan, &k), DM_OK);
+  CHECK_EQ(k.pitch_nm, 0);
+  CHECK(k.stock.hi_nm[0] > k.stock.lo_nm[0]);
+}
+
 TEST(api_scan_counts_and_tools) {
   const dm_job j = tool_job("flat:3");
   Scan s(j);
