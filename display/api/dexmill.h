@@ -476,7 +476,9 @@ DM_API void dm_scan_destroy(dm_scan* scan);
  * lengths in inch when `inch` is non-zero (dm_scan_result.table_units, the
  * rule `dexmill run` reads a table by). A row of D0 (no cutter) is left
  * out: a T the job lacks, as `dexmill run` cannot cut with it either; a
- * flat end mill guessed from a comment is not said here. DM_E_TOOL_TABLE:
+ * flat end mill guessed from a comment is not said here, and a comment
+ * spec's holder and flutes are not kept (dm_tool has no fields for them:
+ * the safety checks and chip loads differ from the CLI's for such a row). DM_E_TOOL_TABLE:
  * a line that does not read, *line and *col (1-based) where, message
  * (NUL terminated, at most message_bytes - 1 bytes; may be NULL) why, as
  * the CLI says it; DM_E_TOOL_NUMBER: more than DM_TOOLS_MAX tools (*line
