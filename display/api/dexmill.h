@@ -486,6 +486,18 @@ DM_API void dm_scan_destroy(dm_scan* scan);
 DM_API dm_status dm_tool_table_parse(const char* text, size_t n, int32_t inch, dm_job* job, uint32_t* line, uint32_t* col,
                                      char* message, size_t message_bytes);
 
+/* ---- the built-in demo ---- */
+/* The program `dexmill run --demo pocket` (and `make run`) cuts, into
+ * buf[0, n), NUL terminated (at most n - 1 bytes): its whole length (buf
+ * NULL and n 0 to size it; about 108 KB). */
+DM_API size_t dm_demo_program(char* buf, size_t n);
+enum { DM_DEMO_STOCK = 0, DM_DEMO_TOOL_TABLE = 1, DM_DEMO_MATERIAL = 2 };
+/* The demo's job as the CLI's texts: DM_DEMO_STOCK "X0,Y0,Z0,X1,Y1,Z1" (mm,
+ * dm_mm_to_nm each), DM_DEMO_TOOL_TABLE its LinuxCNC table
+ * (dm_tool_table_parse, mm), DM_DEMO_MATERIAL its material preset; NULL for
+ * another number. */
+DM_API const char* dm_demo_text(int32_t which);
+
 /* ---- for bindings: the size of each struct as this library has it ---- */
 enum {
   DM_STRUCT_JOB = 1, DM_STRUCT_TOOL, DM_STRUCT_BOX, DM_STRUCT_TRIANGLE, DM_STRUCT_BUDGET, DM_STRUCT_PROGRESS,

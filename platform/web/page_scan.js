@@ -5,7 +5,8 @@
  * LinuxCNC .tbl) is read in the module (web_tools.cpp) in the units the
  * CLI reads it in, its errors as FILE:LINE:COL: error: .... The form shows
  * what was chosen (its fields' placeholders and #scan-chosen), and
- * #cut-progress the bytes of the file read, through the passes and the cut. */
+ * #cut-progress the bytes of the file read, through the passes and the cut.
+ * #demo cuts the built-in demo (web_demo.cpp) the same way. */
 "use strict";
 dexmillPage.extend((function () {
   var $ = function (id) { return document.getElementById(id); };
@@ -34,6 +35,26 @@ dexmillPage.extend((function () {
 
   /* The job's --pitch or --tools, set between the form's options and the job made (dexmill.js). */
   function configure(o, f) { (o.configure = o.configure || []).push(f); }
+
+  /* The built-in demo, as `dexmill run --demo pocket` cuts it (web_demo.cpp):
+   * its program as a file, its stock, an empty grid (the program's) and its
+   * tool table in the form, then the Run path. */
+  async function demo() {
+    var e = await dexmillPage.engine, n = e.x.web_demo_program();
+    if (n < 0) e.check(-n, "demo");
+    var program = e.bytes(e.x.web_demo_text_at(), n).slice(), dt = new DataTransfer();
+    $("stock").value = e.cstring(e.x.web_demo_text(0));
+    $("grid").value = "";
+    dt.items.add(new File([e.cstring(e.x.web_demo_text(1))], "demo.tbl"));
+    $("tools-file").files = dt.files;
+    dexmillPage.status("cutting the demo…");
+    return dexmillPage.run(dexmill.blobSource(new File([program], "demo.ngc")));
+  }
+  dexmillPage.demo = demo;  /* the Demo button's, and tools/scripts/web-test.sh's */
+  $("demo").addEventListener("click", function () {
+    dexmillPage.running = demo();
+    dexmillPage.running.catch(function (err) { dexmillPage.status("error: " + err.message); });
+  });
 
   return {
     /* The first passes: one for the units a --tools table is read in

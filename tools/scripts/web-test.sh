@@ -30,6 +30,8 @@ web_setup web-test "$web"
 # An empty stock or grid is an empty field, and no --stock or --grid for
 # dexmill run: both choose them from the program (platform/web/page_scan.js).
 # An eighth column, when there, is a --tools table (the page's table input).
+# The program `demo` is the page's Demo button against `dexmill run --demo
+# pocket`, in plain colours (the page has no material colour mode yet).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel.
@@ -42,7 +44,9 @@ tests/run/arcs_inch.ngc||vbit:3:90||400x300|top|cli
 tests/run/tool_change.ngc||flat:3||320x240|iso|plain
 tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain
 tests/run/tool_change.ngc||flat:6||400x300|iso|cli|tests/run/tools.tbl
-tests/run/tool_change.ngc|-2,-4,-5,24,12,0|flat:6|120x80|320x240|top|plain|tests/run/tools.tbl'
+tests/run/tool_change.ngc|-2,-4,-5,24,12,0|flat:6|120x80|320x240|top|plain|tests/run/tools.tbl
+demo||flat:6||320x240|iso|plain
+demo||flat:6||400x300|top|cli'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
@@ -51,7 +55,7 @@ for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look tools; do
     printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, tools: "%s", toolsName: "%s"},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
+      "$([ "$prog" = demo ] && echo demo || base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
       "$([ -z "$tools" ] || base64 -w0 "$tools")" "$(basename "${tools:-none}")"
   done <<< "$cases"
   echo "];"
@@ -65,6 +69,12 @@ window.dexmillTest = (async function () {
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     var view = c.view.split("+");
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    if (c.program === "demo") {
+      $("tool").value = c.tool; $("size").value = c.size; $("view").value = c.view;
+      $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+      out.push(dexmillProbe(await dexmillPage.demo()));
+      continue;
+    }
     var dt = new DataTransfer();  /* the table as a user would choose it (none: an empty input) */
     if (c.tools) dt.items.add(new File([Uint8Array.from(atob(c.tools), function (ch) { return ch.charCodeAt(0); })], c.toolsName));
     $("tools-file").files = dt.files;
@@ -105,7 +115,11 @@ while IFS='|' read -r prog stock tool grid size view look tools; do
   esac
   [ "$look" = cli ] || opts+=(--no-antialias --no-decorations)
   t0=$(date +%s%N)
-  "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
+  if [ "$prog" = demo ]; then  # its out/ in the scratch folder
+    (cd "$tmp" && "$bin" run --demo pocket --color plain "${opts[@]}" --image "$tmp/cli$n.ppm") || fail "dexmill run --demo pocket failed"
+  else
+    "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
+  fi
   t1=$(date +%s%N)
   echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
 done <<< "$cases"
