@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "display/api/dexmill.h"
+#include "tests/api_scan_util.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
@@ -42,29 +43,13 @@ TEST(api_demo_is_run_s_demo) {
   CHECK_EQ(j.ntools, 3);
   CHECK(std::strcmp(dm_demo_text(DM_DEMO_MATERIAL), "wood-on-aluminium") == 0);
   CHECK(dm_demo_text(3) == nullptr);
-  size_t bytes = 0;
-  CHECK_EQ(dm_scan_bytes(&j, &bytes), DM_OK);
-  std::vector<uint64_t> mem(bytes / 8 + 1);
-  dm_scan* s = nullptr;
-  CHECK_EQ(dm_scan_create(&j, mem.data(), bytes, &s), DM_OK);
-  CHECK_EQ(dm_scan_feed(s, text.data(), text.size()), DM_OK);
-  int32_t state = DM_READY;
-  while (state == DM_READY || state == DM_NEED_INPUT) {
-    CHECK_EQ(dm_scan_step(s, nullptr, &state), DM_OK);
-    if (state == DM_NEED_INPUT && dm_scan_input_taken(s)) CHECK_EQ(dm_scan_end_input(s), DM_OK);
+  {
+    api_scan::Scan s(j);
+    CHECK_EQ(s.run(text, 65536), DM_DONE);
+    CHECK_EQ(dm_scan_apply(s.scan, &j), DM_OK);
   }
-  CHECK_EQ(state, DM_DONE);
-  CHECK_EQ(dm_scan_apply(s, &j), DM_OK);
-  dm_scan_destroy(s);
   const std::string rep = run_cli::slurp(run_cli::tmp_dir() + "/demo.json");
   const std::string grid = rep.substr(std::min(rep.find("\"grid\": "), rep.size()));
-  size_t sim_bytes = 0;
-  CHECK_EQ(dm_required_bytes(&j, &sim_bytes), DM_OK);
-  std::vector<uint64_t> sim_mem(sim_bytes / 8 + 1);
-  dm_sim* sim = nullptr;
-  CHECK_EQ(dm_create(&j, sim_mem.data(), sim_bytes, &sim), DM_OK);
-  dm_grid_info g;
-  CHECK_EQ(dm_get_grid(sim, &g), DM_OK);
-  dm_destroy(sim);
+  const dm_grid_info g = api_scan::grid_of(j);
   CHECK(run_cli::has(grid, ("\"nx\": " + std::to_string(g.nx) + ", \"ny\": " + std::to_string(g.ny)).c_str()));
 }

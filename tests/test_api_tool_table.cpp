@@ -9,6 +9,7 @@
 
 #include "display/api/dexmill.h"
 #include "platform/format/tool_table.h"
+#include "tests/api_scan_util.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
@@ -101,43 +102,23 @@ TEST(api_scan_with_a_tool_table) {
   const std::string rep = run_cli::slurp(run_cli::tmp_dir() + "/tt.json");
   const std::string table = run_cli::slurp(std::string(t::tests_dir()) + "/run/tools.tbl");
   const std::string program = run_cli::slurp(std::string(t::tests_dir()) + "/run/tool_change.ngc");
-  dm_job j;
-  CHECK_EQ(dm_job_init(&j, DEXMILL_API_VERSION), DM_OK);
-  j.tool.spec = "flat:6";
+  dm_job j = api_scan::tool_job("flat:6");
   uint32_t line = 0, col = 0;
   CHECK_EQ(dm_tool_table_parse(table.data(), table.size(), 0, &j, &line, &col, nullptr, 0), DM_OK);
-  size_t n = 0;
-  CHECK_EQ(dm_scan_bytes(&j, &n), DM_OK);
-  std::vector<uint64_t> mem(n / 8 + 1);
-  dm_scan* s = nullptr;
-  CHECK_EQ(dm_scan_create(&j, mem.data(), n, &s), DM_OK);
-  CHECK_EQ(dm_scan_feed(s, program.data(), program.size()), DM_OK);
-  int32_t state = DM_READY;
-  while (state == DM_READY || state == DM_NEED_INPUT) {
-    CHECK_EQ(dm_scan_step(s, nullptr, &state), DM_OK);
-    if (state == DM_NEED_INPUT) CHECK_EQ(dm_scan_end_input(s), DM_OK);
-  }
   dm_scan_result res;
-  CHECK_EQ(dm_scan_get_result(s, &res), DM_OK);
+  {
+    api_scan::Scan s(j);
+    CHECK_EQ(s.run(program, 4096), DM_DONE);
+    CHECK_EQ(dm_scan_get_result(s.scan, &res), DM_OK);
+  }
   CHECK_EQ(res.table_units, DM_UNITS_MM);
   CHECK_EQ(res.bad_tool_line, 0u);
   const std::string grid = rep.substr(std::min(rep.find("\"grid\": "), rep.size()));
   CHECK(run_cli::has(grid, ("\"nx\": " + std::to_string(res.grid_nx) + ",").c_str()));
   CHECK(run_cli::has(grid, ("\"ny\": " + std::to_string(res.grid_ny) + ",").c_str()));
-  dm_scan_destroy(s);
   // G20 before the first T: the table in inch, as the CLI reads it.
-  dm_job k;
-  CHECK_EQ(dm_job_init(&k, DEXMILL_API_VERSION), DM_OK);
-  k.tool.spec = "flat:6";
-  CHECK_EQ(dm_scan_bytes(&k, &n), DM_OK);
-  mem.assign(n / 8 + 1, 0);
-  CHECK_EQ(dm_scan_create(&k, mem.data(), n, &s), DM_OK);
-  const char inch[] = "G20\nG0 X1\nT1 M6\nG21\nT2 M6\nM2\n";
-  CHECK_EQ(dm_scan_feed(s, inch, sizeof inch - 1), DM_OK);
-  CHECK_EQ(dm_scan_end_input(s), DM_OK);
-  state = DM_READY;
-  while (state == DM_READY || state == DM_NEED_INPUT) CHECK_EQ(dm_scan_step(s, nullptr, &state), DM_OK);
-  CHECK_EQ(dm_scan_get_result(s, &res), DM_OK);
+  api_scan::Scan s(api_scan::tool_job("flat:6"));
+  CHECK_EQ(s.run("G20\nG0 X1\nT1 M6\nG21\nT2 M6\nM2\n", 64), DM_DONE);
+  CHECK_EQ(dm_scan_get_result(s.scan, &res), DM_OK);
   CHECK_EQ(res.table_units, DM_UNITS_INCH);
-  dm_scan_destroy(s);
 }
