@@ -49,9 +49,17 @@ demo||flat:6||320x240|iso|plain
 demo||flat:6||400x300|top|cli'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
+# A --tools table with a bad line: after the cases the page must list
+# dexmill run's error for it, word for word (the file named as chosen).
+printf 'T1 D4 ;flat\nK3\n' > "$tmp/bad.tbl"
+bad_table=$("$bin" run tests/run/tool_change.ngc -q --tools "$tmp/bad.tbl" --image "$tmp/bad.ppm" 2>&1 > /dev/null || true)
+bad_table=${bad_table#"$tmp/"}
+[ -n "$bad_table" ] || fail "dexmill run took a bad tool table"
+
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
 {
+  printf 'var DEXMILL_BAD_TABLE = "%s", DEXMILL_BAD_ERROR = "%s";\n' "$(base64 -w0 "$tmp/bad.tbl")" "$bad_table"
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look tools; do
     printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, tools: "%s", toolsName: "%s"},\n' \
@@ -90,6 +98,11 @@ window.dexmillTest = (async function () {
     }
     out.push(dexmillProbe(r));
   }
+  var dt = new DataTransfer(), bad = atob(DEXMILL_BAD_TABLE), said = "(no error)";
+  dt.items.add(new File([bad], "bad.tbl"));
+  $("tools-file").files = dt.files;
+  try { await dexmillPage.run(dexmill.blobSource(new Blob([atob(DEXMILL_CASES[0].program)]))); } catch (err) { said = $("errors").textContent; }
+  if (said !== DEXMILL_BAD_ERROR) throw new Error("the bad tool table: the page said '" + said + "', not '" + DEXMILL_BAD_ERROR + "'");
   return out;
 })();
 EOF
@@ -140,6 +153,7 @@ import json, sys
 a, b = (json.load(open(sys.argv[1] + f)) for f in ("/page.json", "/page-http.json"))
 sys.exit(0 if [r["rgb"] for r in a] == [r["rgb"] for r in b] else 1)
 PY
+echo "ok: web-test: the page lists a bad --tools table's error as dexmill run says it: $bad_table"
 echo "ok: web-test: the page from a static server (http://127.0.0.1:$port/) draws the same $(grep -c . <<< "$cases") frames"
 js=$(wc -c < "$web/dexmill.js"); html=$(wc -c < "$web/index.html"); wasm=$(wc -c < "$web/dexmill.wasm")
 gz=$(( $(gzip -9c "$web/index.html" | wc -c) + $(gzip -9c "$web/dexmill.js" | wc -c) ))
