@@ -3,6 +3,7 @@
 #include "core/gcode/error.h"
 
 #include "core/math/fixed.h"
+#include "core/math/text_out.h"
 
 namespace dexmill {
 
@@ -261,24 +262,9 @@ const char* gcode_error_template(GcodeError e) {
 
 namespace {
 
-struct Out {
-  char* buf;
-  size_t n, len;
-  void put(char c) {
-    if (len + 1 < n) buf[len] = c;
-    ++len;
-  }
-  void puts(const char* s) {
-    while (*s) put(*s++);
-  }
-};
+using Out = TextOut;
 
-void put_uint(Out* o, uint64_t v) {
-  char digits[24];
-  int k = 0;
-  do { digits[k++] = static_cast<char>('0' + v % 10); v /= 10; } while (v);
-  while (k) o->put(digits[--k]);
-}
+void put_uint(Out* o, uint64_t v) { o->put_uint(v); }
 
 // nm as mm with 4 decimals, rounded to nearest (ties away from zero).
 void put_mm4(Out* o, int64_t nm) {
@@ -313,8 +299,7 @@ size_t gcode_format_message(const GcodeDiag& d, char* buf, size_t n) {
     }
     o.put(*t);
   }
-  if (n) buf[o.len < n ? o.len : n - 1] = 0;
-  return o.len < n ? o.len : (n ? n - 1 : 0);
+  return o.end();
 }
 
 }  // namespace dexmill

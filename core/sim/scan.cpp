@@ -2,7 +2,6 @@
 #include "core/sim/scan.h"
 
 #include "core/math/fixed.h"
-#include "core/sim/gcode_runner.h"
 
 namespace dexmill {
 
@@ -29,19 +28,50 @@ void ProgramScan::move_time(const MoveTimes& t) {
 }
 
 void ProgramScan::run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also) {
-  also_ = also;
-  InterpOptions opt = sim_interp_options(job_, &single_, mem);
-  if (!job_.warnings) opt.warnings = messages;
-  Interp interp(this, opt);
-  interp_ = &interp;
-  CommentTap tap(in, choice_ ? &choice_->comments() : nullptr, this);
-  GcodeRunner runner(&tap, &interp, messages, true);
-  while (runner.step() && !bad_tool_line) {
+  ScanPass pass(this, in, messages, mem, also);
+  while (pass.step(0) != ScanPass::State::kDone) {
   }
+}
+
+namespace {
+
+InterpOptions scan_interp_options(const SimJob& job, const ToolTable* single, ProgramMemory* mem,
+                                  GcodeMessages* messages) {
+  InterpOptions opt = sim_interp_options(job, single, mem);
+  if (!job.warnings) opt.warnings = messages;
+  return opt;
+}
+
+}  // namespace
+
+ScanPass::ScanPass(ProgramScan* scan, LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also)
+    : scan_(scan),
+      interp_(scan, scan_interp_options(scan->job_, &scan->single_, mem, messages)),
+      tap_(in, scan->choice_ ? &scan->choice_->comments() : nullptr, scan),
+      runner_(&tap_, &interp_, messages, true) {
+  scan->also_ = also;
+  scan->interp_ = &interp_;
+}
+
+ScanPass::State ScanPass::step(uint32_t lines) {
+  if (done_) return State::kDone;
+  for (uint32_t k = 0; lines == 0 || k < lines; ++k) {
+    if (scan_->bad_tool_line || !runner_.step()) {
+      if (runner_.waiting() && !scan_->bad_tool_line) return State::kWaiting;
+      done_ = true;
+      scan_->finish(runner_, interp_);
+      return State::kDone;
+    }
+  }
+  return State::kReading;
+}
+
+void ProgramScan::finish(const GcodeRunner& runner, const Interp& interp) {
   summary.finish();  // a program without M2: the look-ahead's last moves
   lines = runner.lines();
   probes = interp.probe_moves();
   io_error = runner.io_error();
+  table_inch = interp.tool_named() && interp.units_set_at_tool() ? interp.inch_at_tool() : job_.inch;
   interp_ = nullptr;
   also_ = nullptr;
   if (!choice_) return;

@@ -18,6 +18,7 @@
 #include "core/canon/summary.h"
 #include "core/sim/job.h"
 #include "core/sim/comment_tools.h"
+#include "core/sim/gcode_runner.h"
 #include "core/sim/blk_form_comment.h"
 #include "core/sim/workpiece_comment.h"
 #include "core/sim/tool_choice.h"
@@ -37,6 +38,8 @@ struct ScanToolTime {
   uint64_t moves = 0;  // straight moves and arcs
 };
 
+class ScanPass;
+
 class ProgramScan final : public CanonSink, public LineWatcher, private MoveTimeSink {
  public:
   // The job's tool and library (null: every T is the tool), time model and
@@ -49,6 +52,7 @@ class ProgramScan final : public CanonSink, public LineWatcher, private MoveTime
   // to the first error or bad T (messages get the errors and, when the job
   // has none of its own, the warnings). mem: the program's parameters and
   // o-word flow. Records also go to `also` (a backplot), when not null.
+  // A ScanPass of its own, run to its end.
   void run(LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also = nullptr);
   // The run's tool choice, when the job's library is it: run() reads the
   // program's tool comments into it, and lists the tools it chose in the
@@ -102,12 +106,18 @@ class ProgramScan final : public CanonSink, public LineWatcher, private MoveTime
   const char* workpiece_bad_form = "(WORKPIECE,...)";  // or "(BLK FORM ...)"
   bool blk_form = false;       // the stock is a BLK FORM's (else WORKPIECE's)
   bool io_error = false;
+  // The units a tool table is read in by core/sim/tool_units.h's rule: the
+  // program's at its first T word when it set them by then, else the job's.
+  // (A pass stopped by an input error before any T reads no table tool.)
+  bool table_inch = false;
 
   // The smallest diameter among the tools (0 with none).
   int64_t smallest_diameter_nm() const;
 
  private:
+  friend class ScanPass;
   void move_time(const MoveTimes& t) override;
+  void finish(const GcodeRunner& runner, const Interp& interp);
 
   BlkForm blk_{};  // a BLK FORM 0.1 waiting for its 0.2
   SimJob job_;
@@ -117,6 +127,30 @@ class ProgramScan final : public CanonSink, public LineWatcher, private MoveTime
   CanonSink* also_ = nullptr;
   ToolChoice* choice_ = nullptr;
   int in_spindle_ = 0;  // tools[] index of the tool in the spindle (-1: unlisted)
+};
+
+// The first pass a step at a time, for input that comes in pieces (the
+// embedding API's dm_scan_feed, core/sim/chunk_input.h): the reading state
+// ProgramScan::run keeps on its stack, held here. The scan is filled in
+// once step() returns kDone.
+class ScanPass {
+ public:
+  enum class State : uint8_t { kReading, kWaiting, kDone };
+  // As ProgramScan::run's arguments; all must outlive the pass.
+  ScanPass(ProgramScan* scan, LineInput* in, GcodeMessages* messages, ProgramMemory* mem, CanonSink* also = nullptr);
+  ScanPass(const ScanPass&) = delete;
+  ScanPass& operator=(const ScanPass&) = delete;
+  // Reads up to `lines` lines (0: no limit): kWaiting when the input has no
+  // whole line yet (feed it more, or close it), kDone at the scan's end.
+  State step(uint32_t lines);
+  uint32_t lines() const { return runner_.lines(); }
+
+ private:
+  ProgramScan* scan_;
+  Interp interp_;
+  CommentTap tap_;
+  GcodeRunner runner_;
+  bool done_ = false;
 };
 
 }  // namespace dexmill

@@ -85,7 +85,8 @@ enum {
   DM_E_OUTSIDE = 15,    /* a point outside the grid */
   DM_E_FRAME = 16,      /* a frame the renderer cannot draw into (size, stride, format) */
   DM_E_INDEX = 17,      /* past the end of a list */
-  DM_E_IO = 18          /* a file could not be written (dexmill_io.h) */
+  DM_E_IO = 18,         /* a file could not be written (dexmill_io.h) */
+  DM_E_TOOL_TABLE = 19  /* a tool table's line does not read (dm_tool_table_parse) */
 };
 /* A sentence for a status; never NULL. */
 DM_API const char* dm_status_message(dm_status s);
@@ -430,11 +431,114 @@ DM_API void dm_view_destroy(dm_view* view);
  * "12", "0.000001"; spaces allowed) in nm, rounded to nearest. */
 DM_API dm_status dm_mm_to_nm(const char* text, size_t n, int64_t* nm);
 
+/* ---- the first pass: what `dexmill run FILE` chooses when not told ---- */
+/* The program read once, nothing cut: the stock and grid `dexmill run`
+ * takes with no --stock, --pitch or --grid (the program's (WORKPIECE,...)
+ * or BLK FORM comments' box, else its motion's box widened by the largest
+ * tool; the pitch from the smallest tool loaded: core/sim/stock_plan.h),
+ * the units, the motion's box, the counts and the tools it loads. Fed and
+ * stepped as a dm_sim is (the same lending of text); it stops at the
+ * first input error or at an M6 of a T the job's tools lack, as the CLI's
+ * pass does. A job's stock and grid are not read. */
+typedef struct dm_scan dm_scan;
+enum {  /* dm_scan_result.stock_from */
+  DM_STOCK_FROM_PROGRAM = 0,       /* the motion's box */
+  DM_STOCK_FROM_WORKPIECE = 1,     /* a (WORKPIECE,box,...) comment */
+  DM_STOCK_FROM_WORKPIECE_BOX = 2, /* the box of a cylinder's or tube's (WORKPIECE,...) comment */
+  DM_STOCK_FROM_BLK_FORM = 3       /* BLK FORM 0.1 / 0.2 comments */
+};
+enum { DM_UNITS_NONE = -1, DM_UNITS_MIXED = 2 };  /* dm_scan_result.units besides DM_UNITS_MM, DM_UNITS_INCH */
+typedef struct dm_scan_result {
+  dm_box stock;               /* the default stock, machine coordinates */
+  int32_t stock_from;         /* DM_STOCK_FROM_* */
+  int32_t units;              /* what its moves were written in: DM_UNITS_*, DM_UNITS_MIXED, DM_UNITS_NONE (no move) */
+  int64_t pitch_nm;           /* the default pitch for that stock */
+  int32_t grid_nx, grid_ny;   /* the grid it gives, dexels (dm_grid_info's, the ring of empty ones included) */
+  int32_t has_extents;        /* non-zero: extents holds the motion's box */
+  int32_t ntools;             /* tools loaded (dm_scan_tool_get), [0] the one before any M6 */
+  dm_box extents;             /* every move's box (rapids included), machine coordinates */
+  uint64_t rapids, feeds, arcs, dwells, tool_changes; /* records counted */
+  uint32_t lines;             /* program lines read */
+  uint32_t errors;            /* input errors: the pass stops at the first (0 or 1) */
+  uint32_t error_line, error_col; /* the first one's, 1-based (0: none) */
+  int32_t error_code;         /* its stable G-code error number */
+  uint32_t bad_tool_line;     /* the M6 of a T the job's tools lack (0: none); the cut stops there too */
+  int32_t bad_tool;           /* that T */
+  uint32_t workpiece_bad_line; /* a (WORKPIECE,...) or BLK FORM comment not read (0: none): the CLI's warning */
+  int64_t estimated_us;       /* the time model's estimate (no look-ahead) */
+  int32_t table_units;        /* DM_UNITS_*: what a tool table for it is read in (core/sim/tool_units.h: the
+                                 program's at its first T word when set by then, else dm_job.units) */
+  int32_t reserved;
+} dm_scan_result;
+typedef struct dm_scan_tool {
+  int32_t number;             /* the T number; -1 for the job's tool before any M6 */
+  int32_t shape;              /* DM_TOOL_* */
+  int64_t diameter_nm;
+  uint32_t first_line;        /* the M6 that first loaded it ([0]: its first cutting move's line; 0: none) */
+  uint32_t last_line;         /* its last feed or arc move's line (0: none) */
+} dm_scan_tool;
+
+/* Bytes a scan of the job needs (its tool, tools, units, max_blocks and
+ * input_buffer_bytes are read; not its stock or grid). */
+DM_API dm_status dm_scan_bytes(const dm_job* job, size_t* bytes);
+/* Sets the scan up in mem (8-byte aligned, at least dm_scan_bytes). */
+DM_API dm_status dm_scan_create(const dm_job* job, void* mem, size_t bytes, dm_scan** out);
+/* As dm_feed, dm_input_taken and dm_end_input. */
+DM_API dm_status dm_scan_feed(dm_scan* scan, const char* text, size_t n);
+DM_API int32_t dm_scan_input_taken(const dm_scan* scan);
+DM_API dm_status dm_scan_end_input(dm_scan* scan);
+/* Reads until budget->lines lines (NULL or 0: no limit; the other counts
+ * are not read) or input is needed: *state DM_READY, DM_NEED_INPUT, DM_DONE,
+ * or DM_IO_ERROR (the input could not be read again for an o-word jump). */
+DM_API dm_status dm_scan_step(dm_scan* scan, const dm_budget* budget, int32_t* state);
+/* What it found, once DM_DONE (else DM_E_STATE). DM_E_GRID (the rest
+ * filled, grid_nx and grid_ny 0) when the default stock makes no grid
+ * (over 65535 dexels a side), as `dexmill run` then refuses. */
+DM_API dm_status dm_scan_get_result(const dm_scan* scan, dm_scan_result* out);
+/* Tool k (0 .. ntools - 1) it loaded; DM_E_INDEX past them. */
+DM_API dm_status dm_scan_tool_get(const dm_scan* scan, int32_t k, dm_scan_tool* out);
+/* Fills in what the job leaves to `dexmill run`'s defaults: the stock when
+ * its box is all 0 (no --stock), the pitch for that stock (the given one's
+ * or the default) when pitch_nm, grid_nx and grid_ny are all 0 (no --pitch
+ * or --grid). Then dm_create cuts what `dexmill run` cuts. */
+DM_API dm_status dm_scan_apply(const dm_scan* scan, dm_job* job);
+/* NULL is ignored. */
+DM_API void dm_scan_destroy(dm_scan* scan);
+
+/* ---- tool tables ---- */
+/* A LinuxCNC tool table's text (`dexmill run --tools FILE`; the format is
+ * platform/format/tool_table.h's: T, D, Z for G43, the shape in the
+ * comment) into job->tools[0, ntools) (their spec NULL, the fields set),
+ * lengths in inch when `inch` is non-zero (dm_scan_result.table_units, the
+ * rule `dexmill run` reads a table by). A row of D0 (no cutter) is left
+ * out: a T the job lacks, as `dexmill run` cannot cut with it either; a
+ * flat end mill guessed from a comment is not said here, and a comment
+ * spec's holder and flutes are not kept (dm_tool has no fields for them:
+ * the safety checks and chip loads differ from the CLI's for such a row). DM_E_TOOL_TABLE:
+ * a line that does not read, *line and *col (1-based) where, message
+ * (NUL terminated, at most message_bytes - 1 bytes; may be NULL) why, as
+ * the CLI says it; DM_E_TOOL_NUMBER: more than DM_TOOLS_MAX tools (*line
+ * the first one over). job->ntools is 0 after an error. */
+DM_API dm_status dm_tool_table_parse(const char* text, size_t n, int32_t inch, dm_job* job, uint32_t* line, uint32_t* col,
+                                     char* message, size_t message_bytes);
+
+/* ---- the built-in demo ---- */
+/* The program `dexmill run --demo pocket` (and `make run`) cuts, into
+ * buf[0, n), NUL terminated (at most n - 1 bytes): its whole length (buf
+ * NULL and n 0 to size it; about 108 KB). */
+DM_API size_t dm_demo_program(char* buf, size_t n);
+enum { DM_DEMO_STOCK = 0, DM_DEMO_TOOL_TABLE = 1, DM_DEMO_MATERIAL = 2 };
+/* The demo's job as the CLI's texts: DM_DEMO_STOCK "X0,Y0,Z0,X1,Y1,Z1" (mm,
+ * dm_mm_to_nm each), DM_DEMO_TOOL_TABLE its LinuxCNC table
+ * (dm_tool_table_parse, mm), DM_DEMO_MATERIAL its material preset; NULL for
+ * another number. */
+DM_API const char* dm_demo_text(int32_t which);
+
 /* ---- for bindings: the size of each struct as this library has it ---- */
 enum {
   DM_STRUCT_JOB = 1, DM_STRUCT_TOOL, DM_STRUCT_BOX, DM_STRUCT_TRIANGLE, DM_STRUCT_BUDGET, DM_STRUCT_PROGRESS,
   DM_STRUCT_GRID_INFO, DM_STRUCT_COLUMN, DM_STRUCT_FINDING, DM_STRUCT_INPUT_ERROR, DM_STRUCT_FRAME,
-  DM_STRUCT_CAMERA, DM_STRUCT_RECT
+  DM_STRUCT_CAMERA, DM_STRUCT_RECT, DM_STRUCT_SCAN_RESULT = 14, DM_STRUCT_SCAN_TOOL = 15
 };
 /* 0 for an unknown one. */
 DM_API size_t dm_struct_bytes(int32_t which);

@@ -76,6 +76,11 @@ constexpr uint32_t kViewTag = 0x64766931;  // "dvi1"
 // dm_status for an engine's SimError.
 dm_status status_of(SimError e);
 
+// What a first pass (display/api/scan.cpp) and a simulation both read of a
+// job: its values checked (not its stock), the tools, units and reading
+// limits (display/api/sim_create.cpp).
+dm_status scan_job_of(const dm_job& in, NumberedTools* lib, SimJob* j);
+
 }  // namespace api
 }  // namespace dexmill
 

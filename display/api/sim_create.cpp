@@ -94,7 +94,8 @@ dm_status tool_of(const dm_tool& d, Tool* out) {
   return DM_OK;
 }
 
-// The job's numbers in their ranges (what the parts below do not check).
+// The job's numbers in their ranges (what the parts below do not check),
+// then its stock box (not read by a scan).
 dm_status check_values(const dm_job& in) {
   if (in.api_version != DEXMILL_API_VERSION) return DM_E_VERSION;
   if (in.ntools < 0 || in.ntools > DM_TOOLS_MAX) return DM_E_TOOL_NUMBER;
@@ -106,11 +107,20 @@ dm_status check_values(const dm_job& in) {
       (in.ndesign > 0 && !in.design) || (in.has_table && !coordinate_ok(in.table_z_nm)) ||
       (in.input_buffer_bytes != 0 && in.input_buffer_bytes < DM_INPUT_MIN_BYTES) || in.queue_records > (1u << 16))
     return DM_E_ARGUMENT;
+  return DM_OK;
+}
+
+dm_status check_stock(const dm_job& in) {
   for (int k = 0; k < 3; ++k)
     if (!coordinate_ok(in.stock.lo_nm[k]) || !coordinate_ok(in.stock.hi_nm[k]) || in.stock.lo_nm[k] >= in.stock.hi_nm[k])
       return DM_E_STOCK;
   return DM_OK;
 }
+
+}  // namespace
+
+namespace dexmill {
+namespace api {
 
 dm_status tools_of(const dm_job& in, NumberedTools* lib, SimJob* j) {
   if (const dm_status s = tool_of(in.tool, &j->tool)) return s;
@@ -132,6 +142,21 @@ dm_status tools_of(const dm_job& in, NumberedTools* lib, SimJob* j) {
   }
   return DM_OK;
 }
+
+// What a scan reads of a job (handles.h).
+dm_status scan_job_of(const dm_job& in, NumberedTools* lib, SimJob* j) {
+  if (const dm_status s = check_values(in)) return s;
+  if (const dm_status s = tools_of(in, lib, j)) return s;
+  j->inch = in.units == DM_UNITS_INCH;
+  if (in.max_blocks) j->max_blocks = in.max_blocks;
+  j->input_buffer_bytes = in.input_buffer_bytes ? in.input_buffer_bytes : LineReader::kStartBytes;
+  return DM_OK;
+}
+
+}  // namespace api
+}  // namespace dexmill
+
+namespace {
 
 dm_status plan_of(const dm_job& in, SimJob* j) {
   const StockBox box{PointNm{in.stock.lo_nm[0], in.stock.lo_nm[1], in.stock.lo_nm[2]},
@@ -174,14 +199,12 @@ dm_status checks_of(const dm_job& in, BoxNm* fixtures, SimJob* j) {
 // core/sim/simulation.h required_bytes).
 dm_status job_of(const dm_job& in, JobInputs* x, const StockComposition* material, SimJob* j) {
   if (const dm_status s = check_values(in)) return s;
-  if (const dm_status s = tools_of(in, &x->library, j)) return s;
+  if (const dm_status s = check_stock(in)) return s;  // before the tools, as ever: a bad stock is DM_E_STOCK
+  if (const dm_status s = scan_job_of(in, &x->library, j)) return s;
   if (const dm_status s = plan_of(in, j)) return s;
   if (const dm_status s = checks_of(in, x->fixtures, j)) return s;
   j->mode = in.mode == DM_MODE_STAMP ? CutMode::kStamp : CutMode::kSweep;
-  j->inch = in.units == DM_UNITS_INCH;
   j->default_feed_nm_per_min = in.default_feed_nm_per_min;
-  if (in.max_blocks) j->max_blocks = in.max_blocks;
-  j->input_buffer_bytes = in.input_buffer_bytes ? in.input_buffer_bytes : LineReader::kStartBytes;
   if (in.queue_records) j->queue_records = in.queue_records;
   if (in.material) {
     if (material_preset_index(in.material) < 0) return DM_E_MATERIAL;

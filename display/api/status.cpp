@@ -30,6 +30,7 @@ const char* dm_status_message(dm_status s) {
     case DM_E_FRAME: return "the frame cannot be drawn into (size, stride or pixel format)";
     case DM_E_INDEX: return "past the end of the list";
     case DM_E_IO: return "the file could not be written";
+    case DM_E_TOOL_TABLE: return "a line of the tool table does not read";
     default: return "unknown status";
   }
 }
@@ -57,6 +58,8 @@ dm_status dm_mm_to_nm(const char* text, size_t n, int64_t* nm) {
 size_t dm_struct_bytes(int32_t which) {
   switch (which) {
     case DM_STRUCT_JOB: return sizeof(dm_job);
+    case DM_STRUCT_SCAN_RESULT: return sizeof(dm_scan_result);
+    case DM_STRUCT_SCAN_TOOL: return sizeof(dm_scan_tool);
     case DM_STRUCT_TOOL: return sizeof(dm_tool);
     case DM_STRUCT_BOX: return sizeof(dm_box);
     case DM_STRUCT_TRIANGLE: return sizeof(dm_triangle);

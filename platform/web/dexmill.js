@@ -71,6 +71,8 @@ var dexmill = (function () {
     var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
     this.check(x.web_set_grid(g[0], g[1]), "grid");
     this.check(x.web_set_checks(o.checks || 0), "--check");  /* DM_CHECK_* bits (engine_view.js checkBits) */
+    /* Topics' settings of the job, before it is made (page_scan.js: --pitch, --tools). */
+    (o.configure || []).forEach(function (f) { f(this); }, this);
     var view = VIEWS[o.view || "iso"];
     if (view === undefined) throw new Error("view: iso, top, front or right");
     this.check(x.web_create(s[0], s[1], view, o.antialias ? 1 : 0, o.decorations ? 1 : 0), "the job");
@@ -190,9 +192,19 @@ var dexmill = (function () {
    * its peak, tools/scripts/web-stream-test.sh); else by Blob.slice. */
   function blobSource(blob) {
     var at = 0, reader = null, buf = null;
-    try { reader = blob.stream().getReader({ mode: "byob" }); } catch (e) { reader = null; }
+    function open() {
+      at = 0;
+      try { reader = blob.stream().getReader({ mode: "byob" }); } catch (e) { reader = null; }
+    }
+    open();
     return {
       name: blob.name || "program",  /* a File's name, for FILE:LINE:COL */
+      size: blob.size,               /* bytes, for a progress bar */
+      /* From the start again (a first pass read it: page_scan.js). */
+      rewind: function () {
+        if (reader) reader.cancel().catch(function () { /* a finished stream: nothing to cancel */ });
+        open();
+      },
       next: async function (max) {
         if (!reader) {
           var piece = blob.slice(at, Math.min(blob.size, at + max));

@@ -24,6 +24,7 @@
 #include "tools/run/run_safety.h"
 #include "tools/run/run_scan.h"
 #include "tools/run/run_stock.h"
+#include "core/sim/scan_stock.h"
 #include "core/sim/stock_state.h"
 #include "tools/run/run_tool_table.h"
 
@@ -245,20 +246,14 @@ int plan_stock(const RunOptions& o, const ProgramScan& scan, RunSetup* run) {
   } else if (run->demo) {
     stock = demo_stock_box();
     rep.stock_source = "demo";
-  } else if (scan.have_workpiece) {  // the program's (WORKPIECE,...) comment, as LinuxCNC's preview reads it
-    stock = scan.workpiece;
-    rep.stock_source = scan.blk_form                                 ? "BLK FORM comments"
-                       : scan.workpiece_kind == WorkpieceKind::kBox ? "workpiece comment"
-                                                                    : "workpiece comment's box";
   } else {
-    stock = default_stock(scan.summary, scan.max_radius_nm);
-    rep.stock_source = "program";
+    rep.stock_source = scan_stock_source_name(scan_default_stock(scan, &stock));
   }
   if (scan.workpiece_bad && run->print)
     std::fprintf(stderr, "%s:%u: warning: a %s comment not read: %s\n", run->shown_name.c_str(),
                  scan.workpiece_bad_line, scan.workpiece_bad_form, scan.workpiece_bad);
   int64_t pitch_nm = o.job.pitch_nm;
-  if (!pitch_nm && !o.job.grid_nx) pitch_nm = default_pitch_nm(stock, scan.smallest_diameter_nm());
+  if (!pitch_nm && !o.job.grid_nx) pitch_nm = scan_default_pitch_nm(scan, stock);
   std::string err;
   if (!plan_grid(stock, o.job.grid_nx, o.job.grid_ny, pitch_nm, run_grid_budget(o.job.max_memory_bytes), &run->plan, &err))
     return fail(kExitUsage, "%s", err.c_str());

@@ -27,10 +27,15 @@ web_setup web-test "$web"
 
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
+# An empty stock or grid is an empty field, and no --stock or --grid for
+# dexmill run: both choose them from the program (platform/web/page_scan.js).
+# The program `demo` is the page's Demo button against `dexmill run --demo
+# pocket`, in plain colours (the page has no material colour mode yet).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel. An
-# optional eighth column, extras separated by ';': path (the page's
+# optional eighth column, extras separated by ';': tools=FILE (a --tools
+# table: the page's table input and the CLI's option), path (the page's
 # --path-overlay box and the CLI's option), check=NAMES (the page's --check
 # field and the CLI's; its findings, kind, line and place, must be those
 # dexmill run warns of, and the first clicked in the list marks the view
@@ -48,17 +53,40 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|400x300|iso|cli|path
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain|speed=100
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|zoom
-tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|480x360|iso|cli|path;check=rapid'
+tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|480x360|iso|cli|path;check=rapid
+tests/run/pocket.ngc||flat:6||320x240|iso|cli
+tests/run/arcs_inch.ngc||vbit:3:90||400x300|top|cli
+tests/run/tool_change.ngc||flat:3||320x240|iso|plain
+tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain
+tests/run/tool_change.ngc||flat:6||400x300|iso|cli|tools=tests/run/tools.tbl
+tests/run/tool_change.ngc|-2,-4,-5,24,12,0|flat:6|120x80|320x240|top|plain|tools=tests/run/tools.tbl
+demo||flat:6||320x240|iso|plain
+demo||flat:6||400x300|top|cli'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
+# The tools=FILE of a case's extras (empty: none).
+extra_tools() {
+  local x
+  IFS=';' read -ra xs <<< "$1"
+  for x in "${xs[@]}"; do case $x in tools=*) echo "${x#tools=}";; esac; done
+}
+
+# A --tools table with a bad line: after the cases the page must list
+# dexmill run's error for it, word for word (the file named as chosen).
+printf 'T1 D4 ;flat\nK3\n' > "$tmp/bad.tbl"
+bad_table=$("$bin" run tests/run/tool_change.ngc -q --tools "$tmp/bad.tbl" --image "$tmp/bad.ppm" 2>&1 > /dev/null || true)
+bad_table=${bad_table#"$tmp/"}
+[ -n "$bad_table" ] || fail "dexmill run took a bad tool table"
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
 {
+  printf 'var DEXMILL_BAD_TABLE = "%s", DEXMILL_BAD_ERROR = "%s";\n' "$(base64 -w0 "$tmp/bad.tbl")" "$bad_table"
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look extra; do
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, extra: "%s"},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
-      "$extra"
+    tools=$(extra_tools "$extra")
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, extra: "%s", tools: "%s", toolsName: "%s"},\n' \
+      "$([ "$prog" = demo ] && echo demo || base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
+      "$extra" "$([ -z "$tools" ] || base64 -w0 "$tools")" "$(basename "${tools:-none}")"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -76,6 +104,15 @@ window.dexmillTest = (async function () {
     $("check").value = check ? check.slice(6) : "";
     var speed = extra.filter(function (w) { return /^speed=/.test(w); })[0];
     $("speed").value = "0";
+    if (c.program === "demo") {
+      $("tool").value = c.tool; $("size").value = c.size; $("view").value = c.view;
+      $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+      out.push(dexmillProbe(await dexmillPage.demo()));
+      continue;
+    }
+    var dt = new DataTransfer();  /* the table as a user would choose it (none: an empty input) */
+    if (c.tools) dt.items.add(new File([Uint8Array.from(atob(c.tools), function (ch) { return ch.charCodeAt(0); })], c.toolsName));
+    $("tools-file").files = dt.files;
     var running = dexmillPage.run(dexmill.blobSource(new Blob([b]))), sleep = function (ms) {
       return new Promise(function (done) { setTimeout(done, ms); });
     };
@@ -128,6 +165,11 @@ window.dexmillTest = (async function () {
     }
     out.push(dexmillProbe(r));
   }
+  var dt = new DataTransfer(), bad = atob(DEXMILL_BAD_TABLE), said = "(no error)";
+  dt.items.add(new File([bad], "bad.tbl"));
+  $("tools-file").files = dt.files;
+  try { await dexmillPage.run(dexmill.blobSource(new Blob([atob(DEXMILL_CASES[0].program)]))); } catch (err) { said = $("errors").textContent; }
+  if (said !== DEXMILL_BAD_ERROR) throw new Error("the bad tool table: the page said '" + said + "', not '" + DEXMILL_BAD_ERROR + "'");
   return out;
 })();
 EOF
@@ -140,8 +182,12 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 # The native runs, timed, each as the CLI draws it.
 n=0
 while IFS='|' read -r prog stock tool grid size view look extra; do
+  tools=$(extra_tools "$extra")
   n=$((n + 1))
-  opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size")
+  opts=(-q --tool "$tool" --size "$size")
+  [ -z "$stock" ] || opts+=(--stock "$stock")
+  [ -z "$grid" ] || opts+=(--grid "$grid")
+  [ -z "$tools" ] || opts+=(--tools "$tools")
   case $view in
     iso+*) IFS=+ read -r _ dx dy <<< "$view"
            opts+=(--azimuth "$(awk -v d="$dx" 'BEGIN { printf "%.3f", -45 - d / 2 }')"
@@ -154,7 +200,11 @@ while IFS='|' read -r prog stock tool grid size view look extra; do
     case $x in path) opts+=(--path-overlay);; check=*) opts+=(--check "${x#check=}");; esac
   done
   t0=$(date +%s%N)
-  "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err" || fail "dexmill run $prog failed"
+  if [ "$prog" = demo ]; then  # its out/ in the scratch folder
+    (cd "$tmp" && "$bin" run --demo pocket --color plain "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err") || fail "dexmill run --demo pocket failed"
+  else
+    "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err" || fail "dexmill run $prog failed"
+  fi
   t1=$(date +%s%N)
   echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
 done <<< "$cases"
@@ -177,6 +227,7 @@ import json, sys
 a, b = (json.load(open(sys.argv[1] + f)) for f in ("/page.json", "/page-http.json"))
 sys.exit(0 if [r["rgb"] for r in a] == [r["rgb"] for r in b] else 1)
 PY
+echo "ok: web-test: the page lists a bad --tools table's error as dexmill run says it: $bad_table"
 echo "ok: web-test: the page from a static server (http://127.0.0.1:$port/) draws the same $(grep -c . <<< "$cases") frames"
 js=$(wc -c < "$web/dexmill.js"); html=$(wc -c < "$web/index.html"); wasm=$(wc -c < "$web/dexmill.wasm")
 gz=$(( $(gzip -9c "$web/index.html" | wc -c) + $(gzip -9c "$web/dexmill.js" | wc -c) ))

@@ -1,17 +1,13 @@
 // Generator of the built-in demo program; see demo_program.h. All geometry is
 // in integer micrometres and the sines come from core/math/trig.h, so the text is
 // the same on every machine.
-#include "tools/run/demo_program.h"
-
-#include <cstdint>
-#include <cstdio>
-#include <vector>
+#include "core/cam/demo_program.h"
 
 #include "core/math/fixed.h"
+#include "core/math/text_out.h"
 #include "core/math/trig.h"
 
 namespace dexmill {
-namespace cli {
 namespace {
 
 // Pocket (um) and the relief left in it.
@@ -57,34 +53,50 @@ int32_t ball_tip(int32_t x, int32_t y) {
   return z;
 }
 
+// The text into the caller's buffer (TextOut: what fits, the whole length counted).
 class Writer {
  public:
-  std::string text;
+  explicit Writer(TextOut* o) : text(*o) {}
+  TextOut& text;
 
   void line(const char* s) {
-    text += s;
-    text += '\n';
+    text.puts(s);
+    text.put('\n');
   }
   // "G1 X.. Y.. Z.." with each axis given (INT32_MIN: left out), um -> mm.
   void move(const char* code, int32_t x, int32_t y, int32_t z, int32_t feed = 0) {
-    text += code;
+    text.puts(code);
     axis('X', x);
     axis('Y', y);
     axis('Z', z);
     if (feed) axis('F', feed * 1000);
-    text += '\n';
+    text.put('\n');
   }
+  // " X-12.5": um as mm, the shortest exact decimals.
   void axis(char letter, int32_t um) {
     if (um == INT32_MIN) return;
-    char b[32];
     const int64_t a = um < 0 ? -static_cast<int64_t>(um) : um;
-    const int64_t frac = a % 1000;
-    int n = std::snprintf(b, sizeof b, " %c%s%lld", letter, um < 0 ? "-" : "", static_cast<long long>(a / 1000));
-    if (frac) {
-      n += std::snprintf(b + n, sizeof b - static_cast<size_t>(n), ".%03lld", static_cast<long long>(frac));
-      while (b[n - 1] == '0') b[--n] = 0;
+    int64_t frac = a % 1000;
+    text.put(' ');
+    text.put(letter);
+    if (um < 0) text.put('-');
+    text.put_uint(static_cast<uint64_t>(a / 1000));
+    if (!frac) return;
+    text.put('.');
+    for (int64_t d = 100; frac; d /= 10) {
+      text.put(static_cast<char>('0' + frac / d));
+      frac %= d;
     }
-    text += b;
+  }
+  // "G3 X<x> Y<y> <rest>\n" of whole mm (the contour's corners).
+  void arc_mm(int32_t x_mm, int32_t y_mm, const char* rest) {
+    text.puts("G3 X");
+    text.put_int(x_mm);
+    text.puts(" Y");
+    text.put_int(y_mm);
+    text.put(' ');
+    text.puts(rest);
+    text.put('\n');
   }
 };
 
@@ -132,8 +144,9 @@ const char* demo_stock() { return "0,0,-20,100,70,0"; }
 
 const char* demo_material() { return "wood-on-aluminium"; }
 
-std::string demo_program() {
-  Writer w;
+size_t demo_program_write(char* buf, size_t n) {
+  TextOut out{buf, n, 0};
+  Writer w(&out);
   w.line("(dexmill demo: a 100 x 70 x 20 mm block, Z0 on its top, X0 Y0 at its front left corner)");
   w.line("(simulate it yourself: dexmill run out/demo.ngc --stock 0,0,-20,100,70,0 --tools TABLE)");
   w.line("G21 G90 G17 G94 G54");
@@ -148,11 +161,11 @@ std::string demo_program() {
     w.move("G0", kNone, kNone, 1000);
     w.move("G1", kNone, kNone, 0, 300);
     for (int32_t z = -1000; z >= -8000; z -= 1000) {
-      w.text += "G3";
+      w.text.puts("G3");
       w.axis('X', cx + 2000);
       w.axis('Y', 35000);
       w.axis('Z', z);
-      w.text += " I-2 J0 F600\n";
+      w.text.puts(" I-2 J0 F600\n");
     }
     w.line("G3 I-2 J0");  // a last flat turn at the bottom
     w.move("G0", kNone, kNone, kSafe);
@@ -160,9 +173,9 @@ std::string demo_program() {
   w.line("(waterline roughing of the pocket, 0.3 mm left on the relief)");
   const int32_t cx0 = kPx0 + kToolR, cx1 = kPx1 - kToolR, cy0 = kPy0 + kToolR, cy1 = kPy1 - kToolR;
   for (int32_t level = -2000; level >= kFloor; level = level == -8000 ? kFloor : level - 2000) {
-    char c[64];
-    std::snprintf(c, sizeof c, "(level Z%d)", static_cast<int>(level / 1000));
-    w.line(c);
+    w.text.puts("(level Z");
+    w.text.put_int(level / 1000);
+    w.line(")");
     for (int32_t y = cy0; y <= cy1; y += 2500) {
       int32_t run_start = kNone, last_ok = kNone;
       for (int32_t x = cx0; x <= cx1 + 500; x += 500) {
@@ -188,18 +201,13 @@ std::string demo_program() {
     w.move("G0", kNone, kNone, level + 1000);
     w.move("G1", kNone, kNone, level, 300);
     w.move("G1", cx1 - r, kNone, kNone, 1200);
-    char a[160];
-    std::snprintf(a, sizeof a, "G3 X%d Y%d I0 J3\n", cx1 / 1000, (cy0 + r) / 1000);
-    w.text += a;
+    w.arc_mm(cx1 / 1000, (cy0 + r) / 1000, "I0 J3");
     w.move("G1", kNone, cy1 - r, kNone);
-    std::snprintf(a, sizeof a, "G3 X%d Y%d I-3 J0\n", (cx1 - r) / 1000, cy1 / 1000);
-    w.text += a;
+    w.arc_mm((cx1 - r) / 1000, cy1 / 1000, "I-3 J0");
     w.move("G1", cx0 + r, kNone, kNone);
-    std::snprintf(a, sizeof a, "G3 X%d Y%d I0 J-3\n", cx0 / 1000, (cy1 - r) / 1000);
-    w.text += a;
+    w.arc_mm(cx0 / 1000, (cy1 - r) / 1000, "I0 J-3");
     w.move("G1", kNone, cy0 + r, kNone);
-    std::snprintf(a, sizeof a, "G3 X%d Y%d I3 J0\n", (cx0 + r) / 1000, cy0 / 1000);
-    w.text += a;
+    w.arc_mm((cx0 + r) / 1000, cy0 / 1000, "I3 J0");
     w.move("G0", kNone, kNone, kSafe);
     if (level == kFloor) break;
   }
@@ -234,8 +242,8 @@ std::string demo_program() {
   w.line("G0 Z20");
   w.line("M5");
   w.line("M30");
-  return w.text;
+  (void)out.end();
+  return out.len;
 }
 
-}  // namespace cli
 }  // namespace dexmill
