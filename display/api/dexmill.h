@@ -85,7 +85,8 @@ enum {
   DM_E_OUTSIDE = 15,    /* a point outside the grid */
   DM_E_FRAME = 16,      /* a frame the renderer cannot draw into (size, stride, format) */
   DM_E_INDEX = 17,      /* past the end of a list */
-  DM_E_IO = 18          /* a file could not be written (dexmill_io.h) */
+  DM_E_IO = 18,         /* a file could not be written (dexmill_io.h) */
+  DM_E_COLOUR = 20      /* a colour mode the job cannot draw: tool without provenance, material without one, error without a design */
 };
 /* A sentence for a status; never NULL. */
 DM_API const char* dm_status_message(dm_status s);
@@ -387,6 +388,33 @@ DM_API dm_status dm_view_set_camera(dm_view* view, const dm_camera* camera);
  * corner, as `dexmill run` draws them (off after dm_view_create; a panel
  * may keep them off). The camera is framed again, clear of them. */
 DM_API dm_status dm_view_set_decorations(dm_view* view, int32_t on);
+/* Colour modes, as `dexmill run --color MODE` draws them, its legend
+ * included (display/view/colour_legend.h): slope bands of the surface's
+ * angle; tool, the tool that last cut each column (needs dm_job.provenance;
+ * named by dm_job.tools, else every T is dm_job.tool); material, the
+ * material under the top with its texture (needs dm_job.material); thin,
+ * floors thinner than thin_nm (the CLI's --thin); error, the distance to
+ * the design (needs dm_job.design; the CLI's red marks of gouges are not
+ * drawn). Plain: the workpiece's one colour, as after dm_view_create. */
+enum {
+  DM_COLOUR_PLAIN = 0, DM_COLOUR_SLOPE = 1, DM_COLOUR_TOOL = 2, DM_COLOUR_MATERIAL = 3, DM_COLOUR_THIN = 4,
+  DM_COLOUR_ERROR = 5
+};
+typedef struct dm_colour {
+  int32_t mode;               /* DM_COLOUR_* */
+  int32_t reserved;           /* 0 */
+  int64_t thin_nm;            /* DM_COLOUR_THIN: 1 um .. 1 m (0: 1 mm, the CLI's default) */
+} dm_colour;
+/* Bytes of caller memory the mode needs for this view (its classes, a byte
+ * a dexel, its ramps, its legend; material's texture, 4 or more bytes a
+ * dexel more); 0 for plain. DM_E_ARGUMENT for an unknown mode or a thin_nm
+ * out of range, DM_E_COLOUR for one the job cannot draw. */
+DM_API dm_status dm_view_colour_bytes(const dm_view* view, const dm_colour* colour, size_t* bytes);
+/* Draws the view in the mode from the next dm_render on, whole; mem
+ * (8-byte aligned, at least dm_view_colour_bytes; NULL for plain) is the
+ * mode's until the next dm_view_set_colour or dm_view_destroy. colour NULL:
+ * plain. */
+DM_API dm_status dm_view_set_colour(dm_view* view, const dm_colour* colour, void* mem, size_t bytes);
 /* NULL is ignored. */
 DM_API void dm_view_destroy(dm_view* view);
 
@@ -398,7 +426,8 @@ DM_API dm_status dm_mm_to_nm(const char* text, size_t n, int64_t* nm);
 enum {
   DM_STRUCT_JOB = 1, DM_STRUCT_TOOL, DM_STRUCT_BOX, DM_STRUCT_TRIANGLE, DM_STRUCT_BUDGET, DM_STRUCT_PROGRESS,
   DM_STRUCT_GRID_INFO, DM_STRUCT_COLUMN, DM_STRUCT_FINDING, DM_STRUCT_INPUT_ERROR, DM_STRUCT_FRAME,
-  DM_STRUCT_CAMERA, DM_STRUCT_RECT
+  DM_STRUCT_CAMERA, DM_STRUCT_RECT,
+  DM_STRUCT_COLOUR = 16
 };
 /* 0 for an unknown one. */
 DM_API size_t dm_struct_bytes(int32_t which);

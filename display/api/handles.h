@@ -77,11 +77,18 @@ struct dm_sim {
   dexmill::Simulation* sim;
 };
 
+namespace dexmill {
+namespace api {
+struct ViewColour;  // a colour mode's state, in its caller memory (view_colour.cpp)
+}  // namespace api
+}  // namespace dexmill
+
 struct dm_view {
   uint32_t tag;
   dm_sim* sim;   // null once the simulation is destroyed
   dm_view* next; // the simulation's next view
   dexmill::StockView v;
+  dexmill::api::ViewColour* colour;  // dm_view_set_colour's (null: plain)
 };
 
 // Ending a handle is clearing its tag: nothing in it needs a destructor
@@ -91,6 +98,10 @@ static_assert(std::is_trivially_destructible<dm_sim>::value && std::is_trivially
 
 namespace dexmill {
 namespace api {
+
+// Before a render: a colour mode's legend as the simulation is now (the
+// tool legend names the tools that have cut; view_colour.cpp).
+void view_colour_update(dm_view* v);
 
 // A handle the calls may use.
 inline bool live(const dm_sim* s) { return s && s->tag == kSimTag; }
