@@ -301,6 +301,11 @@ TEST(api_colour_refusals_and_plain_again) {
   CHECK_EQ(dm_view_colour_bytes(a.view, &c, nullptr), DM_E_ARGUMENT);
   CHECK_EQ(dm_view_set_colour(nullptr, &c, mem.data(), n), DM_E_ARGUMENT);
   CHECK_EQ(dm_struct_bytes(DM_STRUCT_COLOUR), sizeof(dm_colour));
+  int32_t presets = 0;
+  while (dm_material_preset_name(presets)) ++presets;
+  CHECK_EQ(presets, 7);
+  CHECK(dm_material_preset_name(-1) == nullptr);
+  CHECK_EQ(std::string(dm_material_preset_name(2)), "wood");
   CHECK(std::strlen(dm_status_message(DM_E_COLOUR)) > 10);
   dm_destroy(a.sim);
   CHECK_EQ(dm_view_set_colour(a.view, &c, mem.data(), n), DM_E_STATE);

@@ -173,6 +173,9 @@ typedef struct dm_job {
 /* Every field to its default (stock and tool empty). DM_E_VERSION when
  * api_version is not the library's. */
 DM_API dm_status dm_job_init(dm_job* job, uint32_t api_version);
+/* The material presets dm_job.material names, index 0 on ("two-layer",
+ * "wood", ...; the CLI's --material PRESET); NULL past the last. */
+DM_API const char* dm_material_preset_name(int32_t index);
 
 /* ---- the simulation ---- */
 typedef struct dm_sim dm_sim;

@@ -27,22 +27,29 @@ web_setup web-test "$web"
 
 # program | stock | tool | grid | size | view | the look: plain (aliased, no
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
+# An 8th column, optional: more of the CLI's options ("--color tool",
+# "--color thin --thin 0.5"), given to dexmill run and set in the page's
+# form, each --NAME VALUE into the field of id NAME (page_colour.js's).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel.
 cases='tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain
 tests/run/arcs_inch.ngc|0,0,-5,45,35,0|vbit:3:90|200x160|400x300|top|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso+30+10|cli
-tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli'
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color slope
+tests/run/tool_change.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|top|cli|--color tool
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color material --material wood-on-aluminium
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color thin --thin 8'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
 # and runs it the way the Run button does, then hands back the canvas's RGB.
 {
   echo "var DEXMILL_CASES = ["
-  while IFS='|' read -r prog stock tool grid size view look; do
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)"
+  while IFS='|' read -r prog stock tool grid size view look more; do
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, more: "%s"},\n' \
+      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" "$more"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -55,6 +62,9 @@ window.dexmillTest = (async function () {
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     var view = c.view.split("+");
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    $("color").value = "plain"; $("thin").value = "1"; $("material").value = "";
+    var more = c.more ? c.more.split(/\s+/) : [];
+    for (var k = 0; k + 1 < more.length; k += 2) $(more[k].replace(/^--/, "")).value = more[k + 1];
     var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
     if (view.length === 3) {  /* a drag across the canvas, as a finger or mouse makes it */
       var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
@@ -78,7 +88,7 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 
 # The native runs, timed, each as the CLI draws it.
 n=0
-while IFS='|' read -r prog stock tool grid size view look; do
+while IFS='|' read -r prog stock tool grid size view look more; do
   n=$((n + 1))
   opts=(-q --stock "$stock" --tool "$tool" --grid "$grid" --size "$size")
   case $view in
@@ -88,10 +98,12 @@ while IFS='|' read -r prog stock tool grid size view look; do
     *) opts+=(--view "$view");;
   esac
   [ "$look" = cli ] || opts+=(--no-antialias --no-decorations)
+  read -r -a more_opts <<< "$more"
+  opts+=("${more_opts[@]}")
   t0=$(date +%s%N)
   "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" || fail "dexmill run $prog failed"
   t1=$(date +%s%N)
-  echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
+  echo "$prog|$size|$view|$look${more:+ $more}|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
 done <<< "$cases"
 
 python3 tools/scripts/web_compare.py "$tmp" || fail "the page's pixels are not dexmill run's"
