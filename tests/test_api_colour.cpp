@@ -11,16 +11,12 @@
 #include <vector>
 
 #include "display/api/dexmill.h"
-#include "platform/format/stl_read.h"
 #include "tests/run_cli_util.h"
 #include "tests/runner.h"
 
 namespace {
 
 using namespace run_cli;
-using dexmill::PointNm;
-using dexmill::StlRead;
-using dexmill::stl_read;
 
 constexpr int64_t mm = DM_NM_PER_MM;
 constexpr int32_t kW = 320, kH = 240;
@@ -137,24 +133,14 @@ bool same_as_cli(const std::vector<unsigned char>& api, const char* name, const 
   return diff_cli(api, name, options).pixels == 0;
 }
 
-// pocket_design.stl's facets as the API's triangles.
-std::vector<dm_triangle> design_triangles() {
-  std::vector<dm_triangle> out;
-  std::string err;
-  dexmill::StlReadInfo info;
-  const StlRead r = stl_read(std::string(t::tests_dir()) + "/run/pocket_design.stl", PointNm{0, 0, 0},
-                             [&](const PointNm* v, std::string*) {
-                               dm_triangle t;
-                               for (int k = 0; k < 3; ++k) {
-                                 t.v_nm[k][0] = v[k].x_nm;
-                                 t.v_nm[k][1] = v[k].y_nm;
-                                 t.v_nm[k][2] = v[k].z_nm;
-                               }
-                               out.push_back(t);
-                               return true;
-                             },
-                             &info, &err);
-  CHECK(r == StlRead::kOk);
+// tests/run/NAME's facets as the API's triangles (dm_design_from_stl).
+std::vector<dm_triangle> design_triangles(const char* name) {
+  const std::string bytes = slurp(std::string(t::tests_dir()) + "/run/" + name);
+  uint32_t n = 0;
+  CHECK_EQ(dm_design_from_stl(bytes.data(), bytes.size(), nullptr, 0, &n), DM_OK);
+  std::vector<dm_triangle> out(n);
+  CHECK_EQ(dm_design_from_stl(bytes.data(), bytes.size(), out.data(), n, &n), DM_OK);
+  CHECK_EQ(out.size(), n);
   return out;
 }
 
@@ -218,36 +204,26 @@ TEST(api_colour_thin_is_the_cli_image) {
   CHECK(same_as_cli(a.rgb(), "pocket.ngc", "--color thin"));
 }
 
-// A design under the whole cut (a plane from 9.5 mm down at x = 0 to 8.1
-// at x = 33: no gouge, every band of material left), and pocket_design.stl,
-// which the pocket gouges: there the CLI marks the gouge with a red disc
-// (a finding's mark, which the API's views do not draw) and nothing else
-// differs.
+// A design under the whole cut (tests/run/pocket_floor.stl: a plane from
+// 8.9 mm down at x = -1 to 8.06 at x = 34, the pocket's floor 8 deep: no
+// gouge, the bands of material left), and pocket_design.stl, which the
+// pocket gouges: there the CLI marks the gouge with a red disc (a finding's
+// mark, which the API's views do not draw) and nothing else differs.
 TEST(api_colour_error_is_the_cli_image) {
   if (skip()) return;
   {
-    dm_triangle plane[2];
-    const int64_t c[4][3] = {{-1 * mm, -1 * mm, -9500000}, {34 * mm, -1 * mm, -8100000},
-                             {34 * mm, 24 * mm, -8100000}, {-1 * mm, 24 * mm, -9500000}};
-    const int tri[2][3] = {{0, 1, 2}, {0, 2, 3}};
-    for (int t = 0; t < 2; ++t)
-      for (int v = 0; v < 3; ++v)
-        for (int a = 0; a < 3; ++a) plane[t].v_nm[v][a] = c[tri[t][v]][a];
-    const std::string stl = write_tmp("api_colour_plane.stl",
-                                      "solid p\n"
-                                      "facet normal 0 0 1\nouter loop\nvertex -1 -1 -9.5\nvertex 34 -1 -8.1\n"
-                                      "vertex 34 24 -8.1\nendloop\nendfacet\n"
-                                      "facet normal 0 0 1\nouter loop\nvertex -1 -1 -9.5\nvertex 34 24 -8.1\n"
-                                      "vertex -1 24 -9.5\nendloop\nendfacet\nendsolid p\n");
+    const std::vector<dm_triangle> plane = design_triangles("pocket_floor.stl");
+    CHECK_EQ(plane.size(), 2u);
+    CHECK_EQ(plane[0].v_nm[1][2], -8060000);  // to the nm
     dm_job j = base_job();
-    j.design = plane;
-    j.ndesign = 2;
+    j.design = plane.data();
+    j.ndesign = static_cast<uint32_t>(plane.size());
     Run a(j);
     CHECK_EQ(a.colour(DM_COLOUR_ERROR), DM_OK);
     a.cut(program("pocket.ngc"));
-    CHECK(same_as_cli(a.rgb(), "pocket.ngc", "--color error --design " + stl));
+    CHECK(same_as_cli(a.rgb(), "pocket.ngc", "--color error --design pocket_floor.stl"));
   }
-  const std::vector<dm_triangle> tris = design_triangles();
+  const std::vector<dm_triangle> tris = design_triangles("pocket_design.stl");
   dm_job j = base_job();
   j.design = tris.data();
   j.ndesign = static_cast<uint32_t>(tris.size());
@@ -301,6 +277,17 @@ TEST(api_colour_refusals_and_plain_again) {
   CHECK_EQ(dm_view_colour_bytes(a.view, &c, nullptr), DM_E_ARGUMENT);
   CHECK_EQ(dm_view_set_colour(nullptr, &c, mem.data(), n), DM_E_ARGUMENT);
   CHECK_EQ(dm_struct_bytes(DM_STRUCT_COLOUR), sizeof(dm_colour));
+  uint32_t count = 9;
+  dm_triangle one;
+  CHECK_EQ(dm_design_from_stl("solid a\nendsolid a\n", 20, nullptr, 0, &count), DM_E_DESIGN);
+  CHECK_EQ(count, 0u);
+  CHECK_EQ(dm_design_from_stl("not an stl", 10, nullptr, 0, &count), DM_E_DESIGN);
+  CHECK_EQ(dm_design_from_stl(nullptr, 0, nullptr, 0, &count), DM_E_DESIGN);
+  CHECK_EQ(dm_design_from_stl(nullptr, 5, nullptr, 0, &count), DM_E_ARGUMENT);
+  CHECK_EQ(dm_design_from_stl("x", 1, nullptr, 0, nullptr), DM_E_ARGUMENT);
+  const std::string two = slurp(std::string(t::tests_dir()) + "/run/pocket_design.stl");
+  CHECK_EQ(dm_design_from_stl(two.data(), two.size(), &one, 1, &count), DM_E_INDEX);
+  CHECK_GT(count, 1u);
   int32_t presets = 0;
   while (dm_material_preset_name(presets)) ++presets;
   CHECK_EQ(presets, 7);

@@ -173,6 +173,12 @@ typedef struct dm_job {
 /* Every field to its default (stock and tool empty). DM_E_VERSION when
  * api_version is not the library's. */
 DM_API dm_status dm_job_init(dm_job* job, uint32_t api_version);
+/* An STL file's facets (its bytes in memory, binary or ASCII, mm) as
+ * triangles for dm_job.design: *count of them, written to out[0, max)
+ * (out NULL: counted only; more than max: DM_E_INDEX, the first max
+ * written). DM_E_DESIGN when the bytes are not an STL mesh (a vertex not a
+ * number or beyond 10 m, a facet cut short, none at all). */
+DM_API dm_status dm_design_from_stl(const void* bytes, size_t n, dm_triangle* out, uint32_t max, uint32_t* count);
 /* The material presets dm_job.material names, index 0 on ("two-layer",
  * "wood", ...; the CLI's --material PRESET); NULL past the last. */
 DM_API const char* dm_material_preset_name(int32_t index);

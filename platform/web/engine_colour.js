@@ -1,5 +1,5 @@
 /* engine_colour.js - the loader's colour modes (platform/web/web_colour.cpp):
- * the job's --color, --thin and --material as `dexmill run` takes them, and
+ * the job's --color, --thin, --material and --design as `dexmill run` takes them, and
  * the material presets' names as the engine lists them. */
 "use strict";
 (function () {
@@ -17,6 +17,16 @@
     this.put(all);
     this.check(this.x.web_colour(mode.length, material.length, thin.length, VIEW_NUMBER[o.view || "iso"],
                                  o.antialias ? 1 : 0, o.decorations ? 1 : 0), "--color " + (o.color || "plain"));
+  };
+  /* A design's STL file (its bytes, a Uint8Array) for the next colour():
+   * read into triangles in the module; their count. */
+  Engine.prototype.design = function (bytes) {
+    var at = this.x.web_design_buffer(bytes.length);
+    if (!at) throw new Error("--design: no memory for " + bytes.length + " bytes");
+    this.bytes(at, bytes.length).set(bytes);
+    var n = this.x.web_design_read();
+    if (n < 0) this.check(-n, "--design");
+    return n;
   };
   /* The material presets' names, in the engine's order. */
   Engine.prototype.materialNames = function () {

@@ -29,7 +29,8 @@ web_setup web-test "$web"
 # triad or scale bar: --no-antialias --no-decorations) or cli (run's default).
 # An 8th column, optional: more of the CLI's options ("--color tool",
 # "--color thin --thin 0.5"), given to dexmill run and set in the page's
-# form, each --NAME VALUE into the field of id NAME (page_colour.js's).
+# form, each --NAME VALUE into the field of id NAME (page_colour.js's;
+# --design FILE: the file chosen in its file input).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel.
@@ -40,7 +41,8 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color slope
 tests/run/tool_change.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|top|cli|--color tool
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color material --material wood-on-aluminium
-tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color thin --thin 8'
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color thin --thin 8
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color error --design tests/run/pocket_floor.stl'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 
 # The page: build/web/ as served, plus job.js, which sets the form per case
@@ -48,8 +50,10 @@ for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
 {
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look more; do
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, more: "%s"},\n' \
-      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" "$more"
+    design=$(sed -n 's/.*--design \([^ ]*\).*/\1/p' <<< "$more")
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, more: "%s", design: "%s"},\n' \
+      "$(base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" "$more" \
+      "$([ -n "$design" ] && base64 -w0 "$design")"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -64,7 +68,14 @@ window.dexmillTest = (async function () {
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
     $("color").value = "plain"; $("thin").value = "1"; $("material").value = "";
     var more = c.more ? c.more.split(/\s+/) : [];
-    for (var k = 0; k + 1 < more.length; k += 2) $(more[k].replace(/^--/, "")).value = more[k + 1];
+    var files = new DataTransfer();  /* --design: the file as a user chooses it */
+    if (c.design) {
+      var d = atob(c.design), db = new Uint8Array(d.length);
+      for (var i = 0; i < d.length; ++i) db[i] = d.charCodeAt(i);
+      files.items.add(new File([db], "design.stl"));
+    }
+    $("design").files = files.files;
+    for (var k = 0; k + 1 < more.length; k += 2) if (more[k] !== "--design") $(more[k].replace(/^--/, "")).value = more[k + 1];
     var r = await dexmillPage.run(dexmill.blobSource(new Blob([b])));
     if (view.length === 3) {  /* a drag across the canvas, as a finger or mouse makes it */
       var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
