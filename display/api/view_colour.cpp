@@ -56,7 +56,7 @@ size_t luts_bytes() { return static_cast<size_t>(kMaxColourClasses) * kShadeLeve
 // The mode's memory for this view, or its status.
 dm_status bytes_of(const dm_view* view, const dm_colour* c, size_t* bytes) {
   *bytes = 0;
-  const int32_t mode = c ? c->mode : DM_COLOUR_PLAIN;
+  const int32_t mode = c ? c->mode : static_cast<int32_t>(DM_COLOUR_PLAIN);
   if (mode < DM_COLOUR_PLAIN || mode > DM_COLOUR_ERROR || (c && c->reserved != 0)) return DM_E_ARGUMENT;
   if (mode == DM_COLOUR_THIN && (c->thin_nm < 0 || (c->thin_nm != 0 && c->thin_nm < 1000) || c->thin_nm > kThinMaxNm))
     return DM_E_ARGUMENT;
