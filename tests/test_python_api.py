@@ -168,6 +168,29 @@ class Views(unittest.TestCase):
             self.assertEqual(ppm, b"P6\n160 120\n255\n" + rgb)
 
 
+    def test_slope_colour_frame_is_the_clis(self):
+        # A colour mode (dm_view_set_colour) with its legend, as --color slope draws it.
+        with dexmill.Simulation(STOCK, tool="ball:6", grid=(165, 115)) as sim:
+            view = sim.view(160, 120, antialias=True)
+            view.set_decorations(True)
+            view.set_colour("slope")
+            with self.assertRaises(dexmill.DexmillError):
+                view.set_colour("tool")  # no provenance
+            self.assertEqual(sim.run(POCKET), "done")
+            view.render()
+            rgb = view.rgb()
+            binary = os.environ.get("DEXMILL")
+            if not binary:
+                return
+            with tempfile.TemporaryDirectory() as d:
+                out = os.path.join(d, "f.ppm")
+                subprocess.run([binary, "run", os.path.join(HERE, "run", "pocket.ngc"), "-q", "--stock",
+                                "0,0,-10,33,23,0", "--tool", "ball:6", "--grid", "165x115", "--size", "160x120",
+                                "--color", "slope", "--image", out], check=True)
+                with open(out, "rb") as f:
+                    ppm = f.read()
+            self.assertEqual(ppm, b"P6\n160 120\n255\n" + rgb)
+
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=1).result
     sys.exit(0 if result.wasSuccessful() else 1)

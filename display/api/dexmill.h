@@ -86,7 +86,8 @@ enum {
   DM_E_FRAME = 16,      /* a frame the renderer cannot draw into (size, stride, format) */
   DM_E_INDEX = 17,      /* past the end of a list */
   DM_E_IO = 18,         /* a file could not be written (dexmill_io.h) */
-  DM_E_TOOL_TABLE = 19  /* a tool table's line does not read (dm_tool_table_parse) */
+  DM_E_TOOL_TABLE = 19, /* a tool table's line does not read (dm_tool_table_parse) */
+  DM_E_COLOUR = 20      /* a colour mode the job cannot draw: tool without provenance, material without one, error without a design */
 };
 /* A sentence for a status; never NULL. */
 DM_API const char* dm_status_message(dm_status s);
@@ -173,6 +174,15 @@ typedef struct dm_job {
 /* Every field to its default (stock and tool empty). DM_E_VERSION when
  * api_version is not the library's. */
 DM_API dm_status dm_job_init(dm_job* job, uint32_t api_version);
+/* An STL file's facets (its bytes in memory, binary or ASCII, mm) as
+ * triangles for dm_job.design: *count of them, written to out[0, max)
+ * (out NULL: counted only; more than max: DM_E_INDEX, the first max
+ * written). DM_E_DESIGN when the bytes are not an STL mesh (a vertex not a
+ * number or beyond 10 m, a facet cut short, none at all). */
+DM_API dm_status dm_design_from_stl(const void* bytes, size_t n, dm_triangle* out, uint32_t max, uint32_t* count);
+/* The material presets dm_job.material names, index 0 on ("two-layer",
+ * "wood", ...; the CLI's --material PRESET); NULL past the last. */
+DM_API const char* dm_material_preset_name(int32_t index);
 
 /* ---- the simulation ---- */
 typedef struct dm_sim dm_sim;
@@ -424,6 +434,34 @@ DM_API dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm);
 DM_API dm_status dm_view_zoom(dm_view* view, int32_t steps, int32_t x_px, int32_t y_px);
 /* No zoom: the camera as dm_view_set_camera (or dm_view_create) gave it. */
 DM_API dm_status dm_view_zoom_reset(dm_view* view);
+
+/* Colour modes, as `dexmill run --color MODE` draws them, its legend
+ * included (display/view/colour_legend.h): slope bands of the surface's
+ * angle; tool, the tool that last cut each column (needs dm_job.provenance;
+ * named by dm_job.tools, else every T is dm_job.tool); material, the
+ * material under the top with its texture (needs dm_job.material); thin,
+ * floors thinner than thin_nm (the CLI's --thin); error, the distance to
+ * the design (needs dm_job.design; the CLI's red marks of gouges are not
+ * drawn). Plain: the workpiece's one colour, as after dm_view_create. */
+enum {
+  DM_COLOUR_PLAIN = 0, DM_COLOUR_SLOPE = 1, DM_COLOUR_TOOL = 2, DM_COLOUR_MATERIAL = 3, DM_COLOUR_THIN = 4,
+  DM_COLOUR_ERROR = 5
+};
+typedef struct dm_colour {
+  int32_t mode;               /* DM_COLOUR_* */
+  int32_t reserved;           /* 0 */
+  int64_t thin_nm;            /* DM_COLOUR_THIN: 1 um .. 1 m (0: 1 mm, the CLI's default) */
+} dm_colour;
+/* Bytes of caller memory the mode needs for this view (its classes, a byte
+ * a dexel, its ramps, its legend; material's texture, 4 or more bytes a
+ * dexel more); 0 for plain. DM_E_ARGUMENT for an unknown mode or a thin_nm
+ * out of range, DM_E_COLOUR for one the job cannot draw. */
+DM_API dm_status dm_view_colour_bytes(const dm_view* view, const dm_colour* colour, size_t* bytes);
+/* Draws the view in the mode from the next dm_render on, whole; mem
+ * (8-byte aligned, at least dm_view_colour_bytes; NULL for plain) is the
+ * mode's until the next dm_view_set_colour or dm_view_destroy. colour NULL:
+ * plain. */
+DM_API dm_status dm_view_set_colour(dm_view* view, const dm_colour* colour, void* mem, size_t bytes);
 /* NULL is ignored. */
 DM_API void dm_view_destroy(dm_view* view);
 
@@ -538,7 +576,8 @@ DM_API const char* dm_demo_text(int32_t which);
 enum {
   DM_STRUCT_JOB = 1, DM_STRUCT_TOOL, DM_STRUCT_BOX, DM_STRUCT_TRIANGLE, DM_STRUCT_BUDGET, DM_STRUCT_PROGRESS,
   DM_STRUCT_GRID_INFO, DM_STRUCT_COLUMN, DM_STRUCT_FINDING, DM_STRUCT_INPUT_ERROR, DM_STRUCT_FRAME,
-  DM_STRUCT_CAMERA, DM_STRUCT_RECT, DM_STRUCT_SCAN_RESULT = 14, DM_STRUCT_SCAN_TOOL = 15
+  DM_STRUCT_CAMERA, DM_STRUCT_RECT, DM_STRUCT_SCAN_RESULT = 14, DM_STRUCT_SCAN_TOOL = 15,
+  DM_STRUCT_COLOUR = 16
 };
 /* 0 for an unknown one. */
 DM_API size_t dm_struct_bytes(int32_t which);

@@ -95,6 +95,12 @@ struct dm_sim {
   dexmill::Simulation* sim;
 };
 
+namespace dexmill {
+namespace api {
+struct ViewColour;  // a colour mode's state, in its caller memory (view_colour.cpp)
+}  // namespace api
+}  // namespace dexmill
+
 struct dm_view {
   uint32_t tag;
   dm_sim* sim;   // null once the simulation is destroyed
@@ -107,6 +113,7 @@ struct dm_view {
   // dm_view_set_mark: one point marked over the picture.
   dexmill::PointNm mark_at;
   dexmill::ViewMarks mark;
+  dexmill::api::ViewColour* colour;  // dm_view_set_colour's (null: plain)
 };
 
 // Ending a handle is clearing its tag: nothing in it needs a destructor
@@ -116,6 +123,10 @@ static_assert(std::is_trivially_destructible<dm_sim>::value && std::is_trivially
 
 namespace dexmill {
 namespace api {
+
+// Before a render: a colour mode's legend as the simulation is now (the
+// tool legend names the tools that have cut; view_colour.cpp).
+void view_colour_update(dm_view* v);
 
 // A handle the calls may use.
 inline bool live(const dm_sim* s) { return s && s->tag == kSimTag; }

@@ -303,6 +303,10 @@ dm_status dm_job_init(dm_job* job, uint32_t api_version) {
   return DM_OK;
 }
 
+const char* dm_material_preset_name(int32_t index) {
+  return index >= 0 && index < material_preset_count() ? material_preset_name(index) : nullptr;
+}
+
 dm_status dm_required_bytes(const dm_job* job, size_t* bytes) {
   if (!job || !bytes) return DM_E_ARGUMENT;
   *bytes = 0;

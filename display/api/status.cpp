@@ -31,6 +31,7 @@ const char* dm_status_message(dm_status s) {
     case DM_E_INDEX: return "past the end of the list";
     case DM_E_IO: return "the file could not be written";
     case DM_E_TOOL_TABLE: return "a line of the tool table does not read";
+    case DM_E_COLOUR: return "the job cannot draw this colour mode (tool: no provenance; material: none; error: no design)";
     default: return "unknown status";
   }
 }
@@ -72,6 +73,7 @@ size_t dm_struct_bytes(int32_t which) {
     case DM_STRUCT_FRAME: return sizeof(dm_frame);
     case DM_STRUCT_CAMERA: return sizeof(dm_camera);
     case DM_STRUCT_RECT: return sizeof(dm_rect);
+    case DM_STRUCT_COLOUR: return sizeof(dm_colour);
     default: return 0;
   }
 }

@@ -136,6 +136,7 @@ dm_status dm_render(dm_view* view, dm_rect* rects, int32_t max_rects, int32_t* n
   Simulation& s = *view->sim->sim;
   // The cut so far, the deferred end cap shown (after the end it is cut).
   if (!finished(s)) s.sync();
+  view_colour_update(view);
   const RenderResult res = stock_view_draw(&view->v, &s.grid(), CutterPose{true, s.mill().position()});
   int32_t n = 0;
   for (int k = 0; k < res.nrects && max_rects > 0; ++k) {

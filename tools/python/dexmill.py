@@ -125,9 +125,17 @@ class _Rect(ctypes.Structure):
     _fields_ = [("x0", ctypes.c_int32), ("y0", ctypes.c_int32), ("x1", ctypes.c_int32), ("y1", ctypes.c_int32)]
 
 
+class _Colour(ctypes.Structure):
+    _fields_ = [("mode", ctypes.c_int32), ("reserved", ctypes.c_int32), ("thin_nm", ctypes.c_int64)]
+
+
+# dexmill.h DM_COLOUR_*, by the CLI's --color names.
+COLOURS = {"plain": 0, "slope": 1, "tool": 2, "material": 3, "thin": 4, "error": 5}
+
 # dexmill.h DM_STRUCT_*: each layout above against the library's.
 _LAYOUTS = [(1, _Job), (2, _Tool), (3, _Box), (4, _Triangle), (5, _Budget), (6, _Progress), (7, _GridInfo),
-            (8, _Column), (9, _Finding), (10, _InputError), (11, _Frame), (12, _Camera), (13, _Rect)]
+            (8, _Column), (9, _Finding), (10, _InputError), (11, _Frame), (12, _Camera), (13, _Rect),
+            (16, _Colour)]
 
 
 def _find_library():
@@ -190,6 +198,9 @@ def _load():
         "dm_view_show_path": (st, [view, ctypes.c_int32]),
         "dm_view_path_info": (st, [view, P(ctypes.c_uint32), P(ctypes.c_uint32), P(ctypes.c_uint64)]),
         "dm_view_set_mark": (st, [view, P(ctypes.c_int64)]),
+        "dm_view_colour_bytes": (st, [view, P(_Colour), P(ctypes.c_size_t)]),
+        "dm_view_set_colour": (st, [view, P(_Colour), ctypes.c_void_p, ctypes.c_size_t]),
+        "dm_material_preset_name": (ctypes.c_char_p, [ctypes.c_int32]),
         "dm_mm_to_nm": (st, [ctypes.c_char_p, ctypes.c_size_t, P(ctypes.c_int64)]),
     }
     for name, (res, args) in sigs.items():
@@ -494,6 +505,15 @@ class View:
         """A marker at (x, y, z) mm (a finding's at_mm); None: none."""
         at = (ctypes.c_int64 * 3)(*(nm(v) for v in at_mm)) if at_mm is not None else None
         _check(_lib.dm_view_set_mark(self._view, at))
+
+    def set_colour(self, mode="plain", thin_mm=0):
+        """A colour mode by the CLI's --color name, its legend drawn (tool needs provenance, material
+        a material, error a design); thin_mm the --thin limit (0: 1 mm)."""
+        c = _Colour(COLOURS[mode], 0, nm(thin_mm))
+        n = ctypes.c_size_t()
+        _check(_lib.dm_view_colour_bytes(self._view, ctypes.byref(c), ctypes.byref(n)))
+        self._colour_mem = _block(n.value) if n.value else None
+        _check(_lib.dm_view_set_colour(self._view, ctypes.byref(c), self._colour_mem, n.value))
 
     @property
     def pixels(self):

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/assess/assess.h"
+#include "display/view/colour_legend.h"
 #include "platform/format/pgm.h"
 #include "platform/format/stl_read.h"
 #include "platform/report/report_json.h"
@@ -192,12 +193,6 @@ void assess_design(const GougeWatch& w, const DexelGrid<height_t>& g, RunDesign*
   }
 }
 
-namespace {
-
-std::string signed_mm(int64_t nm) { return (nm > 0 ? "+" : "") + nm_to_mm_text(nm, 2); }
-
-}  // namespace
-
 bool overlay_image(const RunOptions& o, const GridPlan& plan, const RunDesign& d, RenderOutput* cut_view,
                    OverlayImage* ov, const FrameView** shown, std::string* err) {
   const size_t cells = static_cast<size_t>(plan.geo.nx) * static_cast<size_t>(plan.geo.ny);
@@ -235,18 +230,7 @@ void error_view_init(const DexelGrid<height_t>& g, RunDesign* d) {
   d->bands.assign(static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny), kBandNone);
   d->luts.assign(static_cast<size_t>(kErrorBands) * kShadeLevels, 0);
   error_colours_init(&d->colours, g, d->grid, d->opt, d->bands.data(), d->luts.data());
-  // Gouges on the left, dark to light, white, then material left; the
-  // limits are the general tolerance's (boxes have their own).
-  const uint8_t order[7] = {kBandGouge3, kBandGouge2, kBandGouge1, kBandWithin, kBandLeft1, kBandLeft2, kBandLeft3};
-  RenderOutput::Legend& l = d->legend;
-  l.n = 7;
-  for (int k = 0; k < 7; ++k) l.colour[k] = kErrorBandColour[order[k]];
-  const int64_t t = d->opt.tol_nm;
-  const int64_t limits[6] = {-kBandStep3 * t, -kBandStep2 * t, -t, t, kBandStep2 * t, kBandStep3 * t};
-  for (int k = 0; k < 6; ++k) l.labels[k] = signed_mm(limits[k]);
-  l.title = "MM";
-  l.low_caption = "gouge (cut below the design)";
-  l.high_caption = "material left";
+  colour_legend_error(&d->legend, d->opt.tol_nm);
 }
 
 }  // namespace cli

@@ -30,7 +30,7 @@ struct RunDesign {
   std::vector<uint8_t> bands;
   std::vector<uint32_t> luts;
   ErrorColours<height_t> colours;
-  RenderOutput::Legend legend;
+  ViewLegend legend;
   std::string file;           // the program, for the warnings
   size_t printed = 0;         // events whose warning is out
   std::vector<PointNm> marks; // where the kept gouges are (deepest column, on the design's surface), for the frames

@@ -1,59 +1,28 @@
 // The colour modes tool, slope, thin and engagement of `dexmill run`; see run_colours.h.
 #include "tools/run/run_colours.h"
 
-#include <algorithm>
-
-#include "core/tool/spec.h"
-#include "platform/report/report_json.h"
+#include "display/view/colour_legend.h"
 
 namespace dexmill {
 namespace cli {
 namespace {
 
-// mm with at most three decimals and no trailing zeros ("0.5", "1").
-std::string short_mm(int64_t nm) {
-  std::string s = nm_to_mm_text(nm, 3);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (s.back() == '.') s.pop_back();
-  return s;
+// A tool number's tool for the legend (the run's library).
+bool library_tool(const void* ctx, int32_t number, Tool* out) {
+  return static_cast<const ToolLibrary*>(ctx)->tool(number, out);
 }
 
-// The tool legend: uncut, then a swatch for each colour in use, named by
-// its tools ("T1 FLAT 6"; with more tools than colours, "T1/T8").
+// The tool legend over the provenance's tools as they are now.
 void tool_legend(RunColours* c) {
-  RenderOutput::Legend& l = c->legend;
-  const ToolProvenance<height_t>& t = *c->prov;
-  c->legend_tools = t.ntools;
-  l.named = true;
-  l.n = 1 + min_of(t.ntools, kToolColourSlots);
-  l.colour[0] = kToolUncutColour;
-  l.labels[0] = "uncut";
-  for (int32_t slot = 0; slot + 1 < l.n; ++slot) {
-    std::string& name = l.labels[slot + 1];
-    name.clear();
-    l.colour[slot + 1] = kToolPalette[slot];
-    for (int32_t k = slot; k < t.ntools; k += kToolColourSlots)
-      name += (name.empty() ? "" : "/") + (t.tool[k] == kInitialToolNumber ? std::string("default") : "T" + std::to_string(t.tool[k]));
-    if (slot + kToolColourSlots < t.ntools) continue;  // shared: the numbers alone
-    Tool tool = c->initial;
-    if (t.tool[slot] == kInitialToolNumber) name = tool_short_name(tool);  // no T number: its shape alone
-    else if (c->lib->tool(t.tool[slot], &tool)) name += " " + tool_short_name(tool);
-  }
+  ToolLegendNames names;
+  names.tool = library_tool;
+  names.ctx = c->lib;
+  names.initial = c->initial;
+  c->legend_tools = c->prov->ntools;
+  colour_legend_tool(&c->legend, c->prov->tool, c->prov->ntools, names);
 }
 
 }  // namespace
-
-std::string tool_short_name(const Tool& t) {
-  char spec[kToolSpecTextMax];
-  tool_spec_format(t, spec, sizeof spec);
-  std::string s(spec);
-  s.erase(std::min(s.find(','), s.size()));
-  const size_t second = s.find(':', s.find(':') + 1);
-  if (second != std::string::npos) s.erase(second);  // bull's corner, a V-bit's angle
-  for (char& ch : s)
-    if (ch == ':') ch = ' ';
-  return s;
-}
 
 const SurfaceColours* RunColours::colours() const {
   switch (mode) {
@@ -72,7 +41,6 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
   const size_t cells = static_cast<size_t>(g.nx) * static_cast<size_t>(g.ny);
   c->cls.assign(cells, 0);
   c->luts.assign(static_cast<size_t>(kMaxColourClasses) * kShadeLevels, 0);
-  RenderOutput::Legend& l = c->legend;
   switch (c->mode) {
     case ViewOptions::Color::kTool:
       c->lib = lib;
@@ -83,28 +51,15 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
       break;
     case ViewOptions::Color::kSlope:
       slope_colours_init(&c->slope, g, c->cls.data(), c->luts.data());
-      l.n = kSlopeBands;
-      for (int32_t k = 0; k < kSlopeBands; ++k) l.colour[k] = kSlopeBandColour[k];
-      for (int32_t k = 0; k + 1 < kSlopeBands; ++k) l.labels[k] = std::to_string(kSlopeLimitDeg[k]);
-      l.title = "DEG";
+      colour_legend_slope(&c->legend);
       break;
     case ViewOptions::Color::kEngagement:
       engage_colours_init(&c->engagement, engage_cls, c->luts.data());
-      l.n = kEngageBands;
-      for (int32_t k = 0; k < kEngageBands; ++k) l.colour[k] = kEngageBandColour[k];
-      for (int32_t k = 0; k + 1 < kEngageBands; ++k)
-        l.labels[k] = std::to_string(by_limits ? kEngageBandLimitPct[k] : kEngageBandAngleDeg[k]);
-      l.title = by_limits ? "% OF LOAD LIMIT" : "DEG ENGAGED";
+      colour_legend_engagement(&c->legend, by_limits);
       break;
     default:  // thin: thinnest on the left
       thin_colours_init(&c->thin, g, o.view.thin_nm, c->cls.data(), c->luts.data());
-      l.n = kThinBands;
-      l.colour[0] = kThinBandColour[kThinUnderHalf];
-      l.colour[1] = kThinBandColour[kThinUnder];
-      l.colour[2] = kThinBandColour[kThinNot];
-      l.labels[0] = short_mm(o.view.thin_nm / 2);
-      l.labels[1] = short_mm(o.view.thin_nm);
-      l.title = "MM THICK";
+      colour_legend_thin(&c->legend, o.view.thin_nm);
       break;
   }
 }

@@ -6,7 +6,6 @@
 #define DEXMILL_TOOLS_RUN_RUN_COLOURS_H
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/config.h"
@@ -18,6 +17,7 @@
 #include "display/colour/slope_colours.h"
 #include "display/colour/thin_colours.h"
 #include "display/colour/tool_colours.h"
+#include "display/view/colour_legend.h"
 #include "tools/run/run_options.h"
 #include "tools/run/run_render.h"
 
@@ -26,7 +26,7 @@ namespace cli {
 
 // The tool in the spindle before any M6 (the --tool default): listed by its
 // shape alone.
-constexpr int32_t kInitialToolNumber = -1;
+constexpr int32_t kInitialToolNumber = kLegendInitialTool;
 
 struct RunColours {
   ViewOptions::Color mode = ViewOptions::Color::kPlain;
@@ -38,7 +38,7 @@ struct RunColours {
   SurfaceColours engagement;
   SlopeColours<height_t> slope;
   ThinColours<height_t> thin;
-  RenderOutput::Legend legend;
+  ViewLegend legend;             // display/view/colour_legend.h
   const ToolLibrary* lib = nullptr;  // tool: names the tools in the legend
   Tool initial;                      // tool: the one before any M6
 
@@ -57,9 +57,6 @@ void run_colours_start(RunColours* c, const RunOptions& o, const DexelGrid<heigh
 // The tool mode after every record: the legend names a tool the record
 // listed for the first time.
 void run_colours_record(RunColours* c);
-
-// "flat 6" for flat:6,len=20...: the kind and diameter of a tool's spec.
-std::string tool_short_name(const Tool& t);
 
 }  // namespace cli
 }  // namespace dexmill

@@ -53,18 +53,6 @@ void RenderOutput::set_colours(const SurfaceColours* c) { stock_view_set_colours
 
 void RenderOutput::set_tool(const Tool& t) { stock_view_set_tool(v_.get(), t); }
 
-namespace {
-
-// Copies text into a label of the view's legend (every legend dexmill
-// writes fits: display/view/stock_view.h kViewLabelBytes).
-void copy_label(const std::string& from, char (&to)[kViewLabelBytes]) {
-  const size_t n = std::min(from.size(), kViewLabelBytes - 1);
-  std::memcpy(to, from.data(), n);
-  to[n] = 0;
-}
-
-}  // namespace
-
 RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) {
   // The lists as they are now: the view reads them by pointer.
   if (path_) stock_view_path_progress(v_.get(), path_->data(), static_cast<uint32_t>(path_->size()), *path_done_);
@@ -72,20 +60,7 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
   for (const Marks& m : marks_)
     view_marks_.push_back(ViewMarks{m.points->data(), static_cast<uint32_t>(m.points->size()), m.colour});
   stock_view_set_marks(v_.get(), view_marks_.data(), static_cast<int32_t>(view_marks_.size()));
-  if (legend_) {
-    if (!view_legend_) view_legend_.reset(new ViewLegend());
-    ViewLegend& l = *view_legend_;
-    l.n = legend_->n;
-    l.named = legend_->named;
-    for (int32_t k = 0; k < kLegendMaxSwatches; ++k) {
-      l.colour[k] = legend_->colour[k];
-      copy_label(legend_->labels[k], l.labels[k]);
-    }
-    copy_label(legend_->title, l.title);
-    copy_label(legend_->low_caption, l.low_caption);
-    copy_label(legend_->high_caption, l.high_caption);
-  }
-  stock_view_set_legend(v_.get(), legend_ ? view_legend_.get() : nullptr);
+  stock_view_set_legend(v_.get(), legend_);
   return stock_view_draw(v_.get(), g, pose);
 }
 

@@ -47,17 +47,9 @@ class RenderOutput {
   void set_tool(const Tool& t);
   // A colour mode (null: the workpiece colour), kept across resizes.
   void set_colours(const SurfaceColours* c);
-  // A legend drawn over every frame (null: none): limits between the
-  // swatches (labels[0, n - 1)) and a title, or a name for each swatch
-  // (named: labels[0, n)).
-  struct Legend {
-    Rgb colour[kLegendMaxSwatches];
-    int32_t n = 0;
-    std::string labels[kLegendMaxSwatches];
-    std::string title;
-    bool named = false;
-    std::string low_caption, high_caption;  // limits only: what the ends mean (display/overlay/legend.h)
-  };
+  // A legend drawn over every frame (null: none; display/view/stock_view.h,
+  // the modes' own display/view/colour_legend.h), kept by the caller.
+  using Legend = ViewLegend;
   void set_legend(const Legend* l) { legend_ = l; }
   // The axis triad and the scale bar over every frame (display/overlay/decorations.h).
   void set_decorations(bool on) { stock_view_set_decorations(v_.get(), on); }
@@ -107,7 +99,6 @@ class RenderOutput {
   bool antialias_ = false;
   std::vector<uint64_t> big_;  // the supersampled frame (antialias_)
   const Legend* legend_ = nullptr;
-  std::unique_ptr<ViewLegend> view_legend_;  // legend_ as the view draws it
   struct Marks {
     const std::vector<PointNm>* points;
     Rgb colour;

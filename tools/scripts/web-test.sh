@@ -31,6 +31,11 @@ web_setup web-test "$web"
 # dexmill run: both choose them from the program (platform/web/page_scan.js).
 # The program `demo` is the page's Demo button against `dexmill run --demo
 # pocket`, in plain colours (the page has no material colour mode yet).
+# In a case's optional eighth column (below), a word that starts with --
+# holds more of the CLI's options ("--color tool", "--color thin --thin
+# 0.5"), given to dexmill run and set in the page's form, each --NAME VALUE
+# into the field of id NAME (page_colour.js's; --design FILE: the file
+# chosen in its file input).
 # A view iso+DX+DY is the iso view dragged by DX, DY pixels after the cut
 # (the page's orbit: synthetic pointer events), against dexmill run's
 # --azimuth and --elevation of iso's turned half a degree a pixel. An
@@ -61,8 +66,20 @@ tests/run/pocket.ngc|-2,-2,-12,36,26,1|ball:2||320x240|iso|plain
 tests/run/tool_change.ngc||flat:6||400x300|iso|cli|tools=tests/run/tools.tbl
 tests/run/tool_change.ngc|-2,-4,-5,24,12,0|flat:6|120x80|320x240|top|plain|tools=tests/run/tools.tbl
 demo||flat:6||320x240|iso|plain
-demo||flat:6||400x300|top|cli'
+demo||flat:6||400x300|top|cli
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color slope
+tests/run/tool_change.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|top|cli|--color tool
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color material --material wood-on-aluminium
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color thin --thin 8
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color error --design tests/run/pocket_floor.stl'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
+# The words of a case's extras that are CLI options (those starting with --), joined.
+extra_more() {
+  local x out=
+  IFS=';' read -ra xs <<< "$1"
+  for x in "${xs[@]}"; do case $x in --*) out="$out $x";; esac; done
+  echo "${out# }"
+}
 # The tools=FILE of a case's extras (empty: none).
 extra_tools() {
   local x
@@ -84,9 +101,11 @@ bad_table=${bad_table#"$tmp/"}
   echo "var DEXMILL_CASES = ["
   while IFS='|' read -r prog stock tool grid size view look extra; do
     tools=$(extra_tools "$extra")
-    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, extra: "%s", tools: "%s", toolsName: "%s"},\n' \
+    more=$(extra_more "$extra")
+    design=$(sed -n 's/.*--design \([^ ]*\).*/\1/p' <<< "$more")
+    printf '{program: "%s", stock: "%s", tool: "%s", grid: "%s", size: "%s", view: "%s", cli: %s, extra: "%s", tools: "%s", toolsName: "%s", more: "%s", design: "%s"},\n' \
       "$([ "$prog" = demo ] && echo demo || base64 -w0 "$prog")" "$stock" "$tool" "$grid" "$size" "$view" "$([ "$look" = cli ] && echo true || echo false)" \
-      "$extra" "$([ -z "$tools" ] || base64 -w0 "$tools")" "$(basename "${tools:-none}")"
+      "$extra" "$([ -z "$tools" ] || base64 -w0 "$tools")" "$(basename "${tools:-none}")" "$more" "$([ -n "$design" ] && base64 -w0 "$design")"
   done <<< "$cases"
   echo "];"
   cat tools/scripts/web_probe.js
@@ -99,6 +118,16 @@ window.dexmillTest = (async function () {
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
     var view = c.view.split("+");
     $("view").value = view[0]; $("antialias").checked = c.cli; $("decorations").checked = c.cli;
+    $("color").value = "plain"; $("thin").value = "1"; $("material").value = "";
+    var more = c.more ? c.more.split(/\s+/) : [];
+    var files = new DataTransfer();  /* --design: the file as a user chooses it */
+    if (c.design) {
+      var d = atob(c.design), db = new Uint8Array(d.length);
+      for (var q = 0; q < d.length; ++q) db[q] = d.charCodeAt(q);
+      files.items.add(new File([db], "design.stl"));
+    }
+    $("design").files = files.files;
+    for (var m = 0; m + 1 < more.length; m += 2) if (more[m] !== "--design") $(more[m].replace(/^--/, "")).value = more[m + 1];
     var extra = c.extra.split(";"), check = extra.filter(function (w) { return /^check=/.test(w); })[0];
     $("path-overlay").checked = extra.indexOf("path") >= 0;
     $("check").value = check ? check.slice(6) : "";
@@ -183,6 +212,7 @@ python3 tools/scripts/web_page.py "$browser" "file://$(realpath "$tmp/test.html"
 n=0
 while IFS='|' read -r prog stock tool grid size view look extra; do
   tools=$(extra_tools "$extra")
+  more=$(extra_more "$extra")
   n=$((n + 1))
   opts=(-q --tool "$tool" --size "$size")
   [ -z "$stock" ] || opts+=(--stock "$stock")
@@ -199,6 +229,8 @@ while IFS='|' read -r prog stock tool grid size view look extra; do
   for x in "${extras[@]}"; do
     case $x in path) opts+=(--path-overlay);; check=*) opts+=(--check "${x#check=}");; esac
   done
+  read -r -a more_opts <<< "$more"
+  opts+=("${more_opts[@]}")
   t0=$(date +%s%N)
   if [ "$prog" = demo ]; then  # its out/ in the scratch folder
     (cd "$tmp" && "$bin" run --demo pocket --color plain "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err") || fail "dexmill run --demo pocket failed"
@@ -206,7 +238,7 @@ while IFS='|' read -r prog stock tool grid size view look extra; do
     "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err" || fail "dexmill run $prog failed"
   fi
   t1=$(date +%s%N)
-  echo "$prog|$size|$view|$look|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
+  echo "$prog|$size|$view|$look${more:+ $more}|$(( (t1 - t0) / 1000000 ))" >> "$tmp/native.txt"
 done <<< "$cases"
 
 python3 tools/scripts/web_compare.py "$tmp" || fail "the page's pixels are not dexmill run's"
