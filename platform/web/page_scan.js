@@ -37,8 +37,9 @@ dexmillPage.extend((function () {
   function configure(o, f) { (o.configure = o.configure || []).push(f); }
 
   /* The built-in demo, as `dexmill run --demo pocket` cuts it (web_demo.cpp):
-   * its program as a file, its stock, an empty grid (the program's) and its
-   * tool table in the form, then the Run path. */
+   * its program as a file, its stock, an empty grid (the program's), its
+   * tool table and its material in the form, coloured by the material as the
+   * CLI colours it when no --color is given, then the Run path. */
   async function demo() {
     var e = await dexmillPage.engine, n = e.x.web_demo_program();
     if (n < 0) e.check(-n, "demo");
@@ -47,6 +48,8 @@ dexmillPage.extend((function () {
     $("grid").value = "";
     dt.items.add(new File([e.cstring(e.x.web_demo_text(1))], "demo.tbl"));
     $("tools-file").files = dt.files;
+    $("material").value = e.cstring(e.x.web_demo_text(2));
+    $("color").value = "material";
     dexmillPage.status("cutting the demo…");
     return dexmillPage.run(dexmill.blobSource(new File([program], "demo.ngc")));
   }

@@ -30,7 +30,7 @@ web_setup web-test "$web"
 # An empty stock or grid is an empty field, and no --stock or --grid for
 # dexmill run: both choose them from the program (platform/web/page_scan.js).
 # The program `demo` is the page's Demo button against `dexmill run --demo
-# pocket`, in plain colours (the page has no material colour mode yet).
+# pocket` (its material, coloured by it).
 # In a case's optional eighth column (below), a word that starts with --
 # holds more of the CLI's options ("--color tool", "--color thin --thin
 # 0.5"), given to dexmill run and set in the page's form, each --NAME VALUE
@@ -233,7 +233,7 @@ while IFS='|' read -r prog stock tool grid size view look extra; do
   opts+=("${more_opts[@]}")
   t0=$(date +%s%N)
   if [ "$prog" = demo ]; then  # its out/ in the scratch folder
-    (cd "$tmp" && "$bin" run --demo pocket --color plain "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err") || fail "dexmill run --demo pocket failed"
+    (cd "$tmp" && "$bin" run --demo pocket "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err") || fail "dexmill run --demo pocket failed"
   else
     "$bin" run "$prog" "${opts[@]}" --image "$tmp/cli$n.ppm" 2> "$tmp/cli$n.err" || fail "dexmill run $prog failed"
   fi
