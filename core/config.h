@@ -21,6 +21,19 @@
 #define DEXMILL_CHECKED_ARITH 0
 #endif
 
+// Whether the CPU multiplies 64 x 64 -> 128 bits in one instruction: the
+// 64-bit CPUs, where the compiler has __int128. WebAssembly has __int128 in
+// clang but no such instruction (i64.mul gives the low half; a 128-bit
+// product is a call to the builtins' __multi3, a division __udivti3), so it
+// takes the 32-bit CPUs' paths for products (mul_shift's test of int32
+// operands first), with the same bits (core/math/fixed.h): KB-850's cut in
+// the page went from about 720 to 620 ms (tools/scripts/web-test.sh).
+#if defined(__SIZEOF_INT128__) && !defined(__wasm__)
+#define DEXMILL_WIDE_MUL 1
+#else
+#define DEXMILL_WIDE_MUL 0
+#endif
+
 namespace dexmill {
 
 constexpr bool kCheckedArith = DEXMILL_CHECKED_ARITH != 0;
@@ -28,7 +41,9 @@ constexpr bool kCheckedArith = DEXMILL_CHECKED_ARITH != 0;
 // The word width of the sweep's column loops (core/cut/sweep_piece.h, the
 // row kernels): 32-bit offsets, squares and slope products where the CPU
 // has no 128-bit integers (mul_shift's test for a 32-bit CPU,
-// core/math/fixed.h), 64-bit ones elsewhere, where those cost the same.
+// core/math/fixed.h), 64-bit ones elsewhere, where those cost the same
+// (WebAssembly among them: its 64-bit words are native, only the 128-bit
+// product is not).
 // Both widths give the same bits; the host tests run both (core/cut/
 // sweep_internal.h, sweep_line_w).
 #ifdef __SIZEOF_INT128__

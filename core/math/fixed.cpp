@@ -33,7 +33,7 @@ U128 shl_u128(U128 a, int s) {
 }
 
 uint64_t isqrt_u128(U128 v) {
-#ifdef __SIZEOF_INT128__
+#if DEXMILL_WIDE_MUL
   // A 64-bit root of the top bits (at least 31 good bits), one Newton step
   // with the compiler's 128-bit division (error below 1 after it), then the
   // exact correction: the same bits as the portable path (tested).
@@ -141,7 +141,7 @@ void divmod_u128(U128 n, uint64_t d, uint64_t* q, uint64_t* rem) {
 // 64 bits; this is the rest: the compiler's 128-bit integers where the
 // target has them, the portable U128 division elsewhere (the same results).
 int64_t muldiv_wide(int64_t a, int64_t b, int64_t c, bool round_nearest) {
-#ifdef __SIZEOF_INT128__
+#if DEXMILL_WIDE_MUL
   {
     const __int128 p = static_cast<__int128>(a) * b;
     __int128 q = p / c, r = p % c;

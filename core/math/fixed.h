@@ -132,7 +132,7 @@ struct U128 {
 // built, tested equal).
 U128 mul_wide_u64_portable(uint64_t a, uint64_t b);
 inline U128 mul_wide_u64(uint64_t a, uint64_t b) {
-#ifdef __SIZEOF_INT128__
+#if DEXMILL_WIDE_MUL
   const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
   return U128{static_cast<uint64_t>(p >> 64), static_cast<uint64_t>(p)};
 #else
@@ -173,7 +173,7 @@ inline int64_t mul_shift_i32(int64_t a, int64_t b, int s) {
 }
 }  // namespace detail
 inline int64_t mul_shift(int64_t a, int64_t b, int s) {
-#ifdef __SIZEOF_INT128__
+#if DEXMILL_WIDE_MUL
   const __int128 p = static_cast<__int128>(a) * b;
   const __int128 q = p >> s;  // arithmetic shift: floor for negative products
   if (q > INT64_MAX) return INT64_MAX;
@@ -191,7 +191,7 @@ inline int64_t mul_shift(int64_t a, int64_t b, int s) {
 // With DEXMILL_CHECKED_ARITH (core/config.h) a result that does not fit
 // is reported (UBSan: an unreachable point reached) instead of wrapping.
 inline int64_t mul_shift_fit(int64_t a, int64_t b, int s) {
-#ifdef __SIZEOF_INT128__
+#if DEXMILL_WIDE_MUL
   const __int128 q = (static_cast<__int128>(a) * b) >> s;
   if (kCheckedArith && q != static_cast<int64_t>(q)) __builtin_unreachable();
   return static_cast<int64_t>(q);
@@ -306,7 +306,7 @@ inline uint32_t isqrt_fast_u64_split(uint64_t x) {
 }  // namespace detail
 
 inline uint32_t isqrt_fast_u64(uint64_t x) {
-#ifndef __SIZEOF_INT128__  // 32-bit CPUs (mul_shift's test)
+#ifndef __SIZEOF_INT128__  // 32-bit CPUs (64-bit words cost two; WebAssembly has them)
   return detail::isqrt_fast_u64_split(x);
 #else
   if (x < 4) return x ? 1u : 0u;

@@ -10,7 +10,11 @@ WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated;
 WEB_PAGE_FILE="SELECTOR=PATH" gives a file input that file (as a user
 choosing it), before the expression runs; WEB_PAGE_MEMORY=FILE writes the
 peak resident memory (VmHWM, kB) of the browser's renderer processes, the
-page's tab among them, once evaluated. tools/scripts/web-test.sh uses it.
+page's tab among them, once evaluated; WEB_PAGE_PROFILE=FILE samples the
+page's functions while the expression runs (the DevTools CPU profiler,
+every 100 us) and writes each function's share of the samples, most first
+(a module built with WEB_LDFLAGS_STRIP= keeps its functions' names).
+tools/scripts/web-test.sh uses it.
 
   web_page.py CHROMIUM URL EXPRESSION [TIMEOUT_S] [--flag...]
 Exit: 0 the value printed; 1 the page threw, timed out or made a request.
@@ -120,6 +124,19 @@ def set_file(p, spec, deadline, s):
     p.call("DOM.setFileInputFiles", {"nodeId": node, "files": [os.path.abspath(path)]}, deadline, s)
 
 
+def write_profile(profile, path):
+    """Self samples by function name, most first, as percentages."""
+    names = {n["id"]: n["callFrame"]["functionName"] or "(anonymous " + n["callFrame"]["url"][-30:] + ")"
+             for n in profile["nodes"]}
+    count = {}
+    for sample in profile.get("samples", []):
+        count[names[sample]] = count.get(names[sample], 0) + 1
+    total = max(1, sum(count.values()))
+    with open(path, "w") as f:
+        for name, n in sorted(count.items(), key=lambda kv: -kv[1]):
+            f.write("%6.2f %% %7d  %s\n" % (100.0 * n / total, n, name))
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     flags = [a for a in sys.argv[1:] if a.startswith("--")]
@@ -140,8 +157,15 @@ def main():
             p.call("Page.navigate", {"url": url}, deadline, s, until="Page.loadEventFired")
             if os.environ.get("WEB_PAGE_FILE"):
                 set_file(p, os.environ["WEB_PAGE_FILE"], deadline, s)
+            prof = os.environ.get("WEB_PAGE_PROFILE")
+            if prof:
+                p.call("Profiler.enable", {}, deadline, s)
+                p.call("Profiler.setSamplingInterval", {"interval": 100}, deadline, s)
+                p.call("Profiler.start", {}, deadline, s)
             r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
                        deadline, s)
+            if prof:
+                write_profile(p.call("Profiler.stop", {}, deadline, s)["profile"], prof)
             if os.environ.get("WEB_PAGE_MEMORY"):
                 with open(os.environ["WEB_PAGE_MEMORY"], "w") as f:
                     f.write(" ".join(str(k) for k in renderer_peaks_kb(p.proc.pid)) + "\n")
