@@ -266,7 +266,7 @@ class VisitedBlocks {
 // changed it since (tile_top: kSafetyTileUnknown), else null memory: read.
 template <class H>
 uint32_t tile_high(const SafetyWatch* w, const DexelGrid<H>& g, int32_t ti, int32_t tj) {
-  uint32_t* known = w->tile_top ? &w->tile_top[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti)]
+  uint32_t* known = w && w->tile_top ? &w->tile_top[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti)]
                                 : nullptr;
   if (known && *known != kSafetyTileUnknown) return *known;
   const int32_t ts = 1 << kSafetyTileBits;
