@@ -9,6 +9,8 @@
 // order) and leave the same tile bounds. A tool whose body clears the stock finds nothing either way (no
 // false alarm), and one whose holder face ends exactly at the stock's top
 // finds nothing while 0.2 mm deeper does (no miss).
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tests/runner.h"
@@ -41,11 +43,14 @@ const char* const kTools[] = {
     "vbit:8:90,len=5,stick=9,holder=16x20",
 };
 
-// Runs `program` with `tool` fast or by the reference; the run's watch.
-bool cut(Run* r, const char* tool, const char* program, bool fast) {
+// Runs `program` with `tool` fast or by the reference (with `framed`, the
+// cut shown after every move, as frames do); true when it ran watched.
+bool cut(Run* r, const char* tool, const char* program, bool fast, bool framed = false) {
   r->stock("0,0,-12,40,40,0").tool(tool).pitch("0.2");
   r->body_fast = fast;
-  return r->check_all().text("body_fast.ngc", program) && r->sim().safety();
+  SimBudget b;
+  if (framed) b.moves = 1;
+  return r->check_all().text("body_fast.ngc", program, b, framed) && r->sim().safety();
 }
 
 // The tiles' bounds the looks left (what ends a stretch of contact): the
@@ -65,8 +70,10 @@ TEST(safety_body_fast_look_matches_the_full_scan) {
   size_t shank = 0, holder = 0;
   for (const char* tool : kTools)
     for (const char* program : kPrograms) {
+      // The fast look framed: the tiles' tops it keeps do not depend on
+      // when the cut is shown.
       Run fast, full;
-      if (!CHECK(cut(&fast, tool, program, true)) || !CHECK(cut(&full, tool, program, false))) continue;
+      if (!CHECK(cut(&fast, tool, program, true, true)) || !CHECK(cut(&full, tool, program, false))) continue;
       if (!CHECK(same_events(*fast.sim().safety(), *full.sim().safety()))) std::printf("  %s\n%s", tool, program);
       CHECK(same_bounds(*fast.sim().safety(), *full.sim().safety()));
       shank += fast.events(SafetyKind::kShank).size();
@@ -99,5 +106,29 @@ TEST(safety_body_fast_look_no_false_alarm_and_no_miss) {
     const std::vector<SafetyEvent> e = b.events(SafetyKind::kHolder);
     CHECK(!e.empty());
     if (!e.empty()) CHECK(e[0].depth_nm > 0 && e[0].depth_nm <= 200000 + b.sim().grid().lsb_nm);
+  }
+}
+
+TEST(safety_body_fast_look_matches_the_full_scan_on_a_relief) {
+  // safety-deep-1k in small (tools/bench/bench_cut.cpp): a zig-zag finish
+  // of a wavy relief with a 40 mm holder 6 mm over the tip, the stock
+  // scraped on most moves, over many blocks of tiles.
+  std::string program = "G21 G90\nG0 X0 Y1 Z5\nM3 S9000\n";
+  char line[96];
+  for (int row = 0; row < 12; ++row) {
+    const double y = 1 + row * 2.5;
+    for (int k = 0; k <= 20; ++k) {
+      const double x = (row % 2 ? 20 - k : k) * 2.0;
+      std::snprintf(line, sizeof line, "G1 X%.3f Y%.3f Z%.3f F600\n", x, y, -4 + 2 * std::sin(x / 6) * std::cos(y / 9));
+      program += line;
+    }
+  }
+  program += "G0 Z5\nM2\n";
+  for (const char* tool : {"ball:3,len=3,stick=6,holder=40x20", "flat:4,len=2,stick=5,holder=10-40x8"}) {
+    Run fast, full;
+    if (!CHECK(cut(&fast, tool, program.c_str(), true)) || !CHECK(cut(&full, tool, program.c_str(), false))) continue;
+    CHECK(same_events(*fast.sim().safety(), *full.sim().safety()));
+    CHECK(same_bounds(*fast.sim().safety(), *full.sim().safety()));
+    CHECK(body_events(fast) > 0);
   }
 }
