@@ -489,7 +489,9 @@ void fixture_contacts(SafetyWatch* w, size_t first, const CanonRecord& r, const 
 
 // The tip's z where the cutter first covers (x, y) along r, or kBodyNever:
 // r's pieces made once (the first column that asks) for every column of
-// the record, or, past kBatchPieces of them, walked again for each.
+// the record, or, past kCoverPieces of them (an arc's chords), walked
+// again for each (a few: a line is one piece up to 67 mm, and the stack
+// small, as Batch's).
 class FirstCover {
  public:
   explicit FirstCover(const CanonRecord& r) : r_(r) {}
@@ -517,15 +519,16 @@ class FirstCover {
     BodyPieces pieces;
     pieces.init(r_);
     BodyPiece p;
-    while (n_ < kBatchPieces && pieces.next(&p)) piece_[n_++] = p;
-    more_ = n_ == kBatchPieces && pieces.next(&p);
+    while (n_ < kCoverPieces && pieces.next(&p)) piece_[n_++] = p;
+    more_ = n_ == kCoverPieces && pieces.next(&p);
     if (more_) n_ = 0;  // walked in full per column, in order
   }
 
+  static constexpr int kCoverPieces = 4;
   const CanonRecord& r_;
   bool made_ = false, more_ = false;
   int n_ = 0;
-  BodyPiece piece_[kBatchPieces];
+  BodyPiece piece_[kCoverPieces];
 };
 
 }  // namespace
