@@ -196,9 +196,22 @@ bool Run::program(const std::string& path, const SimBudget& b, bool sync_each_st
   setup_->print = false;
   if (!CHECK_EQ(cli::run_setup(&o, setup_.get()), int(cli::kExitOk))) return false;
   sim().set_observer(observer);
+  sim().set_body_fast(body_fast);
   GcodeFile in;
   if (!CHECK(in.open(setup_->read_path.c_str()))) return false;
   run_lines(&sim(), &in, b, sync_each_step);
+  return true;
+}
+
+bool same_events(const SafetyWatch& a, const SafetyWatch& b) {
+  if (a.total != b.total || a.nevents != b.nevents || a.rapid_removed_lsb != b.rapid_removed_lsb) return false;
+  for (size_t k = 0; k < a.nevents; ++k) {
+    const SafetyEvent &x = a.events[k], &y = b.events[k];
+    if (x.kind != y.kind || x.line != y.line || x.at.x_nm != y.at.x_nm || x.at.y_nm != y.at.y_nm ||
+        x.at.z_nm != y.at.z_nm || x.removed_lsb != y.removed_lsb || x.depth_nm != y.depth_nm ||
+        x.columns != y.columns || x.last_line != y.last_line)
+      return false;
+  }
   return true;
 }
 

@@ -68,6 +68,9 @@ struct Engine {
 // after every step with `sync_each_step`), then finishes; the final state.
 SimState run_lines(Simulation* sim, dexmill::LineInput* in, const dexmill::SimBudget& b, bool sync_each_step);
 
+// The same safety findings, to the last field, and the same counts.
+bool same_events(const dexmill::SafetyWatch& a, const dexmill::SafetyWatch& b);
+
 class Run {
  public:
   Run();
@@ -95,6 +98,8 @@ class Run {
   dexmill::cli::RunOptions o;
   // The simulation's hooks, when the test watches the records (or null).
   dexmill::SimObserver* observer = nullptr;
+  // Off: the shank and holder's reference look (Simulation::set_body_fast).
+  bool body_fast = true;
 
   // -- the run: the program cut to its end, stepping with `b` (and showing
   // the cut after every step with `sync_each_step`); false when the job

@@ -19,6 +19,7 @@
 
 using namespace dexmill;
 using sim_test::Run;
+using sim_test::same_events;
 
 namespace {
 
@@ -32,18 +33,6 @@ const char kBad[] =
     "G1 Y20 F300\nM3\nG1 X35 Y35 Z-7 F200\nG0 Z5\nM2\n";
 
 uint64_t total(Run& r) { return r.sim().safety() ? r.sim().safety()->total : UINT64_MAX; }
-
-bool same_events(const SafetyWatch& a, const SafetyWatch& b) {
-  if (a.total != b.total || a.nevents != b.nevents || a.rapid_removed_lsb != b.rapid_removed_lsb) return false;
-  for (size_t k = 0; k < a.nevents; ++k) {
-    const SafetyEvent &x = a.events[k], &y = b.events[k];
-    if (x.kind != y.kind || x.line != y.line || x.at.x_nm != y.at.x_nm || x.at.y_nm != y.at.y_nm ||
-        x.at.z_nm != y.at.z_nm || x.removed_lsb != y.removed_lsb || x.depth_nm != y.depth_nm ||
-        x.columns != y.columns || x.last_line != y.last_line)
-      return false;
-  }
-  return true;
-}
 
 // One event of kind k, on `line`, `depth` deep (-1: any); its message
 // holds `text`.

@@ -260,6 +260,12 @@ int64_t ring_lowest_nm(const BodyRing& g, const BodyPiece& p, int64_t x, int64_t
   return best;
 }
 
+int64_t piece_lowest_tip_nm(const BodyPiece& p) {
+  // z_at is monotone in s and ring_lowest_nm takes s in [0, len_nm]: the
+  // lowest is at an end (len_nm rounds the length, so z_at there may pass b).
+  return min_of(min_of(p.a.z_nm, p.b.z_nm), z_at(p, p.len_nm));
+}
+
 int64_t piece_first_cover_z(const BodyPiece& p, int64_t r_nm, int64_t x, int64_t y) {
   const Local c = local_of(p, x, y);
   const int64_t w = half_chord(r_nm, c);

@@ -87,6 +87,12 @@ class BodyPieces {
 constexpr int64_t kBodyNever = INT64_MAX;
 int64_t ring_lowest_nm(const BodyRing& g, const BodyPiece& p, int64_t x_nm, int64_t y_nm);
 
+// A lower bound of every tip z ring_lowest_nm takes along p (the ends, and
+// the rounded end it may reach past b): no ring is lower over p than this
+// plus its h0, so a top at or under that meets the ring nowhere (the body
+// test's skip, core/safety/safety.cpp).
+int64_t piece_lowest_tip_nm(const BodyPiece& p);
+
 // The tip's z where the cutter (radius r) first covers the column along p,
 // or kBodyNever. Material removed there above this + the flute length was
 // met by the shank: later positions meet only what earlier ones left, which

@@ -93,11 +93,14 @@ struct Batch {
   BodyPiece piece[kBatchPieces];
   int64_t x_lo[kBatchPieces], x_hi[kBatchPieces], y_lo[kBatchPieces], y_hi[kBatchPieces];
   int64_t zmin = INT64_MAX;
+  int64_t zlow = INT64_MAX;  // piece_lowest_tip_nm of them all
   int64_t bx0 = INT64_MAX, bx1 = INT64_MIN, by0 = INT64_MAX, by1 = INT64_MIN;  // all, widened by the reach
+  int64_t reach = 0;
 };
 
 bool fill_batch(BodyPieces* pieces, int64_t reach, Batch* b) {
   *b = Batch{};
+  b->reach = reach;
   BodyPiece p;
   while (b->n < kBatchPieces && pieces->next(&p)) {
     const int k = b->n++;
@@ -107,6 +110,7 @@ bool fill_batch(BodyPieces* pieces, int64_t reach, Batch* b) {
     b->y_lo[k] = min_of(p.a.y_nm, p.b.y_nm) - reach;
     b->y_hi[k] = max_of(p.a.y_nm, p.b.y_nm) + reach;
     b->zmin = min_of(b->zmin, min_of(p.a.z_nm, p.b.z_nm));
+    b->zlow = min_of(b->zlow, piece_lowest_tip_nm(p));
     b->bx0 = min_of(b->bx0, b->x_lo[k]);
     b->bx1 = max_of(b->bx1, b->x_hi[k]);
     b->by0 = min_of(b->by0, b->y_lo[k]);
@@ -153,10 +157,134 @@ int64_t body_lowest(const ToolBody& body, const Batch& b, int64_t x, int64_t y, 
   return best;
 }
 
+// Per ring of the body over a batch: the columns in its reach (their axes
+// within r1 of a piece's box) and the tops (LSB) at or under which it
+// meets nothing (the batch's lowest tip plus its h0): a column outside
+// every ring's reach, or under the floor of each whose reach holds it,
+// has no overlap, so the fast look does not work it out.
+struct RingFloors {
+  int n = 0;
+  GridRect rect[kBodyRingsMax];
+  int64_t floor_lsb[kBodyRingsMax];
+};
+
+template <class H>
+void ring_floors(const DexelGrid<H>& g, const ToolBody& body, const Batch& b, RingFloors* out) {
+  out->n = body.nrings;
+  for (int q = 0; q < body.nrings; ++q) {
+    const int64_t cut = b.reach - body.ring[q].r1_nm;  // the batch box is widened by the widest ring
+    out->rect[q] = columns_in(g, b.bx0 + cut, b.bx1 - cut, b.by0 + cut, b.by1 - cut);
+    out->floor_lsb[q] = div_floor(b.zlow + body.ring[q].h0_nm - g.z0_nm, g.lsb_nm);
+  }
+}
+
+// The floor (as RingFloors) over the columns [i0, i1) x [j0, j1): the
+// lowest of the rings whose reach meets them (INT64_MAX: none).
+int64_t floor_over(const RingFloors& f, int32_t i0, int32_t i1, int32_t j0, int32_t j1) {
+  int64_t low = INT64_MAX;
+  for (int q = 0; q < f.n; ++q) {
+    const GridRect& c = f.rect[q];
+    if (c.i0 < i1 && i0 < c.i1 && c.j0 < j1 && j0 < c.j1) low = min_of(low, f.floor_lsb[q]);
+  }
+  return low;
+}
+
+size_t tile_index(const SafetyWatch* w, int32_t ti, int32_t tj) {
+  return static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti);
+}
+size_t block_index(const SafetyWatch* w, int32_t ti, int32_t tj) {
+  return static_cast<size_t>(tj >> kSafetyBlockBits) * static_cast<size_t>(w->blocks_x) +
+         static_cast<size_t>(ti >> kSafetyBlockBits);
+}
+
+// The block of tile (ti, tj) brought up to date with its tiles after a
+// look changed them: the highest bound, and whether any is not its top.
+void block_refresh(SafetyWatch* w, int32_t ti, int32_t tj) {
+  const int32_t t0 = ti >> kSafetyBlockBits << kSafetyBlockBits, u0 = tj >> kSafetyBlockBits << kSafetyBlockBits;
+  uint32_t hi = 0, stale = 0;
+  for (int32_t u = u0; u < min_of(w->tiles_y, u0 + (1 << kSafetyBlockBits)); ++u)
+    for (int32_t t = t0; t < min_of(w->tiles_x, t0 + (1 << kSafetyBlockBits)); ++t) {
+      const size_t k = tile_index(w, t, u);
+      hi = max_of(hi, w->tile_max[k]);
+      stale |= w->tile_top[k] == kSafetyTileUnknown || w->tile_top[k] != w->tile_max[k] ? 1u : 0u;
+    }
+  const size_t b = block_index(w, ti, tj);
+  w->block_max[b] = hi;
+  w->block_stale[b] = stale;
+}
+
+// Calls fn(ti, tj) for the tiles over g's columns `rect`, row by row of
+// tiles, but (blocks) not for a block's tiles in a row when skip(ti, tj)
+// of its first one there says it holds nothing to do.
+template <class Skip, class Fn>
+void each_tile(const GridRect& rect, bool blocks, Skip skip, Fn fn) {
+  const int32_t ti0 = rect.i0 >> kSafetyTileBits, ti1 = (rect.i1 - 1) >> kSafetyTileBits;
+  const int32_t mask = (1 << kSafetyBlockBits) - 1;
+  for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj)
+    for (int32_t ti = ti0; ti <= ti1;) {
+      const int32_t end = blocks ? min_of(ti1, ti | mask) : ti1;
+      if (!blocks || !skip(ti, tj))
+        for (int32_t t = ti; t <= end; ++t) fn(t, tj);
+      ti = end + 1;
+    }
+}
+
+// The blocks a look went into, to bring up to date after it (block_refresh):
+// a few, else all those over the look's columns.
+class VisitedBlocks {
+ public:
+  void add(int32_t ti, int32_t tj) {
+    const int32_t bi = ti >> kSafetyBlockBits, bj = tj >> kSafetyBlockBits;
+    for (int k = 0; k < n_; ++k)
+      if (bi_[k] == bi && bj_[k] == bj) return;
+    if (n_ == kMax) {
+      all_ = true;
+      return;
+    }
+    bi_[n_] = bi;
+    bj_[n_++] = bj;
+  }
+  void refresh(SafetyWatch* w, const GridRect& rect) const {
+    if (!all_) {
+      for (int k = 0; k < n_; ++k) block_refresh(w, bi_[k] << kSafetyBlockBits, bj_[k] << kSafetyBlockBits);
+      return;
+    }
+    const int32_t s = kSafetyTileBits + kSafetyBlockBits;
+    for (int32_t bj = rect.j0 >> s; bj <= (rect.j1 - 1) >> s; ++bj)
+      for (int32_t bi = rect.i0 >> s; bi <= (rect.i1 - 1) >> s; ++bi)
+        block_refresh(w, bi << kSafetyBlockBits, bj << kSafetyBlockBits);
+  }
+
+ private:
+  static constexpr int kMax = 32;
+  int n_ = 0;
+  bool all_ = false;
+  int32_t bi_[kMax], bj_[kMax];
+};
+
+// The highest top of tile (ti, tj) of g, read again only when a record
+// changed it since (tile_top: kSafetyTileUnknown), else null memory: read.
+template <class H>
+uint32_t tile_high(const SafetyWatch* w, const DexelGrid<H>& g, int32_t ti, int32_t tj) {
+  uint32_t* known = w && w->tile_top ? &w->tile_top[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti)]
+                                : nullptr;
+  if (known && *known != kSafetyTileUnknown) return *known;
+  const int32_t ts = 1 << kSafetyTileBits;
+  uint32_t hi = 0;
+  for (int32_t j = tj * ts; j < min_of(g.ny, tj * ts + ts); ++j) {
+    const H* top = g.top + g.index(0, j);
+    for (int32_t i = ti * ts; i < min_of(g.nx, ti * ts + ts); ++i) hi = max_of<uint32_t>(hi, top[i]);
+  }
+  if (known) *known = hi;
+  return hi;
+}
+
 // The body's rings of record r against the material of g (tops after the
 // cut): every column where a ring comes below a top is an overlap, of the
 // shank or the holder (or, for the fixture grid, of kind `as`). Tiles
-// (tile_max, or null) skip what lies wholly under the body.
+// (tile_max, or null) skip what lies wholly under the body; the fast look
+// (w->body_fast) skips as well what lies under each ring where it reaches
+// (RingFloors), which reads the same columns' overlaps in the same order.
 template <class H>
 bool body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t* tile_max, const CanonRecord& r,
                    const SafetyMove& m, bool fixture, bool* added) {
@@ -165,46 +293,78 @@ bool body_contacts(SafetyWatch* w, size_t first, const DexelGrid<H>& g, uint32_t
   // Wholly over the highest top (a sound program's usual case): nothing to
   // do, before any piece is made.
   if (div_floor(lowest_tip(r).z_nm + body.lowest_nm - g.z0_nm, g.lsb_nm) >= g.top_bound_lsb) return false;
+  const auto column = [&](const Batch& b, int32_t i, int32_t j, int64_t top) {
+    const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
+    BodyPart part = BodyPart::kHolder;
+    const int64_t low = body_lowest(body, b, x, y, &part);
+    if (low == kBodyNever) return;
+    const int64_t depth = g.z0_nm + top * g.lsb_nm - low;
+    if (depth <= 0) return;
+    const SafetyKind kind = fixture ? SafetyKind::kFixture : part == BodyPart::kShank ? SafetyKind::kShank : SafetyKind::kHolder;
+    if ((kind == SafetyKind::kShank && !w->check_shank) || (kind == SafetyKind::kHolder && !w->check_holder)) return;
+    found = true;
+    SafetyEvent* e = event_for(w, first, r.line, kind, added);
+    if (e) add_overlap(e, depth, g.lsb_nm, PointNm{x, y, low});
+  };
+  const bool blocks = w->body_fast && tile_max && w->block_max;
   each_batch(g, r, body.reach_nm, [&](const Batch& b, const GridRect& rect) {
     // Tops at or under this (LSB) are under the body everywhere.
     const int64_t floor_lsb = div_floor(b.zmin + body.lowest_nm - g.z0_nm, g.lsb_nm);
     if (floor_lsb >= g.top_bound_lsb) return true;
+    RingFloors rings;
+    if (w->body_fast) ring_floors(g, body, b, &rings);
     const int32_t ts = 1 << kSafetyTileBits;
-    for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj) {
-      for (int32_t ti = rect.i0 >> kSafetyTileBits; ti <= (rect.i1 - 1) >> kSafetyTileBits; ++ti) {
-        const int32_t i0 = max_of(rect.i0, ti * ts), i1 = min_of(rect.i1, ti * ts + ts);
-        const int32_t j0 = max_of(rect.j0, tj * ts), j1 = min_of(rect.j1, tj * ts + ts);
-        if (tile_max) {
-          uint32_t& bound = tile_max[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti)];
-          if (static_cast<int64_t>(bound) <= floor_lsb) continue;
-          uint32_t hi = 0;  // tighten the bound over the whole tile
-          for (int32_t j = tj * ts; j < min_of(g.ny, tj * ts + ts); ++j)
-            for (int32_t i = ti * ts; i < min_of(g.nx, ti * ts + ts); ++i) hi = max_of<uint32_t>(hi, g.top[g.index(i, j)]);
-          bound = hi;
-          if (static_cast<int64_t>(hi) <= floor_lsb) continue;
-        }
-        for (int32_t j = j0; j < j1; ++j) {
+    VisitedBlocks visited;
+    // A block is passed over when every tile bound in it is under the body,
+    // or when no tile in it has to be tightened (each bound is its top) and
+    // its highest is under every ring reaching its columns.
+    const auto skip = [&](int32_t ti, int32_t tj) {
+      const size_t k = block_index(w, ti, tj);
+      if (static_cast<int64_t>(w->block_max[k]) <= floor_lsb) return true;
+      if (!w->block_stale[k]) {
+        const int32_t bs = ts << kSafetyBlockBits, bi = (ti >> kSafetyBlockBits) * bs, bj = (tj >> kSafetyBlockBits) * bs;
+        const int64_t under = max_of(floor_lsb, floor_over(rings, max_of(rect.i0, bi), min_of(rect.i1, bi + bs),
+                                                           max_of(rect.j0, bj), min_of(rect.j1, bj + bs)));
+        if (static_cast<int64_t>(w->block_max[k]) <= under) return true;
+      }
+      visited.add(ti, tj);
+      return false;
+    };
+    each_tile(rect, blocks, skip, [&](int32_t ti, int32_t tj) {
+      const int32_t i0 = max_of(rect.i0, ti * ts), i1 = min_of(rect.i1, ti * ts + ts);
+      const int32_t j0 = max_of(rect.j0, tj * ts), j1 = min_of(rect.j1, tj * ts + ts);
+      int64_t hi = INT64_MAX;
+      if (tile_max) {
+        uint32_t& bound = tile_max[tile_index(w, ti, tj)];
+        if (static_cast<int64_t>(bound) <= floor_lsb) return;
+        // Tighten the bound over the whole tile (the reference reads it).
+        bound = w->body_fast ? tile_high(w, g, ti, tj) : tile_high<H>(nullptr, g, ti, tj);
+        hi = bound;
+        if (hi <= floor_lsb) return;
+      }
+      if (!w->body_fast) {
+        for (int32_t j = j0; j < j1; ++j)
           for (int32_t i = i0; i < i1; ++i) {
             const size_t at = g.index(i, j);
             const int64_t top = g.top[at];
             if (top <= floor_lsb || (top == 0 && g.bottom[at] == 0)) continue;
-            const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm;
-            BodyPart part = BodyPart::kHolder;
-            const int64_t low = body_lowest(body, b, x, y, &part);
-            if (low == kBodyNever) continue;
-            const int64_t depth = g.z0_nm + top * g.lsb_nm - low;
-            if (depth <= 0) continue;
-            const SafetyKind kind = fixture ? SafetyKind::kFixture
-                                            : part == BodyPart::kShank ? SafetyKind::kShank : SafetyKind::kHolder;
-            if ((kind == SafetyKind::kShank && !w->check_shank) || (kind == SafetyKind::kHolder && !w->check_holder))
-              continue;
-            found = true;
-            SafetyEvent* e = event_for(w, first, r.line, kind, added);
-            if (e) add_overlap(e, depth, g.lsb_nm, PointNm{x, y, low});
+            column(b, i, j, top);
           }
+        return;
+      }
+      if (hi <= floor_over(rings, i0, i1, j0, j1)) return;
+      for (int32_t j = j0; j < j1; ++j) {
+        const H* tops = g.top + g.index(0, j);
+        const H* bottoms = g.bottom + g.index(0, j);
+        for (int32_t i = i0; i < i1; ++i) {
+          const int64_t top = tops[i];
+          if (top <= floor_lsb || (top == 0 && bottoms[i] == 0)) continue;
+          if (top <= floor_over(rings, i, i + 1, j, j + 1)) continue;
+          column(b, i, j, top);
         }
       }
-    }
+    });
+    if (blocks) visited.refresh(w, rect);
     return true;
   });
   return found;
@@ -218,12 +378,14 @@ bool body_clear(const SafetyWatch* w, const DexelGrid<H>& g, const CanonRecord& 
   if (floor_lsb >= g.top_bound_lsb) return true;
   if (!w->tile_max) return false;
   bool clear = true;
+  const bool blocks = w->body_fast && w->block_max;
   each_batch(g, r, body.reach_nm, [&](const Batch&, const GridRect& rect) {
-    for (int32_t tj = rect.j0 >> kSafetyTileBits; tj <= (rect.j1 - 1) >> kSafetyTileBits; ++tj)
-      for (int32_t ti = rect.i0 >> kSafetyTileBits; ti <= (rect.i1 - 1) >> kSafetyTileBits; ++ti)
-        if (static_cast<int64_t>(w->tile_max[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) +
-                                             static_cast<size_t>(ti)]) > floor_lsb)
-          clear = false;
+    each_tile(
+        rect, blocks,
+        [&](int32_t ti, int32_t tj) { return !clear || static_cast<int64_t>(w->block_max[block_index(w, ti, tj)]) <= floor_lsb; },
+        [&](int32_t ti, int32_t tj) {
+          if (static_cast<int64_t>(w->tile_max[tile_index(w, ti, tj)]) > floor_lsb) clear = false;
+        });
     return clear;
   });
   return clear;
@@ -325,18 +487,49 @@ void fixture_contacts(SafetyWatch* w, size_t first, const CanonRecord& r, const 
   if (m.body->nrings > 0) (void)body_contacts(w, first, f, nullptr, r, m, true, added);
 }
 
-// The tip's z where the cutter first covers (x, y) along r, or kBodyNever.
-int64_t first_cover_z(const CanonRecord& r, int64_t radius, int64_t x, int64_t y) {
-  if (r.kind != CanonKind::kArc && r.start.z_nm == r.end.z_nm) return r.start.z_nm;
-  BodyPieces pieces;
-  pieces.init(r);
-  BodyPiece p;
-  while (pieces.next(&p)) {
-    const int64_t z = piece_first_cover_z(p, radius, x, y);
-    if (z != kBodyNever) return z;
+// The tip's z where the cutter first covers (x, y) along r, or kBodyNever:
+// r's pieces made once (the first column that asks) for every column of
+// the record, or, past kCoverPieces of them (an arc's chords), walked
+// again for each (a few: a line is one piece up to 67 mm, and the stack
+// small, as Batch's).
+class FirstCover {
+ public:
+  explicit FirstCover(const CanonRecord& r) : r_(r) {}
+  int64_t z(int64_t radius, int64_t x, int64_t y) {
+    if (r_.kind != CanonKind::kArc && r_.start.z_nm == r_.end.z_nm) return r_.start.z_nm;
+    if (!made_) make();
+    for (int k = 0; k < n_; ++k) {
+      const int64_t z = piece_first_cover_z(piece_[k], radius, x, y);
+      if (z != kBodyNever) return z;
+    }
+    if (!more_) return kBodyNever;
+    BodyPieces pieces;
+    pieces.init(r_);
+    BodyPiece p;
+    while (pieces.next(&p)) {
+      const int64_t z = piece_first_cover_z(p, radius, x, y);
+      if (z != kBodyNever) return z;
+    }
+    return kBodyNever;
   }
-  return kBodyNever;
-}
+
+ private:
+  void make() {
+    made_ = true;
+    BodyPieces pieces;
+    pieces.init(r_);
+    BodyPiece p;
+    while (n_ < kCoverPieces && pieces.next(&p)) piece_[n_++] = p;
+    more_ = n_ == kCoverPieces && pieces.next(&p);
+    if (more_) n_ = 0;  // walked in full per column, in order
+  }
+
+  static constexpr int kCoverPieces = 4;
+  const CanonRecord& r_;
+  bool made_ = false, more_ = false;
+  int n_ = 0;
+  BodyPiece piece_[kCoverPieces];
+};
 
 }  // namespace
 
@@ -400,8 +593,23 @@ Status safety_watch_init(SafetyWatch* w, const DexelGrid<H>& g, uint32_t* shadow
   w->tile_max = tiles && tile_words >= safety_tile_words(g) ? tiles : nullptr;
   w->tiles_x = (g.nx >> kSafetyTileBits) + 1;
   w->tiles_y = (g.ny >> kSafetyTileBits) + 1;
-  if (w->tile_max)  // every tile bounded by the highest top
-    for (size_t k = 0; k < safety_tile_words(g); ++k) w->tile_max[k] = static_cast<uint32_t>(g.top_bound_lsb);
+  w->blocks_x = (w->tiles_x >> kSafetyBlockBits) + 1;
+  w->blocks_y = (w->tiles_y >> kSafetyBlockBits) + 1;
+  const size_t ntiles = static_cast<size_t>(w->tiles_x) * static_cast<size_t>(w->tiles_y);
+  const size_t nblocks = static_cast<size_t>(w->blocks_x) * static_cast<size_t>(w->blocks_y);
+  w->tile_top = w->tile_max ? w->tile_max + ntiles : nullptr;
+  w->block_max = w->tile_max ? w->tile_top + ntiles : nullptr;
+  w->block_stale = w->tile_max ? w->block_max + nblocks : nullptr;
+  if (w->tile_max) {  // every tile bounded by the highest top, none read yet
+    for (size_t k = 0; k < ntiles; ++k) {
+      w->tile_max[k] = static_cast<uint32_t>(g.top_bound_lsb);
+      w->tile_top[k] = kSafetyTileUnknown;
+    }
+    for (size_t k = 0; k < nblocks; ++k) {
+      w->block_max[k] = static_cast<uint32_t>(g.top_bound_lsb);
+      w->block_stale[k] = 1;
+    }
+  }
   w->nevents = 0;
   w->total = 0;
   w->rapid_removed_lsb = 0;
@@ -419,6 +627,15 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
   const size_t first = w->nevents;
   const uint64_t total_before = w->total;
   bool added = false;
+  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
+  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
+  if (w->tile_top && i0 < i1 && j0 < j1)  // the tiles the record cut: their highest tops to read again
+    for (int32_t tj = j0 >> kSafetyTileBits; tj <= (j1 - 1) >> kSafetyTileBits; ++tj)
+      for (int32_t ti = i0 >> kSafetyTileBits; ti <= (i1 - 1) >> kSafetyTileBits; ++ti)
+      {
+        w->tile_top[static_cast<size_t>(tj) * static_cast<size_t>(w->tiles_x) + static_cast<size_t>(ti)] = kSafetyTileUnknown;
+        w->block_stale[block_index(w, ti, tj)] = 1;
+      }
   const bool move = r.kind == CanonKind::kTraverse || r.kind == CanonKind::kFeed || r.kind == CanonKind::kArc;
   if (move && m.spindle_on && w->spindle_stretch_open && !w->spindle_on_line) w->spindle_on_line = r.line;
   if (move && w->check_below) check_below(w, first, r, SafetyKind::kBelowStock, w->bottom_nm, &added);
@@ -430,8 +647,6 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
     if (w->fixtures) fixture_contacts(w, first, r, m, &added);
     if ((w->check_holder || w->check_shank) && m.body->nrings > 0) body_stretch(w, first, g, r, m, &added);
   }
-  const int32_t i0 = max_of(changed.i0, int32_t{0}), i1 = min_of(changed.i1, g.nx);
-  const int32_t j0 = max_of(changed.j0, int32_t{0}), j1 = min_of(changed.j1, g.ny);
   // The shank: tops before the record at or under this (LSB) were removed
   // by flutes wherever the tool stood.
   const auto flute_of = [](const SafetyMove& x) { return x.body ? x.body->flute_nm : 0; };
@@ -468,6 +683,7 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
     }
     return added;
   }
+  FirstCover cover(r);
   each_removal(w->shadow, g, changed, [&](int32_t i, int32_t j, uint32_t was, uint32_t now) {
     const uint64_t removed = was - now;
     const int64_t x = g.x0_nm + i * g.pitch_nm, y = g.y0_nm + j * g.pitch_nm, z = g.z0_nm + now * g.lsb_nm;
@@ -479,7 +695,7 @@ bool safety_watch_record(SafetyWatch* w, const DexelGrid<H>& g, GridRect changed
     // deferred end cap's (before) the shank disc found at its own record
     // as material left (body_contacts): not twice.
     if (!before && static_cast<int64_t>(was) > shank_floor_lsb && flute_of(by) > 0) {
-      const int64_t zf = first_cover_z(r, by.body->cutter_r_nm, x, y);
+      const int64_t zf = cover.z(by.body->cutter_r_nm, x, y);
       if (zf != kBodyNever) {
         const int64_t limit = zf + by.body->flute_nm, was_nm = z + static_cast<int64_t>(removed) * g.lsb_nm;
         const int64_t depth = was_nm - max_of(limit, z);

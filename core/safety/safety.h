@@ -52,6 +52,10 @@ constexpr int64_t kPlungeDepthNm = 100000;
 // Tiles of the material's highest tops that let the holder check skip what
 // lies under it (a tile's bound stays true: cuts only lower tops).
 constexpr int kSafetyTileBits = 4;
+// A tile's highest top not known since a record changed it (tile_top).
+constexpr uint32_t kSafetyTileUnknown = UINT32_MAX;
+// Blocks of 4 x 4 tiles over them, which a look skips with one comparison.
+constexpr int kSafetyBlockBits = 2;
 constexpr size_t kSafetyEventsMax = 64;
 
 // The report's name of a kind: "rapid", "spindle_stopped", "below_stock",
@@ -105,8 +109,26 @@ struct SafetyWatch {
   bool check_shank = false, check_holder = false, check_plunge = false;
   int64_t bottom_nm = 0, table_nm = 0;
   uint32_t* shadow = nullptr;  // caller memory, nx * ny: the tops before the record
-  uint32_t* tile_max = nullptr;  // caller memory, safety_tile_words: a bound on each tile's tops
-  int32_t tiles_x = 0, tiles_y = 0;
+  // Caller memory, safety_tile_words: per tile a bound on its tops (what a
+  // shank and holder look leaves: its stretch ends where every bound in
+  // reach is under the body), then per tile its highest top as it is now
+  // (kSafetyTileUnknown: a record changed the tile since it was read), so
+  // that a look tightens a bound without reading the tile again.
+  // Then per block the highest of its tiles' bounds, and whether a tile's
+  // bound is not its highest top as now (1) or all are (0): a block of 0
+  // needs no tightening, so a look skips it when its bound is under the body.
+  uint32_t* tile_max = nullptr;
+  uint32_t* tile_top = nullptr;
+  uint32_t* block_max = nullptr;
+  uint32_t* block_stale = nullptr;
+  int32_t tiles_x = 0, tiles_y = 0, blocks_x = 0, blocks_y = 0;
+  // On: a shank and holder look reads a column only where its top is over
+  // the lowest point of a ring whose reach holds it, and a tile only where
+  // its highest top is (safety.cpp, body_contacts); off: every column over
+  // the whole body's lowest point, the reference the fast look gives the
+  // same findings as (tests/test_safety_body_fast.cpp). The caller's, as the
+  // check_* fields.
+  bool body_fast = true;
   // Fixtures (null: none): a grid of their own, on the stock grid's lattice
   // and LSB, and the boxes it is made from (to put back what a check cuts).
   DexelGrid<uint32_t>* fixtures = nullptr;
@@ -140,10 +162,14 @@ struct SafetyWatch {
 template <class H>
 Status safety_watch_init(SafetyWatch* w, const DexelGrid<H>& g, uint32_t* shadow, size_t shadow_words,
                          uint32_t* tiles = nullptr, size_t tile_words = 0);
+// Two words a tile of 16 x 16 dexels (the bound and the highest top) and
+// two a block of 64 x 64: 0.033 bytes a dexel, taken only when a check is
+// on (core/sim/simulation_impl.h).
 template <class H>
 size_t safety_tile_words(const DexelGrid<H>& g) {
   const size_t tx = (static_cast<size_t>(g.nx) >> kSafetyTileBits) + 1, ty = (static_cast<size_t>(g.ny) >> kSafetyTileBits) + 1;
-  return tx * ty;
+  const size_t bx = (tx >> kSafetyBlockBits) + 1, by = (ty >> kSafetyBlockBits) + 1;
+  return 2 * tx * ty + 2 * bx * by;
 }
 
 // Fixtures: the grid (caller memory of its nx * ny, tops and bottoms) that

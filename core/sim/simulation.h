@@ -163,6 +163,10 @@ class SimulationT final : public CanonSink, public ProbeSensor {
   // Off: every vertical move is cut by itself (the reference
   // tests/test_peck_fold.cpp compares the fold with). Before start().
   void set_fold(bool on) { fold_allowed_ = on; }
+  // Off: the shank and holder looks read every column over the body's
+  // lowest point (SafetyWatch::body_fast; the reference
+  // tests/test_safety_body_fast.cpp compares the fast look with).
+  void set_body_fast(bool on) { safety_.body_fast = on; }
   // Errors also go to m as they come (the host prints them).
   void forward_messages(GcodeMessages* m) { msgs_.forward = m; }
   // Takes the stock as it is now as the untouched one (the watches'
