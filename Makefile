@@ -350,8 +350,8 @@ WEB_CXX  ?= clang++ --target=wasm32-wasi
 WEB_OPT  ?= -O2
 WEB_SRC  := $(CORE_SRC) $(DISPLAY_SRC) $(sort $(wildcard platform/web/*.cpp))
 WEB_OBJ  := $(patsubst %.cpp,build/wasm32/obj/%.o,$(WEB_SRC))  # not in $(WEB): that folder is what a panel serves
-WEB_LDFLAGS := -nostartfiles -Wl,--no-entry -Wl,--gc-sections -Wl,--stack-first -Wl,-z,stack-size=1048576 $(WEB_LDFLAGS_STRIP)
 WEB_LDFLAGS_STRIP ?= -Wl,--strip-all  # empty: the functions named, for WEB_PAGE_PROFILE (tools/scripts/web_page.py)
+WEB_LDFLAGS := -nostartfiles -Wl,--no-entry -Wl,--gc-sections -Wl,--stack-first -Wl,-z,stack-size=1048576 $(WEB_LDFLAGS_STRIP)
 .PHONY: web test-web test-web-stream
 web: $(WEB)/dexmill.wasm $(WEB)/dexmill.js $(WEB)/index.html
 build/wasm32/obj/%.o: %.cpp

@@ -87,7 +87,7 @@ extra_tools() {
   for x in "${xs[@]}"; do case $x in tools=*) echo "${x#tools=}";; esac; done
 }
 
-# A --tools table with a bad line: after the cases the page must list
+# A --tools table with a bad line: before the cases the page must list
 # dexmill run's error for it, word for word (the file named as chosen).
 printf 'T1 D4 ;flat\nK3\n' > "$tmp/bad.tbl"
 bad_table=$("$bin" run tests/run/tool_change.ngc -q --tools "$tmp/bad.tbl" --image "$tmp/bad.ppm" 2>&1 > /dev/null || true)
@@ -112,6 +112,12 @@ bad_table=${bad_table#"$tmp/"}
   cat <<'EOF'
 window.dexmillTest = (async function () {
   var out = [], $ = function (id) { return document.getElementById(id); };
+  /* First the bad table (the cases after it leave the page as the last one made it, for a picture). */
+  var dt = new DataTransfer(), bad = atob(DEXMILL_BAD_TABLE), said = "(no error)";
+  dt.items.add(new File([bad], "bad.tbl"));
+  $("tools-file").files = dt.files;
+  try { await dexmillPage.run(dexmill.blobSource(new Blob([atob(DEXMILL_CASES[0].program)]))); } catch (err) { said = $("errors").textContent; }
+  if (said !== DEXMILL_BAD_ERROR) throw new Error("the bad tool table: the page said '" + said + "', not '" + DEXMILL_BAD_ERROR + "'");
   for (var c of DEXMILL_CASES) {
     var s = atob(c.program), b = new Uint8Array(s.length);
     for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
@@ -194,11 +200,6 @@ window.dexmillTest = (async function () {
     }
     out.push(dexmillProbe(r));
   }
-  var dt = new DataTransfer(), bad = atob(DEXMILL_BAD_TABLE), said = "(no error)";
-  dt.items.add(new File([bad], "bad.tbl"));
-  $("tools-file").files = dt.files;
-  try { await dexmillPage.run(dexmill.blobSource(new Blob([atob(DEXMILL_CASES[0].program)]))); } catch (err) { said = $("errors").textContent; }
-  if (said !== DEXMILL_BAD_ERROR) throw new Error("the bad tool table: the page said '" + said + "', not '" + DEXMILL_BAD_ERROR + "'");
   return out;
 })();
 EOF

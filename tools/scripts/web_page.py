@@ -6,7 +6,8 @@ expression, awaits it if it is a promise, and prints its value as JSON.
 Every request the page makes is watched: one that is not file:, data: or
 blob: (or under WEB_PAGE_ALLOW, a URL prefix: the server the page is loaded
 from) fails the run. WEB_PAGE_LOG=FILE keeps Chromium's own log;
-WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620) once evaluated;
+WEB_PAGE_SCREENSHOT=FILE.png saves the page (1000 x 620, or
+WEB_PAGE_SIZE=WxH) once evaluated;
 WEB_PAGE_FILE="SELECTOR=PATH" gives a file input that file (as a user
 choosing it), before the expression runs; WEB_PAGE_MEMORY=FILE writes the
 peak resident memory (VmHWM, kB) of the browser's renderer processes, the
@@ -152,8 +153,9 @@ def main():
             s = p.call("Target.attachToTarget", {"targetId": target, "flatten": True}, deadline)["sessionId"]
             p.call("Network.enable", {}, deadline, s)
             p.call("Page.enable", {}, deadline, s)
+            w, h = (int(v) for v in os.environ.get("WEB_PAGE_SIZE", "1000x620").split("x"))
             p.call("Emulation.setDeviceMetricsOverride",
-                   {"width": 1000, "height": 620, "deviceScaleFactor": 1, "mobile": False}, deadline, s)
+                   {"width": w, "height": h, "deviceScaleFactor": 1, "mobile": False}, deadline, s)
             p.call("Page.navigate", {"url": url}, deadline, s, until="Page.loadEventFired")
             if os.environ.get("WEB_PAGE_FILE"):
                 set_file(p, os.environ["WEB_PAGE_FILE"], deadline, s)
