@@ -200,6 +200,7 @@ var dexmill = (function () {
     return {
       name: blob.name || "program",  /* a File's name, for FILE:LINE:COL */
       size: blob.size,               /* bytes, for a progress bar */
+      blob: blob,                    /* the program itself: a finding's line read again (page_view.js) */
       /* From the start again (a first pass read it: page_scan.js). */
       rewind: function () {
         if (reader) reader.cancel().catch(function () { /* a finished stream: nothing to cancel */ });

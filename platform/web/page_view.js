@@ -61,15 +61,52 @@
     }
   });
 
+  /* The program's line n (1-based) of a Blob, read again in 1 MiB pieces
+   * up to it (a click, not the cut: nothing is kept); null past its end. */
+  async function lineOf(blob, n) {
+    var at = 0, line = 1, start = 0, parts = [], dec = new TextDecoder();
+    while (at < blob.size) {
+      var b = new Uint8Array(await blob.slice(at, Math.min(blob.size, at + (1 << 20))).arrayBuffer());
+      for (var i = 0; i < b.length; ++i) {
+        if (b[i] !== 10) continue;
+        if (line === n) return dec.decode(concat(parts, b.subarray(start, i))).replace(/\r$/, "");
+        ++line;
+        start = i + 1;
+      }
+      if (line === n) parts.push(b.slice(start));
+      at += b.length;
+      start = 0;
+    }
+    return line === n && parts.length ? dec.decode(concat(parts, new Uint8Array(0))) : null;
+  }
+  function concat(parts, last) {
+    var n = last.length, k = 0;
+    parts.forEach(function (p) { n += p.length; });
+    var out = new Uint8Array(n);
+    parts.forEach(function (p) { out.set(p, k); k += p.length; });
+    out.set(last, k);
+    return out;
+  }
+  /* Where an item is in the program: its line's text under its message in
+   * the status line, a caret under the column of an error or a warning. */
+  async function showLine(item) {
+    var blob = source && source.blob;
+    if (!blob || !(item.line > 0) || item.line === Infinity) return;
+    var text = await lineOf(blob, item.line);
+    if (text === null || $("status").textContent !== item.text) return;  /* another click since */
+    var head = item.line + " | ", caret = item.col > 0 ? "\n" + " ".repeat(head.length + item.col - 1) + "^" : "";
+    dexmillPage.status(item.text + "\n" + head + text + caret);
+  }
+
   /* The findings list: the input errors, the warnings and the findings in
    * the program's order, each a button: a finding's marks it in the view. */
   function list(e) {
     var ul = $("findings"), name = (source && source.name) || "program", items = [];
     e.inputErrors().forEach(function (err) {
-      items.push({ line: err.line, mark: -1, text: name + ":" + err.line + ":" + err.col + ": error: " + err.message });
+      items.push({ line: err.line, col: err.col, mark: -1, text: name + ":" + err.line + ":" + err.col + ": error: " + err.message });
     });
     e.warnings().forEach(function (w) {
-      items.push({ line: w.line, mark: -1, text: name + ":" + w.line + ":" + w.col + ": warning: " + w.message });
+      items.push({ line: w.line, col: w.col, mark: -1, text: name + ":" + w.line + ":" + w.col + ": warning: " + w.message });
     });
     e.findings().forEach(function (f, k) {
       var lines = f.lastLine > f.line ? f.line + "-" + f.lastLine : "" + f.line;
@@ -88,6 +125,7 @@
         e.markFinding(item.mark);
         redraw();
         dexmillPage.status(item.text);
+        showLine(item);
       });
       li.appendChild(button);
       ul.appendChild(li);

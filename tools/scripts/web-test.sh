@@ -196,6 +196,7 @@ window.dexmillTest = (async function () {
     if (check && marked) {  /* the first finding clicked: marked where dexmill run marks it */
       marked.click();
       r.hash = $("hash").textContent;
+      await new Promise(function (done) { setTimeout(done, 200); });  /* its line read again from the file */
       r.status = $("status").textContent;
     }
     out.push(dexmillProbe(r));

@@ -9,7 +9,8 @@ micrometre the CLI prints), no more and no fewer; a case with findings must
 have some (a check that finds nothing tests nothing). The others dexmill run
 prints, "FILE:LINE:COL: warning: MESSAGE", are among the page's warnings
 (line and column), and each of the page's has a message dexmill run prints
-(a repeated one it folds into its first: "(N times, lines A to B)").
+(a repeated one it folds into its first: "(N times, lines A to B)"). The
+first finding clicked shows its program line under its text: "LINE | TEXT".
 Exit: 0 all equal, 1 otherwise.
 """
 import json
@@ -36,7 +37,12 @@ for k, r in enumerate(page, 1):
     if sorted(cli) != sorted(got):
         print("web-test: case %d: the page's findings %s, dexmill run's %s" % (k, got, cli), file=sys.stderr)
         bad = 1
-    elif cli:
+    elif cli and r.get("status") is not None:
+        line = got[0][0]
+        if not re.search(r"\n%d \| \S" % line, r["status"]):
+            print("web-test: case %d: the clicked finding's status shows no line %d: %r" % (k, line, r["status"]), file=sys.stderr)
+            bad = 1
+    if sorted(cli) == sorted(got) and cli:
         print("ok: web-test: case %d: %d findings, lines and places as dexmill run's (%s); %d warnings, its text"
               % (k, len(cli), ", ".join("line %d" % l for l, _ in cli), len(page_warned)))
 sys.exit(bad)
