@@ -48,6 +48,8 @@ web_setup web-test "$web"
 # replay at N times machine time (Replay after a run at full speed), paused
 # for 300 ms on the way: the same
 # last frame, no cut while paused, and at least machine time / N long),
+# keys (after the cut: 1, +, -, 2 on the keyboard: web_controls.py), drop
+# (the program dropped on the canvas as a file, not given to the Run path),
 # zoom (after the cut: 10 wheel notches in about a point and 10 out give
 # the frame before; a pinch of 3x about the same point gives the wheel's
 # frame, not an orbit; reset view the frame before).
@@ -58,6 +60,7 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|640x480|iso|cli
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|400x300|iso|cli|path
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|plain|speed=100
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|zoom
+tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|top|cli|keys;drop
 tests/run/rapid_through.ngc|0,0,-10,33,23,0|flat:6|330x230|480x360|iso|cli|path;check=rapid
 tests/run/pocket.ngc||flat:6||320x240|iso|cli
 tests/run/arcs_inch.ngc||vbit:3:90||400x300|top|cli
@@ -148,9 +151,19 @@ window.dexmillTest = (async function () {
     var dt = new DataTransfer();  /* the table as a user would choose it (none: an empty input) */
     if (c.tools) dt.items.add(new File([Uint8Array.from(atob(c.tools), function (ch) { return ch.charCodeAt(0); })], c.toolsName));
     $("tools-file").files = dt.files;
-    var running = dexmillPage.run(dexmill.blobSource(new Blob([b]))), sleep = function (ms) {
+    var running = null, sleep = function (ms) {
       return new Promise(function (done) { setTimeout(done, ms); });
     };
+    if (extra.indexOf("drop") >= 0) {  /* the file dropped on the canvas, as from a file manager: the Run button's path */
+      var dropped = new DataTransfer();
+      dropped.items.add(new File([b], "dropped.ngc"));
+      dexmillPage.running = null;
+      $("view-canvas").dispatchEvent(new DragEvent("drop", { dataTransfer: dropped, bubbles: true, cancelable: true }));
+      if (!dexmillPage.running) throw new Error("a dropped file did not run");
+      running = dexmillPage.running.then(function (res) { res.dropped = $("file").files[0].name; return res; });
+    } else {
+      running = dexmillPage.run(dexmill.blobSource(new Blob([b])));
+    }
     if (speed) {  /* Replay, paced, paused on the way: the status line (the cut's progress) stands still */
       await running;
       $("speed").value = speed.slice(6);
@@ -191,6 +204,19 @@ window.dexmillTest = (async function () {
       canvas.dispatchEvent(new PointerEvent("pointerup", at(+view[1], +view[2])));
       await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
       r.hash = $("hash").textContent;
+    }
+    if (extra.indexOf("keys") >= 0) {  /* the keyboard, as a user presses it on the page */
+      var key = function (name) { document.body.dispatchEvent(new KeyboardEvent("keydown", { key: name, bubbles: true, cancelable: true })); };
+      var kh = function () { return $("hash").textContent; }, keys = { before: kh() };
+      key("1");
+      keys.iso = kh();
+      key("+");
+      keys.zoomed = kh();
+      key("-");
+      key("2");
+      keys.after = kh();
+      r.keys = keys;
+      r.hash = kh();
     }
     var marked = document.querySelector("#findings button[data-mark='0']");
     if (check && marked) {  /* the first finding clicked: marked where dexmill run marks it */

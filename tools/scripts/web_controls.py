@@ -5,7 +5,11 @@ least the machine time / N plus the 300 ms it was paused, and the cut stood
 still while paused (the status line the same before and after); a zoom
 (`zoom`: the frame's hash after each step) came back: 10 wheel notches in
 change the frame and 10 out give it back, a pinch gives the wheel's frame,
-reset view the first. Exit: 0 all held, 1 otherwise.
+reset view the first; the keys (`keys`: 1 the iso view, + and - a zoom in
+and out about the centre, then 2 the top view) changed the frame and gave
+the top view's back (the frame after them is dexmill run --view top's,
+web_compare.py); a file dropped on the canvas (`drop`) ran, from the file
+input it was put into. Exit: 0 all held, 1 otherwise.
 """
 import json
 import sys
@@ -31,5 +35,18 @@ for k, r in enumerate(json.load(open(sys.argv[1] + "/page.json")), 1):
                   "reset the first" % k)
         else:
             print("web-test: case %d: zoom: %s" % (k, z), file=sys.stderr)
+            bad = 1
+    if "dropped" in r:
+        if r["dropped"] == "dropped.ngc":
+            print("ok: web-test: case %d: a file dropped on the canvas ran from the file input" % k)
+        else:
+            print("web-test: case %d: a dropped file: the file input holds %r" % (k, r["dropped"]), file=sys.stderr)
+            bad = 1
+    keys = r.get("keys")
+    if keys:
+        if keys["iso"] != keys["before"] and keys["zoomed"] != keys["iso"] and keys["after"] == keys["before"]:
+            print("ok: web-test: case %d: the keys 1, +, - and 2 turn to iso, zoom in and out, and back to the top view" % k)
+        else:
+            print("web-test: case %d: keys: %s" % (k, keys), file=sys.stderr)
             bad = 1
 sys.exit(bad)
