@@ -419,9 +419,11 @@ DM_API dm_status dm_view_set_path(dm_view* view, void* mem, size_t bytes);
 DM_API dm_status dm_view_show_path(dm_view* view, int32_t on);
 /* The pieces held, the room for them, and the pieces dropped once full. */
 DM_API dm_status dm_view_path_info(const dm_view* view, uint32_t* segments, uint32_t* capacity, uint64_t* dropped);
-/* A marker (magenta, as `dexmill run` marks safety findings) at the machine
- * point at_nm[0..2] (x, y, z; a finding's at_nm) over every frame; NULL:
- * none. The next render draws the whole frame. */
+/* A marker (light blue, as the live window marks a click) at the machine
+ * point at_nm[0..2] (x, y, z; a finding's at_nm) over every frame, over the
+ * marks every view draws as `dexmill run` draws them (the gouges in red, the
+ * safety findings in magenta, where the cut stopped: display/api/run_marks.h);
+ * NULL: none. The next render draws the whole frame. */
 DM_API dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm);
 /* Zooms `steps` steps (> 0 towards the scene; each shows 9/10 of the
  * height the last showed) about the frame's pixel (x_px, y_px): the point
@@ -441,8 +443,8 @@ DM_API dm_status dm_view_zoom_reset(dm_view* view);
  * named by dm_job.tools, else every T is dm_job.tool); material, the
  * material under the top with its texture (needs dm_job.material); thin,
  * floors thinner than thin_nm (the CLI's --thin); error, the distance to
- * the design (needs dm_job.design; the CLI's red marks of gouges are not
- * drawn). Plain: the workpiece's one colour, as after dm_view_create. */
+ * the design (needs dm_job.design; its gouges are marked in red in every
+ * mode, as the CLI marks them). Plain: the workpiece's one colour, as after dm_view_create. */
 enum {
   DM_COLOUR_PLAIN = 0, DM_COLOUR_SLOPE = 1, DM_COLOUR_TOOL = 2, DM_COLOUR_MATERIAL = 3, DM_COLOUR_THIN = 4,
   DM_COLOUR_ERROR = 5

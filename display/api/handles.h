@@ -16,6 +16,7 @@
 #include "core/material/material.h"
 #include "core/sim/simulation.h"
 #include "display/api/dexmill.h"
+#include "display/api/run_marks.h"
 #include "display/view/stock_view.h"
 
 namespace dexmill {
@@ -44,9 +45,15 @@ class ViewFan final : public SimObserver {
  public:
   void tool_loaded(const Tool& t) override;
   void changed(const GridRect& r) override;
-  void record(const CanonRecord& r) override;  // the views' paths (dm_view_set_path)
+  void record(const CanonRecord& r) override;  // the views' paths (dm_view_set_path), the marks
   dm_view* first = nullptr;
   Tool current{};  // the tool in the spindle, for a view made now
+  // The run's marks every view draws, as `dexmill run` draws them
+  // (display/api/run_marks.h): kept after every record of `sim`, and once
+  // after the cut (final).
+  RunMarks marks;
+  const Simulation* sim = nullptr;
+  bool marks_final = false;
 };
 
 // The program's first warnings, kept as they come (dm_warning_get).
@@ -110,9 +117,14 @@ struct dm_view {
   dexmill::PathSegment* path;
   uint32_t path_n, path_cap;
   uint64_t path_dropped;  // pieces that did not fit
-  // dm_view_set_mark: one point marked over the picture.
+  // dm_view_set_mark: one point marked over the picture, after the run's.
   dexmill::PointNm mark_at;
-  dexmill::ViewMarks mark;
+  bool has_mark;
+  dexmill::ViewMarks marks[5];   // the run's lists and the mark, as drawn
+  // The gouges' marks as last drawn: one that moves or goes leaves its
+  // pixels behind, so the next render draws the whole frame.
+  dexmill::PointNm drawn_gouges[dexmill::kGougeEventsMax];
+  uint32_t ndrawn_gouges;
   dexmill::api::ViewColour* colour;  // dm_view_set_colour's (null: plain)
 };
 

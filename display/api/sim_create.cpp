@@ -285,6 +285,7 @@ dm_status set_up(const dm_job& in, dm_sim* s, size_t bytes) {
   s->sim = Simulation::create(j, b.engine, b.engine_bytes, &why);
   if (!s->sim) return status_of(why.error);
   s->views.current = j.tool;
+  s->views.sim = s->sim;  // the run's marks are kept from its records (display/api/run_marks.h)
   s->sim->set_observer(&s->views);
   s->sim->start();  // the stock as it is now is the untouched one
   return DM_OK;

@@ -21,6 +21,7 @@ void ViewFan::tool_loaded(const Tool& t) {
 }
 
 void ViewFan::record(const CanonRecord& r) {
+  if (sim) run_marks_record(&marks, *sim);
   for (dm_view* v = first; v; v = v->next) {
     if (!v->path) continue;
     v->path_dropped += path_append(r, v->path, &v->path_n, v->path_cap);
@@ -68,6 +69,29 @@ size_t scratch_part(const DexelGrid<height_t>& g, int32_t width, int32_t height,
 
 bool finished(const Simulation& s) {
   return s.state() == SimState::kDone || s.state() == SimState::kStopped || s.state() == SimState::kIoError;
+}
+
+// The marks to draw: the run's (display/api/run_marks.h; after the cut,
+// final), then dm_view_set_mark's. A gouge's mark that moved or went since
+// the last render has the whole frame drawn.
+void set_view_marks(dm_view* v, const Simulation& s) {
+  ViewFan& fan = v->sim->views;
+  if (finished(s) && !fan.marks_final) {
+    run_marks_after_cut(&fan.marks, s, s.stop_reason() == SimStop::kInputError);
+    fan.marks_final = true;
+  }
+  int32_t n = run_marks_lists(&fan.marks, s);
+  for (int32_t k = 0; k < n; ++k) v->marks[k] = fan.marks.lists[k];
+  if (v->has_mark) v->marks[n++] = ViewMarks{&v->mark_at, 1, kClickMarkColour};
+  stock_view_set_marks(&v->v, v->marks, n);
+  const RunMarks& m = fan.marks;
+  bool kept = m.ngouges >= v->ndrawn_gouges;
+  for (uint32_t k = 0; kept && k < v->ndrawn_gouges; ++k)
+    kept = m.gouges[k].x_nm == v->drawn_gouges[k].x_nm && m.gouges[k].y_nm == v->drawn_gouges[k].y_nm &&
+           m.gouges[k].z_nm == v->drawn_gouges[k].z_nm;
+  if (!kept) v->v.r.need_full = true;
+  for (uint32_t k = 0; k < m.ngouges; ++k) v->drawn_gouges[k] = m.gouges[k];
+  v->ndrawn_gouges = m.ngouges;
 }
 
 }  // namespace
@@ -137,6 +161,7 @@ dm_status dm_render(dm_view* view, dm_rect* rects, int32_t max_rects, int32_t* n
   // The cut so far, the deferred end cap shown (after the end it is cut).
   if (!finished(s)) s.sync();
   view_colour_update(view);
+  set_view_marks(view, s);
   const RenderResult res = stock_view_draw(&view->v, &s.grid(), CutterPose{true, s.mill().position()});
   int32_t n = 0;
   for (int k = 0; k < res.nrects && max_rects > 0; ++k) {
@@ -198,8 +223,7 @@ dm_status dm_view_set_mark(dm_view* view, const int64_t* at_nm) {
   if (!view || view->tag != kViewTag) return DM_E_ARGUMENT;
   if (!live(view)) return DM_E_STATE;
   if (at_nm) view->mark_at = PointNm{at_nm[0], at_nm[1], at_nm[2]};
-  view->mark = ViewMarks{&view->mark_at, 1, Rgb{255, 40, 255}};  // the CLI's colour of safety findings
-  stock_view_set_marks(&view->v, &view->mark, at_nm ? 1 : 0);
+  view->has_mark = at_nm != nullptr;  // drawn over the run's own marks (dm_render)
   view->v.r.need_full = true;  // a mark taken away leaves the picture under it to draw
   return DM_OK;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/assess/assess.h"
+#include "display/api/run_marks.h"
 #include "display/view/colour_legend.h"
 #include "platform/format/pgm.h"
 #include "platform/format/stl_read.h"
@@ -161,7 +162,7 @@ void gouges_after_record(const GougeWatch& w, const DexelGrid<height_t>& g, uint
     d->marks.clear();
     for (size_t k = 0; k < w.nevents; ++k) {
       const GougeEvent& e = w.events[k];
-      d->marks.push_back(PointNm{g.x0_nm + e.i * g.pitch_nm, g.y0_nm + e.j * g.pitch_nm, g.z0_nm + e.design_lsb * g.lsb_nm});
+      d->marks.push_back(gouge_mark_point(e, g));
     }
   }
   // Lines other than this record's are done (the previous line's end cap

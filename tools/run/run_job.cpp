@@ -214,12 +214,8 @@ int cut_pass(const RunOptions& o, Run* run, bool* user_quit) {
   }
   progress.finish();
   sim.finish();
-  std::vector<PointNm> error_at, stop_at;
-  if (su.job.stop_line) error_at.push_back(sim.mill().position());  // the bad block's place, in amber
+  v.after_cut(su.job.stop_line != 0);
   const SafetyWatch* safety = sim.safety();
-  if (sim.stop_reason() == SimStop::kCollision && safety && safety->nevents > 0)  // the finding it stopped at, in red
-    stop_at.push_back(safety->events[safety->nevents - 1].at);
-  v.after_cut(error_at, stop_at);
   if (const GougeWatch* w = sim.gouges()) print_gouges(*w, sim.grid(), &su.design);
   if (safety) {
     safety_print(*safety, su.shown_name, sim.grid());

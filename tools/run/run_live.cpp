@@ -54,7 +54,6 @@ int32_t band_scale(int32_t width) { return width >= 960 ? 2 : 1; }  // the statu
 constexpr double kClickTextS = 4;  // how long a click's heights stay on the status line
 // The click's marker: cyan, apart from the gouges' red, the safety
 // findings' magenta and the partial run's amber.
-constexpr Rgb kClickMark{40, 200, 255};
 
 }  // namespace
 
@@ -123,7 +122,7 @@ int LiveView::open(const RunOptions& o, const DexelGrid<height_t>& g, const Came
   pic.height = all.height - band_h_;
   out_.set_antialias(o.view.live_antialiased());
   if (!out_.init(g, pic, cam, err)) return kExitIo;
-  out_.add_marks(&click_mark_, kClickMark);
+  out_.add_marks(&click_mark_, kClickMarkColour);
   base_wall_s_ = clock_now_s();
   next_frame_s_ = base_wall_s_;
   return kExitOk;

@@ -57,6 +57,7 @@ RenderResult RenderOutput::draw(DexelGrid<height_t>* g, const CutterPose& pose) 
   // The lists as they are now: the view reads them by pointer.
   if (path_) stock_view_path_progress(v_.get(), path_->data(), static_cast<uint32_t>(path_->size()), *path_done_);
   view_marks_.clear();
+  if (run_marks_) view_marks_.assign(run_marks_->lists, run_marks_->lists + run_marks_lists(run_marks_, *run_sim_));
   for (const Marks& m : marks_)
     view_marks_.push_back(ViewMarks{m.points->data(), static_cast<uint32_t>(m.points->size()), m.colour});
   stock_view_set_marks(v_.get(), view_marks_.data(), static_cast<int32_t>(view_marks_.size()));

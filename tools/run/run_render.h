@@ -18,6 +18,7 @@
 #include "core/config.h"
 #include "core/grid/grid.h"
 #include "core/tool/tool.h"
+#include "display/api/run_marks.h"
 #include "display/overlay/backplot.h"
 #include "display/overlay/legend.h"
 #include "display/overlay/overlay.h"
@@ -56,6 +57,12 @@ class RenderOutput {
   // Points marked over every frame in `colour` (the gouges found so far in
   // red, the block a partial run stopped at in amber); kept by the caller.
   void add_marks(const std::vector<PointNm>* m, Rgb colour) { marks_.push_back(Marks{m, colour}); }
+  // A run's own marks (display/api/run_marks.h: gouges, findings, where it
+  // stopped), drawn before those added; both kept by the caller.
+  void set_run_marks(RunMarks* m, const Simulation* s) {
+    run_marks_ = m;
+    run_sim_ = s;
+  }
   // Boxes drawn in every frame (--fixture; caller memory, kept by pointer:
   // the vector must not change while it is set).
   void set_fixtures(const std::vector<BoxNm>* f);
@@ -104,6 +111,8 @@ class RenderOutput {
     Rgb colour;
   };
   std::vector<Marks> marks_;
+  RunMarks* run_marks_ = nullptr;
+  const Simulation* run_sim_ = nullptr;
   std::vector<ViewMarks> view_marks_;  // marks_ as the view draws them
   const std::vector<PathSegment>* path_ = nullptr;
   const uint32_t* path_done_ = nullptr;

@@ -22,10 +22,6 @@ SimChecks safety_checks(const SafetyChoice& c) {
   return s;
 }
 
-void safety_mark_new(const SafetyWatch& w, SafetyMarks* m) {
-  for (; m->marked < w.nevents; ++m->marked) m->points.push_back(w.events[m->marked].at);
-}
-
 void safety_print(const SafetyWatch& w, const std::string& file, const DexelGrid<height_t>& g) {
   for (size_t k = 0; k < w.nevents; ++k) {
     const SafetyEvent& e = w.events[k];

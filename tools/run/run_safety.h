@@ -1,6 +1,6 @@
 // The safety checks of `dexmill run` (core/safety/safety.h; the simulation
-// runs them, core/sim/simulation.h): which are on, the warnings, the marks
-// in the frames and the report.
+// runs them, core/sim/simulation.h): which are on, the warnings and the
+// report (their marks in the frames: display/api/run_marks.h).
 #ifndef DEXMILL_TOOLS_RUN_RUN_SAFETY_H
 #define DEXMILL_TOOLS_RUN_RUN_SAFETY_H
 
@@ -20,14 +20,6 @@ namespace cli {
 
 // The checks the options ask for (fixtures pointing into c's vector).
 SimChecks safety_checks(const SafetyChoice& c);
-
-// Where the kept events are, for the frames: brought up to date with
-// safety_mark_new after every record.
-struct SafetyMarks {
-  std::vector<PointNm> points;
-  size_t marked = 0;  // events already in points
-};
-void safety_mark_new(const SafetyWatch& w, SafetyMarks* m);
 
 // Prints every kept event as FILE:LINE:1: warning: ... (at the end: a
 // line's event grows while its end cap is cut), and how many were not kept.

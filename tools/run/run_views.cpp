@@ -141,12 +141,9 @@ int RunViews::open(const RunOptions& o, Simulation* sim, const Inputs& in) {
   }
   hide_tool_ = o.view.hide_tool;
   set_colours(o, in);
-  // The gouges found so far, marked in every frame and live view; the
-  // safety findings so far in magenta; the fixtures in every frame.
-  if (in.design)
-    for (RenderOutput* out : outputs_) out->add_marks(&in.design->marks, Rgb{255, 32, 24});
-  if (sim->safety())
-    for (RenderOutput* out : outputs_) out->add_marks(&safety_marks_.points, Rgb{255, 40, 255});
+  // The gouges and safety findings found so far, marked in every frame and
+  // live view (display/api/run_marks.h); the fixtures in every frame.
+  for (RenderOutput* out : outputs_) out->set_run_marks(&marks_, sim);
   if (!o.job.checks.fixtures.empty())
     for (RenderOutput* out : outputs_) out->set_fixtures(&o.job.checks.fixtures);
   grid.dirty = grid.bounds();
@@ -180,7 +177,7 @@ void RunViews::record(const CanonRecord& r) {
     gouge_finds_ = sim_->gouge_finds();
     gouges_after_record(*w, sim_->grid(), r.line, found, in_.design);
   }
-  if (const SafetyWatch* w = sim_->safety()) safety_mark_new(*w, &safety_marks_);
+  run_marks_record(&marks_, *sim_);
   const SimStatus& s = sim_->status();
   status.line = s.line;
   status.pos = s.pos;
@@ -211,19 +208,13 @@ bool RunViews::write_frame() {
   return frame_error.empty();
 }
 
-void RunViews::after_cut(const std::vector<PointNm>& error_at, const std::vector<PointNm>& stop_at) {
+void RunViews::after_cut(bool stopped_at_input_error) {
   if (const GougeWatch* w = sim_->gouges())  // what the finish found, and its warnings
     if (sim_->gouge_finds() != gouge_finds_) {
       gouge_finds_ = sim_->gouge_finds();
       gouges_after_record(*w, sim_->grid(), sim_->status().line, true, in_.design);
     }
-  if (const SafetyWatch* w = sim_->safety()) safety_mark_new(*w, &safety_marks_);
-  error_mark_ = error_at;
-  stop_mark_ = stop_at;
-  if (!error_mark_.empty())
-    for (RenderOutput* out : outputs_) out->add_marks(&error_mark_, Rgb{255, 190, 0});
-  if (!stop_mark_.empty())
-    for (RenderOutput* out : outputs_) out->add_marks(&stop_mark_, Rgb{255, 32, 24});
+  run_marks_after_cut(&marks_, *sim_, stopped_at_input_error);
 }
 
 int RunViews::write_images(const RunOptions& o, const GridPlan& plan, const ImageFormat& image, const ImageFormat& error) {

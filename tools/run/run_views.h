@@ -61,8 +61,9 @@ class RunViews final : public SimObserver {
   // frame_error set) on failure.
   bool write_frame();
   // After the cut: the marks of what the end found, the bad block's place
-  // (amber) and the finding a stop was at (red).
-  void after_cut(const std::vector<PointNm>& error_at, const std::vector<PointNm>& stop_at);
+  // (amber: the cut stopped at an input error) and the finding a stop was
+  // at (red; display/api/run_marks.h).
+  void after_cut(bool stopped_at_input_error);
   // The final image and error image, with --overlay (--hide-tool: without
   // the cutter). kExitOk or an exit code (printed).
   int write_images(const RunOptions& o, const GridPlan& plan, const ImageFormat& image, const ImageFormat& error);
@@ -97,11 +98,10 @@ class RunViews final : public SimObserver {
   std::vector<uint8_t> material_cls_;
   std::vector<uint32_t> material_luts_, material_texture_;
   RunColours colours_;
-  SafetyMarks safety_marks_;
+  RunMarks marks_;
   uint64_t gouge_finds_ = 0;
   bool count_path_ = false;
   uint32_t path_done_ = 0;   // the backplot's pieces cut so far
-  std::vector<PointNm> error_mark_, stop_mark_;
   std::vector<StockProgram> chain_programs_;  // the chain's programs and this one, for a click's measurement
 };
 

@@ -219,11 +219,15 @@ window.dexmillTest = (async function () {
       r.hash = kh();
     }
     var marked = document.querySelector("#findings button[data-mark='0']");
-    if (check && marked) {  /* the first finding clicked: marked where dexmill run marks it */
+    if (check && marked) {  /* the first finding clicked: a light blue mark over dexmill run's magenta one */
+      var unmarked = $("hash").textContent, other = document.querySelector("#findings button[data-mark='-1']");
       marked.click();
-      r.hash = $("hash").textContent;
+      r.clicked = { before: unmarked, marked: $("hash").textContent };
       await new Promise(function (done) { setTimeout(done, 200); });  /* its line read again from the file */
       r.status = $("status").textContent;
+      if (other) other.click();  /* a warning clicked: no mark of the page's own, the frame dexmill run's again */
+      r.clicked.after = $("hash").textContent;
+      r.hash = $("hash").textContent;
     }
     out.push(dexmillProbe(r));
   }

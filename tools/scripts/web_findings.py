@@ -10,7 +10,9 @@ have some (a check that finds nothing tests nothing). The others dexmill run
 prints, "FILE:LINE:COL: warning: MESSAGE", are among the page's warnings
 (line and column), and each of the page's has a message dexmill run prints
 (a repeated one it folds into its first: "(N times, lines A to B)"). The
-first finding clicked shows its program line under its text: "LINE | TEXT".
+first finding clicked shows its program line under its text: "LINE | TEXT",
+and a mark of its own over the frame, which a warning clicked takes away
+(the frame, with the run's marks, is dexmill run's: web_compare.py).
 Exit: 0 all equal, 1 otherwise.
 """
 import json
@@ -41,6 +43,11 @@ for k, r in enumerate(page, 1):
         line = got[0][0]
         if not re.search(r"\n%d \| \S" % line, r["status"]):
             print("web-test: case %d: the clicked finding's status shows no line %d: %r" % (k, line, r["status"]), file=sys.stderr)
+            bad = 1
+        c = r.get("clicked", {})
+        if c.get("marked") == c.get("before") or c.get("after") != c.get("before"):
+            print("web-test: case %d: a finding clicked did not mark it, or a warning clicked did not clear it: %s" % (k, c),
+                  file=sys.stderr)
             bad = 1
     if sorted(cli) == sorted(got) and cli:
         print("ok: web-test: case %d: %d findings, lines and places as dexmill run's (%s); %d warnings, its text"
