@@ -113,6 +113,15 @@ bad_table=${bad_table#"$tmp/"}
   echo "];"
   cat tools/scripts/web_probe.js
   cat <<'EOF'
+/* n display frames, or 2 s if the browser draws none (a headless tab can
+ * stall its frames): a drawing that never came then fails the case's
+ * pixels instead of hanging the test. */
+function frames(n) {
+  return new Promise(function (done) {
+    var t = setTimeout(done, 2000);
+    (function next(k) { requestAnimationFrame(function () { if (k > 1) next(k - 1); else { clearTimeout(t); done(); } }); })(n);
+  });
+}
 window.dexmillTest = (async function () {
   var out = [], $ = function (id) { return document.getElementById(id); };
   /* First the bad table (the cases after it leave the page as the last one made it, for a picture). */
@@ -122,6 +131,7 @@ window.dexmillTest = (async function () {
   try { await dexmillPage.run(dexmill.blobSource(new Blob([atob(DEXMILL_CASES[0].program)]))); } catch (err) { said = $("errors").textContent; }
   if (said !== DEXMILL_BAD_ERROR) throw new Error("the bad tool table: the page said '" + said + "', not '" + DEXMILL_BAD_ERROR + "'");
   for (var c of DEXMILL_CASES) {
+    window.dexmillTestAt = "case " + (out.length + 1) + ": " + c.view + " " + c.extra + " " + c.more;  /* web_page.py says it on a timeout */
     var s = atob(c.program), b = new Uint8Array(s.length);
     for (var i = 0; i < s.length; ++i) b[i] = s.charCodeAt(i);
     $("stock").value = c.stock; $("tool").value = c.tool; $("grid").value = c.grid; $("size").value = c.size;
@@ -188,7 +198,7 @@ window.dexmillTest = (async function () {
       for (k = 0; k < 10; ++k) wheel(100);
       z.wheelOut = h();
       pointer("pointerdown", 11, 50); pointer("pointerdown", 12, 100); pointer("pointermove", 12, 200);
-      await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
+      await frames(2);
       z.pinch = h();
       pointer("pointerup", 12, 200); pointer("pointerup", 11, 50);
       $("zoom-reset").click();
@@ -200,9 +210,9 @@ window.dexmillTest = (async function () {
       var canvas = $("view-canvas"), at = function (dx, dy) { return { bubbles: true, pointerId: 1, clientX: 100 + dx, clientY: 100 + dy }; };
       canvas.dispatchEvent(new PointerEvent("pointerdown", at(0, 0)));
       canvas.dispatchEvent(new PointerEvent("pointermove", at(+view[1], +view[2])));
-      await new Promise(function (done) { requestAnimationFrame(done); });
+      await frames(1);
       canvas.dispatchEvent(new PointerEvent("pointerup", at(+view[1], +view[2])));
-      await new Promise(function (done) { requestAnimationFrame(function () { requestAnimationFrame(done); }); });
+      await frames(2);
       r.hash = $("hash").textContent;
     }
     if (extra.indexOf("keys") >= 0) {  /* the keyboard, as a user presses it on the page */

@@ -23,6 +23,7 @@ Exit: 0 the value printed; 1 the page threw, timed out or made a request.
 import base64
 import json
 import os
+import select
 import subprocess
 import sys
 import tempfile
@@ -32,6 +33,10 @@ import time
 def fail(msg):
     print("web_page: " + msg, file=sys.stderr)
     sys.exit(1)
+
+
+class TimedOut(Exception):
+    """The deadline passed with no answer (the page's promise never settled, or Chromium hung)."""
 
 
 class Pipe:
@@ -61,8 +66,10 @@ class Pipe:
 
     def read(self, deadline):
         while b"\0" not in self.buf:
-            if time.time() > deadline:
-                fail("timed out")
+            left = deadline - time.time()
+            # select, not a bare read: Chromium sends nothing while a page's promise is pending.
+            if left <= 0 or not select.select([self.r], [], [], left)[0]:
+                raise TimedOut()
             chunk = os.read(self.r, 1 << 16)
             if not chunk:
                 fail("chromium closed the pipe")
@@ -125,6 +132,18 @@ def set_file(p, spec, deadline, s):
     p.call("DOM.setFileInputFiles", {"nodeId": node, "files": [os.path.abspath(path)]}, deadline, s)
 
 
+def where(p, s):
+    """What a page that timed out shows: its window.dexmillTestAt (a test's
+    step, when it sets one) and its status line."""
+    try:
+        r = p.call("Runtime.evaluate", {"expression": "JSON.stringify({at: window.dexmillTestAt, status: "
+                                        "(document.getElementById('status') || {}).textContent})",
+                                        "returnByValue": True}, time.time() + 10, s)
+        return str(r["result"].get("value"))
+    except TimedOut:
+        return "(no answer)"
+
+
 def write_profile(profile, path):
     """Self samples by function name, most first, as percentages."""
     names = {n["id"]: n["callFrame"]["functionName"] or "(anonymous " + n["callFrame"]["url"][-30:] + ")"
@@ -164,8 +183,11 @@ def main():
                 p.call("Profiler.enable", {}, deadline, s)
                 p.call("Profiler.setSamplingInterval", {"interval": 100}, deadline, s)
                 p.call("Profiler.start", {}, deadline, s)
-            r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
-                       deadline, s)
+            try:
+                r = p.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True, "returnByValue": True},
+                           deadline, s)
+            except TimedOut:
+                fail("timed out; the page then: " + where(p, s))
             if prof:
                 write_profile(p.call("Profiler.stop", {}, deadline, s)["profile"], prof)
             if os.environ.get("WEB_PAGE_MEMORY"):
@@ -176,6 +198,8 @@ def main():
                 png = p.call("Page.captureScreenshot", {"format": "png"}, deadline, s)["data"]
                 with open(shot, "wb") as f:
                     f.write(base64.b64decode(png))
+        except TimedOut:
+            fail("timed out waiting for Chromium")
         finally:
             # Browser.close ends every process of it (a kill leaves its children writing the profile).
             try:
