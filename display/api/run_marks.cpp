@@ -29,13 +29,8 @@ void run_marks_record(RunMarks* m, const Simulation& s) {
 }
 
 void run_marks_after_cut(RunMarks* m, const Simulation& s, bool stopped_at_input_error) {
-  if (const GougeWatch* w = s.gouges())  // what the finish found
-    if (s.gouge_finds() != m->gouge_finds) {
-      m->gouge_finds = s.gouge_finds();
-      take_gouges(m, *w, s.grid());
-    }
+  run_marks_record(m, s);  // what the finish found
   const SafetyWatch* safety = s.safety();
-  if (safety) take_safety(m, *safety);
   m->error = stopped_at_input_error;
   if (m->error) m->error_at = s.mill().position();  // the bad block's place
   m->stop = s.stop_reason() == SimStop::kCollision && safety && safety->nevents > 0;

@@ -70,8 +70,7 @@ var dexmill = (function () {
     this.check(x.web_set_tool(this.put(o.tool || "flat:6")), "tool");
     var g = o.grid ? pair(o.grid, "grid") : [0, 0], s = pair(o.size || "640x480", "size");
     this.check(x.web_set_grid(g[0], g[1]), "grid");
-    this.check(x.web_set_checks(o.checks || 0), "--check");  /* DM_CHECK_* bits (engine_view.js checkBits) */
-    /* Topics' settings of the job, before it is made (page_scan.js: --pitch, --tools). */
+    /* Topics' settings of the job, before it is made (page_scan.js: --pitch, --tools; page_view.js: --check). */
     (o.configure || []).forEach(function (f) { f(this); }, this);
     var view = VIEWS[o.view || "iso"];
     if (view === undefined) throw new Error("view: iso, top, front or right");

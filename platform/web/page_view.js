@@ -42,7 +42,8 @@
 
   dexmillPage.extend({
     options: function (o) {
-      o.checks = dexmill.Engine.prototype.checkBits($("check").value);
+      var checks = dexmill.Engine.prototype.checkBits($("check").value);  /* between the job's values and its making */
+      if (checks) (o.configure = o.configure || []).push(function (e) { e.check(e.x.web_set_checks(checks), "--check"); });
       o.pathOverlay = $("path-overlay").checked;
     },
     prepare: function (src) { source = src; },

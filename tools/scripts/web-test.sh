@@ -76,19 +76,10 @@ tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color mate
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color thin --thin 8
 tests/run/pocket.ngc|0,0,-10,33,23,0|flat:6|330x230|320x240|iso|cli|--color error --design tests/run/pocket_floor.stl'
 for c in "${extra[@]}"; do cases="$cases"$'\n'"$c"; done
-# The words of a case's extras that are CLI options (those starting with --), joined.
-extra_more() {
-  local x out=
-  IFS=';' read -ra xs <<< "$1"
-  for x in "${xs[@]}"; do case $x in --*) out="$out $x";; esac; done
-  echo "${out# }"
-}
-# The tools=FILE of a case's extras (empty: none).
-extra_tools() {
-  local x
-  IFS=';' read -ra xs <<< "$1"
-  for x in "${xs[@]}"; do case $x in tools=*) echo "${x#tools=}";; esac; done
-}
+# The words of a case's extras that are CLI options (those starting with --),
+# joined; and its tools=FILE (empty: none).
+extra_more() { tr ';' '\n' <<< "$1" | grep -- '^--' | paste -sd ' '; }
+extra_tools() { tr ';' '\n' <<< "$1" | sed -n 's/^tools=//p'; }
 
 # A --tools table with a bad line: before the cases the page must list
 # dexmill run's error for it, word for word (the file named as chosen).
