@@ -220,7 +220,7 @@ LIB_A    := $(BUILD)/libdexmill.a
 LIB_SO   := $(BUILD)/libdexmill.so
 LIB_IO   := $(BUILD)/libdexmill_io.a
 IO_OBJ   := $(call obj,platform/api/dexmill_io.cpp platform/format/image_file.cpp platform/format/ppm.cpp platform/format/png.cpp platform/format/pgm.cpp \
-              platform/os/read_file.cpp platform/format/deflate.cpp platform/os/output_file.cpp platform/os/output_set.cpp platform/os/temp_file.cpp platform/os/process.cpp \
+              platform/os/read_file.cpp platform/format/deflate.cpp platform/os/parallel.cpp platform/os/output_file.cpp platform/os/output_set.cpp platform/os/temp_file.cpp platform/os/process.cpp \
               display/raster/framebuffer.cpp core/math/crc32.cpp)
 EMBED    := $(BUILD)/embed
 lib: $(LIB_A) $(LIB_SO) $(LIB_IO)
