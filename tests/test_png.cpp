@@ -633,8 +633,10 @@ std::size_t check_rgb8(const Bytes& rgb, int32_t w, int32_t h, int* filter_count
   return png.size();
 }
 
-std::size_t check_gray16(const std::vector<uint16_t>& samples, int32_t w, int32_t h, int* filter_counts = nullptr) {
-  Bytes png;
+std::size_t check_gray16(const std::vector<uint16_t>& samples, int32_t w, int32_t h, int* filter_counts = nullptr,
+                         Bytes* file = nullptr) {
+  Bytes local;
+  Bytes& png = file ? *file : local;
   png_encode_gray16(samples.data(), w, h, &png);
   const DecodedPng d = decode_checked(png, w, h, 0, 16, filter_counts);
   bool same = d.pixels.size() == 2 * samples.size();
@@ -774,6 +776,34 @@ TEST(png_gray16_milled_part_round_trips_no_larger_than_before) {
   const std::size_t size = check_gray16(milled_heightmap(w, h), w, h, filters);
   CHECK_LE(size, std::size_t{29951});
   CHECK_GT(filters[2] + filters[4], 0);  // Up or Paeth: smooth rows
+}
+
+TEST(png_gray16_in_pieces_round_trips_the_same_bytes_on_every_thread_count) {
+  // The filtered rows, h * (2 w + 1) bytes, go to zlib_compress_pieces:
+  // one row; one byte short of a piece (512 x 1023); one byte over
+  // (8 x 61681; an odd row length never fills a piece exactly, tests/
+  // test_deflate_pieces.cpp has that size); two and a bit pieces; random
+  // samples, a milled part, rows of every filter, flat rows (equal to the
+  // one above: Up) and rows of zeros (None).
+  const int32_t sizes[][2] = {{1000, 1}, {512, 1023}, {8, 61681}, {900, 1300}};
+  uint64_t seed = 500;
+  for (const auto& s : sizes) {
+    const int32_t w = s[0], h = s[1];
+    std::vector<uint16_t> zeros_then_flat(static_cast<std::size_t>(w) * h, 0);
+    std::fill(zeros_then_flat.begin() + static_cast<long>(zeros_then_flat.size() / 2), zeros_then_flat.end(), 777);
+    const std::vector<uint16_t> images[] = {make_gray(Kind::kRandom, w, h, ++seed), milled_heightmap(w, h),
+                                            make_gray(Kind::kMixed, w, h, ++seed), zeros_then_flat};
+    for (const std::vector<uint16_t>& img : images) {
+      Bytes png;
+      int filters[5] = {};
+      check_gray16(img, w, h, filters, &png);
+      for (int threads : {1, 2, 3, 7}) {
+        Bytes again;
+        png_encode_gray16(img.data(), w, h, &again, threads);
+        CHECK(again == png);
+      }
+    }
+  }
 }
 
 TEST(png_output_is_deterministic) {

@@ -244,12 +244,16 @@ class MatchFinder {
 // Greedy parsing with one step of lazy evaluation (section 4): a match found
 // at pos is deferred when pos + 1 has a longer one, pos then going out as a
 // literal. Every position is inserted into the chains once, but the
-// inside of a long run where the effort says so.
+// inside of a long run where the effort says so. The symbols are those of
+// data[start, n); the bytes before start are a preset dictionary (RFC
+// 1951 section 3.2's window carried over from before), put on the chains
+// and never sent.
 template <int HashBytes, class Sink>
-void lz77_parse_span(const uint8_t* data, std::size_t n, const Effort& effort, Sink* out) {
+void lz77_parse_span(const uint8_t* data, std::size_t start, std::size_t n, const Effort& effort, Sink* out) {
   MatchFinder<HashBytes> finder(data, n, effort);
-  std::size_t pos = 0;
-  Match cur = finder.step(0);
+  for (std::size_t p = 0; p < start; ++p) finder.insert(p);
+  std::size_t pos = start;
+  Match cur = finder.step(start);
   while (pos < n) {
     if (cur.length_bytes == 0) {
       out->literal();
@@ -287,10 +291,22 @@ void lz77_parse(const uint8_t* data, std::size_t n, DeflateTuning tuning, Sink* 
   for (std::size_t at = 0; at < n; at += kSpanBytes) {
     const std::size_t span = std::min(kSpanBytes, n - at);
     if (tuning == DeflateTuning::kFilteredSamples16)
-      lz77_parse_span<kFilteredSamples16HashBytes>(data + at, span, kFilteredSamples16Effort, out);
+      lz77_parse_span<kFilteredSamples16HashBytes>(data + at, 0, span, kFilteredSamples16Effort, out);
     else
-      lz77_parse_span<kGeneralHashBytes>(data + at, span, kGeneralEffort, out);
+      lz77_parse_span<kGeneralHashBytes>(data + at, 0, span, kGeneralEffort, out);
   }
+}
+
+// The literals and matches of data[dict_bytes, n) as lz77_parse gives them,
+// matches reaching back into data[0, dict_bytes) as well (a preset
+// dictionary of at most the window; n at most lz77::kSpanBytes).
+template <class Sink>
+void lz77_parse_after(const uint8_t* data, std::size_t dict_bytes, std::size_t n, DeflateTuning tuning, Sink* out) {
+  using namespace lz77;
+  if (tuning == DeflateTuning::kFilteredSamples16)
+    lz77_parse_span<kFilteredSamples16HashBytes>(data, dict_bytes, n, kFilteredSamples16Effort, out);
+  else
+    lz77_parse_span<kGeneralHashBytes>(data, dict_bytes, n, kGeneralEffort, out);
 }
 
 }  // namespace dexmill

@@ -26,8 +26,12 @@ void png_encode_rgb8(const uint8_t* rgb, int32_t width, int32_t height, std::vec
 
 // samples: height rows, top row first, each width grey samples in native
 // byte order. Written as colour type 0 (greyscale), bit depth 16, each
-// sample most significant byte first as PNG requires.
-void png_encode_gray16(const uint16_t* samples, int32_t width, int32_t height, std::vector<uint8_t>* out);
+// sample most significant byte first as PNG requires. Filtered and
+// compressed on up to `threads` threads (<= 0: the host's), the image
+// data by zlib_compress_pieces (platform/format/deflate.h): the same bytes
+// for every thread count.
+void png_encode_gray16(const uint16_t* samples, int32_t width, int32_t height, std::vector<uint8_t>* out,
+                       int threads = 0);
 
 }  // namespace dexmill
 
