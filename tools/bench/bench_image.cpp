@@ -3,6 +3,8 @@
 // pocket, swept) encoded as PGM and as PNG (platform/format/), in memory
 // (pgm_s, png_s) and written to a file in $TMPDIR as `dexmill run
 // --heightmap` writes it (pgm_file_s, png_file_s; the file is removed).
+// The PNG on the host's threads (threads), png_1thread_s on one (speedup:
+// png_1thread_s / png_s; same_bytes=1 when both wrote the same file).
 // seconds is png_s; ratio is png_s / pgm_s, file_ratio png_file_s / pgm_file_s; compression
 // is pgm_bytes / png_bytes; size_vs_before is png_bytes over
 // png_bytes_before, the size this heightmap's PNG had when heightmaps were
@@ -19,6 +21,7 @@
 #include "platform/format/image_file.h"
 #include "platform/format/pgm.h"
 #include "platform/format/png.h"
+#include "platform/os/parallel.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/bench_job.h"
 
@@ -69,15 +72,23 @@ void run_png_heightmap(const char* name) {
     png_encode_gray16(img.data(), j.g.nx, j.g.ny, &png);
     return bench::now_s() - t0;
   }, min_s);
+  std::vector<uint8_t> png_1t;
+  const double png_1t_s = bench::best_time_s([&] {
+    const double t0 = bench::now_s();
+    png_encode_gray16(img.data(), j.g.nx, j.g.ny, &png_1t, 1);
+    return bench::now_s() - t0;
+  }, min_s);
   const char* tmp = std::getenv("TMPDIR");
   const std::string base = std::string(tmp && *tmp ? tmp : "/tmp") + "/dexmill-bench-heightmap";
   const double pgm_file_s = best_file_s(base + ".pgm", ImageFormat::kPgm, j, img, min_s);
   const double png_file_s = best_file_s(base + ".png", ImageFormat::kPng, j, img, min_s);
-  bench::result(name, "grid=%dx%d pgm_s=%.4f png_s=%.4f ratio=%.2f pgm_file_s=%.4f png_file_s=%.4f file_ratio=%.2f "
-                "pgm_bytes=%zu png_bytes=%zu compression=%.2f png_bytes_before=%zu size_vs_before=%.4f seconds=%.4f",
-                j.g.nx, j.g.ny, pgm_s, png_s, png_s / pgm_s, pgm_file_s, png_file_s, png_file_s / pgm_file_s,
-                pgm.size(), png.size(), static_cast<double>(pgm.size()) / static_cast<double>(png.size()),
-                kPngBytesBefore, static_cast<double>(png.size()) / static_cast<double>(kPngBytesBefore), png_s);
+  bench::result(name, "grid=%dx%d threads=%d pgm_s=%.4f png_s=%.4f ratio=%.2f png_1thread_s=%.4f speedup=%.2f "
+                "same_bytes=%d pgm_file_s=%.4f png_file_s=%.4f file_ratio=%.2f pgm_bytes=%zu png_bytes=%zu "
+                "compression=%.2f png_bytes_before=%zu size_vs_before=%.4f seconds=%.4f",
+                j.g.nx, j.g.ny, host_threads(), pgm_s, png_s, png_s / pgm_s, png_1t_s, png_1t_s / png_s,
+                png_1t == png ? 1 : 0, pgm_file_s, png_file_s, png_file_s / pgm_file_s, pgm.size(), png.size(),
+                static_cast<double>(pgm.size()) / static_cast<double>(png.size()), kPngBytesBefore,
+                static_cast<double>(png.size()) / static_cast<double>(kPngBytesBefore), png_s);
 }
 
 }  // namespace
